@@ -1,0 +1,56 @@
+//! Kernel benchmarks: dense geometric product, a motor applied to a point, decomposition.
+//! Run with `cargo bench -p cga`; figures go to docs/performance.md.
+
+use cga::{Multivector, Similarity};
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use glam::{DQuat, DVec3};
+
+fn dense(seed: f64) -> Multivector {
+    Multivector::from_coefficients(std::array::from_fn(|i| (seed + i as f64 * 0.731).sin()))
+}
+
+fn motor() -> Multivector {
+    Similarity {
+        translation: DVec3::new(0.3, -1.2, 2.5),
+        rotation: DQuat::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.7),
+        scale: 1.5,
+    }
+    .to_versor()
+    .expect("valid similarity")
+}
+
+fn kernels(c: &mut Criterion) {
+    let (a, b) = (dense(0.1), dense(2.3));
+    c.bench_function("geometric product (dense)", |bench| {
+        bench.iter(|| black_box(a) * black_box(b))
+    });
+    c.bench_function("geometric product (blade table, reference)", |bench| {
+        bench.iter(|| {
+            black_box(a).product_by_table(&black_box(b), cga::blade::ProductKind::Geometric)
+        })
+    });
+    let m = motor();
+    let p = DVec3::new(0.5, 0.25, -1.0);
+    c.bench_function("motor applied to a point", |bench| {
+        bench.iter(|| black_box(m).transform_point(black_box(p)))
+    });
+    let map = cga::PointMap::new(&m).expect("even versor");
+    c.bench_function("motor applied to a point (precomputed PointMap)", |bench| {
+        bench.iter(|| black_box(&map).transform_point(black_box(p)))
+    });
+    c.bench_function("motor applied to a point (dense sandwich)", |bench| {
+        bench.iter(|| {
+            let m = black_box(m);
+            (m * Multivector::up(black_box(p)) * m.reverse()).down()
+        })
+    });
+    c.bench_function("decomposition T·R·D", |bench| {
+        bench.iter(|| Similarity::from_versor(&black_box(m)))
+    });
+    c.bench_function("inverse (general, linear system)", |bench| {
+        bench.iter(|| black_box(a).inverse())
+    });
+}
+
+criterion_group!(benches, kernels);
+criterion_main!(benches);
