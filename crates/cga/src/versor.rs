@@ -70,11 +70,9 @@ impl Multivector {
     /// [`Multivector::rotor_from_quat`] up to the sign of the quaternion.
     pub fn rotor_to_quat(&self) -> DQuat {
         let q = DQuat::from_xyzw(-self[E23], self[E13], -self[E12], self[0]).normalize();
-        if q.w < 0.0 {
-            -q
-        } else {
-            q
-        }
+        let q = if q.w < 0.0 { -q } else { q };
+        // Adding zero turns -0.0 into 0.0, so outputs never show "-0".
+        DQuat::from_array(q.to_array().map(|c| c + 0.0))
     }
 }
 

@@ -1,1 +1,45 @@
-fn main() {}
+//! `shenlong`: edit 3D scenes by plain instruction.
+//!
+//! A thin command line over the `shenlong` library: each subcommand parses its arguments,
+//! calls the library, and prints. Errors end the process with one line on stderr and a
+//! non-zero status; files are only ever written whole.
+
+mod commands;
+
+use clap::{Parser, Subcommand};
+use std::process::ExitCode;
+
+/// Edit 3D scenes by plain instruction, with conformal geometric algebra.
+#[derive(Parser)]
+#[command(name = "shenlong", version, about, long_about = None, propagate_version = true)]
+struct Cli {
+    #[command(subcommand)]
+    command: Command,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    Eval(commands::eval::Args),
+    Apply(commands::apply::Args),
+    Convert(commands::convert::Args),
+    Examples(commands::examples::Args),
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let result = match cli.command {
+        Command::Eval(args) => commands::eval::run(args),
+        Command::Apply(args) => commands::apply::run(args),
+        Command::Convert(args) => commands::convert::run(args),
+        Command::Examples(args) => commands::examples::run(args),
+    };
+    match result {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(error) => {
+            // One line: the chain of causes joined, newlines folded.
+            let message = format!("{error:#}").replace('\n', " ");
+            eprintln!("shenlong: {message}");
+            ExitCode::FAILURE
+        }
+    }
+}

@@ -2,8 +2,17 @@
 //! geometric algebra.
 //!
 //! One module per stage of the data flow (see ARCHITECTURE.md):
+//! - [`geometry`]: bounding volumes.
+//! - [`scene`]: the scene model — objects, poses as versors, pivots, supports, undo.
+//! - [`format`]: scene files — scene JSON — read and written back in their own shape.
 //! - [`expr`]: the CGA expression language a model answers in — parse, check, evaluate.
+//! - [`io`]: atomic file writes.
 
 #![warn(missing_docs)]
 
+pub mod examples;
 pub mod expr;
+pub mod format;
+pub mod geometry;
+pub mod io;
+pub mod scene;

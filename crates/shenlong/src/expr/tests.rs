@@ -382,3 +382,43 @@ proptest! {
         let _ = evaluate_transformation(&text, &two_objects());
     }
 }
+
+#[test]
+fn documented_examples_evaluate_to_what_they_say() {
+    let doc = include_str!("../../../../docs/expressions.md");
+    let section = doc
+        .split("## Examples")
+        .nth(1)
+        .and_then(|s| s.split("## Errors").next())
+        .expect("docs/expressions.md has an Examples section");
+    let mut checked = 0;
+    for row in section
+        .lines()
+        .filter(|l| l.starts_with("| ") && !l.starts_with("| instruction"))
+    {
+        let cells: Vec<&str> = row.split(" | ").collect();
+        let expr = cells[1]
+            .trim()
+            .trim_end_matches('|')
+            .trim()
+            .trim_matches('`')
+            .replace("\\|", "|");
+        let result = if expr.starts_with('[') {
+            let items: Vec<String> = serde_json::from_str(&expr).unwrap();
+            compose(&items, &two_objects())
+        } else {
+            evaluate_transformation(&expr, &two_objects())
+        };
+        let t = result.unwrap_or_else(|e| panic!("{expr}: {e}"));
+        if cells[0].contains("on top of") {
+            // The bottle lands centred on the table's top.
+            let bottom_centre = t.similarity.transform_point(DVec3::ZERO);
+            assert!(
+                close(bottom_centre, DVec3::new(2.0, 0.9, 0.0)),
+                "{bottom_centre}"
+            );
+        }
+        checked += 1;
+    }
+    assert!(checked >= 8, "only {checked} documented examples found");
+}

@@ -1,0 +1,224 @@
+//! The `shenlong` binary, run as a user runs it.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+fn shenlong(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_shenlong"))
+        .args(args)
+        .output()
+        .expect("the binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stdout).into_owned()
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+fn examples_dir() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+#[track_caller]
+fn assert_fails_cleanly(o: &Output, message: &str) {
+    assert!(!o.status.success(), "expected failure");
+    assert!(
+        o.stdout.is_empty(),
+        "nothing on stdout on error: {}",
+        stdout(o)
+    );
+    let err = stderr(o);
+    assert_eq!(err.lines().count(), 1, "one line on stderr: {err}");
+    assert!(err.contains(message), "{err}");
+}
+
+#[test]
+fn eval_json_is_one_object_of_the_documented_shape() {
+    let o = shenlong(&["eval", "T(2 * e1) * R(pi/2, e3, e1)", "--json"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["versor"].as_array().unwrap().len(), 32);
+    assert_eq!(v["translation"], serde_json::json!([2.0, 0.0, 0.0]));
+    let q: Vec<f64> = serde_json::from_value(v["rotation"].clone()).unwrap();
+    assert!(
+        (q[1] - std::f64::consts::FRAC_1_SQRT_2).abs() < 1e-12,
+        "{q:?}"
+    );
+    assert_eq!(v["scale"], 1.0);
+}
+
+#[test]
+fn eval_with_a_scene_binds_variables() {
+    let scene = examples_dir().join("workshop.json");
+    let o = shenlong(&[
+        "eval",
+        "T(((X2.max | e2) - (X1.min | e2)) * e2)",
+        "--scene",
+        scene.to_str().unwrap(),
+        "--bind",
+        "X1=orange bottle",
+        "--bind",
+        "X2=Tool Table",
+        "--json",
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value = serde_json::from_str(&stdout(&o)).unwrap();
+    assert_eq!(v["translation"], serde_json::json!([0.0, 0.9, 0.0]));
+}
+
+#[test]
+fn eval_errors_are_one_line_and_say_where() {
+    assert_fails_cleanly(
+        &shenlong(&["eval", "T(e1 * 2"]),
+        "expected ')' but found the end of the expression at column 9",
+    );
+    assert_fails_cleanly(
+        &shenlong(&["eval", "X1.max"]),
+        "unknown name 'X1' (bound: none)",
+    );
+    assert_fails_cleanly(
+        &shenlong(&["eval", "e1 + e2"]),
+        "result is a vector, not a transformation",
+    );
+    assert_fails_cleanly(
+        &shenlong(&["eval", "T(X1.max)", "--bind", "X1=sofa"]),
+        "--bind needs --scene",
+    );
+    assert_fails_cleanly(
+        &shenlong(&[
+            "eval",
+            "T(X1.max)",
+            "--scene",
+            "example:workshop",
+            "--bind",
+            "X1=tool tabel",
+        ]),
+        "unknown object 'tool tabel' — did you mean 'tool table'",
+    );
+    let o = shenlong(&["eval", "e1 + e2", "--raw"]);
+    assert_eq!(stdout(&o).trim(), "1 e1 + 1 e2");
+}
+
+#[test]
+fn apply_writes_the_edit_and_carries_resting_objects() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("moved.json");
+    let scene = examples_dir().join("workshop.json");
+    let o = shenlong(&[
+        "apply",
+        scene.to_str().unwrap(),
+        "--object",
+        "tool table",
+        "--expr",
+        "T(0.5 * e1)",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let objects = v["objects"].as_array().unwrap();
+    let find = |name: &str| objects.iter().find(|o| o["name"] == name).unwrap().clone();
+    assert_eq!(
+        find("tool table")["position"],
+        serde_json::json!([0.5, 0, 0])
+    );
+    // The hammer rests on the table and travels with it.
+    assert_eq!(
+        find("hammer")["position"],
+        serde_json::json!([0.1, 0.9, 0.1])
+    );
+    // The bottle on the floor stays.
+    assert_eq!(
+        find("orange bottle")["position"],
+        serde_json::json!([-2, 0, 1.2])
+    );
+}
+
+#[test]
+fn failed_apply_leaves_the_output_untouched() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    std::fs::write(&out, "precious").unwrap();
+    for expr in ["T(e1", "D(-1)", "T(X2.max)"] {
+        let o = shenlong(&[
+            "apply",
+            "example:workshop",
+            "--object",
+            "tool table",
+            "--expr",
+            expr,
+            "-o",
+            out.to_str().unwrap(),
+        ]);
+        assert!(!o.status.success(), "{expr}");
+        assert_eq!(stderr(&o).lines().count(), 1);
+    }
+    let o = shenlong(&[
+        "apply",
+        "example:workshop",
+        "--object",
+        "sofa",
+        "--expr",
+        "T(e1)",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_fails_cleanly(&o, "unknown object 'sofa'");
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "precious");
+    let entries: Vec<_> = std::fs::read_dir(dir.path()).unwrap().collect();
+    assert_eq!(entries.len(), 1, "no temporary files left behind");
+}
+
+#[test]
+fn bad_scene_files_fail_with_the_field_named() {
+    let dir = tempfile::tempdir().unwrap();
+    let bad = dir.path().join("bad.json");
+    std::fs::write(
+        &bad,
+        r#"{"objects": [{"name": "a", "size": [1, 0, 1], "position": [0, 0, 0]}]}"#,
+    )
+    .unwrap();
+    let o = shenlong(&[
+        "convert",
+        bad.to_str().unwrap(),
+        dir.path().join("out.json").to_str().unwrap(),
+    ]);
+    assert_fails_cleanly(&o, "bad.json: objects[0].size[1] must be > 0");
+    assert!(!dir.path().join("out.json").exists());
+    let o = shenlong(&[
+        "convert",
+        "example:kitchen",
+        dir.path().join("k.obj").to_str().unwrap(),
+    ]);
+    assert_fails_cleanly(&o, "unknown scene format '.obj'");
+}
+
+#[test]
+fn examples_list_and_write() {
+    let o = shenlong(&["examples"]);
+    assert!(o.status.success());
+    assert!(stdout(&o).lines().count() >= 10);
+    let o = shenlong(&["examples", "workshop"]);
+    let expected = std::fs::read_to_string(examples_dir().join("workshop.json")).unwrap();
+    assert_eq!(stdout(&o), expected);
+    assert_fails_cleanly(
+        &shenlong(&["examples", "moon base"]),
+        "unknown example 'moon base'",
+    );
+}
+
+#[test]
+fn help_explains_each_command() {
+    for command in ["eval", "apply", "convert", "examples"] {
+        let o = shenlong(&[command, "--help"]);
+        assert!(o.status.success());
+        assert!(
+            stdout(&o).contains("Example"),
+            "{command} --help shows an example"
+        );
+    }
+}

@@ -1,0 +1,132 @@
+//! Scene file formats: reading them into a [`Scene`] and writing edits back.
+//!
+//! | format | read | write |
+//! |---|---|---|
+//! | scene JSON (`.json`, SPEC §2) | [`json`] | [`json`], in the input's shape |
+//!
+//! [`SceneFile`] pairs a scene with the document it came from, so that writing changes
+//! only what the edit changed.
+
+pub mod json;
+pub mod pretty;
+
+use crate::scene::Scene;
+use std::fmt;
+use std::path::{Path, PathBuf};
+
+/// A problem with a scene file: what is wrong and, in the message, where.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FormatError {
+    /// What is wrong, naming the field (`objects[3].size[1] must be > 0`).
+    pub message: String,
+}
+
+impl FormatError {
+    /// An error with this message.
+    pub fn new(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+        }
+    }
+
+    /// The same error, prefixed with the file it is about.
+    pub fn in_file(self, path: &Path) -> Self {
+        Self::new(format!("{}: {}", path.display(), self.message))
+    }
+}
+
+impl fmt::Display for FormatError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for FormatError {}
+
+/// The formats Shenlong reads and writes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Format {
+    /// Shenlong's scene JSON (SPEC §2).
+    SceneJson,
+}
+
+impl Format {
+    /// The format a path's extension names.
+    pub fn from_path(path: &Path) -> Result<Self, FormatError> {
+        let ext = path
+            .extension()
+            .and_then(|e| e.to_str())
+            .map(str::to_ascii_lowercase)
+            .unwrap_or_default();
+        match ext.as_str() {
+            "json" => Ok(Format::SceneJson),
+            other => Err(FormatError::new(format!(
+                "{}: unknown scene format '.{other}': use .json",
+                path.display()
+            ))),
+        }
+    }
+}
+
+/// Where a scene came from, kept for writing it back.
+#[derive(Clone, Debug)]
+pub enum Document {
+    /// Built in memory: written fresh.
+    None,
+    /// A scene JSON document.
+    SceneJson(serde_json::Value),
+}
+
+/// A scene and the document it was read from.
+#[derive(Clone, Debug)]
+pub struct SceneFile {
+    /// The scene.
+    pub scene: Scene,
+    /// The source document.
+    pub document: Document,
+    /// The file it was read from, if any.
+    pub path: Option<PathBuf>,
+}
+
+impl SceneFile {
+    /// Reads a scene file, choosing the format by extension.
+    pub fn load(path: &Path) -> Result<Self, FormatError> {
+        let format = Format::from_path(path)?;
+        let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
+        match format {
+            Format::SceneJson => {
+                let text = std::fs::read_to_string(path).map_err(|e| {
+                    FormatError::new(format!("cannot read {}: {e}", path.display()))
+                })?;
+                let loaded = json::read(&text, stem).map_err(|e| e.in_file(path))?;
+                Ok(Self {
+                    scene: loaded.scene,
+                    document: Document::SceneJson(loaded.document),
+                    path: Some(path.to_path_buf()),
+                })
+            }
+        }
+    }
+
+    /// The scene in the given format, as bytes.
+    pub fn to_bytes(&self, format: Format) -> Result<Vec<u8>, FormatError> {
+        match format {
+            Format::SceneJson => {
+                let original = match &self.document {
+                    Document::SceneJson(v) => Some(v),
+                    Document::None => None,
+                };
+                Ok(json::write(&self.scene, original).into_bytes())
+            }
+        }
+    }
+
+    /// Writes the scene to `path` (format by extension) atomically: on any error the
+    /// file is not created or changed.
+    pub fn save(&self, path: &Path) -> Result<(), FormatError> {
+        let format = Format::from_path(path)?;
+        let bytes = self.to_bytes(format)?;
+        crate::io::write_atomic(path, &bytes)
+            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
+    }
+}

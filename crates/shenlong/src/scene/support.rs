@@ -1,0 +1,53 @@
+//! Which object rests on which.
+
+use super::Scene;
+
+/// How far above another object's top an object's bottom may be and still rest on it,
+/// in metres. Objects also count as resting when they sink slightly into their support.
+pub const SUPPORT_GAP: f64 = 0.01;
+
+/// Marks, for each object without a support from the file, the object it rests on: the
+/// one whose top is within [`SUPPORT_GAP`] of its bottom, that its footprint's centre lies
+/// over, and that it rises above (so two supports can never form a cycle). Among several,
+/// the highest top wins, then the largest footprint overlap.
+pub fn detect(scene: &mut Scene) {
+    let boxes = scene.world_aabbs();
+    let floor = scene.floor();
+    for (i, a) in boxes.iter().enumerate() {
+        if scene.objects[i].support_from_file {
+            continue;
+        }
+        let mut best: Option<(usize, f64, f64)> = None;
+        if a.min.y <= floor + SUPPORT_GAP {
+            scene.objects[i].support = None;
+            continue;
+        }
+        let centre = a.center();
+        for (j, b) in boxes.iter().enumerate() {
+            if i == j {
+                continue;
+            }
+            let gap = a.min.y - b.max.y;
+            let rests = gap.abs() <= SUPPORT_GAP
+                && a.max.y > b.max.y + 1e-3
+                && centre.x >= b.min.x
+                && centre.x <= b.max.x
+                && centre.z >= b.min.z
+                && centre.z <= b.max.z;
+            if !rests {
+                continue;
+            }
+            let overlap = a.footprint_overlap(b);
+            let better = match best {
+                None => true,
+                Some((_, top, area)) => {
+                    b.max.y > top + 1e-9 || (b.max.y >= top - 1e-9 && overlap > area)
+                }
+            };
+            if better {
+                best = Some((j, b.max.y, overlap));
+            }
+        }
+        scene.objects[i].support = best.map(|(j, _, _)| j);
+    }
+}

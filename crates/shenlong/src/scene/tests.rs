@@ -1,0 +1,214 @@
+use super::*;
+use std::f64::consts::FRAC_PI_2;
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).length() < 1e-9
+}
+
+/// A table with a bottle on it and a chair beside it.
+fn workshop() -> Scene {
+    let mut s = Scene::new("workshop");
+    s.objects.push(
+        Object::new_box(
+            "tool table",
+            DVec3::new(1.6, 0.9, 0.8),
+            DVec3::ZERO,
+            DQuat::IDENTITY,
+            1.0,
+        )
+        .unwrap(),
+    );
+    s.objects.push(
+        Object::new_box(
+            "orange bottle",
+            DVec3::new(0.08, 0.25, 0.08),
+            DVec3::new(0.3, 0.9, 0.1),
+            DQuat::IDENTITY,
+            1.0,
+        )
+        .unwrap(),
+    );
+    s.objects.push(
+        Object::new_box(
+            "chair",
+            DVec3::new(0.5, 0.9, 0.5),
+            DVec3::new(2.0, 0.0, 0.0),
+            DQuat::IDENTITY,
+            1.0,
+        )
+        .unwrap(),
+    );
+    s.detect_supports();
+    s
+}
+
+#[test]
+fn world_aabb_of_a_box_uses_the_bottom_centre_pivot() {
+    let s = workshop();
+    let b = s.objects[0].world_aabb();
+    assert!(close(b.min, DVec3::new(-0.8, 0.0, -0.4)));
+    assert!(close(b.max, DVec3::new(0.8, 0.9, 0.4)));
+}
+
+#[test]
+fn world_aabb_of_a_rotated_scaled_box() {
+    let o = Object::new_box(
+        "plank",
+        DVec3::new(2.0, 0.1, 0.5),
+        DVec3::new(1.0, 0.0, 0.0),
+        DQuat::from_rotation_y(FRAC_PI_2),
+        2.0,
+    )
+    .unwrap();
+    let b = o.world_aabb();
+    // A quarter turn about +Y swaps x and z extents; scale 2 doubles them.
+    assert!(close(b.min, DVec3::new(0.5, 0.0, -2.0)));
+    assert!(close(b.max, DVec3::new(1.5, 0.2, 2.0)));
+}
+
+#[test]
+fn supports_are_detected_from_geometry() {
+    let s = workshop();
+    assert_eq!(s.objects[1].support, Some(0));
+    assert_eq!(s.objects[0].support, None);
+    assert_eq!(s.objects[2].support, None);
+    assert_eq!(s.carried_by(0), vec![1]);
+}
+
+#[test]
+fn translation_moves_the_pivot_and_carries_what_rests_on_it() {
+    let mut s = workshop();
+    let m = Multivector::translator(DVec3::new(1.0, 0.0, 0.0));
+    let motion = s.apply(0, &m, true);
+    assert_eq!(motion.objects().collect::<Vec<_>>(), vec![0, 1]);
+    assert!(close(s.objects[0].similarity().translation, DVec3::X));
+    assert!(close(
+        s.objects[1].similarity().translation,
+        DVec3::new(1.3, 0.9, 0.1)
+    ));
+    assert!(close(
+        s.objects[2].similarity().translation,
+        DVec3::new(2.0, 0.0, 0.0)
+    ));
+}
+
+#[test]
+fn without_carry_only_the_object_moves() {
+    let mut s = workshop();
+    s.apply(0, &Multivector::translator(DVec3::X), false);
+    assert!(close(
+        s.objects[1].similarity().translation,
+        DVec3::new(0.3, 0.9, 0.1)
+    ));
+}
+
+#[test]
+fn rotation_turns_about_the_pivot_with_world_axes() {
+    let mut s = workshop();
+    let r = Multivector::rotor(FRAC_PI_2, &Multivector::e3(), &Multivector::e1()).unwrap();
+    s.apply(2, &r, true);
+    let chair = s.objects[2].similarity();
+    // The pivot stays; the rotation is q · rotation.
+    assert!(close(chair.translation, DVec3::new(2.0, 0.0, 0.0)));
+    assert!(chair
+        .rotation
+        .abs_diff_eq(DQuat::from_rotation_y(FRAC_PI_2), 1e-12));
+    // The table turns and carries the bottle around the table's pivot: (0.3, _, 0.1) → (0.1, _, -0.3).
+    s.apply(0, &r, true);
+    assert!(close(
+        s.objects[1].similarity().translation,
+        DVec3::new(0.1, 0.9, -0.3)
+    ));
+}
+
+#[test]
+fn scale_about_the_pivot_keeps_the_bottom_on_the_floor() {
+    let mut s = workshop();
+    s.apply(2, &Multivector::dilator(2.0).unwrap(), true);
+    let b = s.objects[2].world_aabb();
+    assert!((b.min.y).abs() < 1e-12);
+    assert!((b.max.y - 1.8).abs() < 1e-12);
+    assert!((s.objects[2].similarity().scale - 2.0).abs() < 1e-12);
+}
+
+#[test]
+fn spec_section_3_composition() {
+    // position' = position + t, rotation' = q · rotation, scale' = s · scale.
+    let mut s = Scene::new("t");
+    let q0 = DQuat::from_rotation_x(0.3);
+    s.objects
+        .push(Object::new_box("a", DVec3::ONE, DVec3::new(1.0, 2.0, 3.0), q0, 1.5).unwrap());
+    let step = Similarity {
+        translation: DVec3::new(-1.0, 0.5, 2.0),
+        rotation: DQuat::from_rotation_y(0.7),
+        scale: 0.5,
+    };
+    s.apply(0, &step.to_versor().unwrap(), false);
+    let after = s.objects[0].similarity();
+    assert!(close(after.translation, DVec3::new(0.0, 2.5, 5.0)));
+    assert!(
+        after.rotation.abs_diff_eq(step.rotation * q0, 1e-12)
+            || after.rotation.abs_diff_eq(-(step.rotation * q0), 1e-12)
+    );
+    assert!((after.scale - 0.75).abs() < 1e-12);
+}
+
+#[test]
+fn undo_is_exact() {
+    let mut s = workshop();
+    let before: Vec<_> = s.objects.iter().map(Object::similarity).collect();
+    let m = Similarity {
+        translation: DVec3::new(0.4, 0.2, -1.0),
+        rotation: DQuat::from_rotation_y(1.1),
+        scale: 1.3,
+    }
+    .to_versor()
+    .unwrap();
+    let motion = s.apply(0, &m, true);
+    s.undo(&motion);
+    for (o, b) in s.objects.iter().zip(before) {
+        let a = o.similarity();
+        assert!(close(a.translation, b.translation), "{}", o.name);
+        assert!(a.rotation.abs_diff_eq(b.rotation, 1e-12));
+        assert!((a.scale - b.scale).abs() < 1e-12);
+    }
+}
+
+#[test]
+fn bottom_centre_pivot_for_points() {
+    let points = vec![DVec3::new(4.0, 1.0, 0.0), DVec3::new(6.0, 3.0, 2.0)];
+    let mut s = Scene::new("g");
+    s.objects.push(
+        Object::new(
+            "m",
+            Shape::Points { points },
+            Similarity::IDENTITY,
+            Pivot::BottomCenter,
+        )
+        .unwrap(),
+    );
+    assert!(close(s.objects[0].pivot_point(), DVec3::new(5.0, 1.0, 1.0)));
+    s.apply(0, &Multivector::dilator(2.0).unwrap(), false);
+    let b = s.objects[0].world_aabb();
+    assert!(close(b.min, DVec3::new(3.0, 1.0, -1.0)));
+    assert!(close(b.max, DVec3::new(7.0, 5.0, 3.0)));
+}
+
+#[test]
+fn find_is_case_insensitive() {
+    let s = workshop();
+    assert_eq!(s.find("Tool Table"), Some(0));
+    assert_eq!(s.find(" ORANGE bottle "), Some(1));
+    assert_eq!(s.find("sofa"), None);
+}
+
+#[test]
+fn unknown_names_get_suggestions() {
+    let s = workshop();
+    assert_eq!(
+        s.resolve("tool tabel").unwrap_err(),
+        "unknown object 'tool tabel' — did you mean 'tool table'?"
+    );
+    assert_eq!(s.resolve("xyz").unwrap_err(), "unknown object 'xyz'");
+    assert_eq!(s.resolve("CHAIR"), Ok(2));
+}
