@@ -5,7 +5,12 @@ use glam::DVec3;
 
 /// The linear map `X ↦ M X M̃` of an even versor `M` on vectors, as a 5×5 matrix over
 /// `e1 … e5`. Applying it to a point costs 25 multiply-adds instead of a sandwich product,
-/// which pays when one versor moves many points (the 8 corners of a box, a mesh's vertices).
+/// which pays when one versor moves many points near the origin.
+///
+/// Conformal points carry `½|x|²`, so the products square coordinates: far from the
+/// origin (|x|·|t| ≫ 1) relative precision drops to about `|x|²|t|² · 2⁻⁵²`. Where
+/// coordinates are large, decompose the versor once with [`crate::Similarity::from_versor`]
+/// and apply the similarity instead.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub struct PointMap {
     /// Column `v` is the image of the basis vector `e(v+1)`.

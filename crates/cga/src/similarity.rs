@@ -49,9 +49,10 @@ impl Similarity {
     /// Decomposes a versor `M` (any non-zero multiple of a product of translators, rotors
     /// and dilators) into `T·R·D`.
     ///
-    /// `M` is normalised; then the image of the unit sphere at the origin gives the
-    /// translation (its centre) and the scale (its radius), and `R = T⁻¹ M D⁻¹` must be a
-    /// rotor. Anything else — a vector, a reflection, a transversion, a NaN — is an error
+    /// `M` is normalised; the image of a sphere about the origin gives the translation (its
+    /// centre, the image of the origin) and the scale (its radius, read from the image of
+    /// infinity, `M einf M̃ = s einf`); the rotor is M's Euclidean part. `T·R·D` rebuilt
+    /// from these must equal `M`. Every step stays exact for objects far from the origin. Anything else — a vector, a reflection, a transversion, a NaN — is an error
     /// that says what the multivector is instead.
     pub fn from_versor(m: &Multivector) -> Result<Self, CgaError> {
         if !m.is_finite() {
@@ -82,30 +83,51 @@ impl Similarity {
         }
         let m = m / n.sqrt();
 
-        let unit_sphere = Multivector::sphere(DVec3::ZERO, 1.0);
-        let image = m.sandwich_even_on_vector(&unit_sphere);
-        let (translation, scale) = image.sphere_center_radius()?;
-        if !(scale > 0.0 && scale.is_finite()) {
+        // T and R fix infinity and D(s) scales it: M einf M̃ = s einf. Reading the scale
+        // there avoids the cancellation of the sphere's S² = r², whose terms grow as |t|⁴
+        // and lose digits for objects far from the origin.
+        let infinity = m.sandwich_even_on_vector(&Multivector::einf());
+        let scale = 0.5 * (infinity[4] + infinity[5]);
+        let mut off_infinity = infinity;
+        off_infinity[4] -= scale;
+        off_infinity[5] -= scale;
+        if !(scale > 0.0 && scale.is_finite())
+            || off_infinity.max_abs() > TOLERANCE * scale.abs().max(1.0)
+        {
             return Err(CgaError::NotSimilarity(format!(
-                "{m} collapses space (scale {scale})"
+                "{m} does not keep infinity at infinity (it is not a translation, rotation and uniform scaling)"
             )));
         }
-        let t_inv = Multivector::translator(-translation);
-        let d_inv = Multivector::dilator(1.0 / scale)?;
-        let r = t_inv.geometric_even_even(&m).geometric_even_even(&d_inv);
+        // The centre of the image of a sphere about the origin — the image of the origin.
+        let translation = m
+            .sandwich_even_on_vector(&Multivector::eo())
+            .down()
+            .map_err(|_| CgaError::NotSimilarity(format!("{m} sends the origin to infinity")))?;
+        // The blades without e4 or e5 come only from T's scalar, R, and D's scalar: they are
+        // cosh(ln s / 2)·R. Reading R there needs no cancellation at all.
         let mut rotor_part = Multivector::ZERO;
         for i in [0, 6, 7, 10] {
-            rotor_part[i] = r[i];
+            rotor_part[i] = m[i];
         }
-        let rest = (r - rotor_part).max_abs();
-        if rest > TOLERANCE || (rotor_part.norm_squared() - 1.0).abs() > TOLERANCE {
+        let weight = rotor_part.norm_squared().sqrt();
+        if !(weight > 0.0 && weight.is_finite()) {
+            return Err(CgaError::NotSimilarity(format!("{m} has no rotation part")));
+        }
+        let rotation = rotor_part.rotor_to_quat();
+        // Whatever M was, it must be exactly T·R·D (up to sign): anything else bends lines.
+        let rebuilt = Multivector::translator(translation)
+            .geometric_even_even(&Multivector::rotor_from_quat(rotation))
+            .geometric_even_even(&Multivector::dilator(scale)?);
+        let tolerance = TOLERANCE * m.max_abs().max(1.0);
+        let matches = |sign: f64| (rebuilt * sign - m).max_abs() <= tolerance;
+        if !(matches(1.0) || matches(-1.0)) {
             return Err(CgaError::NotSimilarity(format!(
                 "{m} is not a translation, rotation and uniform scaling (it bends lines: a transversion or a general conformal map)"
             )));
         }
         Ok(Self {
             translation,
-            rotation: rotor_part.rotor_to_quat(),
+            rotation,
             scale,
         })
     }
@@ -151,5 +173,28 @@ mod tests {
         // A bivector that is not a rotor.
         let boost = Multivector::ONE + Multivector::blade_by_name("e14").unwrap();
         assert!(Similarity::from_versor(&boost).is_err());
+    }
+}
+
+#[cfg(test)]
+mod far_from_origin {
+    use super::*;
+
+    #[test]
+    fn scale_stays_exact_for_objects_far_from_the_origin() {
+        for distance in [1.0, 470.0, 1e4, 1e6] {
+            let s = Similarity {
+                translation: DVec3::new(distance, -0.5 * distance, 0.3 * distance),
+                rotation: DQuat::from_rotation_y(0.3),
+                scale: 1.0,
+            };
+            let d = Similarity::from_versor(&s.to_versor().unwrap()).unwrap();
+            assert!(
+                (d.scale - 1.0).abs() < 1e-12,
+                "at {distance}: scale {}",
+                d.scale
+            );
+            assert!((d.translation - s.translation).length() < 1e-12 * distance.max(1.0) * 10.0);
+        }
     }
 }

@@ -4,6 +4,7 @@
 use super::FormatError;
 use crate::geometry::Aabb;
 use crate::scene::{Object, Scene};
+use cga::Similarity;
 use glam::{DQuat, DVec3};
 use serde_json::{Map, Value};
 
@@ -220,7 +221,11 @@ fn fresh_document(scene: &Scene) -> Value {
         .map(|o| {
             let size = match &o.shape {
                 crate::scene::Shape::Box { size } => *size,
-                crate::scene::Shape::Points { .. } => o.world_aabb().size(),
+                // A mesh becomes its world box; a flat one gets a hair of thickness,
+                // since a box's size must be > 0.
+                crate::scene::Shape::Points { .. } => {
+                    o.world_aabb().size().max(DVec3::splat(MIN_SIZE))
+                }
             };
             // The pose is filled in by `update_pose`, like any moved object's.
             serde_json::json!({"name": o.name, "size": numbers(size.to_array())})
@@ -230,8 +235,23 @@ fn fresh_document(scene: &Scene) -> Value {
     Value::Object(root)
 }
 
+/// The smallest box extent written for a flat mesh, in metres.
+const MIN_SIZE: f64 = 1e-6;
+
+/// The pose a scene file records: a box's own pose, or for a mesh its world box's bottom
+/// centre, unrotated and unscaled.
+fn file_pose(object: &Object) -> Similarity {
+    match object.shape {
+        crate::scene::Shape::Box { .. } => object.similarity(),
+        crate::scene::Shape::Points { .. } => Similarity {
+            translation: object.world_aabb().bottom_center(),
+            ..Similarity::IDENTITY
+        },
+    }
+}
+
 fn update_pose(object: &Object, map: &mut Map<String, Value>) {
-    let pose = object.similarity();
+    let pose = file_pose(object);
     let unchanged = pose_of(map).is_some_and(|(p, q, s)| {
         (p - pose.translation).abs().max_element() < 1e-12
             && (q.dot(pose.rotation).abs() - 1.0).abs() < 1e-12

@@ -3,10 +3,12 @@
 //! | format | read | write |
 //! |---|---|---|
 //! | scene JSON (`.json`, SPEC §2) | [`json`] | [`json`], in the input's shape |
+//! | glTF 2.0 (`.gltf`, `.glb`) | [`gltf`]: mesh nodes as objects | [`gltf`]: only moved nodes change |
 //!
 //! [`SceneFile`] pairs a scene with the document it came from, so that writing changes
 //! only what the edit changed.
 
+pub mod gltf;
 pub mod json;
 pub mod pretty;
 
@@ -48,6 +50,10 @@ impl std::error::Error for FormatError {}
 pub enum Format {
     /// Shenlong's scene JSON (SPEC §2).
     SceneJson,
+    /// glTF 2.0 as JSON with external or embedded buffers.
+    Gltf,
+    /// glTF 2.0 binary.
+    Glb,
 }
 
 impl Format {
@@ -60,8 +66,10 @@ impl Format {
             .unwrap_or_default();
         match ext.as_str() {
             "json" => Ok(Format::SceneJson),
+            "gltf" => Ok(Format::Gltf),
+            "glb" => Ok(Format::Glb),
             other => Err(FormatError::new(format!(
-                "{}: unknown scene format '.{other}': use .json",
+                "{}: unknown scene format '.{other}': use .json, .gltf or .glb",
                 path.display()
             ))),
         }
@@ -75,6 +83,8 @@ pub enum Document {
     None,
     /// A scene JSON document.
     SceneJson(serde_json::Value),
+    /// A glTF document.
+    Gltf(Box<gltf::GltfDocument>),
 }
 
 /// A scene and the document it was read from.
@@ -105,6 +115,14 @@ impl SceneFile {
                     path: Some(path.to_path_buf()),
                 })
             }
+            Format::Gltf | Format::Glb => {
+                let (scene, document) = gltf::read(path).map_err(|e| e.in_file(path))?;
+                Ok(Self {
+                    scene,
+                    document: Document::Gltf(Box::new(document)),
+                    path: Some(path.to_path_buf()),
+                })
+            }
         }
     }
 
@@ -114,9 +132,29 @@ impl SceneFile {
             Format::SceneJson => {
                 let original = match &self.document {
                     Document::SceneJson(v) => Some(v),
-                    Document::None => None,
+                    Document::None | Document::Gltf(_) => None,
                 };
                 Ok(json::write(&self.scene, original).into_bytes())
+            }
+            Format::Gltf | Format::Glb => {
+                let Document::Gltf(document) = &self.document else {
+                    return Err(FormatError::new(
+                        "writing glTF needs a glTF source: Shenlong edits the nodes of an existing file",
+                    ));
+                };
+                let source_is_glb = *document.container() == gltf::Container::Glb;
+                if source_is_glb != (format == Format::Glb) {
+                    return Err(FormatError::new(format!(
+                        "the source is {}; write the edit to a {} file",
+                        if source_is_glb {
+                            "binary glTF"
+                        } else {
+                            "glTF JSON"
+                        },
+                        if source_is_glb { ".glb" } else { ".gltf" }
+                    )));
+                }
+                gltf::write(&self.scene, document)
             }
         }
     }
@@ -126,7 +164,65 @@ impl SceneFile {
     pub fn save(&self, path: &Path) -> Result<(), FormatError> {
         let format = Format::from_path(path)?;
         let bytes = self.to_bytes(format)?;
+        if let (Format::Gltf, Document::Gltf(document)) = (format, &self.document) {
+            copy_external_resources(document, path)?;
+        }
         crate::io::write_atomic(path, &bytes)
             .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
     }
+}
+
+/// A `.gltf` written to another folder needs its buffers and images beside it: they are
+/// copied (unchanged) where they are not there already.
+fn copy_external_resources(
+    document: &gltf::GltfDocument,
+    output: &Path,
+) -> Result<(), FormatError> {
+    let gltf::Container::Gltf { base_dir } = document.container() else {
+        return Ok(());
+    };
+    let out_dir = match output.parent() {
+        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
+        _ => PathBuf::from("."),
+    };
+    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
+        (Ok(a), Ok(b)) => a == b,
+        _ => false,
+    };
+    let base = if base_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        base_dir.as_path()
+    };
+    if same(base, &out_dir) {
+        return Ok(());
+    }
+    for uri in document.external_uris() {
+        let relative = PathBuf::from(gltf::percent_decode(&uri));
+        if relative.is_absolute()
+            || relative
+                .components()
+                .any(|c| matches!(c, std::path::Component::ParentDir))
+        {
+            continue;
+        }
+        let target = out_dir.join(&relative);
+        if target.exists() {
+            continue;
+        }
+        let bytes = std::fs::read(base.join(&relative)).map_err(|e| {
+            FormatError::new(format!(
+                "cannot read {}: {e}",
+                base.join(&relative).display()
+            ))
+        })?;
+        if let Some(parent) = target.parent() {
+            std::fs::create_dir_all(parent).map_err(|e| {
+                FormatError::new(format!("cannot create {}: {e}", parent.display()))
+            })?;
+        }
+        crate::io::write_atomic(&target, &bytes)
+            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", target.display())))?;
+    }
+    Ok(())
 }

@@ -9,7 +9,7 @@
 mod support;
 
 use crate::geometry::Aabb;
-use cga::{CgaError, Multivector, PointMap, Similarity};
+use cga::{CgaError, Multivector, Similarity};
 use glam::{DQuat, DVec3};
 
 pub use support::SUPPORT_GAP;
@@ -133,8 +133,10 @@ impl Object {
 
     /// The world axis-aligned bounding box: the box of the transformed local points.
     pub fn world_aabb(&self) -> Aabb {
-        let map = PointMap::new(&self.pose).expect("poses are even versors");
-        let transform = |p: DVec3| map.transform_point(p).unwrap_or(p);
+        // Points go through the decomposed similarity, which is exact at any distance from
+        // the origin (a conformal sandwich squares coordinates; see `cga::PointMap`).
+        let pose = self.similarity();
+        let transform = |p: DVec3| pose.transform_point(p);
         match &self.shape {
             Shape::Box { .. } => Aabb::from_points(self.local_points().into_iter().map(transform)),
             Shape::Points { points } => Aabb::from_points(points.iter().map(|&p| transform(p))),

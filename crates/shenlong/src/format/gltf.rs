@@ -1,0 +1,517 @@
+//! glTF 2.0 (`.gltf` with external or embedded buffers, and `.glb`).
+//!
+//! Reading: every node with a mesh in the default scene is an object, named by its node
+//! name (unnamed nodes: `node 12`, by index, which is stable). Its shape is its mesh's
+//! vertex positions in world space, so world bounds are exact, and its pivot is the bottom
+//! centre of its world box (node origins are arbitrary). A mesh node below another mesh
+//! node rests on it (it moves with its parent in the file, so it is carried).
+//!
+//! Writing: the parsed JSON is edited in place — only the moved nodes' transforms change,
+//! written as TRS or as a matrix as the node had them — and the GLB binary chunk is copied
+//! byte for byte. An unchanged scene is written back as the original bytes.
+
+use super::FormatError;
+use crate::scene::{Object, Pivot, Scene, Shape};
+use base64::Engine;
+use cga::Similarity;
+use glam::{DMat4, DQuat, DVec3};
+use serde_json::Value;
+use std::collections::HashSet;
+use std::path::{Path, PathBuf};
+
+/// How the file was stored.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Container {
+    /// A binary `.glb`.
+    Glb,
+    /// A `.gltf` JSON file; external resources are relative to `base_dir`.
+    Gltf {
+        /// The folder the file was in.
+        base_dir: PathBuf,
+    },
+}
+
+/// What glTF writing needs to know about the source file.
+#[derive(Clone, Debug)]
+pub struct GltfDocument {
+    json: Value,
+    bin: Option<Vec<u8>>,
+    container: Container,
+    original: Vec<u8>,
+    /// Per node: parent node, original local and world matrices.
+    nodes: Vec<NodeInfo>,
+    /// Per object (scene order): its node.
+    object_nodes: Vec<usize>,
+    /// Nodes targeted by animations: these must stay TRS.
+    animated: HashSet<usize>,
+}
+
+#[derive(Clone, Debug)]
+struct NodeInfo {
+    parent: Option<usize>,
+    local: DMat4,
+    world: DMat4,
+    in_scene: bool,
+}
+
+impl GltfDocument {
+    /// How the source was stored.
+    pub fn container(&self) -> &Container {
+        &self.container
+    }
+
+    /// The node index of each object, in scene order.
+    pub fn object_nodes(&self) -> &[usize] {
+        &self.object_nodes
+    }
+
+    /// The relative URIs of external resources (buffers, images) the document uses.
+    pub fn external_uris(&self) -> Vec<String> {
+        let mut uris = Vec::new();
+        for key in ["buffers", "images"] {
+            for item in self
+                .json
+                .get(key)
+                .and_then(Value::as_array)
+                .into_iter()
+                .flatten()
+            {
+                if let Some(uri) = item.get("uri").and_then(Value::as_str) {
+                    if !uri.starts_with("data:") && !uri.contains("://") {
+                        uris.push(uri.to_string());
+                    }
+                }
+            }
+        }
+        uris
+    }
+}
+
+/// Reads a `.gltf` or `.glb` file.
+pub fn read(path: &Path) -> Result<(Scene, GltfDocument), FormatError> {
+    let bytes = std::fs::read(path)
+        .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
+    let base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
+    read_bytes(bytes, &base_dir, stem)
+}
+
+/// Reads glTF from bytes; `base_dir` resolves external resources.
+pub fn read_bytes(
+    bytes: Vec<u8>,
+    base_dir: &Path,
+    name: &str,
+) -> Result<(Scene, GltfDocument), FormatError> {
+    let is_glb = bytes.starts_with(b"glTF");
+    let (json_bytes, bin) = if is_glb {
+        let glb = ::gltf::Glb::from_slice(&bytes)
+            .map_err(|e| FormatError::new(format!("invalid GLB container: {e}")))?;
+        (glb.json.into_owned(), glb.bin.map(|b| b.into_owned()))
+    } else {
+        (bytes.clone(), None)
+    };
+    let json: Value = serde_json::from_slice(&json_bytes).map_err(|e| {
+        FormatError::new(format!(
+            "invalid glTF JSON at line {}, column {}: {e}",
+            e.line(),
+            e.column()
+        ))
+    })?;
+    let gltf = ::gltf::Gltf::from_slice_without_validation(&bytes)
+        .map_err(|e| FormatError::new(format!("invalid glTF: {e}")))?;
+    let document = &gltf.document;
+    let buffers = load_buffers(document, bin.as_deref(), base_dir)?;
+
+    let count = document.nodes().count();
+    let json_nodes = json.get("nodes").and_then(Value::as_array);
+    let mut nodes: Vec<NodeInfo> = (0..count)
+        .map(|i| NodeInfo {
+            parent: None,
+            local: json_nodes
+                .and_then(|n| n.get(i))
+                .map_or(DMat4::IDENTITY, local_from_json),
+            world: DMat4::IDENTITY,
+            in_scene: false,
+        })
+        .collect();
+    for node in document.nodes() {
+        for child in node.children() {
+            nodes[child.index()].parent = Some(node.index());
+        }
+    }
+    let roots: Vec<usize> = match document
+        .default_scene()
+        .or_else(|| document.scenes().next())
+    {
+        Some(scene) => scene.nodes().map(|n| n.index()).collect(),
+        None => (0..count).filter(|&i| nodes[i].parent.is_none()).collect(),
+    };
+    // Depth-first from the roots, computing world matrices; a cycle would be invalid glTF,
+    // so nodes are visited once.
+    let mut order = Vec::new();
+    let mut stack: Vec<(usize, DMat4)> =
+        roots.iter().rev().map(|&r| (r, DMat4::IDENTITY)).collect();
+    while let Some((index, parent_world)) = stack.pop() {
+        if nodes[index].in_scene {
+            continue;
+        }
+        let world = parent_world * nodes[index].local;
+        nodes[index].world = world;
+        nodes[index].in_scene = true;
+        order.push(index);
+        let node = document.nodes().nth(index).expect("index in range");
+        for child in node.children().collect::<Vec<_>>().into_iter().rev() {
+            stack.push((child.index(), world));
+        }
+    }
+
+    let mut scene = Scene::new(name);
+    let mut object_nodes = Vec::new();
+    let mut names = HashSet::new();
+    for &index in &order {
+        let node = document.nodes().nth(index).expect("index in range");
+        let Some(mesh) = node.mesh() else { continue };
+        let world = nodes[index].world;
+        let mut points = Vec::new();
+        let mut seen = HashSet::new();
+        for primitive in mesh.primitives() {
+            let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
+            if let Some(positions) = reader.read_positions() {
+                for p in positions {
+                    if seen.insert(p.map(f32::to_bits)) {
+                        let local = DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64);
+                        points.push(world.transform_point3(local));
+                    }
+                }
+            }
+        }
+        if points.is_empty() || points.iter().any(|p| !p.is_finite()) {
+            continue;
+        }
+        let base = match node.name() {
+            Some(n) if !n.trim().is_empty() => n.trim().to_string(),
+            _ => format!("node {index}"),
+        };
+        let name = if names.contains(&base.to_lowercase()) {
+            format!("{base} (node {index})")
+        } else {
+            base
+        };
+        names.insert(name.to_lowercase());
+        let object = Object::new(
+            name,
+            Shape::Points { points },
+            Similarity::IDENTITY,
+            Pivot::BottomCenter,
+        )
+        .expect("the identity pose is valid");
+        scene.objects.push(object);
+        object_nodes.push(index);
+    }
+    // Mesh nodes nested under a mesh node rest on it.
+    for (i, &node) in object_nodes.iter().enumerate() {
+        let mut ancestor = nodes[node].parent;
+        while let Some(a) = ancestor {
+            if let Some(j) = object_nodes.iter().position(|&n| n == a) {
+                scene.objects[i].support = Some(j);
+                scene.objects[i].support_from_file = true;
+                break;
+            }
+            ancestor = nodes[a].parent;
+        }
+    }
+    scene.detect_supports();
+
+    let animated = document
+        .animations()
+        .flat_map(|a| {
+            a.channels()
+                .map(|c| c.target().node().index())
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let container = if is_glb {
+        Container::Glb
+    } else {
+        Container::Gltf {
+            base_dir: base_dir.to_path_buf(),
+        }
+    };
+    Ok((
+        scene,
+        GltfDocument {
+            json,
+            bin,
+            container,
+            original: bytes,
+            nodes,
+            object_nodes,
+            animated,
+        },
+    ))
+}
+
+/// A node's local transform from its JSON, in f64: `matrix` (column-major) or
+/// translation · rotation · scale.
+fn local_from_json(node: &Value) -> DMat4 {
+    let numbers = |key: &str| -> Option<Vec<f64>> {
+        node.get(key)?
+            .as_array()?
+            .iter()
+            .map(Value::as_f64)
+            .collect()
+    };
+    if let Some(m) = numbers("matrix").filter(|m| m.len() == 16) {
+        return DMat4::from_cols_slice(&m);
+    }
+    let t = numbers("translation")
+        .filter(|v| v.len() == 3)
+        .map_or(DVec3::ZERO, |v| DVec3::from_slice(&v));
+    let r = numbers("rotation")
+        .filter(|v| v.len() == 4)
+        .map_or(DQuat::IDENTITY, |v| DQuat::from_slice(&v).normalize());
+    let s = numbers("scale")
+        .filter(|v| v.len() == 3)
+        .map_or(DVec3::ONE, |v| DVec3::from_slice(&v));
+    DMat4::from_scale_rotation_translation(s, r, t)
+}
+
+fn load_buffers(
+    document: &::gltf::Document,
+    blob: Option<&[u8]>,
+    base_dir: &Path,
+) -> Result<Vec<Vec<u8>>, FormatError> {
+    let mut buffers = Vec::new();
+    for buffer in document.buffers() {
+        let mut data = match buffer.source() {
+            ::gltf::buffer::Source::Bin => blob
+                .ok_or_else(|| {
+                    FormatError::new(format!(
+                        "buffers[{}] refers to a GLB binary chunk that is missing",
+                        buffer.index()
+                    ))
+                })?
+                .to_vec(),
+            ::gltf::buffer::Source::Uri(uri) => {
+                if let Some(rest) = uri.strip_prefix("data:") {
+                    let encoded = rest.split_once(";base64,").map(|(_, d)| d).ok_or_else(|| {
+                        FormatError::new(format!(
+                            "buffers[{}]: only base64 data URIs are supported",
+                            buffer.index()
+                        ))
+                    })?;
+                    base64::engine::general_purpose::STANDARD
+                        .decode(encoded)
+                        .map_err(|e| {
+                            FormatError::new(format!(
+                                "buffers[{}]: invalid base64 data: {e}",
+                                buffer.index()
+                            ))
+                        })?
+                } else {
+                    let file = base_dir.join(percent_decode(uri));
+                    std::fs::read(&file).map_err(|e| {
+                        FormatError::new(format!(
+                            "buffers[{}]: cannot read {}: {e}",
+                            buffer.index(),
+                            file.display()
+                        ))
+                    })?
+                }
+            }
+        };
+        if data.len() < buffer.length() {
+            return Err(FormatError::new(format!(
+                "buffers[{}] has {} bytes; the file says {}",
+                buffer.index(),
+                data.len(),
+                buffer.length()
+            )));
+        }
+        // The GLB chunk may be padded past the buffer's length.
+        data.truncate(buffer.length());
+        buffers.push(data);
+    }
+    Ok(buffers)
+}
+
+/// Decodes `%XX` escapes in a relative URI.
+pub(crate) fn percent_decode(uri: &str) -> String {
+    let bytes = uri.as_bytes();
+    let mut out = Vec::with_capacity(bytes.len());
+    let mut i = 0;
+    while i < bytes.len() {
+        if bytes[i] == b'%' && i + 2 < bytes.len() {
+            if let Ok(b) = u8::from_str_radix(&uri[i + 1..i + 3], 16) {
+                out.push(b);
+                i += 3;
+                continue;
+            }
+        }
+        out.push(bytes[i]);
+        i += 1;
+    }
+    String::from_utf8_lossy(&out).into_owned()
+}
+
+/// The bytes of the edited file, in the source's container. An unchanged scene gives the
+/// original bytes.
+pub fn write(scene: &Scene, document: &GltfDocument) -> Result<Vec<u8>, FormatError> {
+    if scene.objects.len() != document.object_nodes.len() {
+        return Err(FormatError::new(
+            "the scene's objects no longer match the glTF nodes",
+        ));
+    }
+    // New world matrices: each object node moves by its pose; other nodes keep their
+    // local transform and so follow their parent.
+    let mut deltas = vec![None; document.nodes.len()];
+    for (object, &node) in scene.objects.iter().zip(&document.object_nodes) {
+        let s = object.similarity();
+        let moved = s.translation.length() > 0.0
+            || !s.rotation.abs_diff_eq(DQuat::IDENTITY, 0.0)
+            || s.scale != 1.0;
+        if moved {
+            deltas[node] = Some(DMat4::from_scale_rotation_translation(
+                DVec3::splat(s.scale),
+                s.rotation,
+                s.translation,
+            ));
+        }
+    }
+    if deltas.iter().all(Option::is_none) {
+        return Ok(document.original.clone());
+    }
+    let mut json = document.json.clone();
+    let new_world = |index: usize, memo: &mut Vec<Option<DMat4>>| -> DMat4 {
+        fn world(
+            index: usize,
+            memo: &mut Vec<Option<DMat4>>,
+            nodes: &[NodeInfo],
+            deltas: &[Option<DMat4>],
+            objects: &[usize],
+        ) -> DMat4 {
+            if let Some(m) = memo[index] {
+                return m;
+            }
+            let m = if objects.contains(&index) {
+                deltas[index].map_or(nodes[index].world, |d| d * nodes[index].world)
+            } else {
+                let parent = nodes[index]
+                    .parent
+                    .map_or(DMat4::IDENTITY, |p| world(p, memo, nodes, deltas, objects));
+                parent * nodes[index].local
+            };
+            memo[index] = Some(m);
+            m
+        }
+        world(
+            index,
+            memo,
+            &document.nodes,
+            &deltas,
+            &document.object_nodes,
+        )
+    };
+    let mut memo = vec![None; document.nodes.len()];
+    for &node in &document.object_nodes {
+        let info = &document.nodes[node];
+        let world = new_world(node, &mut memo);
+        let parent_world = info
+            .parent
+            .map_or(DMat4::IDENTITY, |p| new_world(p, &mut memo));
+        let local = parent_world.inverse() * world;
+        if local.abs_diff_eq(
+            info.local,
+            1e-12
+                * (1.0
+                    + info
+                        .local
+                        .abs()
+                        .to_cols_array()
+                        .iter()
+                        .cloned()
+                        .fold(0.0, f64::max)),
+        ) {
+            continue;
+        }
+        let target = json
+            .get_mut("nodes")
+            .and_then(|n| n.get_mut(node))
+            .and_then(Value::as_object_mut)
+            .ok_or_else(|| FormatError::new(format!("nodes[{node}] is missing")))?;
+        write_local(target, node, &local, document.animated.contains(&node))?;
+    }
+    match &document.container {
+        Container::Glb => Ok(glb_bytes(&json, document.bin.as_deref())),
+        Container::Gltf { .. } => Ok(super::pretty::to_string(&json).into_bytes()),
+    }
+}
+
+/// Writes a node's new local transform, as a matrix if it had one, else as TRS (falling
+/// back to a matrix when the transform has shear, which TRS cannot express).
+fn write_local(
+    node: &mut serde_json::Map<String, Value>,
+    index: usize,
+    local: &DMat4,
+    animated: bool,
+) -> Result<(), FormatError> {
+    let numbers = |values: &[f64]| Value::Array(values.iter().map(|&x| json_number(x)).collect());
+    let (scale, rotation, translation) = local.to_scale_rotation_translation();
+    let recomposed = DMat4::from_scale_rotation_translation(scale, rotation, translation);
+    let is_trs = recomposed.abs_diff_eq(
+        *local,
+        1e-9 * (1.0
+            + local
+                .abs()
+                .to_cols_array()
+                .iter()
+                .cloned()
+                .fold(0.0, f64::max)),
+    );
+    if node.contains_key("matrix") || !is_trs {
+        if animated {
+            return Err(FormatError::new(format!(
+                "nodes[{index}] is animated, so its transform must stay TRS, but the edit gives it a shear"
+            )));
+        }
+        for key in ["translation", "rotation", "scale"] {
+            node.remove(key);
+        }
+        node.insert("matrix".into(), numbers(&local.to_cols_array()));
+    } else {
+        node.insert("translation".into(), numbers(&translation.to_array()));
+        node.insert("rotation".into(), numbers(&rotation.normalize().to_array()));
+        node.insert("scale".into(), numbers(&scale.to_array()));
+    }
+    Ok(())
+}
+
+fn json_number(x: f64) -> Value {
+    let x = if x == 0.0 { 0.0 } else { x };
+    serde_json::Number::from_f64(x).map_or(Value::Null, Value::Number)
+}
+
+/// A GLB container: header, JSON chunk padded with spaces, binary chunk as it was.
+fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Vec<u8> {
+    let mut json_chunk = serde_json::to_vec(json).expect("JSON values serialise");
+    while json_chunk.len() % 4 != 0 {
+        json_chunk.push(b' ');
+    }
+    let bin_len = bin.map_or(0, |b| 8 + b.len().next_multiple_of(4));
+    let total = 12 + 8 + json_chunk.len() + bin_len;
+    let mut out = Vec::with_capacity(total);
+    out.extend_from_slice(b"glTF");
+    out.extend_from_slice(&2u32.to_le_bytes());
+    out.extend_from_slice(&(total as u32).to_le_bytes());
+    out.extend_from_slice(&(json_chunk.len() as u32).to_le_bytes());
+    out.extend_from_slice(b"JSON");
+    out.extend_from_slice(&json_chunk);
+    if let Some(bin) = bin {
+        let padded = bin.len().next_multiple_of(4);
+        out.extend_from_slice(&(padded as u32).to_le_bytes());
+        out.extend_from_slice(b"BIN\0");
+        out.extend_from_slice(bin);
+        out.resize(out.len() + (padded - bin.len()), 0);
+    }
+    out
+}

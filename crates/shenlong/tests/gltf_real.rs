@@ -1,0 +1,350 @@
+//! glTF reading and writing on real files made by others (../shared/data/gltf, see its
+//! SOURCES.md). Each test skips, with a message, when the data is absent. Written files
+//! are checked with the Khronos glTF validator when tools/gltf-validator is installed
+//! (`npm ci --prefix tools/gltf-validator`; CI does this).
+
+use cga::{Multivector, Similarity};
+use glam::{DQuat, DVec3};
+use shenlong::format::{Document, SceneFile};
+use std::path::{Path, PathBuf};
+use std::process::Command;
+
+fn data_dir() -> Option<PathBuf> {
+    let dir = std::env::var_os("SHENLONG_SHARED_DATA")
+        .map(PathBuf::from)
+        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data"));
+    let dir = dir.join("gltf");
+    if dir.is_dir() {
+        Some(dir)
+    } else {
+        eprintln!(
+            "skipping: {} not found (the shared test data is absent)",
+            dir.display()
+        );
+        None
+    }
+}
+
+fn validate(path: &Path) {
+    let tool = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../tools/gltf-validator");
+    if !tool.join("node_modules/gltf-validator").is_dir() {
+        eprintln!("skipping the Khronos validator: run `npm ci --prefix tools/gltf-validator`");
+        return;
+    }
+    let output = Command::new("node")
+        .arg(tool.join("validate.mjs"))
+        .arg(path)
+        .output()
+        .expect("node runs");
+    assert!(
+        output.status.success(),
+        "{} fails validation: {}",
+        path.display(),
+        String::from_utf8_lossy(&output.stdout)
+    );
+}
+
+fn close(a: DVec3, b: DVec3, tol: f64) -> bool {
+    (a - b).abs().max_element() <= tol
+}
+
+/// The JSON chunk and binary chunk of a GLB.
+fn glb_chunks(bytes: &[u8]) -> (serde_json::Value, Vec<u8>) {
+    let json_len = u32::from_le_bytes(bytes[12..16].try_into().unwrap()) as usize;
+    let json = serde_json::from_slice(&bytes[20..20 + json_len]).unwrap();
+    let rest = &bytes[20 + json_len..];
+    let bin = if rest.len() >= 8 {
+        rest[8..].to_vec()
+    } else {
+        Vec::new()
+    };
+    (json, bin)
+}
+
+#[test]
+fn cornell_box_edit_changes_only_the_moved_node() {
+    let Some(dir) = data_dir() else { return };
+    let input = dir.join("CornellBox.glb");
+    let mut file = SceneFile::load(&input).unwrap();
+    let names: Vec<&str> = file.scene.objects.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["Light", "large.box", "small.box", "cornell.box"]);
+    let small = file.scene.find("small.box").unwrap();
+    let before = file.scene.world_aabbs();
+    let t = DVec3::new(50.0, 0.0, -20.0);
+    file.scene.apply(small, &Multivector::translator(t), true);
+
+    let out_dir = tempfile::tempdir().unwrap();
+    let output = out_dir.path().join("edited.glb");
+    file.save(&output).unwrap();
+    validate(&output);
+
+    let original = std::fs::read(&input).unwrap();
+    let written = std::fs::read(&output).unwrap();
+    let (json_a, bin_a) = glb_chunks(&original);
+    let (json_b, bin_b) = glb_chunks(&written);
+    assert_eq!(bin_a, bin_b, "the binary chunk is copied byte for byte");
+    let node_b = &json_b["nodes"][2];
+    assert_eq!(node_b["name"], "small.box");
+    for (i, (a, b)) in json_a["nodes"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .zip(json_b["nodes"].as_array().unwrap())
+        .enumerate()
+    {
+        if i != 2 {
+            assert_eq!(a, b, "node {i} untouched");
+        }
+    }
+    for key in [
+        "meshes",
+        "materials",
+        "accessors",
+        "bufferViews",
+        "buffers",
+        "extensionsUsed",
+        "scenes",
+        "asset",
+    ] {
+        assert_eq!(json_a[key], json_b[key], "{key} untouched");
+    }
+    let reread = SceneFile::load(&output).unwrap();
+    let after = reread.scene.world_aabbs();
+    for (i, (a, b)) in before.iter().zip(&after).enumerate() {
+        let expected = if i == small { t } else { DVec3::ZERO };
+        assert!(
+            close(b.min, a.min + expected, 1e-3),
+            "object {i}: {:?} vs {:?}",
+            b.min,
+            a.min
+        );
+        assert!(close(b.max, a.max + expected, 1e-3));
+    }
+}
+
+#[test]
+fn unchanged_scene_is_written_back_byte_for_byte() {
+    let Some(dir) = data_dir() else { return };
+    for name in ["CornellBox.glb", "Cubes.glb", "2CylinderEngine.glb"] {
+        let input = dir.join(name);
+        let file = SceneFile::load(&input).unwrap();
+        let out = tempfile::tempdir().unwrap();
+        let output = out.path().join(name);
+        file.save(&output).unwrap();
+        assert_eq!(
+            std::fs::read(&input).unwrap(),
+            std::fs::read(&output).unwrap(),
+            "{name}"
+        );
+    }
+}
+
+#[test]
+fn engine_unnamed_nested_matrix_nodes_and_instancing() {
+    let Some(dir) = data_dir() else { return };
+    let input = dir.join("2CylinderEngine.glb");
+    let mut file = SceneFile::load(&input).unwrap();
+    let scene = &file.scene;
+    assert!(
+        scene.objects.len() > 29,
+        "instanced meshes give one object per node: {}",
+        scene.objects.len()
+    );
+    assert!(
+        scene.objects.iter().all(|o| o.name.starts_with("node ")),
+        "unnamed nodes get generated names"
+    );
+    let nested = scene.objects.iter().filter(|o| o.support_from_file).count();
+    let Document::Gltf(doc) = &file.document else {
+        panic!()
+    };
+    let nodes = doc.object_nodes().to_vec();
+    // Edit an object whose node has a parent (a nested transform given as a matrix).
+    let json: serde_json::Value = glb_chunks(&std::fs::read(&input).unwrap()).0;
+    let (index, &node) = nodes
+        .iter()
+        .enumerate()
+        .find(|(_, &n)| {
+            json["nodes"][n].get("matrix").is_some()
+                && (0..82).any(|p| {
+                    json["nodes"][p]["children"]
+                        .as_array()
+                        .is_some_and(|c| c.iter().any(|x| x == n))
+                })
+        })
+        .expect("a nested matrix node with a mesh");
+    eprintln!(
+        "editing {} (node {node}); {nested} objects nested under other mesh nodes",
+        scene.objects[index].name
+    );
+    let before = file.scene.objects[index].world_aabb();
+    let motion = Similarity {
+        translation: DVec3::new(10.0, 20.0, 0.0),
+        rotation: DQuat::from_rotation_y(0.5),
+        scale: 1.0,
+    };
+    file.scene.apply(index, &motion.to_versor().unwrap(), false);
+    let expected = file.scene.objects[index].world_aabb();
+    assert!(!close(expected.min, before.min, 1.0));
+
+    let out = tempfile::tempdir().unwrap();
+    let output = out.path().join("engine.glb");
+    file.save(&output).unwrap();
+    validate(&output);
+    let (json_b, _) = glb_chunks(&std::fs::read(&output).unwrap());
+    assert!(
+        json_b["nodes"][node].get("matrix").is_some(),
+        "a matrix node stays a matrix node"
+    );
+    assert!(json_b["nodes"][node].get("translation").is_none());
+    let reread = SceneFile::load(&output).unwrap();
+    let got = reread.scene.objects[index].world_aabb();
+    assert!(
+        close(got.min, expected.min, 1e-2) && close(got.max, expected.max, 1e-2),
+        "{got:?} vs {expected:?}"
+    );
+    // Everything else stays where it was.
+    for (i, o) in reread.scene.objects.iter().enumerate() {
+        if i != index && !file.scene.carried_by(index).contains(&i) {
+            let a = file.scene.objects[i].world_aabb();
+            assert!(close(o.world_aabb().min, a.min, 1e-2), "{}", o.name);
+        }
+    }
+}
+
+#[test]
+fn cubes_skip_lights_and_probes() {
+    let Some(dir) = data_dir() else { return };
+    let file = SceneFile::load(&dir.join("Cubes.glb")).unwrap();
+    let names: Vec<&str> = file.scene.objects.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["Cube.001", "Cube.002", "Cube.003"]);
+}
+
+#[test]
+fn objects_resting_on_a_zero_thickness_board() {
+    let Some(dir) = data_dir() else { return };
+    let mut file = SceneFile::load(&dir.join("DepthOfFieldExample.glb")).unwrap();
+    let scene = &file.scene;
+    assert_eq!(scene.objects.len(), 16);
+    let board = scene.find("CircuitBoard").unwrap();
+    let b = scene.objects[board].world_aabb();
+    assert!(
+        (b.max.y - b.min.y).abs() < 1e-6,
+        "the board has no thickness"
+    );
+    let resting = scene.carried_by(board);
+    assert!(resting.len() >= 5, "objects rest on the board: {resting:?}");
+    // Lifting the board lifts what rests on it.
+    let sphere = resting[0];
+    let before = scene.objects[sphere].world_aabb();
+    file.scene
+        .apply(board, &Multivector::translator(DVec3::Y), true);
+    assert!(close(
+        file.scene.objects[sphere].world_aabb().min,
+        before.min + DVec3::Y,
+        1e-9
+    ));
+    let out = tempfile::tempdir().unwrap();
+    let output = out.path().join("dof.glb");
+    file.save(&output).unwrap();
+    validate(&output);
+}
+
+#[test]
+fn gltf_with_external_buffers_and_textures_written_elsewhere() {
+    let Some(dir) = data_dir() else { return };
+    for (folder, name) in [
+        ("MixedLightingExample", "MixedLightingExample.gltf"),
+        ("TonemappingTest", "TonemappingTest.gltf"),
+    ] {
+        let input = dir.join(folder).join(name);
+        let mut file = SceneFile::load(&input).unwrap();
+        assert!(!file.scene.objects.is_empty());
+        let before = file.scene.world_aabbs();
+        let r = Multivector::rotor(
+            std::f64::consts::FRAC_PI_2,
+            &Multivector::e3(),
+            &Multivector::e1(),
+        )
+        .unwrap();
+        file.scene.apply(0, &r, false);
+        let expected = file.scene.objects[0].world_aabb();
+        let out = tempfile::tempdir().unwrap();
+        let output = out.path().join(name);
+        file.save(&output).unwrap();
+        validate(&output);
+        let reread = SceneFile::load(&output).unwrap();
+        let got = reread.scene.objects[0].world_aabb();
+        assert!(
+            close(got.min, expected.min, 1e-4),
+            "{name}: {got:?} vs {expected:?}"
+        );
+        for (i, b) in before.iter().enumerate().skip(1) {
+            if !file.scene.carried_by(0).contains(&i) {
+                assert!(
+                    close(reread.scene.objects[i].world_aabb().min, b.min, 1e-4),
+                    "{name}: object {i}"
+                );
+            }
+        }
+        // The buffers and textures came along, unchanged.
+        let uris: Vec<String> = match &reread.document {
+            Document::Gltf(d) => d.external_uris(),
+            _ => unreachable!(),
+        };
+        assert!(!uris.is_empty());
+        for uri in uris {
+            assert_eq!(
+                std::fs::read(dir.join(folder).join(&uri)).unwrap(),
+                std::fs::read(out.path().join(&uri)).unwrap(),
+                "{uri}"
+            );
+        }
+    }
+}
+
+#[test]
+fn mixed_lighting_chair_parts_and_extensions_survive() {
+    let Some(dir) = data_dir() else { return };
+    let input = dir.join("MixedLightingExample/MixedLightingExample.gltf");
+    let mut file = SceneFile::load(&input).unwrap();
+    let names: Vec<String> = file.scene.objects.iter().map(|o| o.name.clone()).collect();
+    eprintln!("objects: {names:?}");
+    let original: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&input).unwrap()).unwrap();
+    file.scene
+        .apply(0, &Multivector::translator(DVec3::X), false);
+    let out = tempfile::tempdir().unwrap();
+    let output = out.path().join("m.gltf");
+    file.save(&output).unwrap();
+    let written: serde_json::Value =
+        serde_json::from_slice(&std::fs::read(&output).unwrap()).unwrap();
+    for key in [
+        "extensions",
+        "extensionsUsed",
+        "materials",
+        "textures",
+        "images",
+        "samplers",
+        "meshes",
+        "accessors",
+    ] {
+        assert_eq!(original.get(key), written.get(key), "{key} untouched");
+    }
+}
+
+#[test]
+fn gltf_to_scene_json_gives_boxes_at_the_bottom_centre() {
+    let Some(dir) = data_dir() else { return };
+    let file = SceneFile::load(&dir.join("CornellBox.glb")).unwrap();
+    let bytes = file.to_bytes(shenlong::format::Format::SceneJson).unwrap();
+    let json = shenlong::format::json::read(std::str::from_utf8(&bytes).unwrap(), "x").unwrap();
+    for (a, b) in file.scene.objects.iter().zip(&json.scene.objects) {
+        let (wa, wb) = (a.world_aabb(), b.world_aabb());
+        assert!(
+            close(wa.min, wb.min, 1e-6) && close(wa.max, wb.max, 1e-6),
+            "{}: {wa:?} vs {wb:?}",
+            a.name
+        );
+    }
+}
