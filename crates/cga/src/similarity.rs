@@ -49,10 +49,12 @@ impl Similarity {
     /// Decomposes a versor `M` (any non-zero multiple of a product of translators, rotors
     /// and dilators) into `T·R·D`.
     ///
-    /// `M` is normalised; the image of a sphere about the origin gives the translation (its
-    /// centre, the image of the origin) and the scale (its radius, read from the image of
-    /// infinity, `M einf M̃ = s einf`); the rotor is M's Euclidean part. `T·R·D` rebuilt
-    /// from these must equal `M`. Every step stays exact for objects far from the origin. Anything else — a vector, a reflection, a transversion, a NaN — is an error
+    /// `M` is normalised; the rotor is M's Euclidean part (`cosh(ln s / 2)·R`); the scale —
+    /// the radius of the image of the unit sphere — comes from the e45-carrying part
+    /// (`−sinh(ln s / 2)·R e45`); the translation — the image's centre — is read from
+    /// `T = M D(s)⁻¹ R̃ = 1 − ½ t einf`. `T·R·D` rebuilt from these must equal `M`. No
+    /// step cancels large terms, so the result stays exact far from the origin, and exact
+    /// inputs give exact outputs. Anything else — a vector, a reflection, a transversion, a NaN — is an error
     /// that says what the multivector is instead.
     pub fn from_versor(m: &Multivector) -> Result<Self, CgaError> {
         if !m.is_finite() {
@@ -83,26 +85,6 @@ impl Similarity {
         }
         let m = m / n.sqrt();
 
-        // T and R fix infinity and D(s) scales it: M einf M̃ = s einf. Reading the scale
-        // there avoids the cancellation of the sphere's S² = r², whose terms grow as |t|⁴
-        // and lose digits for objects far from the origin.
-        let infinity = m.sandwich_even_on_vector(&Multivector::einf());
-        let scale = 0.5 * (infinity[4] + infinity[5]);
-        let mut off_infinity = infinity;
-        off_infinity[4] -= scale;
-        off_infinity[5] -= scale;
-        if !(scale > 0.0 && scale.is_finite())
-            || off_infinity.max_abs() > TOLERANCE * scale.abs().max(1.0)
-        {
-            return Err(CgaError::NotSimilarity(format!(
-                "{m} does not keep infinity at infinity (it is not a translation, rotation and uniform scaling)"
-            )));
-        }
-        // The centre of the image of a sphere about the origin — the image of the origin.
-        let translation = m
-            .sandwich_even_on_vector(&Multivector::eo())
-            .down()
-            .map_err(|_| CgaError::NotSimilarity(format!("{m} sends the origin to infinity")))?;
         // The blades without e4 or e5 come only from T's scalar, R, and D's scalar: they are
         // cosh(ln s / 2)·R. Reading R there needs no cancellation at all.
         let mut rotor_part = Multivector::ZERO;
@@ -114,6 +96,32 @@ impl Similarity {
             return Err(CgaError::NotSimilarity(format!("{m} has no rotation part")));
         }
         let rotation = rotor_part.rotor_to_quat();
+        // D(s) = cosh a − sinh a e45 with a = ln(s)/2, so the e45-carrying blades of M are
+        // (R·e45)·(−sinh a): their coefficients are −tanh a times the Euclidean ones, and T
+        // never reaches them. This gives s exactly (s = 1 when M has no dilation).
+        let euclidean = [m[0], m[6], m[7], m[10]];
+        let dilated = [m[15], m[28], m[29], m[30]];
+        let dot: f64 = euclidean.iter().zip(&dilated).map(|(a, b)| a * b).sum();
+        let tanh_a = -dot / (weight * weight);
+        let scale = (1.0 + tanh_a) / (1.0 - tanh_a);
+        if !(scale > 0.0 && scale.is_finite()) {
+            return Err(CgaError::NotSimilarity(format!(
+                "{m} has no finite positive scale"
+            )));
+        }
+        // With R and s known, T = M D(s)⁻¹ R̃ = 1 − ½ t einf, whose e_i4 coefficients are
+        // −½ tᵢ: the translation, read without dividing by a weight.
+        // (R with the sign it has in M, not the canonical w ≥ 0 one, so that T comes out
+        // with scalar part +1 whatever sign M was given.)
+        let translator = m
+            .geometric_even_even(&Multivector::dilator(1.0 / scale)?)
+            .geometric_even_even(&(rotor_part / weight).reverse());
+        // (+ 0.0 turns −0.0 into 0.0, so outputs never show "-0".)
+        let translation = DVec3::new(
+            -2.0 * translator[8],
+            -2.0 * translator[11],
+            -2.0 * translator[13],
+        ) + DVec3::ZERO;
         // Whatever M was, it must be exactly T·R·D (up to sign): anything else bends lines.
         let rebuilt = Multivector::translator(translation)
             .geometric_even_even(&Multivector::rotor_from_quat(rotation))

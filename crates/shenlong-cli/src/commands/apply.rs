@@ -11,7 +11,8 @@ use std::path::PathBuf;
 /// unless --no-carry. The output has the input's format and shape.
 #[derive(clap::Args)]
 #[command(after_help = "Example:
-  shenlong apply examples/workshop.json --object 'tool table' --expr 'T(0.5 * e1)' -o moved.json")]
+  shenlong apply examples/workshop.json --object 'tool table' --expr 'T(0.5 * e1)' -o moved.json
+  shenlong apply examples/workshop.json --object chair --expr 'R(pi/2, e3, e1)' -o turned.json --tdw turn.tdw.json")]
 pub struct Args {
     /// The scene file (or example:NAME).
     scene: String,
@@ -27,6 +28,10 @@ pub struct Args {
     /// Do not carry the objects resting on this one.
     #[arg(long)]
     no_carry: bool,
+    /// Also write the edit as ThreeDWorld commands (teleport_object, rotate_object_to,
+    /// scale_object) to this file.
+    #[arg(long, value_name = "FILE")]
+    tdw: Option<PathBuf>,
 }
 
 pub fn run(args: Args) -> Result<()> {
@@ -46,7 +51,16 @@ pub fn run(args: Args) -> Result<()> {
     );
     let t = expr::evaluate_transformation(&args.expr, &bindings)
         .with_context(|| format!("--expr {}", args.expr))?;
+    let before = file.scene.clone();
     file.scene.apply(index, &t.versor, !args.no_carry);
+    // Render every output before writing any, so a failure leaves no file half-done.
+    let tdw = args.tdw.as_ref().map(|path| {
+        let commands = shenlong::format::tdw::edit(&before, &file.scene, &file.tdw_ids());
+        (
+            path,
+            shenlong::format::pretty::to_string(&serde_json::Value::Array(commands)),
+        )
+    });
     match &args.output {
         Some(path) => file.save(path)?,
         None => {
@@ -56,6 +70,10 @@ pub fn run(args: Args) -> Result<()> {
             };
             super::write_stdout(&file.to_bytes(format)?)?;
         }
+    }
+    if let Some((path, text)) = tdw {
+        shenlong::io::write_atomic(path, text.as_bytes())
+            .with_context(|| format!("cannot write {}", path.display()))?;
     }
     Ok(())
 }

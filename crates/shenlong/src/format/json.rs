@@ -79,8 +79,52 @@ pub fn scene_from_value(document: &Value, fallback_name: &str) -> Result<Scene, 
         }
         scene.objects.push(object);
     }
+    resolve_on_fields(objects, &mut scene)?;
     scene.detect_supports();
     Ok(scene)
+}
+
+/// The optional `"on"` field (a Shenlong extension of SPEC §2) names the object this one
+/// rests on; it is carried along with it.
+fn resolve_on_fields(objects: &[Value], scene: &mut Scene) -> Result<(), FormatError> {
+    for (i, value) in objects.iter().enumerate() {
+        let Some(on) = value.get("on").filter(|v| !v.is_null()) else {
+            continue;
+        };
+        let name = on.as_str().ok_or_else(|| {
+            FormatError::new(format!(
+                "objects[{i}].on must be the name of another object"
+            ))
+        })?;
+        let j = scene.find(name).ok_or_else(|| {
+            FormatError::new(format!(
+                "objects[{i}].on '{name}' names no object of the scene"
+            ))
+        })?;
+        if j == i {
+            return Err(FormatError::new(format!(
+                "objects[{i}].on names the object itself"
+            )));
+        }
+        scene.objects[i].support = Some(j);
+        scene.objects[i].support_from_file = true;
+    }
+    // A chain of supports must end on the floor.
+    for start in 0..scene.objects.len() {
+        let mut current = start;
+        for _ in 0..=scene.objects.len() {
+            match scene.objects[current].support {
+                Some(next) => current = next,
+                None => break,
+            }
+            if current == start {
+                return Err(FormatError::new(format!(
+                    "objects[{start}].on: the objects rest on each other in a circle"
+                )));
+            }
+        }
+    }
+    Ok(())
 }
 
 fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {

@@ -4,6 +4,8 @@
 //! |---|---|---|
 //! | scene JSON (`.json`, SPEC §2) | [`json`] | [`json`], in the input's shape |
 //! | glTF 2.0 (`.gltf`, `.glb`) | [`gltf`]: mesh nodes as objects | [`gltf`]: only moved nodes change |
+//! | ProcTHOR / Holodeck house (`.json`, `.jsonl`) | [`procthor`], with the asset database | — (converted to scene JSON) |
+//! | ThreeDWorld commands (`.tdw.json`) | — | [`tdw`]: `teleport_object`, `rotate_object_to`, `scale_object` |
 //!
 //! [`SceneFile`] pairs a scene with the document it came from, so that writing changes
 //! only what the edit changed.
@@ -11,6 +13,8 @@
 pub mod gltf;
 pub mod json;
 pub mod pretty;
+pub mod procthor;
+pub mod tdw;
 
 use crate::scene::Scene;
 use std::fmt;
@@ -54,6 +58,14 @@ pub enum Format {
     Gltf,
     /// glTF 2.0 binary.
     Glb,
+    /// ThreeDWorld commands placing the objects (`.tdw.json`, write only).
+    TdwCommands,
+}
+
+fn name_ends_with(path: &Path, suffix: &str) -> bool {
+    path.file_name()
+        .and_then(|n| n.to_str())
+        .is_some_and(|n| n.to_ascii_lowercase().ends_with(suffix))
 }
 
 impl Format {
@@ -65,7 +77,12 @@ impl Format {
             .map(str::to_ascii_lowercase)
             .unwrap_or_default();
         match ext.as_str() {
+            "json" if name_ends_with(path, ".tdw.json") => Ok(Format::TdwCommands),
             "json" => Ok(Format::SceneJson),
+            "jsonl" => Err(FormatError::new(format!(
+                "{}: unknown scene format '.jsonl': a file of ProcTHOR/Holodeck houses is imported with --from procthor --assets asset-database.json",
+                path.display()
+            ))),
             "gltf" => Ok(Format::Gltf),
             "glb" => Ok(Format::Glb),
             other => Err(FormatError::new(format!(
@@ -108,13 +125,28 @@ impl SceneFile {
                 let text = std::fs::read_to_string(path).map_err(|e| {
                     FormatError::new(format!("cannot read {}: {e}", path.display()))
                 })?;
-                let loaded = json::read(&text, stem).map_err(|e| e.in_file(path))?;
+                let loaded = json::read(&text, stem).map_err(|e| {
+                    let house = serde_json::from_str::<serde_json::Value>(&text)
+                        .is_ok_and(|v| procthor::looks_like_house(&v));
+                    if house {
+                        FormatError::new(format!(
+                            "{}: this is a ProcTHOR/Holodeck house, not a scene file: import it with --from procthor --assets asset-database.json",
+                            path.display()
+                        ))
+                    } else {
+                        e.in_file(path)
+                    }
+                })?;
                 Ok(Self {
                     scene: loaded.scene,
                     document: Document::SceneJson(loaded.document),
                     path: Some(path.to_path_buf()),
                 })
             }
+            Format::TdwCommands => Err(FormatError::new(format!(
+                "{}: ThreeDWorld commands are an output format; read the scene they came from",
+                path.display()
+            ))),
             Format::Gltf | Format::Glb => {
                 let (scene, document) = gltf::read(path).map_err(|e| e.in_file(path))?;
                 Ok(Self {
@@ -126,6 +158,41 @@ impl SceneFile {
         }
     }
 
+    /// Imports house number `index` of a ProcTHOR/Holodeck file (`.json`, or `.jsonl` with
+    /// one house a line), with object sizes from the asset database.
+    pub fn load_house(
+        path: &Path,
+        index: usize,
+        assets: &procthor::AssetDatabase,
+    ) -> Result<Self, FormatError> {
+        let document = procthor::read_file(path, index, assets)?;
+        let name = document["name"].as_str().unwrap_or("house").to_string();
+        let scene = json::scene_from_value(&document, &name).map_err(|e| e.in_file(path))?;
+        Ok(Self {
+            scene,
+            document: Document::SceneJson(document),
+            path: Some(path.to_path_buf()),
+        })
+    }
+
+    /// The ThreeDWorld object id of each object: its `tdw_id` field in a scene-JSON
+    /// document, else its position in the scene counting from 1.
+    pub fn tdw_ids(&self) -> Vec<i64> {
+        let fields = match &self.document {
+            Document::SceneJson(v) => v.get("objects").and_then(serde_json::Value::as_array),
+            _ => None,
+        };
+        (0..self.scene.objects.len())
+            .map(|i| {
+                fields
+                    .and_then(|o| o.get(i))
+                    .and_then(|o| o.get("tdw_id"))
+                    .and_then(serde_json::Value::as_i64)
+                    .unwrap_or(i as i64 + 1)
+            })
+            .collect()
+    }
+
     /// The scene in the given format, as bytes.
     pub fn to_bytes(&self, format: Format) -> Result<Vec<u8>, FormatError> {
         match format {
@@ -135,6 +202,10 @@ impl SceneFile {
                     Document::None | Document::Gltf(_) => None,
                 };
                 Ok(json::write(&self.scene, original).into_bytes())
+            }
+            Format::TdwCommands => {
+                let commands = tdw::place_all(&self.scene, &self.tdw_ids());
+                Ok(pretty::to_string(&serde_json::Value::Array(commands)).into_bytes())
             }
             Format::Gltf | Format::Glb => {
                 let Document::Gltf(document) = &self.document else {
