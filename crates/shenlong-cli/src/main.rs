@@ -23,6 +23,7 @@ enum Command {
     Apply(commands::apply::Args),
     Convert(commands::convert::Args),
     Examples(commands::examples::Args),
+    Render(commands::render::Args),
 }
 
 fn main() -> ExitCode {
@@ -32,6 +33,7 @@ fn main() -> ExitCode {
         Command::Apply(args) => commands::apply::run(args),
         Command::Convert(args) => commands::convert::run(args),
         Command::Examples(args) => commands::examples::run(args),
+        Command::Render(args) => commands::render::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

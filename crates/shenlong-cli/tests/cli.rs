@@ -256,3 +256,56 @@ fn apply_exports_the_edit_as_tdw_commands() {
     );
     assert!(commands.iter().all(|c| c["$type"] == "teleport_object"));
 }
+
+#[test]
+fn render_draws_svg_and_png() {
+    let dir = tempfile::tempdir().unwrap();
+    let edited = dir.path().join("edited.json");
+    let o = shenlong(&[
+        "apply",
+        "example:office",
+        "--object",
+        "meeting table",
+        "--expr",
+        "T(-0.5 * e1)",
+        "-o",
+        edited.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = dir.path().join("edit.svg");
+    let o = shenlong(&[
+        "render",
+        edited.to_str().unwrap(),
+        "--before",
+        "example:office",
+        "-o",
+        svg.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = std::fs::read_to_string(&svg).unwrap();
+    assert!(text.starts_with("<svg") && text.contains(">meeting table</text>"));
+    assert_eq!(
+        text.matches("marker-end").count(),
+        3,
+        "the table, the notebook and the cup moved"
+    );
+    let png = dir.path().join("plan.png");
+    let o = shenlong(&["render", "example:office", "-o", png.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(std::fs::read(&png).unwrap().starts_with(b"\x89PNG"));
+    assert_fails_cleanly(
+        &shenlong(&["render", "example:office", "-o", "plan.gif"]),
+        "must be .svg or .png",
+    );
+    assert_fails_cleanly(
+        &shenlong(&[
+            "render",
+            "example:office",
+            "--before",
+            "example:kitchen",
+            "-o",
+            svg.to_str().unwrap(),
+        ]),
+        "--before must be the same scene",
+    );
+}

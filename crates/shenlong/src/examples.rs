@@ -3,7 +3,8 @@
 //!
 //! Each scene is a table of objects. A floor object gives its footprint centre `[x, z]`;
 //! a resting object names its support and gives its offset from the support's top centre,
-//! so it sits exactly on the support's top face. `yaw` turns an object about +Y, in
+//! so it sits exactly on the support's top face (offsets are along the world axes, whatever
+//! the support's yaw). `yaw` turns an object about +Y, in
 //! degrees; its front (local +Z) faces +Z at yaw 0.
 
 use crate::geometry::Aabb;
@@ -396,7 +397,7 @@ const EXAMPLES: &[Example] = &[
                 "paint can",
                 [0.18, 0.2, 0.18],
                 Some("metal shelf"),
-                [-0.3, 0.0],
+                [0.0, -0.3],
                 0.0,
             ),
             ("drill press", [0.5, 1.6, 0.6], None, [1.8, -2.6], 0.0),
@@ -719,6 +720,12 @@ mod tests {
             }
             let bounds = scene.bounds.unwrap();
             let boxes = scene.world_aabbs();
+            // Nothing floats: an object above the floor rests on something.
+            for (o, b) in scene.objects.iter().zip(&boxes) {
+                if b.min.y > 1e-9 && o.support.is_none() {
+                    problems.push(format!("{name}: '{}' floats at y = {:.3}", o.name, b.min.y));
+                }
+            }
             for (o, b) in scene.objects.iter().zip(&boxes) {
                 if !(b.min.cmpge(bounds.min - 1e-9).all() && b.max.cmple(bounds.max + 1e-9).all()) {
                     problems.push(format!("{name}: '{}' is outside the room", o.name));

@@ -5,7 +5,8 @@ use std::path::Path;
 
 /// Writes `bytes` to `path` atomically: into a temporary file beside it, flushed to disk,
 /// then renamed over the target. On any error the target is left as it was and the
-/// temporary file is removed.
+/// temporary file is removed. A replaced file keeps its permissions; a new one is
+/// readable by all (0644 on Unix), as an ordinary write would make it.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
@@ -16,9 +17,29 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         .suffix(".tmp")
         .tempfile_in(dir)?;
     file.write_all(bytes)?;
+    let permissions = match std::fs::metadata(path) {
+        Ok(existing) => existing.permissions(),
+        Err(_) => default_permissions(),
+    };
+    file.as_file().set_permissions(permissions)?;
     file.as_file().sync_all()?;
     file.persist(path).map_err(|e| e.error)?;
     Ok(())
+}
+
+#[cfg(unix)]
+fn default_permissions() -> std::fs::Permissions {
+    use std::os::unix::fs::PermissionsExt;
+    std::fs::Permissions::from_mode(0o644)
+}
+
+#[cfg(not(unix))]
+fn default_permissions() -> std::fs::Permissions {
+    // Elsewhere a new temporary file already has ordinary permissions.
+    let probe = tempfile::tempfile().and_then(|f| f.metadata());
+    probe
+        .map(|m| m.permissions())
+        .expect("a temporary file can be created")
 }
 
 #[cfg(test)]

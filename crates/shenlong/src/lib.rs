@@ -15,4 +15,5 @@ pub mod expr;
 pub mod format;
 pub mod geometry;
 pub mod io;
+pub mod render;
 pub mod scene;

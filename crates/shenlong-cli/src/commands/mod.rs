@@ -4,6 +4,7 @@ pub mod apply;
 pub mod convert;
 pub mod eval;
 pub mod examples;
+pub mod render;
 
 use anyhow::{Context, Result};
 use shenlong::format::SceneFile;

@@ -1,0 +1,351 @@
+//! Pictures of scenes: a top-down plan, as SVG or PNG.
+//!
+//! The plan looks down the −Y axis: +X to the right, +Z (forward) toward the bottom of the
+//! picture. Each object is drawn as its footprint — the outline of its shape seen from
+//! above — with its name, and a tick toward its front (local +Z). Objects resting on others
+//! are drawn in a warmer colour over their support. Given the scene before an edit, the
+//! objects that moved are highlighted, and their old footprints are ghosted with arrows to
+//! the new ones.
+
+use crate::geometry::Aabb;
+use crate::scene::{Object, Scene, Shape};
+use glam::{DVec2, DVec3};
+use std::fmt::Write;
+
+/// Width of the picture, in pixels.
+const WIDTH: f64 = 1000.0;
+/// Margin around the drawing, in pixels.
+const MARGIN: f64 = 40.0;
+/// Height reserved for the title and legend, in pixels.
+const HEADER: f64 = 36.0;
+
+/// The footprint of an object: the convex outline of its shape projected on the floor,
+/// as (x, z) points in counter-clockwise order.
+pub fn footprint(object: &Object) -> Vec<DVec2> {
+    let pose = object.similarity();
+    let points: Vec<DVec2> = object
+        .local_points()
+        .into_iter()
+        .map(|p| {
+            let w = pose.transform_point(p);
+            DVec2::new(w.x, w.z)
+        })
+        .collect();
+    convex_hull(points)
+}
+
+/// Andrew's monotone chain; collinear points are dropped.
+fn convex_hull(mut points: Vec<DVec2>) -> Vec<DVec2> {
+    points.sort_by(|a, b| a.x.total_cmp(&b.x).then(a.y.total_cmp(&b.y)));
+    points.dedup_by(|a, b| (*a - *b).length() < 1e-12);
+    if points.len() < 3 {
+        return points;
+    }
+    let cross = |o: DVec2, a: DVec2, b: DVec2| (a - o).perp_dot(b - o);
+    let mut hull: Vec<DVec2> = Vec::with_capacity(points.len() * 2);
+    for pass in 0..2 {
+        let start = hull.len();
+        let iter: Box<dyn Iterator<Item = &DVec2>> = if pass == 0 {
+            Box::new(points.iter())
+        } else {
+            Box::new(points.iter().rev())
+        };
+        for &p in iter {
+            while hull.len() >= start + 2
+                && cross(hull[hull.len() - 2], hull[hull.len() - 1], p) <= 0.0
+            {
+                hull.pop();
+            }
+            hull.push(p);
+        }
+        hull.pop();
+    }
+    hull
+}
+
+/// The plan of `scene` as an SVG document; with `before`, the edit from `before` to
+/// `scene` is shown (the same objects, in the same order).
+pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
+    let footprints: Vec<Vec<DVec2>> = scene.objects.iter().map(footprint).collect();
+    let boxes = scene.world_aabbs();
+    let old: Option<Vec<Vec<DVec2>>> = before.map(|b| b.objects.iter().map(footprint).collect());
+    let moved: Vec<bool> = match before {
+        Some(b) => scene
+            .objects
+            .iter()
+            .zip(&b.objects)
+            .map(|(a, b)| {
+                let (sa, sb) = (a.similarity(), b.similarity());
+                (sa.translation - sb.translation).length() > 1e-9
+                    || sa.rotation.dot(sb.rotation).abs() < 1.0 - 1e-12
+                    || (sa.scale - sb.scale).abs() > 1e-12
+            })
+            .collect(),
+        None => vec![false; scene.objects.len()],
+    };
+
+    // The extent to draw: the room and every footprint, old and new.
+    let mut extent: Option<Aabb> = scene.bounds;
+    let all_points = footprints.iter().chain(old.iter().flatten()).flatten();
+    for p in all_points {
+        let b = Aabb::new(DVec3::new(p.x, 0.0, p.y), DVec3::new(p.x, 0.0, p.y));
+        extent = Some(extent.map_or(b, |e| e.union(&b)));
+    }
+    let extent = extent.unwrap_or(Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)));
+    let size = DVec2::new(extent.size().x.max(1e-6), extent.size().z.max(1e-6));
+    let k = (WIDTH - 2.0 * MARGIN) / size.x;
+    let height = (size.y * k + 2.0 * MARGIN + HEADER).min(4000.0);
+    let k = k.min((height - 2.0 * MARGIN - HEADER) / size.y);
+    let to_px = |p: DVec2| {
+        DVec2::new(
+            MARGIN + (p.x - extent.min.x) * k,
+            HEADER + MARGIN + (p.y - extent.min.z) * k,
+        )
+    };
+    let path = |points: &[DVec2]| {
+        let mut d = String::new();
+        for (i, p) in points.iter().enumerate() {
+            let q = to_px(*p);
+            let _ = write!(
+                d,
+                "{}{:.1},{:.1} ",
+                if i == 0 { "M" } else { "L" },
+                q.x,
+                q.y
+            );
+        }
+        d.push('Z');
+        d
+    };
+
+    let mut svg = String::new();
+    let _ = writeln!(
+        svg,
+        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH:.0}" height="{height:.0}" viewBox="0 0 {WIDTH:.0} {height:.0}" font-family="DejaVu Sans, Arial, sans-serif">"##
+    );
+    svg.push_str(
+        r##"<defs><marker id="arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#1b7f3b"/></marker></defs>
+<rect width="100%" height="100%" fill="#ffffff"/>
+"##,
+    );
+    let title = escape(&scene.name);
+    let _ = writeln!(
+        svg,
+        r##"<text x="{MARGIN}" y="24" font-size="16" font-weight="bold" fill="#222">{title}</text><text x="{:.0}" y="24" font-size="12" fill="#555" text-anchor="end">top view · +x → right · +z (forward) ↓ down</text>"##,
+        WIDTH - MARGIN
+    );
+    // The room.
+    if let Some(room) = scene.bounds {
+        let a = to_px(DVec2::new(room.min.x, room.min.z));
+        let b = to_px(DVec2::new(room.max.x, room.max.z));
+        let _ = writeln!(
+            svg,
+            r##"<rect x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="#f7f5f0" stroke="#444" stroke-width="4"/>"##,
+            a.x,
+            a.y,
+            b.x - a.x,
+            b.y - a.y
+        );
+    }
+    // A 1 m scale bar (or the largest power of ten that fits).
+    let mut unit = 1.0;
+    while unit * k > 200.0 {
+        unit /= 10.0;
+    }
+    while unit * k < 20.0 {
+        unit *= 10.0;
+    }
+    let bar_y = height - 14.0;
+    let _ = writeln!(
+        svg,
+        r##"<line x1="{MARGIN}" y1="{bar_y:.1}" x2="{:.1}" y2="{bar_y:.1}" stroke="#222" stroke-width="3"/><text x="{:.1}" y="{:.1}" font-size="11" fill="#222">{unit} m</text>"##,
+        MARGIN + unit * k,
+        MARGIN + unit * k + 6.0,
+        bar_y + 4.0
+    );
+
+    // Old footprints of the objects that moved, ghosted.
+    if let Some(old) = &old {
+        for (i, points) in old.iter().enumerate() {
+            if moved[i] {
+                let _ = writeln!(
+                    svg,
+                    r##"<path d="{}" fill="none" stroke="#888" stroke-width="1.5" stroke-dasharray="5,4"/>"##,
+                    path(points)
+                );
+            }
+        }
+    }
+    // Objects, lowest top first, so things resting on others are drawn over them.
+    let mut order: Vec<usize> = (0..scene.objects.len()).collect();
+    order.sort_by(|&a, &b| boxes[a].max.y.total_cmp(&boxes[b].max.y));
+    for &i in &order {
+        let object = &scene.objects[i];
+        let (fill, stroke) = if moved[i] {
+            ("#9fe0a8", "#1b7f3b")
+        } else if object.support.is_some() {
+            ("#f6c79a", "#a0522d")
+        } else {
+            ("#cfdff2", "#3a5a80")
+        };
+        let _ = writeln!(
+            svg,
+            r##"<path d="{}" fill="{fill}" fill-opacity="0.85" stroke="{stroke}" stroke-width="1.2"><title>{}</title></path>"##,
+            path(&footprints[i]),
+            escape(&object.name)
+        );
+        // A tick from the centre toward the front (local +Z) of box objects.
+        if let Shape::Box { size } = &object.shape {
+            let pose = object.similarity();
+            let centre = pose.transform_point(DVec3::new(0.0, 0.0, 0.0));
+            let front = pose.transform_point(DVec3::new(0.0, 0.0, size.z * 0.5));
+            let (a, b) = (
+                to_px(DVec2::new(centre.x, centre.z)),
+                to_px(DVec2::new(front.x, front.z)),
+            );
+            if (b - a).length() > 3.0 {
+                let _ = writeln!(
+                    svg,
+                    r##"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="{stroke}" stroke-width="1"/>"##,
+                    a.x, a.y, b.x, b.y
+                );
+            }
+        }
+    }
+    // Arrows from old to new positions.
+    if let Some(before) = before {
+        for (i, (a, b)) in before.objects.iter().zip(&scene.objects).enumerate() {
+            if !moved[i] {
+                continue;
+            }
+            let (p, q) = (a.world_aabb().center(), b.world_aabb().center());
+            let (p, q) = (to_px(DVec2::new(p.x, p.z)), to_px(DVec2::new(q.x, q.z)));
+            if (q - p).length() > 4.0 {
+                let _ = writeln!(
+                    svg,
+                    r##"<line x1="{:.1}" y1="{:.1}" x2="{:.1}" y2="{:.1}" stroke="#1b7f3b" stroke-width="2" marker-end="url(#arrow)"/>"##,
+                    p.x, p.y, q.x, q.y
+                );
+            }
+        }
+    }
+    // Labels last, on top of everything, with a white halo; each is nudged up or down
+    // until it clears the labels already placed (supports first, then what rests on them).
+    let mut placed: Vec<(DVec2, DVec2)> = Vec::new();
+    for &i in &order {
+        let centre = footprints[i].iter().fold(DVec2::ZERO, |s, p| s + *p)
+            / footprints[i].len().max(1) as f64;
+        let c = to_px(centre);
+        let name = &scene.objects[i].name;
+        let half = DVec2::new(3.3 * name.chars().count() as f64 + 2.0, 7.0);
+        let clear = |at: DVec2, placed: &[(DVec2, DVec2)]| {
+            placed.iter().all(|(p, h)| {
+                (at.x - p.x).abs() >= half.x + h.x || (at.y - p.y).abs() >= half.y + h.y
+            })
+        };
+        let at = [0.0, 13.0, -13.0, 26.0, -26.0, 39.0, -39.0]
+            .iter()
+            .map(|dy| DVec2::new(c.x, c.y + dy))
+            .find(|at| clear(*at, &placed))
+            .unwrap_or(c);
+        placed.push((at, half));
+        let label = escape(name);
+        let _ = writeln!(
+            svg,
+            r##"<text x="{:.1}" y="{:.1}" font-size="11" text-anchor="middle" dominant-baseline="middle" fill="#111" stroke="#fff" stroke-width="3" paint-order="stroke">{label}</text>"##,
+            at.x, at.y
+        );
+    }
+    svg.push_str("</svg>\n");
+    svg
+}
+
+fn escape(text: &str) -> String {
+    text.replace('&', "&amp;")
+        .replace('<', "&lt;")
+        .replace('>', "&gt;")
+        .replace('"', "&quot;")
+}
+
+/// Rasterises an SVG (such as [`plan_svg`]'s) to PNG bytes, with the system's fonts for
+/// the labels.
+#[cfg(feature = "png")]
+pub fn svg_to_png(svg: &str) -> Result<Vec<u8>, String> {
+    use resvg::{tiny_skia, usvg};
+    let mut options = usvg::Options::default();
+    options.fontdb_mut().load_system_fonts();
+    let tree =
+        usvg::Tree::from_str(svg, &options).map_err(|e| format!("cannot read the SVG: {e}"))?;
+    let size = tree.size().to_int_size();
+    let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height())
+        .ok_or_else(|| "the picture has no size".to_string())?;
+    resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
+    pixmap
+        .encode_png()
+        .map_err(|e| format!("cannot encode the PNG: {e}"))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use cga::Multivector;
+
+    #[test]
+    fn footprint_of_a_turned_box() {
+        let o = Object::new_box(
+            "b",
+            DVec3::new(2.0, 1.0, 1.0),
+            DVec3::ZERO,
+            glam::DQuat::from_rotation_y(std::f64::consts::FRAC_PI_4),
+            1.0,
+        )
+        .unwrap();
+        let f = footprint(&o);
+        assert_eq!(f.len(), 4, "{f:?}");
+        let area: f64 = (0..4).map(|i| f[i].perp_dot(f[(i + 1) % 4])).sum::<f64>() * 0.5;
+        assert!((area.abs() - 2.0).abs() < 1e-9, "{area}");
+    }
+
+    #[test]
+    fn plan_names_every_object_and_shows_the_edit() {
+        let before = crate::examples::build("workshop").unwrap();
+        let mut after = before.clone();
+        let table = after.find("tool table").unwrap();
+        after.apply(
+            table,
+            &Multivector::translator(DVec3::new(1.0, 0.0, 0.5)),
+            true,
+        );
+        let svg = plan_svg(&after, Some(&before));
+        for o in &after.objects {
+            assert!(
+                svg.contains(&format!(">{}</text>", escape(&o.name))),
+                "{}",
+                o.name
+            );
+        }
+        let arrows = svg.matches("marker-end=\"url(#arrow)\"").count();
+        assert_eq!(arrows, 4, "the table and the three tools on it moved");
+        assert_eq!(svg.matches("stroke-dasharray=\"5,4\"").count(), 4);
+        assert!(plan_svg(&before, None).matches("marker-end").count() == 0);
+    }
+
+    #[cfg(feature = "png")]
+    #[test]
+    fn png_is_a_real_picture() {
+        let scene = crate::examples::build("living_room").unwrap();
+        let png = svg_to_png(&plan_svg(&scene, None)).unwrap();
+        assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
+        let pixmap = resvg::tiny_skia::Pixmap::decode_png(&png).unwrap();
+        assert_eq!(pixmap.width(), 1000);
+        let coloured = pixmap
+            .pixels()
+            .iter()
+            .filter(|p| p.red() != p.blue())
+            .count();
+        assert!(
+            coloured > 10_000,
+            "the plan has coloured shapes: {coloured} pixels"
+        );
+    }
+}
