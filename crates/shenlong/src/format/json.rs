@@ -7,6 +7,7 @@ use crate::scene::{Object, Scene};
 use cga::Similarity;
 use glam::{DQuat, DVec3};
 use serde_json::{Map, Value};
+use std::collections::HashMap;
 
 /// A scene read from scene JSON, with the document it came from.
 #[derive(Clone, Debug)]
@@ -69,24 +70,32 @@ pub fn scene_from_value(document: &Value, fallback_name: &str) -> Result<Scene, 
         .ok_or_else(|| FormatError::new("missing \"objects\": the list of the scene's objects"))?
         .as_array()
         .ok_or_else(|| FormatError::new("objects must be a list"))?;
+    // Names compared case-insensitively, through an index: a scan per object would make
+    // reading quadratic in the number of objects.
+    let mut by_name: HashMap<String, usize> = HashMap::with_capacity(objects.len());
     for (i, value) in objects.iter().enumerate() {
         let object = object_from_value(value, i)?;
-        if let Some(j) = scene.find(&object.name) {
+        if let Some(&j) = by_name.get(&object.name.trim().to_lowercase()) {
             return Err(FormatError::new(format!(
                 "objects[{i}].name '{}' duplicates objects[{j}].name '{}' (names are compared case-insensitively)",
                 object.name, scene.objects[j].name
             )));
         }
+        by_name.insert(object.name.trim().to_lowercase(), i);
         scene.objects.push(object);
     }
-    resolve_on_fields(objects, &mut scene)?;
+    resolve_on_fields(objects, &mut scene, &by_name)?;
     scene.detect_supports();
     Ok(scene)
 }
 
 /// The optional `"on"` field (a Shenlong extension of SPEC §2) names the object this one
 /// rests on; it is carried along with it.
-fn resolve_on_fields(objects: &[Value], scene: &mut Scene) -> Result<(), FormatError> {
+fn resolve_on_fields(
+    objects: &[Value],
+    scene: &mut Scene,
+    by_name: &HashMap<String, usize>,
+) -> Result<(), FormatError> {
     for (i, value) in objects.iter().enumerate() {
         let Some(on) = value.get("on").filter(|v| !v.is_null()) else {
             continue;

@@ -1,6 +1,7 @@
 //! Which object rests on which.
 
 use super::Scene;
+use crate::geometry::FloorGrid;
 
 /// How far above another object's top an object's bottom may be and still rest on it,
 /// in metres. Objects also count as resting when they sink slightly into their support.
@@ -13,6 +14,7 @@ pub const SUPPORT_GAP: f64 = 0.01;
 pub fn detect(scene: &mut Scene) {
     let boxes = scene.world_aabbs();
     let floor = scene.floor();
+    let grid = FloorGrid::new(&boxes);
     for (i, a) in boxes.iter().enumerate() {
         if scene.objects[i].support_from_file {
             continue;
@@ -23,7 +25,8 @@ pub fn detect(scene: &mut Scene) {
             continue;
         }
         let centre = a.center();
-        for (j, b) in boxes.iter().enumerate() {
+        for j in grid.near_point(centre.x, centre.z) {
+            let b = &boxes[j];
             if i == j {
                 continue;
             }

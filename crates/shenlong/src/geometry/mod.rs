@@ -1,4 +1,9 @@
-//! Bounding volumes: the axis-aligned box every later stage works with.
+//! Bounding volumes: the axis-aligned box every later stage works with, and a floor grid
+//! to find boxes near one another without comparing every pair.
+
+mod grid;
+
+pub use grid::FloorGrid;
 
 use glam::DVec3;
 

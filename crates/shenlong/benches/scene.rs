@@ -1,0 +1,71 @@
+//! Scene throughput on a large scene: read, edit and write a 10,000-object scene JSON.
+//! Run with `cargo bench -p shenlong --bench scene`; figures go to docs/performance.md.
+
+use cga::Multivector;
+use criterion::{black_box, criterion_group, criterion_main, Criterion};
+use glam::{DQuat, DVec3};
+use shenlong::format::json;
+use shenlong::scene::{Object, Scene};
+
+/// 5,000 tables on a grid, each with an item resting on it: 10,000 objects.
+pub fn large_scene(tables: usize) -> Scene {
+    let mut scene = Scene::new("warehouse");
+    let side = (tables as f64).sqrt().ceil() as usize;
+    for i in 0..tables {
+        let (x, z) = ((i % side) as f64 * 2.0, (i / side) as f64 * 2.0);
+        let yaw = (i % 7) as f64 * 0.3;
+        scene.objects.push(
+            Object::new_box(
+                format!("table {i}"),
+                DVec3::new(1.2, 0.75, 0.8),
+                DVec3::new(x, 0.0, z),
+                DQuat::from_rotation_y(yaw),
+                1.0,
+            )
+            .unwrap(),
+        );
+        scene.objects.push(
+            Object::new_box(
+                format!("item {i}"),
+                DVec3::new(0.2, 0.3, 0.2),
+                DVec3::new(x, 0.75, z),
+                DQuat::IDENTITY,
+                1.0,
+            )
+            .unwrap(),
+        );
+    }
+    scene
+}
+
+fn bench(c: &mut Criterion) {
+    let text = json::write(&large_scene(5_000), None);
+    let mut group = c.benchmark_group("scene JSON, 10,000 objects");
+    group.sample_size(20);
+    group.bench_function("read (parse, validate, find supports)", |b| {
+        b.iter(|| json::read(black_box(&text), "warehouse").unwrap())
+    });
+    let loaded = json::read(&text, "warehouse").unwrap();
+    let m = Multivector::translator(DVec3::new(0.5, 0.0, 0.0));
+    group.bench_function("apply one edit (with carrying)", |b| {
+        b.iter_batched(
+            || loaded.scene.clone(),
+            |mut scene| scene.apply(black_box(2_500), &m, true),
+            criterion::BatchSize::LargeInput,
+        )
+    });
+    group.bench_function("write", |b| {
+        b.iter(|| json::write(black_box(&loaded.scene), Some(&loaded.document)))
+    });
+    group.bench_function("read + apply + write", |b| {
+        b.iter(|| {
+            let mut l = json::read(black_box(&text), "warehouse").unwrap();
+            l.scene.apply(2_500, &m, true);
+            json::write(&l.scene, Some(&l.document))
+        })
+    });
+    group.finish();
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);

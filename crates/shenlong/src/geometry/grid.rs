@@ -1,0 +1,139 @@
+//! A uniform grid over the floor (the x–z plane) for finding boxes near a point or box.
+//!
+//! Why a uniform grid: scene objects are of similar size within a factor of a few
+//! hundred and spread over a floor, so hashing footprints into square cells sized to the
+//! typical object gives O(1) candidates per query and builds in one pass; a BVH would buy
+//! nothing for such data and cost a sort. Objects much larger than the cell (a room-sized
+//! rug) are kept aside and checked with every query, so one of them cannot flood the grid.
+
+use super::Aabb;
+use std::collections::HashMap;
+
+/// Most cells one box may occupy before it is kept aside as large.
+const MAX_CELLS_PER_BOX: i64 = 64;
+
+/// Boxes bucketed by the floor cells their footprints overlap.
+#[derive(Clone, Debug)]
+pub struct FloorGrid {
+    cell: f64,
+    cells: HashMap<(i64, i64), Vec<usize>>,
+    large: Vec<usize>,
+}
+
+impl FloorGrid {
+    /// A grid over `boxes` (indices are their positions in the slice), with cells sized to
+    /// the boxes' median footprint extent.
+    pub fn new(boxes: &[Aabb]) -> Self {
+        let mut extents: Vec<f64> = boxes
+            .iter()
+            .map(|b| b.size().x.max(b.size().z))
+            .filter(|e| e.is_finite() && *e > 0.0)
+            .collect();
+        extents.sort_by(f64::total_cmp);
+        let median = extents.get(extents.len() / 2).copied().unwrap_or(1.0);
+        let cell = (median * 2.0).max(1e-3);
+        let mut grid = Self {
+            cell,
+            cells: HashMap::new(),
+            large: Vec::new(),
+        };
+        for (i, b) in boxes.iter().enumerate() {
+            grid.insert(i, b);
+        }
+        grid
+    }
+
+    fn range(&self, b: &Aabb) -> (i64, i64, i64, i64) {
+        let f = |v: f64| (v / self.cell).floor().clamp(-1e15, 1e15) as i64;
+        (f(b.min.x), f(b.max.x), f(b.min.z), f(b.max.z))
+    }
+
+    fn insert(&mut self, index: usize, b: &Aabb) {
+        if !b.is_finite() {
+            self.large.push(index);
+            return;
+        }
+        let (x0, x1, z0, z1) = self.range(b);
+        if (x1 - x0 + 1).saturating_mul(z1 - z0 + 1) > MAX_CELLS_PER_BOX {
+            self.large.push(index);
+            return;
+        }
+        for x in x0..=x1 {
+            for z in z0..=z1 {
+                self.cells.entry((x, z)).or_default().push(index);
+            }
+        }
+    }
+
+    /// Indices of the boxes whose footprint may contain the floor point `(x, z)`
+    /// (a superset: check the boxes themselves).
+    pub fn near_point(&self, x: f64, z: f64) -> impl Iterator<Item = usize> + '_ {
+        let key = (
+            (x / self.cell).floor() as i64,
+            (z / self.cell).floor() as i64,
+        );
+        self.cells
+            .get(&key)
+            .into_iter()
+            .flatten()
+            .chain(&self.large)
+            .copied()
+    }
+
+    /// Indices of the boxes whose footprint may overlap the footprint of `b`, each once
+    /// (a superset: check the boxes themselves).
+    pub fn near_box(&self, b: &Aabb) -> Vec<usize> {
+        let mut out: Vec<usize> = self.large.clone();
+        let (x0, x1, z0, z1) = self.range(b);
+        if (x1 - x0 + 1).saturating_mul(z1 - z0 + 1) > MAX_CELLS_PER_BOX * 16 {
+            // A query box far larger than the cells: every cell's contents.
+            out.extend(self.cells.values().flatten());
+        } else {
+            for x in x0..=x1 {
+                for z in z0..=z1 {
+                    if let Some(list) = self.cells.get(&(x, z)) {
+                        out.extend(list);
+                    }
+                }
+            }
+        }
+        out.sort_unstable();
+        out.dedup();
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use glam::DVec3;
+
+    fn unit(x: f64, z: f64) -> Aabb {
+        Aabb::new(DVec3::new(x, 0.0, z), DVec3::new(x + 1.0, 1.0, z + 1.0))
+    }
+
+    #[test]
+    fn finds_what_is_near_and_nothing_missing() {
+        let mut boxes: Vec<Aabb> = (0..100)
+            .map(|i| unit((i % 10) as f64 * 3.0, (i / 10) as f64 * 3.0))
+            .collect();
+        boxes.push(Aabb::new(DVec3::splat(-100.0), DVec3::splat(100.0))); // a huge one
+        let grid = FloorGrid::new(&boxes);
+        let near: Vec<usize> = grid.near_point(3.5, 0.5).collect();
+        assert!(near.contains(&1) && near.contains(&100));
+        assert!(near.len() < 10, "{near:?}");
+        // Exhaustive check against brute force for box queries.
+        for q in [
+            unit(2.5, 2.5),
+            unit(-5.0, -5.0),
+            Aabb::new(DVec3::splat(0.0), DVec3::splat(30.0)),
+        ] {
+            let got = grid.near_box(&q);
+            for (i, b) in boxes.iter().enumerate() {
+                if b.footprint_overlap(&q) > 0.0 {
+                    assert!(got.contains(&i), "missed {i} for {q:?}");
+                }
+            }
+        }
+    }
+}
