@@ -105,11 +105,14 @@ fn resolve_on_fields(
                 "objects[{i}].on must be the name of another object"
             ))
         })?;
-        let j = scene.find(name).ok_or_else(|| {
-            FormatError::new(format!(
-                "objects[{i}].on '{name}' names no object of the scene"
-            ))
-        })?;
+        let j = by_name
+            .get(&name.trim().to_lowercase())
+            .copied()
+            .ok_or_else(|| {
+                FormatError::new(format!(
+                    "objects[{i}].on '{name}' names no object of the scene"
+                ))
+            })?;
         if j == i {
             return Err(FormatError::new(format!(
                 "objects[{i}].on names the object itself"
