@@ -243,6 +243,7 @@ fn apply_exports_the_edit_as_tdw_commands() {
         out.to_str().unwrap(),
         "--tdw",
         tdw.to_str().unwrap(),
+        "--no-collide",
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let commands: serde_json::Value =
@@ -307,5 +308,72 @@ fn render_draws_svg_and_png() {
             svg.to_str().unwrap(),
         ]),
         "--before must be the same scene",
+    );
+}
+
+#[test]
+fn apply_resolves_collisions_unless_told_not_to() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    // The stool (0.4 wide, at z = 1.0) pushed 1 m back lands inside the tool table.
+    let out_text = out.to_str().unwrap().to_string();
+    let args = |extra: &[&'static str]| -> Vec<String> {
+        let mut a: Vec<String> = [
+            "apply",
+            "example:workshop",
+            "--object",
+            "stool",
+            "--expr",
+            "T(-1 * e3)",
+            "-o",
+        ]
+        .iter()
+        .map(|s| s.to_string())
+        .collect();
+        a.push(out_text.clone());
+        a.extend(extra.iter().map(|s| s.to_string()));
+        a
+    };
+    let shenlong = |a: Vec<String>| shenlong(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    let o = shenlong(args(&[]));
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("note: moved 'stool' by"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(
+        stderr(&o).contains("to clear 'tool table'"),
+        "{}",
+        stderr(&o)
+    );
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let stool = v["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["name"] == "stool")
+        .unwrap()
+        .clone();
+    let z = stool["position"][2].as_f64().unwrap();
+    // Backed out the way it came, clear of the table (z ≤ 0.4) by the 2 cm buffer, on the
+    // 5 cm grid: 0.65.
+    assert!((z - 0.65).abs() < 1e-9, "just in front of the table: {z}");
+    let o = shenlong(args(&["--no-collide"]));
+    assert!(o.status.success());
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let stool = v["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["name"] == "stool")
+        .unwrap()
+        .clone();
+    assert_eq!(stool["position"], serde_json::json!([0, 0, 0]));
+    assert_fails_cleanly(
+        &shenlong(args(&["--step", "0"])),
+        "--step 0: give a distance in metres > 0",
     );
 }

@@ -67,5 +67,44 @@ fn bench(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench);
+fn collisions(c: &mut Criterion) {
+    let mut group = c.benchmark_group("collision resolution");
+    group.sample_size(20);
+    for tables in [50, 5_000] {
+        let text = json::write(&large_scene(tables), None);
+        let scene = json::read(&text, "warehouse").unwrap().scene;
+        let before = scene.world_aabbs();
+        // Push table 0 (with its item) 1.2 m along +x: into table 1 (2 m away).
+        let mut edited = scene.clone();
+        edited.apply(0, &Multivector::translator(DVec3::new(1.2, 0.0, 0.0)), true);
+        let options = shenlong::collide::ResolveOptions::default();
+        let check =
+            shenlong::collide::resolve(&mut edited.clone(), &before, &[0], &options).unwrap();
+        assert_eq!(
+            check.adjustments.len(),
+            1,
+            "the benchmark must exercise a real search"
+        );
+        group.bench_function(
+            format!("{} objects: detect + resolve one collision", 2 * tables),
+            |b| {
+                b.iter_batched(
+                    || edited.clone(),
+                    |mut s| {
+                        shenlong::collide::resolve(&mut s, black_box(&before), &[0], &options)
+                            .unwrap()
+                    },
+                    criterion::BatchSize::LargeInput,
+                )
+            },
+        );
+        group.bench_function(
+            format!("{} objects: read the scene JSON", 2 * tables),
+            |b| b.iter(|| json::read(black_box(&text), "warehouse").unwrap()),
+        );
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, collisions);
 criterion_main!(benches);

@@ -10,6 +10,7 @@
 
 #![warn(missing_docs)]
 
+pub mod collide;
 pub mod examples;
 pub mod expr;
 pub mod format;

@@ -8,7 +8,9 @@ use std::path::PathBuf;
 /// Apply a CGA expression to one object of a scene and write the result.
 ///
 /// The expression may use X1 for the object. Objects resting on it are carried along
-/// unless --no-carry. The output has the input's format and shape.
+/// unless --no-carry. If the result collides with other objects, the floor or the walls,
+/// the object (with what rests on it) moves to the nearest free placement; what was
+/// adjusted is said on stderr. The output has the input's format and shape.
 #[derive(clap::Args)]
 #[command(after_help = "Example:
   shenlong apply examples/workshop.json --object 'tool table' --expr 'T(0.5 * e1)' -o moved.json
@@ -32,6 +34,8 @@ pub struct Args {
     /// scale_object) to this file.
     #[arg(long, value_name = "FILE")]
     tdw: Option<PathBuf>,
+    #[command(flatten)]
+    collisions: super::CollisionArgs,
 }
 
 pub fn run(args: Args) -> Result<()> {
@@ -53,6 +57,8 @@ pub fn run(args: Args) -> Result<()> {
         .with_context(|| format!("--expr {}", args.expr))?;
     let before = file.scene.clone();
     file.scene.apply(index, &t.versor, !args.no_carry);
+    args.collisions
+        .resolve(&before, &mut file.scene, &[index])?;
     // Render every output before writing any, so a failure leaves no file half-done.
     let tdw = args.tdw.as_ref().map(|path| {
         let commands = shenlong::format::tdw::edit(&before, &file.scene, &file.tdw_ids());

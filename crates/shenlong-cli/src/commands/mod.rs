@@ -33,3 +33,90 @@ pub fn write_stdout(bytes: &[u8]) -> Result<()> {
     out.flush().context("cannot write to standard output")?;
     Ok(())
 }
+
+/// Collision resolution, as every editing command offers it.
+#[derive(clap::Args, Debug)]
+pub struct CollisionArgs {
+    /// Do not look for collisions at all.
+    #[arg(long)]
+    no_collide: bool,
+    /// Apply the edit even when no free placement is found, and list the overlaps.
+    #[arg(long)]
+    allow_collisions: bool,
+    /// Spacing of the search grid, in metres.
+    #[arg(long, value_name = "M", default_value_t = 0.05)]
+    step: f64,
+    /// Horizontal clearance a moved object keeps from others, in metres.
+    #[arg(long, value_name = "M", default_value_t = 0.02)]
+    buffer: f64,
+    /// Farthest an object is moved to clear a collision, in metres.
+    #[arg(long, value_name = "M", default_value_t = 2.0)]
+    search_radius: f64,
+}
+
+impl CollisionArgs {
+    /// The resolver's options, checked.
+    pub fn options(&self) -> Result<shenlong::collide::ResolveOptions> {
+        for (name, value) in [
+            ("--step", self.step),
+            ("--buffer", self.buffer),
+            ("--search-radius", self.search_radius),
+        ] {
+            if !value.is_finite() || value < 0.0 || (name == "--step" && value <= 0.0) {
+                anyhow::bail!(
+                    "{name} {value}: give a distance in metres{}",
+                    if name == "--step" { " > 0" } else { " ≥ 0" }
+                );
+            }
+        }
+        if self.search_radius / self.step > 2000.0 {
+            anyhow::bail!(
+                "--search-radius / --step is {}: at most 2000 grid steps are searched",
+                self.search_radius / self.step
+            );
+        }
+        Ok(shenlong::collide::ResolveOptions {
+            step: self.step,
+            buffer: self.buffer,
+            radius: self.search_radius,
+            allow_collisions: self.allow_collisions,
+            ..Default::default()
+        })
+    }
+
+    /// Resolves the collisions the edit from `before` to `scene` created among `moved`,
+    /// and says on stderr what was adjusted or left overlapping.
+    pub fn resolve(
+        &self,
+        before: &shenlong::scene::Scene,
+        scene: &mut shenlong::scene::Scene,
+        moved: &[usize],
+    ) -> Result<Option<shenlong::collide::Resolution>> {
+        let options = self.options()?;
+        if self.no_collide {
+            return Ok(None);
+        }
+        let resolution = shenlong::collide::resolve(scene, &before.world_aabbs(), moved, &options)?;
+        let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+        for a in &resolution.adjustments {
+            let with: Vec<String> = a.collided_with.iter().map(|o| o.describe(&names)).collect();
+            let d = a.displacement;
+            eprintln!(
+                "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}",
+                names[a.object],
+                d.x,
+                d.y,
+                d.z,
+                with.join(", ")
+            );
+        }
+        for o in &resolution.remaining {
+            eprintln!(
+                "note: '{}' overlaps {} (--allow-collisions)",
+                names[o.object],
+                o.with.describe(&names)
+            );
+        }
+        Ok(Some(resolution))
+    }
+}

@@ -1,0 +1,431 @@
+//! Resolution: the nearest collision-free placement for the moved groups.
+
+use super::detect::{
+    collides, find_collisions, overlap_volume, room_violations, Obstacle, Overlap,
+};
+use super::EPSILON;
+use crate::geometry::{Aabb, FloorGrid};
+use crate::scene::{AppliedMotion, Scene};
+use cga::Multivector;
+use glam::{DVec2, DVec3};
+use std::cmp::Ordering;
+use std::collections::BinaryHeap;
+use std::time::{Duration, Instant};
+
+/// How the search runs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct ResolveOptions {
+    /// Spacing of the horizontal candidate grid, in metres.
+    pub step: f64,
+    /// Horizontal clearance a resolved placement keeps from other objects and walls, so
+    /// objects are not left wedged against each other (metres).
+    pub buffer: f64,
+    /// Largest displacement searched, in metres.
+    pub radius: f64,
+    /// Time after which the search gives up.
+    pub time_budget: Duration,
+    /// Apply the edit even when no free placement is found, and report the overlaps.
+    pub allow_collisions: bool,
+}
+
+impl Default for ResolveOptions {
+    fn default() -> Self {
+        Self {
+            step: 0.05,
+            buffer: 0.02,
+            radius: 2.0,
+            time_budget: Duration::from_millis(500),
+            allow_collisions: false,
+        }
+    }
+}
+
+/// What resolution did to one group.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Adjustment {
+    /// The group's edited object.
+    pub object: usize,
+    /// Every object of the group (the edited one and those resting on it).
+    pub group: Vec<usize>,
+    /// Where the edit put the object: the bottom centre of its box.
+    pub requested: DVec3,
+    /// Where it ended: the bottom centre of its box.
+    pub resolved: DVec3,
+    /// The translation resolution applied.
+    pub displacement: DVec3,
+    /// What it collided with at the requested placement.
+    pub collided_with: Vec<Obstacle>,
+}
+
+/// The result of resolution.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Resolution {
+    /// The groups that were moved to free placements.
+    pub adjustments: Vec<Adjustment>,
+    /// Overlaps left in place (only with `allow_collisions`).
+    pub remaining: Vec<Overlap>,
+    /// The translations applied, for undo.
+    pub motion: AppliedMotion,
+    /// How many candidate placements were tested.
+    pub candidates_tested: usize,
+}
+
+/// Why the edit cannot be placed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct ResolveError {
+    /// One line for the user: which object, what blocks it, what to try.
+    pub message: String,
+}
+
+impl std::fmt::Display for ResolveError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for ResolveError {}
+
+/// Finds collisions the edit created among `moved` objects (the edited ones; what rests on
+/// them moves with them) and moves each colliding group to the nearest free placement.
+/// `before` are the world boxes before the edit, in object order.
+pub fn resolve(
+    scene: &mut Scene,
+    before: &[Aabb],
+    moved: &[usize],
+    options: &ResolveOptions,
+) -> Result<Resolution, ResolveError> {
+    let started = Instant::now();
+    let mut after = scene.world_aabbs();
+    let groups = groups(scene, moved);
+    let floor = scene.floor();
+    let room = scene.bounds;
+    let collisions = find_collisions(before, &after, &groups, floor, room.as_ref());
+    let mut resolution = Resolution::default();
+    if collisions.is_empty() {
+        return Ok(resolution);
+    }
+    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+    let in_group = |i: usize| groups.iter().position(|g| g.contains(&i));
+    // Fixed objects go in a grid once; moved groups are few and checked directly.
+    let fixed: Vec<usize> = (0..after.len())
+        .filter(|&i| in_group(i).is_none())
+        .collect();
+    let fixed_boxes: Vec<Aabb> = fixed.iter().map(|&i| after[i]).collect();
+    let grid = FloorGrid::new(&fixed_boxes);
+    let horizontal = horizontal_offsets(options.step, options.radius);
+
+    for (g, group) in groups.iter().enumerate() {
+        let hits: Vec<Obstacle> = collisions
+            .iter()
+            .filter(|c| {
+                group.contains(&c.object)
+                    || matches!(c.with, Obstacle::Object(j) if group.contains(&j))
+            })
+            .map(|c| match c.with {
+                Obstacle::Object(j) if group.contains(&j) => Obstacle::Object(c.object),
+                other => other,
+            })
+            .fold(Vec::new(), |mut acc, o| {
+                if !acc.contains(&o) {
+                    acc.push(o);
+                }
+                acc
+            });
+        if hits.is_empty() {
+            continue;
+        }
+        let span = group
+            .iter()
+            .map(|&i| after[i])
+            .reduce(|a, b| a.union(&b))
+            .expect("groups are not empty");
+        let reach = options.radius + options.buffer + options.step;
+        let region = Aabb::new(
+            span.min - DVec3::splat(reach),
+            span.max + DVec3::splat(reach),
+        );
+        // The obstacles that can matter: fixed ones near the region, and other groups.
+        let mut obstacles: Vec<usize> = grid
+            .near_box(&region)
+            .into_iter()
+            .map(|k| fixed[k])
+            .collect();
+        obstacles.extend(
+            groups
+                .iter()
+                .enumerate()
+                .filter(|(h, _)| *h != g)
+                .flat_map(|(_, m)| m.iter().copied()),
+        );
+        obstacles.retain(|&j| after[j].max.y >= region.min.y && after[j].min.y <= region.max.y);
+
+        let check = Placement {
+            group,
+            obstacles: &obstacles,
+            before,
+            after: &after,
+            floor,
+            room: room.as_ref(),
+        };
+        let lifts = lifts(&span, &obstacles, &after, floor, options.radius);
+        let root = group[0];
+        let requested = after[root].bottom_center();
+        // Among equally near placements, prefer the one closest to where the object was
+        // before the edit: it backs out the way it came.
+        let origin = before[root].bottom_center();
+        let mut candidates = ordered_candidates(&horizontal, &lifts).peekable();
+        let mut ties: Vec<DVec3> = Vec::new();
+        let mut found = None;
+        'search: while let Some(first) = candidates.next() {
+            ties.clear();
+            ties.push(first);
+            while let Some(next) =
+                candidates.next_if(|c| (c.length_squared() - first.length_squared()).abs() < 1e-12)
+            {
+                ties.push(next);
+            }
+            ties.sort_by(|a, b| {
+                let (da, db) = (
+                    (requested + *a - origin).length_squared(),
+                    (requested + *b - origin).length_squared(),
+                );
+                da.total_cmp(&db)
+            });
+            for &offset in &ties {
+                resolution.candidates_tested += 1;
+                if resolution.candidates_tested % 256 == 0
+                    && started.elapsed() > options.time_budget
+                {
+                    break 'search;
+                }
+                let buffer = if offset == DVec3::ZERO {
+                    0.0
+                } else {
+                    options.buffer
+                };
+                if check.is_free(offset, buffer) {
+                    found = Some(offset);
+                    break 'search;
+                }
+            }
+        }
+        match found {
+            // An earlier group's move already freed this one.
+            Some(offset) if offset == DVec3::ZERO => {}
+            Some(offset) => {
+                let w = Multivector::translator(offset);
+                let motion = scene.apply_world(group, &w);
+                resolution.motion.moves.extend(motion.moves);
+                for &i in group {
+                    after[i] = after[i].translated(offset);
+                }
+                resolution.adjustments.push(Adjustment {
+                    object: root,
+                    group: group.clone(),
+                    requested,
+                    resolved: requested + offset,
+                    displacement: offset,
+                    collided_with: hits,
+                });
+            }
+            None if options.allow_collisions => {
+                let left = find_collisions(
+                    before,
+                    &after,
+                    std::slice::from_ref(group),
+                    floor,
+                    room.as_ref(),
+                );
+                resolution.remaining.extend(left);
+            }
+            None => {
+                let blocking: Vec<String> = hits.iter().map(|o| o.describe(&names)).collect();
+                let why = if started.elapsed() > options.time_budget {
+                    format!(
+                        "the search stopped after {} ms",
+                        options.time_budget.as_millis()
+                    )
+                } else {
+                    format!("none within {} m", options.radius)
+                };
+                return Err(ResolveError {
+                    message: format!(
+                        "no collision-free placement for '{}' ({why}): it collides with {}; use --allow-collisions to apply the edit anyway",
+                        names[root],
+                        blocking.join(", ")
+                    ),
+                });
+            }
+        }
+    }
+    Ok(resolution)
+}
+
+/// The edited objects with what rests on them; an object carried by an earlier edited
+/// object belongs to that object's group.
+fn groups(scene: &Scene, moved: &[usize]) -> Vec<Vec<usize>> {
+    let mut assigned = vec![false; scene.objects.len()];
+    let mut groups = Vec::new();
+    // Edited objects carried by another edited object join that object's group.
+    let roots: Vec<usize> = moved
+        .iter()
+        .copied()
+        .filter(|&m| {
+            !moved
+                .iter()
+                .any(|&other| other != m && scene.carried_by(other).contains(&m))
+        })
+        .collect();
+    for root in roots {
+        if assigned[root] {
+            continue;
+        }
+        let mut group = vec![root];
+        group.extend(scene.carried_by(root).into_iter().filter(|&i| !assigned[i]));
+        for &i in &group {
+            assigned[i] = true;
+        }
+        groups.push(group);
+    }
+    groups
+}
+
+/// Checks candidate placements of one group.
+struct Placement<'a> {
+    group: &'a [usize],
+    obstacles: &'a [usize],
+    before: &'a [Aabb],
+    after: &'a [Aabb],
+    floor: f64,
+    room: Option<&'a Aabb>,
+}
+
+impl Placement<'_> {
+    /// Whether the group moved by `offset` collides with nothing: other objects (kept
+    /// `buffer` away horizontally unless the overlap existed before), the floor, walls and
+    /// ceiling.
+    fn is_free(&self, offset: DVec3, buffer: f64) -> bool {
+        let pad = DVec3::new(buffer, 0.0, buffer);
+        for &i in self.group {
+            let moved = self.after[i].translated(offset);
+            let padded = Aabb::new(moved.min - pad, moved.max + pad);
+            for &j in self.obstacles {
+                let volume_before = overlap_volume(&self.before[i], &self.before[j]);
+                let blocked = if volume_before > 0.0 {
+                    collides(&moved, &self.after[j], volume_before)
+                } else {
+                    padded.intersects(&self.after[j], EPSILON)
+                };
+                if blocked {
+                    return false;
+                }
+            }
+            let was = room_violations(&self.before[i], self.floor, self.room);
+            for (obstacle, depth) in room_violations(&padded, self.floor, self.room) {
+                let before_depth = was
+                    .iter()
+                    .find(|(o, _)| *o == obstacle)
+                    .map_or(0.0, |(_, d)| *d);
+                if depth > before_depth + EPSILON {
+                    return false;
+                }
+            }
+        }
+        true
+    }
+}
+
+/// Horizontal offsets within `radius` on a grid of `step`, nearest first (ties broken by
+/// coordinates, so the order is deterministic).
+pub(crate) fn horizontal_offsets(step: f64, radius: f64) -> Vec<DVec2> {
+    let n = (radius / step).floor() as i64;
+    let mut offsets: Vec<(i64, i64)> = Vec::new();
+    for i in -n..=n {
+        for k in -n..=n {
+            if ((i * i + k * k) as f64) * step * step <= radius * radius + 1e-12 {
+                offsets.push((i, k));
+            }
+        }
+    }
+    offsets.sort_by_key(|&(i, k)| (i * i + k * k, i, k));
+    offsets
+        .into_iter()
+        .map(|(i, k)| DVec2::new(i as f64 * step, k as f64 * step))
+        .collect()
+}
+
+/// Vertical offsets to try: none, and those that set the group's bottom on the top of a
+/// nearby obstacle or on the floor (lifting onto a surface, as in the paper), up to
+/// `radius`, lowest first.
+fn lifts(span: &Aabb, obstacles: &[usize], boxes: &[Aabb], floor: f64, radius: f64) -> Vec<f64> {
+    let mut lifts = vec![0.0];
+    if span.min.y < floor - EPSILON {
+        lifts.push(floor - span.min.y);
+    }
+    for &j in obstacles {
+        let lift = boxes[j].max.y - span.min.y;
+        if lift > EPSILON && lift <= radius {
+            lifts.push(lift);
+        }
+    }
+    lifts.sort_by(f64::total_cmp);
+    lifts.dedup_by(|a, b| (*a - *b).abs() < 1e-9);
+    lifts
+}
+
+/// Every (horizontal, vertical) combination in order of increasing total displacement: a
+/// k-way merge of the horizontal list (already sorted) for each vertical offset.
+fn ordered_candidates<'a>(
+    horizontal: &'a [DVec2],
+    lifts: &'a [f64],
+) -> impl Iterator<Item = DVec3> + 'a {
+    #[derive(PartialEq)]
+    struct Next {
+        length2: f64,
+        lift: usize,
+        index: usize,
+    }
+    impl Eq for Next {}
+    impl Ord for Next {
+        fn cmp(&self, other: &Self) -> Ordering {
+            // Reversed: BinaryHeap is a max-heap and the nearest must come first.
+            other
+                .length2
+                .total_cmp(&self.length2)
+                .then(other.lift.cmp(&self.lift))
+                .then(other.index.cmp(&self.index))
+        }
+    }
+    impl PartialOrd for Next {
+        fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+            Some(self.cmp(other))
+        }
+    }
+    let mut heap: BinaryHeap<Next> = lifts
+        .iter()
+        .enumerate()
+        .filter(|_| !horizontal.is_empty())
+        .map(|(lift, dy)| Next {
+            length2: dy * dy,
+            lift,
+            index: 0,
+        })
+        .collect();
+    std::iter::from_fn(move || {
+        let next = heap.pop()?;
+        let h = horizontal[next.index];
+        let dy = lifts[next.lift];
+        if next.index + 1 < horizontal.len() {
+            let h2 = horizontal[next.index + 1];
+            heap.push(Next {
+                length2: h2.length_squared() + dy * dy,
+                lift: next.lift,
+                index: next.index + 1,
+            });
+        }
+        Some(DVec3::new(h.x, dy, h.y))
+    })
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,356 @@
+use super::*;
+use crate::collide::{find_collisions, Obstacle, EPSILON};
+use crate::scene::Object;
+use glam::DQuat;
+use proptest::prelude::*;
+
+fn boxed(scene: &mut Scene, name: &str, size: [f64; 3], at: [f64; 3]) -> usize {
+    scene.objects.push(
+        Object::new_box(
+            name,
+            DVec3::from(size),
+            DVec3::from(at),
+            DQuat::IDENTITY,
+            1.0,
+        )
+        .unwrap(),
+    );
+    scene.objects.len() - 1
+}
+
+/// Moves object `i` by `t` (carrying), then resolves.
+fn edit(
+    scene: &mut Scene,
+    i: usize,
+    t: DVec3,
+    options: &ResolveOptions,
+) -> Result<Resolution, ResolveError> {
+    let before = scene.world_aabbs();
+    scene.apply(i, &Multivector::translator(t), true);
+    resolve(scene, &before, &[i], options)
+}
+
+fn room() -> Scene {
+    let mut s = Scene::new("room");
+    s.bounds = Some(Aabb::new(
+        DVec3::new(-3.0, 0.0, -3.0),
+        DVec3::new(3.0, 2.5, 3.0),
+    ));
+    s
+}
+
+#[test]
+fn no_collision_means_no_adjustment() {
+    let mut s = room();
+    let a = boxed(&mut s, "a", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
+    boxed(&mut s, "b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
+    let r = edit(
+        &mut s,
+        a,
+        DVec3::new(1.0, 0.0, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert!(r.adjustments.is_empty());
+    assert_eq!(r.candidates_tested, 0);
+}
+
+#[test]
+fn pushed_into_another_object_it_stops_beside_it_with_the_buffer() {
+    let mut s = room();
+    let a = boxed(&mut s, "crate", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
+    boxed(&mut s, "cabinet", [1.0, 1.0, 1.0], [2.0, 0.0, 0.0]);
+    // Asked to move to x = 1.8: deep inside the cabinet (x ∈ [1.5, 2.5]).
+    let r = edit(
+        &mut s,
+        a,
+        DVec3::new(1.8, 0.0, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(r.adjustments.len(), 1);
+    let adj = &r.adjustments[0];
+    assert_eq!(adj.collided_with, vec![Obstacle::Object(1)]);
+    // Nearest: back out along −x until the crate's right side clears the cabinet's left by
+    // 2 cm: right side at ≤ 1.48, so centre ≤ 1.23; the grid step is 5 cm from 1.8 → 1.20.
+    assert!(
+        (adj.displacement - DVec3::new(-0.6, 0.0, 0.0)).length() < 1e-9,
+        "{:?}",
+        adj.displacement
+    );
+    let b = s.objects[a].world_aabb();
+    assert!((b.max.x - 1.45).abs() < 1e-9);
+    assert!(find_collisions(
+        &s.world_aabbs(),
+        &s.world_aabbs(),
+        &[vec![a]],
+        0.0,
+        s.bounds.as_ref()
+    )
+    .is_empty());
+}
+
+#[test]
+fn resting_objects_move_with_their_support() {
+    let mut s = room();
+    let table = boxed(&mut s, "table", [1.0, 0.8, 1.0], [0.0, 0.0, 0.0]);
+    let cup = boxed(&mut s, "cup", [0.1, 0.1, 0.1], [0.2, 0.8, 0.2]);
+    boxed(&mut s, "sofa", [2.0, 0.9, 1.0], [0.0, 0.0, 2.0]);
+    s.detect_supports();
+    assert_eq!(s.objects[cup].support, Some(table));
+    let relative = s.objects[cup].world_aabb().min - s.objects[table].world_aabb().min;
+    let r = edit(
+        &mut s,
+        table,
+        DVec3::new(0.0, 0.0, 1.5),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    let adj = &r.adjustments[0];
+    assert_eq!(adj.group, vec![table, cup]);
+    let (t, c) = (s.objects[table].world_aabb(), s.objects[cup].world_aabb());
+    assert!(
+        (c.min.y - t.max.y).abs() < 1e-12,
+        "the cup is still on the table"
+    );
+    assert!(
+        (c.min - t.min - relative).length() < 1e-9,
+        "and at the same place on it"
+    );
+}
+
+#[test]
+fn the_floor_and_the_walls_push_back() {
+    let mut s = room();
+    let a = boxed(&mut s, "box", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
+    let r = edit(
+        &mut s,
+        a,
+        DVec3::new(0.0, -0.3, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(r.adjustments[0].collided_with, vec![Obstacle::Floor]);
+    assert!(
+        (s.objects[a].world_aabb().min.y).abs() < 1e-9,
+        "back on the floor"
+    );
+    let r = edit(
+        &mut s,
+        a,
+        DVec3::new(3.0, 0.0, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(
+        r.adjustments[0].collided_with,
+        vec![Obstacle::Wall {
+            axis: 0,
+            max_side: true
+        }]
+    );
+    let b = s.objects[a].world_aabb();
+    assert!(b.max.x <= 3.0 - 0.02 + 1e-9 && b.max.x > 2.9, "{b:?}");
+}
+
+#[test]
+fn several_moved_objects_do_not_collide_with_each_other() {
+    let mut s = room();
+    let a = boxed(&mut s, "a", [0.5, 0.5, 0.5], [-2.0, 0.0, 0.0]);
+    let b = boxed(&mut s, "b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
+    let before = s.world_aabbs();
+    // Both sent to the same spot.
+    s.apply(a, &Multivector::translator(DVec3::new(2.0, 0.0, 0.0)), true);
+    s.apply(
+        b,
+        &Multivector::translator(DVec3::new(-2.0, 0.0, 0.0)),
+        true,
+    );
+    let r = resolve(&mut s, &before, &[a, b], &ResolveOptions::default()).unwrap();
+    assert_eq!(
+        r.adjustments.len(),
+        1,
+        "one of the two yields: {:?}",
+        r.adjustments
+    );
+    let boxes = s.world_aabbs();
+    assert!(!boxes[a].intersects(&boxes[b], EPSILON));
+}
+
+#[test]
+fn lifting_onto_a_surface_is_a_resolution() {
+    // A room barely larger than the desk: no floor spot fits the book.
+    let mut s = Scene::new("study");
+    s.bounds = Some(Aabb::new(
+        DVec3::new(-0.8, 0.0, -0.5),
+        DVec3::new(0.8, 2.5, 0.5),
+    ));
+    boxed(&mut s, "desk", [1.4, 0.75, 0.7], [0.0, 0.0, 0.0]);
+    let book = boxed(&mut s, "book", [0.2, 0.05, 0.3], [0.4, 0.75, 0.0]);
+    // Pushed down into the desk, it goes back onto the desk's top.
+    let r = edit(
+        &mut s,
+        book,
+        DVec3::new(0.0, -0.75, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(r.adjustments.len(), 1);
+    let b = s.objects[book].world_aabb();
+    assert!((b.min.y - 0.75).abs() < 1e-9, "on the desk: {b:?}");
+    assert!((r.adjustments[0].displacement - DVec3::new(0.0, 0.75, 0.0)).length() < 1e-9);
+}
+
+#[test]
+fn no_placement_names_what_blocks_and_changes_nothing_else() {
+    let mut s = Scene::new("tight");
+    s.bounds = Some(Aabb::new(
+        DVec3::new(-1.0, 0.0, -1.0),
+        DVec3::new(1.0, 1.0, 1.0),
+    ));
+    let a = boxed(&mut s, "piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
+    boxed(&mut s, "bench", [1.9, 0.9, 0.9], [0.0, 0.0, 0.5]);
+    let options = ResolveOptions {
+        radius: 0.3,
+        ..ResolveOptions::default()
+    };
+    let e = edit(&mut s, a, DVec3::new(0.0, 0.0, 0.6), &options).unwrap_err();
+    assert_eq!(e.message, "no collision-free placement for 'piano' (none within 0.3 m): it collides with 'bench'; use --allow-collisions to apply the edit anyway");
+    let mut s2 = Scene::new("tight");
+    s2.bounds = s.bounds;
+    boxed(&mut s2, "piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
+    boxed(&mut s2, "bench", [1.9, 0.9, 0.9], [0.0, 0.0, 0.5]);
+    let options = ResolveOptions {
+        allow_collisions: true,
+        ..options
+    };
+    let r = edit(&mut s2, a, DVec3::new(0.0, 0.0, 0.6), &options).unwrap();
+    assert!(r.adjustments.is_empty());
+    assert_eq!(r.remaining.len(), 1);
+    assert_eq!(r.remaining[0].with, Obstacle::Object(1));
+}
+
+#[test]
+fn pre_existing_overlaps_do_not_trigger_resolution() {
+    let mut s = room();
+    let sofa = boxed(&mut s, "sofa", [2.0, 0.9, 0.9], [0.0, 0.0, 0.0]);
+    let pillow = boxed(&mut s, "pillow", [0.4, 0.3, 0.2], [0.5, 0.4, 0.0]);
+    let r = edit(
+        &mut s,
+        pillow,
+        DVec3::new(-0.8, 0.0, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert!(r.adjustments.is_empty(), "{:?}", r.adjustments);
+    let _ = sofa;
+}
+
+#[test]
+fn candidates_come_nearest_first() {
+    let h = horizontal_offsets(0.05, 0.3);
+    let lifts = [0.0, 0.1, 0.75];
+    let all: Vec<DVec3> = ordered_candidates(&h, &lifts).collect();
+    assert_eq!(all.len(), h.len() * 3);
+    assert_eq!(all[0], DVec3::ZERO);
+    for pair in all.windows(2) {
+        assert!(pair[0].length_squared() <= pair[1].length_squared() + 1e-12);
+    }
+}
+
+/// An independent validity check: brute force over every other object and the room.
+fn free_by_brute_force(
+    scene: &Scene,
+    before: &[Aabb],
+    group: &[usize],
+    boxes: &[Aabb],
+    offset: DVec3,
+    buffer: f64,
+) -> bool {
+    for &i in group {
+        let m = boxes[i].translated(offset);
+        let p = Aabb::new(
+            m.min - DVec3::new(buffer, 0.0, buffer),
+            m.max + DVec3::new(buffer, 0.0, buffer),
+        );
+        for j in 0..boxes.len() {
+            if group.contains(&j) {
+                continue;
+            }
+            let o = m.overlap(&boxes[j]);
+            let pre = before[i].overlap(&before[j]);
+            let pre_volume = if pre.cmpgt(DVec3::ZERO).all() {
+                pre.x * pre.y * pre.z
+            } else {
+                0.0
+            };
+            if pre_volume > 0.0 {
+                if o.cmpgt(DVec3::splat(EPSILON)).all()
+                    && o.x * o.y * o.z > pre_volume * (1.0 + 1e-9) + EPSILON.powi(3)
+                {
+                    return false;
+                }
+            } else if p.overlap(&boxes[j]).cmpgt(DVec3::splat(EPSILON)).all() {
+                return false;
+            }
+        }
+        if let Some(r) = scene.bounds {
+            if p.min.x < r.min.x - EPSILON
+                || p.max.x > r.max.x + EPSILON
+                || p.min.z < r.min.z - EPSILON
+                || p.max.z > r.max.z + EPSILON
+                || p.max.y > r.max.y + EPSILON
+            {
+                return false;
+            }
+        }
+        if p.min.y < scene.floor() - EPSILON {
+            return false;
+        }
+    }
+    true
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+
+    #[test]
+    fn resolved_placements_are_free_and_nearest(
+        boxes in prop::collection::vec((-2.5f64..2.0, -2.5f64..2.0, 0.2f64..0.8, 0.2f64..1.2), 3..9),
+        target in (-2.0f64..2.0, -2.0f64..2.0),
+    ) {
+        let mut s = room();
+        // Lay out boxes on the floor, skipping any that would overlap those placed.
+        for (k, (x, z, w, h)) in boxes.iter().enumerate() {
+            let b = Aabb::new(DVec3::new(*x, 0.0, *z), DVec3::new(x + w, *h, z + w));
+            if s.world_aabbs().iter().any(|o| o.intersects(&b, EPSILON)) { continue; }
+            boxed(&mut s, &format!("o{k}"), [*w, *h, *w], [x + w / 2.0, 0.0, z + w / 2.0]);
+        }
+        prop_assume!(s.objects.len() >= 2);
+        let options = ResolveOptions { radius: 1.0, step: 0.1, ..ResolveOptions::default() };
+        let before = s.world_aabbs();
+        let start = s.objects[0].world_aabb().bottom_center();
+        let requested = DVec3::new(target.0, 0.0, target.1) - start;
+        s.apply(0, &Multivector::translator(requested), true);
+        let after = s.world_aabbs();
+        match resolve(&mut s, &before, &[0], &options) {
+            Ok(r) => {
+                let offset = r.adjustments.first().map_or(DVec3::ZERO, |a| a.displacement);
+                let buffer = if offset == DVec3::ZERO { 0.0 } else { options.buffer };
+                prop_assert!(free_by_brute_force(&s, &before, &[0], &after, offset, buffer));
+                // No grid candidate nearer than the chosen one is free.
+                let lifts: Vec<f64> = std::iter::once(0.0).chain(after.iter().skip(1).map(|b| b.max.y - after[0].min.y)).filter(|l| *l >= 0.0 && *l <= options.radius).collect();
+                for h in horizontal_offsets(options.step, options.radius) {
+                    for &dy in &lifts {
+                        let c = DVec3::new(h.x, dy, h.y);
+                        if c.length() < offset.length() - 1e-9 {
+                            let buffer = if c == DVec3::ZERO { 0.0 } else { options.buffer };
+                            prop_assert!(!free_by_brute_force(&s, &before, &[0], &after, c, buffer), "{c} is free and nearer than {offset}");
+                        }
+                    }
+                }
+            }
+            Err(e) => prop_assert!(e.message.starts_with("no collision-free placement"), "{e}"),
+        }
+    }
+}
