@@ -19,6 +19,7 @@ struct Cli {
 
 #[derive(Subcommand)]
 enum Command {
+    Edit(commands::edit::Args),
     Eval(commands::eval::Args),
     Apply(commands::apply::Args),
     Convert(commands::convert::Args),
@@ -29,6 +30,7 @@ enum Command {
 fn main() -> ExitCode {
     let cli = Cli::parse();
     let result = match cli.command {
+        Command::Edit(args) => commands::edit::run(args),
         Command::Eval(args) => commands::eval::run(args),
         Command::Apply(args) => commands::apply::run(args),
         Command::Convert(args) => commands::convert::run(args),

@@ -16,5 +16,8 @@ pub mod expr;
 pub mod format;
 pub mod geometry;
 pub mod io;
+pub mod llm;
+pub mod offline;
+pub mod pipeline;
 pub mod render;
 pub mod scene;

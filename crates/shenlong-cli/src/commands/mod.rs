@@ -2,6 +2,7 @@
 
 pub mod apply;
 pub mod convert;
+pub mod edit;
 pub mod eval;
 pub mod examples;
 pub mod render;
@@ -55,6 +56,11 @@ pub struct CollisionArgs {
 }
 
 impl CollisionArgs {
+    /// Whether collisions are skipped entirely.
+    pub fn no_collide(&self) -> bool {
+        self.no_collide
+    }
+
     /// The resolver's options, checked.
     pub fn options(&self) -> Result<shenlong::collide::ResolveOptions> {
         for (name, value) in [

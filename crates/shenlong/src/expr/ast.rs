@@ -31,6 +31,8 @@ pub enum ExprKind {
     Attribute(Box<Expr>, String),
     /// `callee(arguments…)`.
     Call(Box<Expr>, Vec<Expr>),
+    /// `base[index]` (the Euclidean dialect).
+    Index(Box<Expr>, Box<Expr>),
     /// A prefix operator.
     Unary(UnaryOp, Box<Expr>),
     /// An infix operator.
@@ -61,6 +63,8 @@ pub enum BinaryOp {
     Sub,
     /// `a * b`, the geometric product.
     Mul,
+    /// `a @ b`, the matrix product (the Euclidean dialect; composition, as `*` of versors).
+    MatMul,
     /// `a / b`, division by a number.
     Div,
     /// `a ** n`, an integer power.
@@ -76,6 +80,7 @@ impl BinaryOp {
             BinaryOp::Add => "+",
             BinaryOp::Sub => "-",
             BinaryOp::Mul => "*",
+            BinaryOp::MatMul => "@",
             BinaryOp::Div => "/",
             BinaryOp::Pow => "**",
         }
@@ -92,6 +97,7 @@ impl Expr {
                 callee.node_count() + args.iter().map(Expr::node_count).sum::<usize>()
             }
             ExprKind::Unary(_, x) => x.node_count(),
+            ExprKind::Index(base, index) => base.node_count() + index.node_count(),
             ExprKind::Binary(_, a, b) => a.node_count() + b.node_count(),
         }
     }
@@ -116,6 +122,7 @@ impl fmt::Display for Expr {
                 }
                 f.write_str(")")
             }
+            ExprKind::Index(base, index) => write!(f, "{base}[{index}]"),
             ExprKind::Unary(op, x) => {
                 let symbol = match op {
                     UnaryOp::Neg => "-",

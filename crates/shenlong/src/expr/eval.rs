@@ -43,6 +43,13 @@ enum Function {
     Max,
     Radians,
     Degrees,
+    // The Euclidean dialect's matrices.
+    Translation,
+    RotationX,
+    RotationY,
+    RotationZ,
+    Scaling,
+    Identity,
 }
 
 const FUNCTIONS: &[(&str, Function)] = &[
@@ -70,7 +77,46 @@ const FUNCTIONS: &[(&str, Function)] = &[
     ("deg2rad", Function::Radians),
     ("degrees", Function::Degrees),
     ("rad2deg", Function::Degrees),
+    ("translation", Function::Translation),
+    ("rotation_x", Function::RotationX),
+    ("rotation_y", Function::RotationY),
+    ("rotation_z", Function::RotationZ),
+    ("scaling", Function::Scaling),
+    ("identity", Function::Identity),
 ];
+
+/// Which dialect's names an expression may use.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Dialect {
+    /// The CGA language (SPEC §4): blades, T, R, D, up, down.
+    #[default]
+    Cga,
+    /// The Euclidean baseline: translation, rotation_x/y/z, scaling, `@`, indexing.
+    Euclidean,
+}
+
+impl Function {
+    /// Whether the function belongs to the dialect (math functions belong to both).
+    fn in_dialect(self, dialect: Dialect) -> bool {
+        let cga = matches!(
+            self,
+            Function::T | Function::R | Function::D | Function::Up | Function::Down
+        );
+        let euclidean = matches!(
+            self,
+            Function::Translation
+                | Function::RotationX
+                | Function::RotationY
+                | Function::RotationZ
+                | Function::Scaling
+                | Function::Identity
+        );
+        match dialect {
+            Dialect::Cga => !euclidean,
+            Dialect::Euclidean => !cga,
+        }
+    }
+}
 
 /// Names a model may write that are worth a suggestion when misspelt.
 const KNOWN_NAMES: &[&str] = &[
@@ -93,6 +139,7 @@ pub struct Evaluator<'a> {
     bindings: &'a Bindings,
     limits: &'a Limits,
     steps: usize,
+    dialect: Dialect,
 }
 
 impl<'a> Evaluator<'a> {
@@ -103,7 +150,14 @@ impl<'a> Evaluator<'a> {
             bindings,
             limits,
             steps: 0,
+            dialect: Dialect::Cga,
         }
+    }
+
+    /// The same evaluator for another dialect's names.
+    pub fn with_dialect(mut self, dialect: Dialect) -> Self {
+        self.dialect = dialect;
+        self
     }
 
     /// Evaluates `expr` to a multivector.
@@ -129,6 +183,7 @@ impl<'a> Evaluator<'a> {
             ExprKind::Name(name) => self.name(name, expr),
             ExprKind::Attribute(base, name) => self.attribute(base, name, expr),
             ExprKind::Call(callee, args) => self.call(callee, args, expr),
+            ExprKind::Index(base, index) => self.index(base, index, expr),
             ExprKind::Unary(op, x) => {
                 let v = self.value(x)?;
                 let v = self.expect_mv(v, x)?;
@@ -180,8 +235,14 @@ impl<'a> Evaluator<'a> {
     }
 
     fn name(&self, name: &str, expr: &Expr) -> Result<Value, ExprError> {
-        if let Some(value) = builtin_name(name) {
+        if let Some(value) = builtin_name(name, self.dialect) {
             return Ok(value);
+        }
+        if self.dialect == Dialect::Euclidean && builtin_name(name, Dialect::Cga).is_some() {
+            return Err(self.error(
+                format!("'{name}' is not available here: compose translation(dx, dy, dz), rotation_x/y/z(theta) and scaling(s) with @"),
+                expr,
+            ));
         }
         if let Some(index) = self.bindings.index_of(name) {
             return Ok(Value::Object(index));
@@ -221,7 +282,7 @@ impl<'a> Evaluator<'a> {
 
     fn attribute(&mut self, base: &Expr, name: &str, expr: &Expr) -> Result<Value, ExprError> {
         match self.value(base)? {
-            Value::Module(module) => match builtin_name(name) {
+            Value::Module(module) => match builtin_name(name, self.dialect) {
                 Some(value @ (Value::Function(_) | Value::Mv(_))) if !name.starts_with('e') => {
                     Ok(value)
                 }
@@ -255,6 +316,33 @@ impl<'a> Evaluator<'a> {
         }
     }
 
+    fn index(&mut self, base: &Expr, index: &Expr, expr: &Expr) -> Result<Value, ExprError> {
+        if self.dialect == Dialect::Cga {
+            return Err(self.error(
+                "indexing is not part of the CGA language: take a coordinate with the inner product, as in (X1.max | e2)",
+                expr,
+            ));
+        }
+        let v = self.value(base)?;
+        let v = self.expect_mv(v, base)?;
+        let i = self.value(index)?;
+        let i = self.expect_mv(i, index)?;
+        let k = scalar_of(&i)
+            .filter(|k| k.fract() == 0.0 && (0.0..3.0).contains(k))
+            .ok_or_else(|| self.error("an index must be 0, 1 or 2 (x, y, z)", index))?;
+        let mut rest = v;
+        for c in 1..4 {
+            rest[c] = 0.0;
+        }
+        if rest.max_abs() > 0.0 {
+            return Err(self.error(
+                "only a coordinate triple such as X1.min can be indexed",
+                base,
+            ));
+        }
+        Ok(Value::Mv(Multivector::scalar(v[k as usize + 1])))
+    }
+
     fn binary(
         &self,
         op: BinaryOp,
@@ -269,6 +357,13 @@ impl<'a> Evaluator<'a> {
             BinaryOp::Add => a + b,
             BinaryOp::Sub => a - b,
             BinaryOp::Mul => a * b,
+            BinaryOp::MatMul if self.dialect == Dialect::Cga => {
+                return Err(self.error(
+                    "'@' is not part of the CGA language: use * for the geometric product",
+                    expr,
+                ))
+            }
+            BinaryOp::MatMul => a * b,
             BinaryOp::Div => {
                 let divisor = scalar_of(&b).ok_or_else(|| {
                     self.error(
@@ -351,6 +446,35 @@ impl<'a> Evaluator<'a> {
                     .down()
                     .map_err(|e| self.error(cga_message(&e), &args[0]))?;
                 Multivector::from_vector(x)
+            }
+            Function::Translation => {
+                self.arity(function, &values, 3, "dx, dy, dz", expr)?;
+                let mut t = [0.0; 3];
+                for (k, (v, a)) in values.iter().zip(args).enumerate() {
+                    t[k] = self.number(function, v, a)?;
+                }
+                Multivector::translator(DVec3::from(t))
+            }
+            Function::RotationX | Function::RotationY | Function::RotationZ => {
+                self.arity(function, &values, 1, "an angle in radians", expr)?;
+                let angle = self.number(function, &values[0], &args[0])?;
+                // Right-hand rule about each axis: y → z about x, z → x about y, x → y about z.
+                let (u, v) = match function {
+                    Function::RotationX => (Multivector::e2(), Multivector::e3()),
+                    Function::RotationY => (Multivector::e3(), Multivector::e1()),
+                    _ => (Multivector::e1(), Multivector::e2()),
+                };
+                Multivector::rotor(angle, &u, &v).map_err(|e| self.error(cga_message(&e), expr))?
+            }
+            Function::Scaling => {
+                self.arity(function, &values, 1, "a scale factor", expr)?;
+                let s = self.number(function, &values[0], &args[0])?;
+                Multivector::dilator(s)
+                    .map_err(|e| self.error(cga_message(&e).replace("D(", "scaling("), expr))?
+            }
+            Function::Identity => {
+                self.arity(function, &values, 0, "nothing", expr)?;
+                Multivector::ONE
             }
             Function::Min | Function::Max => {
                 if values.len() < 2 {
@@ -547,13 +671,21 @@ impl<'a> Evaluator<'a> {
     }
 }
 
-/// The value of a name from the fixed table: blades, constants, functions.
-fn builtin_name(name: &str) -> Option<Value> {
-    if let Some((_, f)) = FUNCTIONS.iter().find(|(n, _)| *n == name) {
+/// The value of a name from the fixed table of a dialect: blades, constants, functions.
+fn builtin_name(name: &str, dialect: Dialect) -> Option<Value> {
+    if let Some((_, f)) = FUNCTIONS
+        .iter()
+        .find(|(n, f)| *n == name && f.in_dialect(dialect))
+    {
         return Some(Value::Function(*f));
     }
+    if name == "pi" {
+        return Some(Value::Mv(Multivector::scalar(std::f64::consts::PI)));
+    }
+    if dialect == Dialect::Euclidean {
+        return None;
+    }
     let mv = match name {
-        "pi" => Multivector::scalar(std::f64::consts::PI),
         "eo" | "e0" | "no" => Multivector::eo(),
         "einf" | "ninf" => Multivector::einf(),
         _ => blade(name)?,

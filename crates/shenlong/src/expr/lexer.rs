@@ -42,6 +42,12 @@ pub enum TokenKind {
     Slash,
     /// `~` reverse
     Tilde,
+    /// `@` matrix product (the Euclidean dialect)
+    At,
+    /// `[`
+    LBracket,
+    /// `]`
+    RBracket,
     /// End of the text.
     End,
 }
@@ -64,6 +70,9 @@ impl TokenKind {
             TokenKind::StarStar => "'**'".into(),
             TokenKind::Slash => "'/'".into(),
             TokenKind::Tilde => "'~'".into(),
+            TokenKind::At => "'@'".into(),
+            TokenKind::LBracket => "'['".into(),
+            TokenKind::RBracket => "']'".into(),
             TokenKind::End => "the end of the expression".into(),
         }
     }
@@ -95,6 +104,9 @@ pub fn tokenize(source: &str) -> Result<Vec<Token>, ExprError> {
             b'-' => tokens.push(single(TokenKind::Minus)),
             b'/' => tokens.push(single(TokenKind::Slash)),
             b'~' => tokens.push(single(TokenKind::Tilde)),
+            b'@' => tokens.push(single(TokenKind::At)),
+            b'[' => tokens.push(single(TokenKind::LBracket)),
+            b']' => tokens.push(single(TokenKind::RBracket)),
             b'*' => {
                 if bytes.get(i + 1) == Some(&b'*') {
                     tokens.push(Token {
@@ -136,9 +148,8 @@ pub fn tokenize(source: &str) -> Result<Vec<Token>, ExprError> {
                 let ch = source[start..].chars().next().unwrap_or('?');
                 let hint = match ch {
                     '\'' | '"' => ": the language has no strings",
-                    '[' | ']' | '{' | '}' => ": use ( ) to group; there are no lists or indexing",
+                    '{' | '}' => ": use ( ) to group; there are no sets or dicts",
                     '=' => ": there are no assignments or comparisons",
-                    '@' => ": use * for the geometric product",
                     _ => "",
                 };
                 return Err(ExprError::at(

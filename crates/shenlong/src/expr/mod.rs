@@ -16,6 +16,7 @@ pub mod reply;
 
 pub use ast::{BinaryOp, Expr, ExprKind, UnaryOp};
 pub use error::{ExprError, Span};
+pub use eval::Dialect;
 
 use cga::{Multivector, Similarity};
 use glam::DVec3;
@@ -143,6 +144,19 @@ pub fn evaluate_with(
 ) -> Result<Multivector, ExprError> {
     let expr = parser::parse(source, limits)?;
     eval::Evaluator::new(source, bindings, limits).evaluate(&expr)
+}
+
+/// Parses and evaluates an expression of the given dialect.
+pub fn evaluate_in(
+    source: &str,
+    bindings: &Bindings,
+    dialect: Dialect,
+) -> Result<Multivector, ExprError> {
+    let limits = Limits::default();
+    let expr = parser::parse(source, &limits)?;
+    eval::Evaluator::new(source, bindings, &limits)
+        .with_dialect(dialect)
+        .evaluate(&expr)
 }
 
 /// Parses and evaluates an expression that must be a transformation `T·R·D`.

@@ -60,6 +60,7 @@ fn infix_power(kind: &TokenKind) -> Option<(u8, u8, BinaryOp)> {
         TokenKind::Plus => (5, 6, BinaryOp::Add),
         TokenKind::Minus => (5, 6, BinaryOp::Sub),
         TokenKind::Star => (7, 8, BinaryOp::Mul),
+        TokenKind::At => (7, 8, BinaryOp::MatMul),
         TokenKind::Slash => (7, 8, BinaryOp::Div),
         // Right associative; the right side is a unary expression (`2 ** -1`).
         TokenKind::StarStar => (11, 9, BinaryOp::Pow),
@@ -154,6 +155,23 @@ impl Parser<'_> {
                     let close = self.expect_close_paren()?;
                     let span = expr.span.start..close;
                     expr = self.node(ExprKind::Call(Box::new(expr), arguments), span)?;
+                    self.depth -= 1;
+                }
+                TokenKind::LBracket => {
+                    self.enter()?;
+                    self.advance();
+                    let index = self.expression(0)?;
+                    let close = self.peek().clone();
+                    if close.kind != TokenKind::RBracket {
+                        return Err(ExprError::at(
+                            format!("expected ']' but found {}", close.kind.describe()),
+                            &close.span,
+                            self.source,
+                        ));
+                    }
+                    self.advance();
+                    let span = expr.span.start..close.span.end;
+                    expr = self.node(ExprKind::Index(Box::new(expr), Box::new(index)), span)?;
                     self.depth -= 1;
                 }
                 TokenKind::Dot => {

@@ -422,3 +422,56 @@ fn documented_examples_evaluate_to_what_they_say() {
     }
     assert!(checked >= 8, "only {checked} documented examples found");
 }
+
+#[test]
+fn the_euclidean_dialect() {
+    let e = |s: &str| {
+        evaluate_in(s, &two_objects(), Dialect::Euclidean)
+            .unwrap_or_else(|err| panic!("{s}: {err}"))
+    };
+    let t = to_transformation(&e("translation(2, 0, -1)"))
+        .unwrap()
+        .similarity;
+    assert!(close(t.translation, DVec3::new(2.0, 0.0, -1.0)));
+    let r = to_transformation(&e("rotation_y(np.pi / 2)"))
+        .unwrap()
+        .similarity;
+    assert!(
+        close(r.rotation * DVec3::Z, DVec3::X),
+        "+90° about y takes +z to +x"
+    );
+    let m = e("translation(0, 0, -1) @ rotation_y(np.pi)");
+    assert!(close(
+        m.transform_point(DVec3::Z).unwrap(),
+        DVec3::new(0.0, 0.0, -2.0)
+    ));
+    let on_top = to_transformation(&e("translation(X2.center[0] - X1.center[0], X2.max[1] - X1.min[1], X2.center[2] - X1.center[2])")).unwrap();
+    assert!(close(
+        on_top.similarity.translation,
+        DVec3::new(2.0, 0.9, 0.0)
+    ));
+    assert!(
+        to_transformation(&e("scaling(2) @ identity()"))
+            .unwrap()
+            .similarity
+            .scale
+            - 2.0
+            < 1e-12
+    );
+    let err = |s: &str| {
+        evaluate_in(s, &two_objects(), Dialect::Euclidean)
+            .unwrap_err()
+            .to_string()
+    };
+    assert!(
+        err("T(e1)").starts_with("'T' is not available here"),
+        "{}",
+        err("T(e1)")
+    );
+    assert!(err("X1.min[3]").starts_with("an index must be 0, 1 or 2"));
+    assert!(err("scaling(-1)").starts_with("scaling(-1): scale must be > 0"));
+    // And the CGA dialect refuses the Euclidean constructs, saying what to write instead.
+    assert!(error("T(X1.max[1] * e2)").starts_with("indexing is not part of the CGA language"));
+    assert!(error("T(e1) @ T(e2)").starts_with("'@' is not part of the CGA language"));
+    assert!(error("translation(1, 0, 0)").starts_with("unknown name 'translation'"));
+}

@@ -1,0 +1,240 @@
+//! `shenlong edit` as a user runs it: offline, and against a mock model server.
+
+#[path = "../../shenlong/tests/support/mock_llm.rs"]
+mod mock_llm;
+
+use mock_llm::{MockLlm, Reply};
+use std::path::Path;
+use std::process::{Command, Output};
+
+fn shenlong(args: &[&str], env: &[(&str, &str)]) -> Output {
+    let mut command = Command::new(env!("CARGO_BIN_EXE_shenlong"));
+    command
+        .args(args)
+        .env_remove("OPENAI_API_KEY")
+        .env_remove("OPENAI_BASE_URL");
+    for (k, v) in env {
+        command.env(k, v);
+    }
+    command.output().expect("the binary runs")
+}
+
+fn examples() -> std::path::PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8_lossy(&o.stderr).into_owned()
+}
+
+#[test]
+fn the_readme_command_works_offline() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("edited.json");
+    let report = dir.path().join("report.json");
+    let scene = examples().join("workshop.json");
+    let o = shenlong(
+        &[
+            "edit",
+            scene.to_str().unwrap(),
+            "put the 'orange bottle' on top of the 'tool table'",
+            "-o",
+            out.to_str().unwrap(),
+            "--json",
+            report.to_str().unwrap(),
+            "--no-cache",
+        ],
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let bottle = v["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["name"] == "orange bottle")
+        .unwrap()
+        .clone();
+    assert_eq!(bottle["position"][1], 0.9);
+    let r: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&report).unwrap()).unwrap();
+    assert_eq!(r["query"], "put the X1 on top of the X2");
+    assert_eq!(r["bindings"][1]["object"], "tool table");
+    assert_eq!(r["model"], "offline");
+    assert_eq!(r["system"], "cga");
+    for key in [
+        "exchanges",
+        "objects",
+        "collisions_resolved",
+        "timings_ms",
+        "tokens",
+        "retries",
+        "cache_hit",
+    ] {
+        assert!(r.get(key).is_some(), "the report has {key}");
+    }
+}
+
+#[test]
+fn an_unknown_object_fails_with_a_suggestion_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    std::fs::write(&out, "keep").unwrap();
+    let o = shenlong(
+        &[
+            "edit",
+            "example:living_room",
+            "move the 'sofaa' left",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(!o.status.success());
+    assert_eq!(
+        stderr(&o).trim(),
+        "shenlong: unknown object 'sofaa' — did you mean 'sofa'?"
+    );
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep");
+    let o = shenlong(
+        &[
+            "edit",
+            "example:living_room",
+            "sing a song about the 'sofa'",
+            "-o",
+            out.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("could not read") && stderr(&o).contains("--llm openai:MODEL"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep");
+}
+
+#[test]
+fn an_openai_compatible_server_through_base_url() {
+    let server = MockLlm::start(vec![Reply::Content(
+        "Sure:\n```json\n{\"X1\": \"T(-1 * e1)\"}\n```".into(),
+    )]);
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    let o = shenlong(
+        &[
+            "edit",
+            "example:living_room",
+            "move the 'sofa' to the left",
+            "--llm",
+            "openai:gpt-test",
+            "--base-url",
+            &server.url,
+            "-o",
+            out.to_str().unwrap(),
+            "--no-cache",
+        ],
+        &[("OPENAI_API_KEY", "sk-cli-secret")],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(!stderr(&o).contains("sk-cli-secret"));
+    let r = &server.captured()[0];
+    assert_eq!(r.header("authorization"), Some("Bearer sk-cli-secret"));
+    assert_eq!(r.body["model"], "gpt-test");
+    let v: serde_json::Value =
+        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
+    let sofa = v["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["name"] == "sofa")
+        .unwrap()
+        .clone();
+    assert_eq!(sofa["position"], serde_json::json!([-1, 0, -1.9]));
+}
+
+#[test]
+fn a_model_that_never_answers_right_leaves_the_output_alone() {
+    let server = MockLlm::start(vec![Reply::Content("{\"X1\": \"X1.max\"}".into()); 3]);
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    std::fs::write(&out, "keep").unwrap();
+    let o = shenlong(
+        &[
+            "edit",
+            "example:living_room",
+            "move the 'sofa' up",
+            "--llm",
+            "ollama:mock",
+            "--base-url",
+            &server.url,
+            "--retries",
+            "2",
+            "-o",
+            out.to_str().unwrap(),
+            "--no-cache",
+        ],
+        &[],
+    );
+    assert!(!o.status.success());
+    let e = stderr(&o);
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(
+        e.contains(
+            "mock gave no usable answer after 3 attempts; the last error: X1: result is a vector"
+        ),
+        "{e}"
+    );
+    assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep");
+}
+
+#[test]
+fn backend_specs_are_checked() {
+    let o = shenlong(
+        &[
+            "edit",
+            "example:office",
+            "move the 'plant' left",
+            "--llm",
+            "openai:gpt-4o",
+        ],
+        &[],
+    );
+    assert!(
+        stderr(&o).contains("needs OPENAI_API_KEY"),
+        "{}",
+        stderr(&o)
+    );
+    let o = shenlong(
+        &[
+            "edit",
+            "example:office",
+            "move the 'plant' left",
+            "--llm",
+            "claude",
+        ],
+        &[],
+    );
+    assert!(
+        stderr(&o).contains("unknown --llm 'claude'"),
+        "{}",
+        stderr(&o)
+    );
+    let o = shenlong(
+        &[
+            "edit",
+            "example:office",
+            "move the 'plant' left",
+            "--system",
+            "omniverse",
+        ],
+        &[],
+    );
+    assert!(
+        stderr(&o).contains("the offline translator answers in CGA only"),
+        "{}",
+        stderr(&o)
+    );
+}

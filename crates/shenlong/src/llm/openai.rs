@@ -1,0 +1,238 @@
+//! A thin typed client for OpenAI-compatible chat completions.
+//!
+//! Why ureq: a blocking client fits the command line's one request at a time, pulls in few
+//! dependencies, and the web server runs it on a blocking thread. The request is the
+//! standard `POST {base}/chat/completions` with `model`, `messages` and `temperature: 0`.
+
+use super::{tokens, Backend, Completion, LlmError, Message, Usage};
+use serde_json::{json, Value};
+use std::time::{Duration, Instant};
+
+/// The official OpenAI endpoint.
+pub const OPENAI_BASE_URL: &str = "https://api.openai.com/v1";
+/// Ollama's OpenAI-compatible endpoint.
+pub const OLLAMA_BASE_URL: &str = "http://localhost:11434/v1";
+
+/// Connection settings.
+#[derive(Clone, Debug)]
+pub struct ClientOptions {
+    /// Base URL, up to and including `/v1`.
+    pub base_url: String,
+    /// Bearer token; never printed or logged.
+    pub api_key: Option<String>,
+    /// The model name.
+    pub model: String,
+    /// Time allowed to connect.
+    pub connect_timeout: Duration,
+    /// Time allowed for one request, reply included.
+    pub request_timeout: Duration,
+    /// Requests made at most for one completion (429, 5xx and network errors are retried).
+    pub max_attempts: u32,
+    /// First wait between attempts; it doubles each time, unless the server says
+    /// `Retry-After`.
+    pub backoff: Duration,
+}
+
+impl ClientOptions {
+    /// Options with the usual timeouts (10 s to connect, 120 s a request, 4 attempts).
+    pub fn new(
+        base_url: impl Into<String>,
+        model: impl Into<String>,
+        api_key: Option<String>,
+    ) -> Self {
+        Self {
+            base_url: base_url.into(),
+            api_key,
+            model: model.into(),
+            connect_timeout: Duration::from_secs(10),
+            request_timeout: Duration::from_secs(120),
+            max_attempts: 4,
+            backoff: Duration::from_secs(1),
+        }
+    }
+}
+
+/// Why one request failed, and whether another attempt may succeed.
+struct AttemptError {
+    error: LlmError,
+    retry: bool,
+    /// The wait the server asked for (`Retry-After`).
+    retry_after: Option<Duration>,
+}
+
+impl AttemptError {
+    fn new(message: impl Into<String>, retry: bool, retry_after: Option<Duration>) -> Self {
+        Self {
+            error: LlmError {
+                message: message.into(),
+            },
+            retry,
+            retry_after,
+        }
+    }
+}
+
+/// A client for one model on one server.
+pub struct OpenAiClient {
+    options: ClientOptions,
+    agent: ureq::Agent,
+}
+
+impl OpenAiClient {
+    /// A client with these options.
+    pub fn new(options: ClientOptions) -> Self {
+        let agent = ureq::Agent::config_builder()
+            .timeout_connect(Some(options.connect_timeout))
+            .timeout_global(Some(options.request_timeout))
+            .http_status_as_error(false)
+            .build()
+            .into();
+        Self { options, agent }
+    }
+
+    fn url(&self) -> String {
+        format!(
+            "{}/chat/completions",
+            self.options.base_url.trim_end_matches('/')
+        )
+    }
+
+    /// One request: the reply and its usage, or why not.
+    fn attempt(&self, body: &Value) -> Result<(String, Option<Usage>), AttemptError> {
+        let mut request = self
+            .agent
+            .post(&self.url())
+            .header("Content-Type", "application/json");
+        if let Some(key) = &self.options.api_key {
+            request = request.header("Authorization", &format!("Bearer {key}"));
+        }
+        let mut response = match request.send_json(body) {
+            Ok(r) => r,
+            Err(ureq::Error::Timeout(_)) => {
+                let message = format!(
+                    "the model server at {} did not answer within {} s",
+                    self.options.base_url,
+                    self.options.request_timeout.as_secs_f64()
+                );
+                return Err(AttemptError::new(message, true, None));
+            }
+            Err(e) => {
+                let message = format!(
+                    "cannot reach the model server at {}: {e}",
+                    self.options.base_url
+                );
+                return Err(AttemptError::new(message, true, None));
+            }
+        };
+        let status = response.status().as_u16();
+        let retry_after = response
+            .headers()
+            .get("retry-after")
+            .and_then(|v| v.to_str().ok())
+            .and_then(|v| v.trim().parse::<f64>().ok())
+            .filter(|s| s.is_finite() && *s >= 0.0)
+            .map(|s| Duration::from_secs_f64(s.min(60.0)));
+        let text = response
+            .body_mut()
+            .with_config()
+            .limit(16 * 1024 * 1024)
+            .read_to_string()
+            .map_err(|e| {
+                AttemptError::new(
+                    format!("cannot read the model server's reply: {e}"),
+                    true,
+                    None,
+                )
+            })?;
+        if status != 200 {
+            let detail = serde_json::from_str::<Value>(&text)
+                .ok()
+                .and_then(|v| {
+                    v.pointer("/error/message")
+                        .and_then(Value::as_str)
+                        .map(str::to_string)
+                })
+                .unwrap_or_else(|| text.chars().take(200).collect());
+            let hint = match status {
+                401 | 403 => " (check OPENAI_API_KEY)",
+                404 => " (check the model name and --base-url)",
+                _ => "",
+            };
+            let retry = status == 429 || status >= 500;
+            let message = format!("the model server answered HTTP {status}{hint}: {detail}");
+            return Err(AttemptError::new(message, retry, retry_after));
+        }
+        let value: Value = serde_json::from_str(&text).map_err(|e| {
+            AttemptError::new(
+                format!("the model server's reply is not JSON: {e}"),
+                false,
+                None,
+            )
+        })?;
+        let content = value
+            .pointer("/choices/0/message/content")
+            .and_then(Value::as_str)
+            .ok_or_else(|| {
+                AttemptError::new(
+                    "the model server's reply has no choices[0].message.content",
+                    false,
+                    None,
+                )
+            })?;
+        let usage = value.get("usage").and_then(|u| {
+            Some(Usage {
+                prompt_tokens: u.get("prompt_tokens")?.as_u64()?,
+                completion_tokens: u.get("completion_tokens")?.as_u64()?,
+                estimated: false,
+            })
+        });
+        Ok((content.to_string(), usage))
+    }
+}
+
+impl Backend for OpenAiClient {
+    fn model(&self) -> &str {
+        &self.options.model
+    }
+
+    fn complete(&self, messages: &[Message]) -> Result<Completion, LlmError> {
+        let started = Instant::now();
+        let body = json!({"model": self.options.model, "messages": messages, "temperature": 0});
+        let mut wait = self.options.backoff;
+        let mut last = None;
+        for attempt in 1..=self.options.max_attempts.max(1) {
+            match self.attempt(&body) {
+                Ok((text, usage)) => {
+                    let usage = usage.unwrap_or_else(|| tokens::estimate(messages, &text));
+                    return Ok(Completion {
+                        text,
+                        usage,
+                        elapsed: started.elapsed(),
+                    });
+                }
+                Err(AttemptError {
+                    error,
+                    retry,
+                    retry_after,
+                }) => {
+                    if !retry || attempt == self.options.max_attempts {
+                        let tries = if attempt > 1 {
+                            format!(" (after {attempt} attempts)")
+                        } else {
+                            String::new()
+                        };
+                        return Err(LlmError {
+                            message: format!("{}{tries}", error.message),
+                        });
+                    }
+                    std::thread::sleep(retry_after.unwrap_or(wait));
+                    wait *= 2;
+                    last = Some(error);
+                }
+            }
+        }
+        Err(last.unwrap_or(LlmError {
+            message: "no attempt was made".into(),
+        }))
+    }
+}

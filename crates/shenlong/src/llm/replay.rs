@@ -1,0 +1,91 @@
+//! `replay:FILE`: answers from recorded exchanges, for deterministic runs and published
+//! transcripts. A request is answered by the first unused record whose messages are
+//! exactly the request's.
+
+use super::record::Record;
+use super::{Backend, Completion, LlmError, Message};
+use std::path::Path;
+use std::sync::Mutex;
+use std::time::Duration;
+
+/// A backend that replays a recording.
+pub struct Replay {
+    records: Vec<Record>,
+    used: Mutex<Vec<bool>>,
+    model: String,
+    source: String,
+}
+
+impl Replay {
+    /// Loads a recording (JSON lines written by `--record`).
+    pub fn load(path: &Path) -> Result<Self, LlmError> {
+        let text = std::fs::read_to_string(path).map_err(|e| LlmError {
+            message: format!("cannot read {}: {e}", path.display()),
+        })?;
+        let mut records = Vec::new();
+        for (n, line) in text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty())
+        {
+            let record: Record = serde_json::from_str(line).map_err(|e| LlmError {
+                message: format!(
+                    "{} line {}: not a recorded exchange: {e}",
+                    path.display(),
+                    n + 1
+                ),
+            })?;
+            records.push(record);
+        }
+        let model = records
+            .first()
+            .map_or_else(|| "replay".to_string(), |r| r.model.clone());
+        Ok(Self {
+            used: Mutex::new(vec![false; records.len()]),
+            records,
+            model,
+            source: path.display().to_string(),
+        })
+    }
+}
+
+impl Backend for Replay {
+    fn model(&self) -> &str {
+        &self.model
+    }
+
+    fn complete(&self, messages: &[Message]) -> Result<Completion, LlmError> {
+        let mut used = self.used.lock().unwrap_or_else(|e| e.into_inner());
+        let found = self
+            .records
+            .iter()
+            .enumerate()
+            .find(|(i, r)| !used[*i] && r.messages == messages)
+            .or_else(|| {
+                self.records
+                    .iter()
+                    .enumerate()
+                    .find(|(_, r)| r.messages == messages)
+            });
+        let Some((i, record)) = found else {
+            let user = messages
+                .iter()
+                .rev()
+                .find(|m| m.role == "user")
+                .map_or("", |m| m.content.as_str());
+            let user: String = user.chars().take(120).collect();
+            return Err(LlmError {
+                message: format!(
+                    "{} has no recorded reply for this request (last user message: {user:?})",
+                    self.source
+                ),
+            });
+        };
+        used[i] = true;
+        Ok(Completion {
+            text: record.reply.clone(),
+            usage: record.usage,
+            elapsed: Duration::from_secs_f64(record.elapsed_ms / 1000.0),
+        })
+    }
+}

@@ -1,0 +1,828 @@
+//! The built-in offline translator (`--llm offline`, the default): templated English to
+//! the same CGA reply a language model would give, with no network and no model.
+//!
+//! It is a small grammar, not a list of sentences: a tokeniser; a clause splitter (`and`,
+//! `then`, commas — but not the `and` of `between X2 and X3`); phrase patterns with
+//! synonyms for verbs, directions, relations, amounts and units; and a semantic layer that
+//! writes expressions with only `X_i.min/.max/.center/.size`, `e1 e2 e3`, `T`, `R`, `D` —
+//! never the scene's numbers, so its answers are scene-independent and cacheable like a
+//! model's. The reply then goes through the same parser and evaluator as a model's.
+//! Instructions it cannot read fail with the part it could not read quoted.
+
+use crate::llm::{Message, Usage};
+use crate::pipeline::prompts::System;
+use crate::pipeline::template::Templated;
+use crate::pipeline::translate::{Exchange, TranslateError, Translation, Translator};
+use crate::scene::Scene;
+use std::collections::BTreeMap;
+use std::time::Instant;
+
+/// Gap left between objects placed next to each other, in metres.
+const GAP: f64 = 0.05;
+
+/// The offline translator.
+#[derive(Clone, Debug, Default)]
+pub struct OfflineTranslator;
+
+impl OfflineTranslator {
+    /// The translator.
+    pub fn new() -> Self {
+        Self
+    }
+}
+
+impl Translator for OfflineTranslator {
+    fn name(&self) -> String {
+        "offline".into()
+    }
+
+    fn system(&self) -> System {
+        System::Cga
+    }
+
+    fn translate(
+        &self,
+        templated: &Templated,
+        scene: &Scene,
+    ) -> Result<Translation, TranslateError> {
+        let started = Instant::now();
+        let reply = reply_for(&templated.query, templated.objects.len())
+            .map_err(|message| TranslateError { message })?;
+        let answers = System::Cga
+            .parse_reply(&reply, templated, scene)
+            .map_err(|e| TranslateError { message: format!("the offline translator wrote an invalid answer ({e}); please report this instruction") })?;
+        let exchange = Exchange {
+            messages: vec![Message::new(
+                "user",
+                format!("Instruction: {}", templated.query),
+            )],
+            reply,
+            elapsed_ms: started.elapsed().as_secs_f64() * 1000.0,
+            usage: Usage::default(),
+            error: None,
+            cached: false,
+        };
+        Ok(Translation {
+            answers,
+            exchanges: vec![exchange],
+            retries: 0,
+            cache_hit: false,
+            elapsed: started.elapsed(),
+        })
+    }
+}
+
+/// A token of an instruction.
+#[derive(Clone, Debug, PartialEq)]
+enum Token {
+    Word(String),
+    Number(f64),
+    Variable(usize),
+    Separator,
+}
+
+fn tokenize(query: &str) -> Vec<Token> {
+    let mut tokens = Vec::new();
+    let lower = query
+        .to_lowercase()
+        .replace('°', " degrees ")
+        .replace('%', " percent ");
+    let mut word = String::new();
+    let flush = |word: &mut String, tokens: &mut Vec<Token>| {
+        if word.is_empty() {
+            return;
+        }
+        let w = std::mem::take(word);
+        if let Some(n) = w
+            .strip_prefix('x')
+            .and_then(|d| d.parse::<usize>().ok())
+            .filter(|n| *n >= 1)
+        {
+            tokens.push(Token::Variable(n - 1));
+        } else if let Some((a, b)) = w
+            .split_once('/')
+            .and_then(|(a, b)| Some((a.parse::<f64>().ok()?, b.parse::<f64>().ok()?)))
+        {
+            tokens.push(Token::Number(a / b));
+        } else if let Ok(n) = w.parse::<f64>() {
+            tokens.push(Token::Number(n));
+        } else if let Some((n, unit)) = split_number_unit(&w) {
+            tokens.push(Token::Number(n));
+            tokens.push(Token::Word(unit));
+        } else {
+            tokens.push(Token::Word(w));
+        }
+    };
+    for c in lower.chars() {
+        if c.is_alphanumeric() || c == '.' || c == '/' || (c == '-' && word.is_empty()) {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut tokens);
+            if matches!(c, ',' | ';') {
+                tokens.push(Token::Separator);
+            }
+        }
+    }
+    flush(&mut word, &mut tokens);
+    // A trailing period of a sentence sticks to the last word; strip it.
+    tokens
+        .into_iter()
+        .map(|t| match t {
+            Token::Word(w) if w.ends_with('.') && w.len() > 1 => {
+                Token::Word(w.trim_end_matches('.').to_string())
+            }
+            other => other,
+        })
+        .collect()
+}
+
+/// `2m` → (2, "m"), `90deg` → (90, "deg").
+fn split_number_unit(w: &str) -> Option<(f64, String)> {
+    let split = w.find(|c: char| c.is_alphabetic())?;
+    let (n, unit) = w.split_at(split);
+    Some((n.parse().ok()?, unit.to_string()))
+}
+
+fn number_word(w: &str) -> Option<f64> {
+    Some(match w {
+        "a" | "an" | "one" | "once" => 1.0,
+        "two" | "twice" | "double" => 2.0,
+        "three" | "thrice" | "triple" => 3.0,
+        "four" => 4.0,
+        "five" => 5.0,
+        "six" => 6.0,
+        "seven" => 7.0,
+        "eight" => 8.0,
+        "nine" => 9.0,
+        "ten" => 10.0,
+        "twenty" => 20.0,
+        "thirty" => 30.0,
+        "forty" | "fourty" => 40.0,
+        "forty-five" => 45.0,
+        "fifty" => 50.0,
+        "sixty" => 60.0,
+        "ninety" => 90.0,
+        "hundred" => 100.0,
+        "half" => 0.5,
+        "quarter" => 0.25,
+        "third" => 1.0 / 3.0,
+        _ => return None,
+    })
+}
+
+/// Length units to metres.
+fn length_unit(w: &str) -> Option<f64> {
+    Some(match w {
+        "m" | "meter" | "meters" | "metre" | "metres" | "unit" | "units" => 1.0,
+        "cm" | "centimeter" | "centimeters" | "centimetre" | "centimetres" => 0.01,
+        "mm" | "millimeter" | "millimeters" | "millimetre" | "millimetres" => 0.001,
+        "ft" | "foot" | "feet" => 0.3048,
+        "in" | "inch" | "inches" => 0.0254,
+        _ => return None,
+    })
+}
+
+/// Angle units to degrees.
+fn angle_unit(w: &str) -> Option<f64> {
+    Some(match w {
+        "degree" | "degrees" | "deg" | "degs" => 1.0,
+        "radian" | "radians" | "rad" | "rads" => 180.0 / std::f64::consts::PI,
+        "turn" | "turns" | "revolution" | "revolutions" => 360.0,
+        _ => return None,
+    })
+}
+
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum Action {
+    Move,
+    Rotate,
+    Scale,
+}
+
+/// A direction as (axis index 0..2, sign).
+fn direction(w: &str) -> Option<(usize, f64)> {
+    Some(match w {
+        "left" | "leftward" | "leftwards" | "west" => (0, -1.0),
+        "right" | "rightward" | "rightwards" | "east" => (0, 1.0),
+        "up" | "upward" | "upwards" | "higher" | "above" => (1, 1.0),
+        "down" | "downward" | "downwards" | "lower" => (1, -1.0),
+        "forward" | "forwards" | "front" | "ahead" | "south" => (2, 1.0),
+        "back" | "backward" | "backwards" | "rear" | "north" => (2, -1.0),
+        _ => return None,
+    })
+}
+
+const AXIS: [&str; 3] = ["e1", "e2", "e3"];
+
+fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
+    Some(match w {
+        "move" | "shift" | "push" | "slide" | "nudge" | "translate" | "put" | "place" | "set"
+        | "bring" | "take" | "position" | "relocate" | "carry" | "drag" | "pull" => {
+            (Action::Move, None)
+        }
+        "raise" | "lift" | "elevate" => (Action::Move, Some((1, 1.0))),
+        "lower" | "drop" | "sink" => (Action::Move, Some((1, -1.0))),
+        "rotate" | "turn" | "spin" | "twist" | "revolve" | "flip" | "swivel" | "pivot" => {
+            (Action::Rotate, None)
+        }
+        "scale" | "resize" | "enlarge" | "grow" | "shrink" | "double" | "halve" | "triple"
+        | "magnify" | "reduce" | "make" => (Action::Scale, None),
+        _ => return None,
+    })
+}
+
+/// Reads an instruction with variables into a CGA reply.
+pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
+    let tokens = tokenize(query);
+    let clauses = split_clauses(&tokens);
+    let mut out: BTreeMap<usize, Vec<String>> = BTreeMap::new();
+    let mut last_subjects: Vec<usize> = Vec::new();
+    let mut last_action: Option<Action> = None;
+    for clause in clauses {
+        if clause.is_empty() {
+            continue;
+        }
+        let produced = read_clause(&clause, &mut last_subjects, &mut last_action, query)?;
+        for (var, expr) in produced {
+            out.entry(var).or_default().push(expr);
+        }
+    }
+    if out.is_empty() {
+        return Err(not_understood(query, query));
+    }
+    if let Some(v) = out.keys().find(|&&v| v >= variables) {
+        return Err(format!(
+            "the instruction names X{} but only {} objects are quoted",
+            v + 1,
+            variables
+        ));
+    }
+    let entries: Vec<String> = out
+        .iter()
+        .map(|(v, list)| {
+            if list.len() == 1 {
+                format!("\"X{}\": \"{}\"", v + 1, list[0])
+            } else {
+                let items: Vec<String> = list.iter().map(|e| format!("\"{e}\"")).collect();
+                format!("\"X{}\": [{}]", v + 1, items.join(", "))
+            }
+        })
+        .collect();
+    Ok(format!("{{{}}}", entries.join(", ")))
+}
+
+fn not_understood(part: &str, _query: &str) -> String {
+    format!(
+        "the offline translator could not read \"{}\"; rephrase it, or use a language model with --llm openai:MODEL or --llm ollama:MODEL",
+        part.trim()
+    )
+}
+
+fn words_of(clause: &[Token]) -> String {
+    clause
+        .iter()
+        .map(|t| match t {
+            Token::Word(w) => w.clone(),
+            Token::Number(n) => format!("{n}"),
+            Token::Variable(v) => format!("X{}", v + 1),
+            Token::Separator => ",".into(),
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// Splits at `and`, `then`, `after that`, commas — keeping `between Xa and Xb` together and
+/// `X1 and X2` lists of subjects together.
+fn split_clauses(tokens: &[Token]) -> Vec<Vec<Token>> {
+    let mut clauses = vec![Vec::new()];
+    for (i, t) in tokens.iter().enumerate() {
+        let word = |k: usize| match tokens.get(k) {
+            Some(Token::Word(w)) => Some(w.as_str()),
+            _ => None,
+        };
+        let is_and = word(i) == Some("and");
+        let is_break = matches!(t, Token::Separator)
+            || word(i) == Some("then")
+            || (word(i) == Some("finally"));
+        if is_and {
+            // "between X2 and X3", "X1 and X2 …": a list, not a new clause.
+            let prev_var = i > 0 && matches!(tokens[i - 1], Token::Variable(_));
+            let next_var = matches!(tokens.get(i + 1), Some(Token::Variable(_)));
+            let current = clauses.last().expect("one clause at least");
+            let has_verb = current
+                .iter()
+                .any(|t| matches!(t, Token::Word(w) if verb(w).is_some()));
+            if prev_var
+                && next_var
+                && (!has_verb
+                    || current
+                        .iter()
+                        .any(|t| matches!(t, Token::Word(w) if w == "between")))
+            {
+                clauses.last_mut().expect("one clause").push(t.clone());
+                continue;
+            }
+            clauses.push(Vec::new());
+            continue;
+        }
+        if is_break {
+            clauses.push(Vec::new());
+            continue;
+        }
+        clauses.last_mut().expect("one clause").push(t.clone());
+    }
+    clauses.retain(|c| {
+        !c.is_empty()
+            && !c
+                .iter()
+                .all(|t| matches!(t, Token::Word(w) if w == "it" || w == "them"))
+    });
+    clauses
+}
+
+fn read_clause(
+    clause: &[Token],
+    last_subjects: &mut Vec<usize>,
+    last_action: &mut Option<Action>,
+    query: &str,
+) -> Result<Vec<(usize, String)>, String> {
+    let text = words_of(clause);
+    let words: Vec<&str> = clause
+        .iter()
+        .map(|t| {
+            if let Token::Word(w) = t {
+                w.as_str()
+            } else {
+                ""
+            }
+        })
+        .collect();
+    let has = |w: &str| words.contains(&w);
+    let vars: Vec<(usize, usize)> = clause
+        .iter()
+        .enumerate()
+        .filter_map(|(i, t)| {
+            if let Token::Variable(v) = t {
+                Some((i, *v))
+            } else {
+                None
+            }
+        })
+        .collect();
+
+    // Hard constructs first.
+    if has("swap") || has("exchange") {
+        if vars.len() >= 2 {
+            let (a, b) = (vars[0].1, vars[1].1);
+            let (xa, xb) = (format!("X{}", a + 1), format!("X{}", b + 1));
+            *last_subjects = vec![a, b];
+            return Ok(vec![
+                (a, format!("T((({xb}.center - {xa}.center) | e1) * e1 + (({xb}.center - {xa}.center) | e3) * e3 + (({xb}.min - {xa}.min) | e2) * e2)")),
+                (b, format!("T((({xa}.center - {xb}.center) | e1) * e1 + (({xa}.center - {xb}.center) | e3) * e3 + (({xa}.min - {xb}.min) | e2) * e2)")),
+            ]);
+        }
+        return Err(not_understood(&text, query));
+    }
+
+    let verb_at = words.iter().position(|w| verb(w).is_some());
+    let (action, verb_direction) = match verb_at.and_then(|i| verb(words[i])) {
+        Some(v) => v,
+        None => match *last_action {
+            Some(a) => (a, None),
+            None => return Err(not_understood(&text, query)),
+        },
+    };
+    // "make X1 bigger": only a scale when a size word follows; "make" alone is not enough.
+    let action = if verb_at.is_some_and(|i| words[i] == "make")
+        && !words.iter().any(|w| size_word(w).is_some())
+    {
+        return Err(not_understood(&text, query));
+    } else {
+        action
+    };
+    *last_action = Some(action);
+
+    // Subjects: the variables before a relation word, or pronouns.
+    // A relation word counts only when an object follows it ("to the right" is a
+    // direction; "to the right of X2" a relation).
+    let relation_at = words
+        .iter()
+        .enumerate()
+        .position(|(i, w)| is_relation_word(w) && vars.iter().any(|(j, _)| *j > i));
+    let mut subjects: Vec<usize> = vars
+        .iter()
+        .filter(|(i, _)| relation_at.is_none_or(|r| *i < r))
+        .map(|(_, v)| *v)
+        .collect();
+    if subjects.is_empty() {
+        // "it", "them", "both", or nothing: the objects named last.
+        subjects = last_subjects.clone();
+    }
+    if subjects.is_empty() {
+        return Err(not_understood(&text, query));
+    }
+    *last_subjects = subjects.clone();
+    let objects: Vec<usize> = vars
+        .iter()
+        .filter(|(i, _)| relation_at.is_some_and(|r| *i > r))
+        .map(|(_, v)| *v)
+        .collect();
+
+    let mut out = Vec::new();
+    match action {
+        Action::Move => {
+            if let Some(r) = relation_at {
+                for &s in &subjects {
+                    out.push((
+                        s,
+                        relation(&words[r..], s, &objects)
+                            .ok_or_else(|| not_understood(&text, query))?,
+                    ));
+                }
+            } else {
+                let (axis, sign) = find_direction(&words)
+                    .or(verb_direction)
+                    .ok_or_else(|| not_understood(&text, query))?;
+                let amount = find_amount(clause, Kind::Length).unwrap_or(1.0);
+                for &s in &subjects {
+                    out.push((s, format!("T({} * {})", fmt(sign * amount), AXIS[axis])));
+                }
+            }
+        }
+        Action::Rotate => {
+            let amount = find_amount(clause, Kind::Angle);
+            // "turn it around" and "flip it" with no amount are half turns.
+            let mut degrees = match amount {
+                Some(a) => a,
+                None if has("around") || has("flip") => 180.0,
+                None => 90.0,
+            };
+            if has("clockwise") && !has("counter") || has("cw") {
+                degrees = -degrees;
+            }
+            if has("left") && !has("clockwise") {
+                degrees = degrees.abs();
+            }
+            if has("right") && !has("clockwise") {
+                degrees = -degrees.abs();
+            }
+            let plane = rotation_plane(&words);
+            for &s in &subjects {
+                out.push((s, format!("R({} * pi / 180, {})", fmt(degrees), plane)));
+            }
+        }
+        Action::Scale => {
+            let factor =
+                scale_factor(clause, &words).ok_or_else(|| not_understood(&text, query))?;
+            for &s in &subjects {
+                out.push((s, format!("D({})", fmt(factor))));
+            }
+        }
+    }
+    Ok(out)
+}
+
+fn fmt(x: f64) -> String {
+    let r = (x * 1e9).round() / 1e9;
+    if r.fract() == 0.0 {
+        format!("{}", r as i64)
+    } else {
+        format!("{r}")
+    }
+}
+
+#[derive(Clone, Copy, PartialEq)]
+enum Kind {
+    Length,
+    Angle,
+}
+
+/// The amount of a clause: a number (or number word, or fraction) with an optional unit.
+fn find_amount(clause: &[Token], kind: Kind) -> Option<f64> {
+    for (i, t) in clause.iter().enumerate() {
+        let (value, next) = match t {
+            Token::Number(n) => (*n, i + 1),
+            Token::Word(w) => match number_word(w) {
+                // "a" and "an" count only before a unit ("a metre", "a quarter turn").
+                Some(n) if (w == "a" || w == "an") => match clause.get(i + 1) {
+                    Some(Token::Word(u))
+                        if (kind == Kind::Length && length_unit(u).is_some())
+                            || (kind == Kind::Angle && angle_unit(u).is_some()) =>
+                    {
+                        (n, i + 1)
+                    }
+                    Some(Token::Word(q)) if number_word(q).is_some() && q != "a" => continue,
+                    _ => continue,
+                },
+                Some(n)
+                    if !matches!(
+                        w.as_str(),
+                        "double" | "twice" | "triple" | "thrice" | "once"
+                    ) =>
+                {
+                    (n, i + 1)
+                }
+                _ => continue,
+            },
+            _ => continue,
+        };
+        // "half a turn", "a quarter turn", "half turn".
+        let mut value = value;
+        let mut k = next;
+        if let Some(Token::Word(w)) = clause.get(k) {
+            if let Some(m) = number_word(w).filter(|_| w != "a" && w != "an") {
+                value *= m;
+                k += 1;
+            } else if w == "a" || w == "an" {
+                k += 1;
+            }
+        }
+        let unit = match clause.get(k) {
+            Some(Token::Word(w)) => Some(w.as_str()),
+            _ => None,
+        };
+        match kind {
+            Kind::Length => {
+                if unit.and_then(angle_unit).is_some() {
+                    continue;
+                }
+                return Some(value * unit.and_then(length_unit).unwrap_or(1.0));
+            }
+            Kind::Angle => {
+                if unit.and_then(length_unit).is_some() && unit != Some("in") {
+                    continue;
+                }
+                return Some(value * unit.and_then(angle_unit).unwrap_or(1.0));
+            }
+        }
+    }
+    None
+}
+
+fn find_direction(words: &[&str]) -> Option<(usize, f64)> {
+    // "toward the front", "to the back", "forward".
+    words.iter().find_map(|w| direction(w))
+}
+
+fn size_word(w: &str) -> Option<f64> {
+    Some(match w {
+        "bigger" | "larger" | "enlarge" | "grow" | "double" | "twice" => 2.0,
+        "smaller" | "shrink" | "halve" | "half" => 0.5,
+        "triple" | "thrice" => 3.0,
+        _ => return None,
+    })
+}
+
+fn scale_factor(clause: &[Token], words: &[&str]) -> Option<f64> {
+    let has = |w: &str| words.contains(&w);
+    if has("percent") {
+        let n = clause.iter().find_map(|t| {
+            if let Token::Number(n) = t {
+                Some(*n)
+            } else {
+                None
+            }
+        })?;
+        // "by 50 percent" grows by half; "to 50 percent" sets the size.
+        return Some(if has("to") {
+            n / 100.0
+        } else if has("shrink") || has("reduce") {
+            1.0 - n / 100.0
+        } else {
+            1.0 + n / 100.0
+        });
+    }
+    if let Some(n) = clause.iter().find_map(|t| {
+        if let Token::Number(n) = t {
+            Some(*n)
+        } else {
+            None
+        }
+    }) {
+        return (n > 0.0).then(|| {
+            if has("shrink") || has("reduce") {
+                if n > 1.0 {
+                    1.0 / n
+                } else {
+                    n
+                }
+            } else {
+                n
+            }
+        });
+    }
+    if has("half") || has("halve") {
+        return Some(0.5);
+    }
+    if has("twice") || has("double") {
+        return Some(2.0);
+    }
+    if has("triple") || has("thrice") || has("three") {
+        return Some(3.0);
+    }
+    words
+        .iter()
+        .find_map(|w| size_word(w))
+        .or_else(|| (has("scale") || has("resize")).then_some(2.0))
+}
+
+fn rotation_plane(words: &[&str]) -> &'static str {
+    let has = |w: &str| words.contains(&w);
+    let axis = words
+        .iter()
+        .position(|w| *w == "axis")
+        .and_then(|i| words.get(i.wrapping_sub(1)))
+        .copied();
+    if has("e1") && has("e2") {
+        return "e1, e2";
+    }
+    if has("e2") && has("e3") {
+        return "e2, e3";
+    }
+    match axis {
+        Some("x") | Some("e1") => "e2, e3",
+        Some("z") | Some("e3") => "e1, e2",
+        _ => "e3, e1",
+    }
+}
+
+fn is_relation_word(w: &str) -> bool {
+    matches!(
+        w,
+        "on" | "onto"
+            | "atop"
+            | "top"
+            | "next"
+            | "beside"
+            | "by"
+            | "near"
+            | "nearby"
+            | "alongside"
+            | "adjacent"
+            | "of"
+            | "under"
+            | "below"
+            | "beneath"
+            | "underneath"
+            | "behind"
+            | "between"
+            | "with"
+            | "toward"
+            | "towards"
+            | "to"
+            | "against"
+            | "in"
+            | "at"
+            | "left"
+            | "right"
+            | "front"
+    )
+}
+
+/// The expression for a relation phrase (`on top of X2`, `next to X2`, `left of X2`, …).
+fn relation(words: &[&str], s: usize, objects: &[usize]) -> Option<String> {
+    let a = format!("X{}", s + 1);
+    let has = |w: &str| words.contains(&w);
+    let b = objects.first().map(|o| format!("X{}", o + 1));
+    let centre = |b: &str, axis: &str| format!("(({b}.center - {a}.center) | {axis}) * {axis}");
+    let level = |b: &str| format!("(({b}.min - {a}.min) | e2) * e2");
+    if has("between") && objects.len() >= 2 {
+        let c = format!("X{}", objects[1] + 1);
+        let b = b?;
+        return Some(format!("T(((({b}.center + {c}.center) / 2 - {a}.center) | e1) * e1 + ((({b}.center + {c}.center) / 2 - {a}.center) | e3) * e3 + {})", level(&b)));
+    }
+    let b = b?;
+    if has("on") || has("onto") || has("atop") || has("top") {
+        return Some(format!(
+            "T((({b}.max | e2) - ({a}.min | e2)) * e2 + {} + {})",
+            centre(&b, "e1"),
+            centre(&b, "e3")
+        ));
+    }
+    if has("under") || has("below") || has("beneath") || has("underneath") {
+        return Some(format!(
+            "T((({b}.min | e2) - ({a}.min | e2)) * e2 + {} + {})",
+            centre(&b, "e1"),
+            centre(&b, "e3")
+        ));
+    }
+    let side = |axis: usize, sign: f64| -> String {
+        let e = AXIS[axis];
+        let other = AXIS[2 - axis];
+        let gap = fmt(GAP);
+        let along = if sign > 0.0 {
+            format!("((({b}.max | {e}) + {gap} - ({a}.min | {e})) * {e})")
+        } else {
+            format!("((({b}.min | {e}) - {gap} - ({a}.max | {e})) * {e})")
+        };
+        format!("T({along} + {} + {})", centre(&b, other), level(&b))
+    };
+    if has("left") {
+        return Some(side(0, -1.0));
+    }
+    if has("right") {
+        return Some(side(0, 1.0));
+    }
+    if has("front") {
+        return Some(side(2, 1.0));
+    }
+    if has("behind") || has("back") {
+        return Some(side(2, -1.0));
+    }
+    if has("next")
+        || has("beside")
+        || has("by")
+        || has("near")
+        || has("nearby")
+        || has("alongside")
+        || has("adjacent")
+    {
+        // The side of X_b nearest X_a along x: p is 1 when X_a is to the right, 0 otherwise.
+        let e = "e1";
+        let gap = fmt(GAP);
+        let p = format!("(1 + (({a}.center - {b}.center) | {e}) / (abs(({a}.center - {b}.center) | {e}) + 1e-9)) / 2");
+        let right = format!("(({b}.max | {e}) + {gap} - ({a}.min | {e}))");
+        let left = format!("(({b}.min | {e}) - {gap} - ({a}.max | {e}))");
+        return Some(format!(
+            "T(({p} * {right} + (1 - {p}) * {left}) * {e} + {} + {})",
+            centre(&b, "e3"),
+            level(&b)
+        ));
+    }
+    if has("at") || has("to") || has("with") || has("toward") || has("towards") {
+        // "move X1 to X2": to its place, standing on the same level.
+        return Some(format!(
+            "T({} + {} + {})",
+            centre(&b, "e1"),
+            centre(&b, "e3"),
+            level(&b)
+        ));
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn r(q: &str) -> String {
+        reply_for(q, 3).unwrap_or_else(|e| panic!("{q}: {e}"))
+    }
+
+    #[test]
+    fn simple_moves_rotations_scales() {
+        assert_eq!(r("move the X1 to the right"), r#"{"X1": "T(1 * e1)"}"#);
+        assert_eq!(r("move X1 2 units to the left"), r#"{"X1": "T(-2 * e1)"}"#);
+        assert_eq!(r("push X1 back 50 cm"), r#"{"X1": "T(-0.5 * e3)"}"#);
+        assert_eq!(r("lift X1 by 20cm"), r#"{"X1": "T(0.2 * e2)"}"#);
+        assert_eq!(
+            r("rotate X1 by 45 degrees clockwise"),
+            r#"{"X1": "R(-45 * pi / 180, e3, e1)"}"#
+        );
+        assert_eq!(
+            r("turn X1 a quarter turn"),
+            r#"{"X1": "R(90 * pi / 180, e3, e1)"}"#
+        );
+        assert_eq!(
+            r("turn X1 around"),
+            r#"{"X1": "R(180 * pi / 180, e3, e1)"}"#
+        );
+        assert_eq!(r("make X1 twice as big"), r#"{"X1": "D(2)"}"#);
+        assert_eq!(r("shrink X1 to half its size"), r#"{"X1": "D(0.5)"}"#);
+    }
+
+    #[test]
+    fn compositions_and_pronouns() {
+        assert_eq!(
+            r("rotate X1 by 90 degrees and move it 0.5 m to the right"),
+            r#"{"X1": ["R(90 * pi / 180, e3, e1)", "T(0.5 * e1)"]}"#
+        );
+        assert_eq!(
+            r("move X1 left and X2 right"),
+            r#"{"X1": "T(-1 * e1)", "X2": "T(1 * e1)"}"#
+        );
+    }
+
+    #[test]
+    fn relations_use_only_the_objects_boxes() {
+        let on = r("put the X1 on top of the X2");
+        assert!(on.contains("X2.max | e2"), "{on}");
+        // Apart from variable and blade names, no number at all: nothing from a scene.
+        let mut rest = on.clone();
+        for name in ["X1", "X2", "X3", "e1", "e2", "e3"] {
+            rest = rest.replace(name, "");
+        }
+        assert!(!rest.chars().any(|c| c.is_ascii_digit()), "{on}");
+        let between = r("place X1 between X2 and X3");
+        assert!(between.contains("X2.center + X3.center"), "{between}");
+    }
+
+    #[test]
+    fn unreadable_instructions_fail_clearly() {
+        let e = reply_for("please do something nice with X1", 1).unwrap_err();
+        assert!(
+            e.contains("could not read") && e.contains("--llm openai:MODEL"),
+            "{e}"
+        );
+    }
+}

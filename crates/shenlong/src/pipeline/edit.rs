@@ -1,0 +1,284 @@
+//! An edit end to end: template → translate → apply (with carrying) → resolve collisions,
+//! with a report of everything that happened. The scene is changed only when every stage
+//! succeeded.
+
+use super::template::{template, Templated};
+use super::translate::{Exchange, Translator};
+use crate::collide::{self, ResolveOptions};
+use crate::scene::{AppliedMotion, Scene};
+use serde::Serialize;
+use std::time::Instant;
+
+/// How an edit runs.
+#[derive(Clone, Debug)]
+pub struct EditOptions {
+    /// Carry the objects resting on a moved object.
+    pub carry: bool,
+    /// Collision resolution; `None` skips it (`--no-collide`).
+    pub collisions: Option<ResolveOptions>,
+}
+
+impl Default for EditOptions {
+    fn default() -> Self {
+        Self {
+            carry: true,
+            collisions: Some(ResolveOptions::default()),
+        }
+    }
+}
+
+/// What an edit did, for people and programs (`--json`).
+#[derive(Clone, Debug, Serialize)]
+pub struct EditReport {
+    /// The instruction as given.
+    pub instruction: String,
+    /// The instruction with variables.
+    pub query: String,
+    /// Which object each variable stands for.
+    pub bindings: Vec<Binding>,
+    /// The prompt system.
+    pub system: String,
+    /// The prompt's version.
+    pub prompt_version: String,
+    /// The translator: `offline`, or the model.
+    pub model: String,
+    /// Every request and reply.
+    pub exchanges: Vec<Exchange>,
+    /// Attempts after the first.
+    pub retries: usize,
+    /// Whether the answer came from the cache.
+    pub cache_hit: bool,
+    /// Per changed object: the expressions and the transformation.
+    pub objects: Vec<ObjectChange>,
+    /// Objects moved to clear collisions.
+    pub collisions_resolved: Vec<CollisionReport>,
+    /// Overlaps left in place (`--allow-collisions`).
+    pub overlaps_remaining: Vec<String>,
+    /// Objects carried along with the ones they rest on.
+    pub carried: Vec<String>,
+    /// Milliseconds per stage.
+    pub timings_ms: Timings,
+    /// Tokens sent and received, over all exchanges.
+    pub tokens: Tokens,
+}
+
+/// A variable and its object.
+#[derive(Clone, Debug, Serialize)]
+pub struct Binding {
+    /// `X1`.
+    pub variable: String,
+    /// The object's name.
+    pub object: String,
+}
+
+/// One object's change.
+#[derive(Clone, Debug, Serialize)]
+pub struct ObjectChange {
+    /// `X1`.
+    pub variable: String,
+    /// The object's name.
+    pub object: String,
+    /// What the translator wrote.
+    pub expressions: Vec<String>,
+    /// Translation about the pivot, metres.
+    pub translation: [f64; 3],
+    /// Rotation, quaternion `[x, y, z, w]`.
+    pub rotation: [f64; 4],
+    /// The rotation's angle in degrees.
+    pub rotation_degrees: f64,
+    /// Uniform scale.
+    pub scale: f64,
+    /// The versor's 32 coefficients.
+    pub versor: Vec<f64>,
+}
+
+/// One resolved collision.
+#[derive(Clone, Debug, Serialize)]
+pub struct CollisionReport {
+    /// The moved object.
+    pub object: String,
+    /// Where the edit put it (bottom centre of its box).
+    pub requested: [f64; 3],
+    /// Where it ended.
+    pub resolved: [f64; 3],
+    /// The displacement.
+    pub displacement: [f64; 3],
+    /// What it collided with.
+    pub collided_with: Vec<String>,
+}
+
+/// Stage timings in milliseconds.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Timings {
+    /// Templating.
+    pub template: f64,
+    /// Translation (the model's response time, retries included).
+    pub translate: f64,
+    /// Applying the transformations.
+    pub apply: f64,
+    /// Collision detection and resolution.
+    pub collide: f64,
+    /// All of it.
+    pub total: f64,
+}
+
+/// Token totals.
+#[derive(Clone, Debug, Default, Serialize)]
+pub struct Tokens {
+    /// Sent.
+    pub prompt: u64,
+    /// Received.
+    pub completion: u64,
+    /// Whether any count was estimated locally.
+    pub estimated: bool,
+}
+
+/// Why an edit failed; the scene is unchanged.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct EditError {
+    /// One line for the user.
+    pub message: String,
+}
+
+impl std::fmt::Display for EditError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for EditError {}
+
+/// The result of a successful edit.
+#[derive(Clone, Debug)]
+pub struct Edit {
+    /// The report.
+    pub report: EditReport,
+    /// The motions applied, in order, for undo.
+    pub motions: Vec<AppliedMotion>,
+}
+
+fn ms(since: Instant) -> f64 {
+    since.elapsed().as_secs_f64() * 1000.0
+}
+
+/// Runs an instruction on the scene. On any error the scene is left as it was.
+pub fn edit(
+    scene: &mut Scene,
+    instruction: &str,
+    translator: &dyn Translator,
+    options: &EditOptions,
+) -> Result<Edit, EditError> {
+    let started = Instant::now();
+    let mut timings = Timings::default();
+    let t0 = Instant::now();
+    let templated: Templated =
+        template(instruction, scene).map_err(|e| EditError { message: e.message })?;
+    timings.template = ms(t0);
+
+    let t0 = Instant::now();
+    let translation = translator
+        .translate(&templated, scene)
+        .map_err(|e| EditError { message: e.message })?;
+    timings.translate = ms(t0);
+
+    let t0 = Instant::now();
+    let before = scene.world_aabbs();
+    let mut edited = scene.clone();
+    let mut motions = Vec::new();
+    let mut moved = Vec::new();
+    let mut carried = Vec::new();
+    for answer in &translation.answers {
+        let motion = edited.apply(answer.object, &answer.transformation.versor, options.carry);
+        for i in motion.objects().filter(|&i| i != answer.object) {
+            if !carried.contains(&edited.objects[i].name) {
+                carried.push(edited.objects[i].name.clone());
+            }
+        }
+        moved.push(answer.object);
+        motions.push(motion);
+    }
+    timings.apply = ms(t0);
+
+    let t0 = Instant::now();
+    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+    let mut collisions_resolved = Vec::new();
+    let mut overlaps_remaining = Vec::new();
+    if let Some(resolve_options) = &options.collisions {
+        let resolution = collide::resolve(&mut edited, &before, &moved, resolve_options)
+            .map_err(|e| EditError { message: e.message })?;
+        for a in &resolution.adjustments {
+            collisions_resolved.push(CollisionReport {
+                object: names[a.object].clone(),
+                requested: a.requested.to_array(),
+                resolved: a.resolved.to_array(),
+                displacement: a.displacement.to_array(),
+                collided_with: a.collided_with.iter().map(|o| o.describe(&names)).collect(),
+            });
+        }
+        for o in &resolution.remaining {
+            overlaps_remaining.push(format!(
+                "'{}' overlaps {}",
+                names[o.object],
+                o.with.describe(&names)
+            ));
+        }
+        motions.push(resolution.motion);
+    }
+    timings.collide = ms(t0);
+
+    *scene = edited;
+    timings.total = ms(started);
+    let tokens = translation
+        .exchanges
+        .iter()
+        .fold(Tokens::default(), |mut t, e| {
+            t.prompt += e.usage.prompt_tokens;
+            t.completion += e.usage.completion_tokens;
+            t.estimated |= e.usage.estimated;
+            t
+        });
+    let objects = translation
+        .answers
+        .iter()
+        .map(|a| {
+            let s = a.transformation.similarity;
+            ObjectChange {
+                variable: a.variable.clone(),
+                object: names[a.object].clone(),
+                expressions: a.expressions.clone(),
+                translation: s.translation.to_array(),
+                rotation: s.rotation.to_array(),
+                rotation_degrees: s.rotation.to_axis_angle().1.to_degrees(),
+                scale: s.scale,
+                versor: a.transformation.versor.coefficients().to_vec(),
+            }
+        })
+        .collect();
+    let system = translator.system();
+    let report = EditReport {
+        instruction: templated.instruction.clone(),
+        query: templated.query.clone(),
+        bindings: templated
+            .objects
+            .iter()
+            .enumerate()
+            .map(|(k, &i)| Binding {
+                variable: Templated::variable(k),
+                object: names[i].clone(),
+            })
+            .collect(),
+        system: system.name().into(),
+        prompt_version: system.version().into(),
+        model: translator.name(),
+        exchanges: translation.exchanges,
+        retries: translation.retries,
+        cache_hit: translation.cache_hit,
+        objects,
+        collisions_resolved,
+        overlaps_remaining,
+        carried,
+        timings_ms: timings,
+        tokens,
+    };
+    Ok(Edit { report, motions })
+}

@@ -1,0 +1,15 @@
+//! The instruction pipeline, one module per stage of the data flow:
+//! [`template`] (names → variables) → [`translate`] (a model or the offline translator,
+//! through [`prompts`]) → evaluation (`crate::expr`) → apply with carrying (`crate::scene`)
+//! → collisions (`crate::collide`) → [`edit`] (the orchestration and its report).
+
+pub mod backends;
+pub mod edit;
+pub mod prompts;
+pub mod template;
+pub mod translate;
+
+pub use edit::{edit, Edit, EditError, EditOptions, EditReport};
+pub use prompts::System;
+pub use template::{template, TemplateError, Templated};
+pub use translate::{LlmTranslator, TranslateError, Translation, Translator};

@@ -1,0 +1,335 @@
+//! The three prompt systems: Shenlong's CGA prompt and the paper's two baselines. Each
+//! builds the messages for a templated instruction and reads the reply into one
+//! transformation per variable. The prompts live in `prompts/*.md`, each with a version
+//! string that goes into cache keys and reports.
+
+use super::template::Templated;
+use crate::expr::{self, reply, Bindings, Dialect, ExprError, ObjectBox, Transformation};
+use crate::llm::Message;
+use crate::scene::{Scene, Shape};
+use cga::{Multivector, Similarity};
+use glam::{DQuat, DVec3, EulerRot};
+use serde_json::Value;
+
+/// A prompt system.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum System {
+    /// Shenlong: the model answers in CGA expressions; only the templated query is sent.
+    Cga,
+    /// After "Language Models as Zero-Shot Trajectory Generators": matrices composed from
+    /// templated functions, with the named objects' boxes given as numbers.
+    Euclidean,
+    /// After NVIDIA Omniverse's AI Room Generator: the named objects' sizes, centres and
+    /// Euler angles in, their final centres and Euler angles out.
+    Omniverse,
+}
+
+const CGA_PROMPT: &str = include_str!("../../prompts/cga.md");
+const EUCLIDEAN_PROMPT: &str = include_str!("../../prompts/euclidean.md");
+const OMNIVERSE_PROMPT: &str = include_str!("../../prompts/omniverse.md");
+
+/// One variable's answer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Answer {
+    /// `X1`, `X2`, ….
+    pub variable: String,
+    /// The object it stands for.
+    pub object: usize,
+    /// What the model wrote for it (expressions, or the pose as JSON for omniverse).
+    pub expressions: Vec<String>,
+    /// The transformation, about the object's pivot.
+    pub transformation: Transformation,
+}
+
+impl System {
+    /// All systems.
+    pub const ALL: [System; 3] = [System::Cga, System::Euclidean, System::Omniverse];
+
+    /// The name used on the command line and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            System::Cga => "cga",
+            System::Euclidean => "euclidean",
+            System::Omniverse => "omniverse",
+        }
+    }
+
+    /// The system by name.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|s| s.name() == name.trim().to_lowercase())
+    }
+
+    /// The system prompt, without its version comment.
+    pub fn prompt(self) -> &'static str {
+        let text = match self {
+            System::Cga => CGA_PROMPT,
+            System::Euclidean => EUCLIDEAN_PROMPT,
+            System::Omniverse => OMNIVERSE_PROMPT,
+        };
+        text.split_once("-->\n").map_or(text, |(_, rest)| rest)
+    }
+
+    /// The prompt's version (`cga-1`).
+    pub fn version(self) -> &'static str {
+        let text = match self {
+            System::Cga => CGA_PROMPT,
+            System::Euclidean => EUCLIDEAN_PROMPT,
+            System::Omniverse => OMNIVERSE_PROMPT,
+        };
+        text.split("version:")
+            .nth(1)
+            .and_then(|s| s.split("-->").next())
+            .map_or("unversioned", str::trim)
+    }
+
+    /// The messages for a templated instruction.
+    pub fn messages(self, templated: &Templated, scene: &Scene) -> Vec<Message> {
+        let user = match self {
+            System::Cga => format!("Instruction: {}", templated.query),
+            System::Euclidean => {
+                let mut lines = vec!["Objects:".to_string()];
+                for (k, &i) in templated.objects.iter().enumerate() {
+                    let b = scene.objects[i].world_aabb();
+                    lines.push(format!(
+                        "{}: min [{}], max [{}]",
+                        Templated::variable(k),
+                        numbers(b.min.to_array()),
+                        numbers(b.max.to_array())
+                    ));
+                }
+                lines.push(format!("Instruction: {}", templated.query));
+                lines.join("\n")
+            }
+            System::Omniverse => {
+                let objects: Vec<String> = templated
+                    .objects
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &i)| {
+                        let (size, centre, euler) = omniverse_pose(scene, i);
+                        format!(
+                            "{}: dimensions [{}], centre [{}], rotation [{}]",
+                            Templated::variable(k),
+                            numbers(size.to_array()),
+                            numbers(centre.to_array()),
+                            numbers(euler)
+                        )
+                    })
+                    .collect();
+                format!(
+                    "Objects: {}\nInstruction: {}",
+                    objects.join("; "),
+                    templated.query
+                )
+            }
+        };
+        vec![
+            Message::new("system", self.prompt()),
+            Message::new("user", user),
+        ]
+    }
+
+    /// Reads a reply into one transformation per variable. Errors are written for the
+    /// model to correct in a retry.
+    pub fn parse_reply(
+        self,
+        text: &str,
+        templated: &Templated,
+        scene: &Scene,
+    ) -> Result<Vec<Answer>, ExprError> {
+        let mut bindings = Bindings::new();
+        for (k, &i) in templated.objects.iter().enumerate() {
+            let b = scene.objects[i].world_aabb();
+            bindings.bind(
+                Templated::variable(k),
+                ObjectBox {
+                    min: b.min,
+                    max: b.max,
+                },
+            );
+        }
+        let object_of = |variable: &str| -> Result<usize, ExprError> {
+            let k: usize = variable[1..].parse().unwrap_or(0);
+            templated
+                .objects
+                .get(k.wrapping_sub(1))
+                .copied()
+                .ok_or_else(|| {
+                    let bound: Vec<String> = (0..templated.objects.len())
+                        .map(Templated::variable)
+                        .collect();
+                    ExprError::whole(format!(
+                        "the reply names {variable}, but the instruction only has {}",
+                        if bound.is_empty() {
+                            "no variables".to_string()
+                        } else {
+                            bound.join(", ")
+                        }
+                    ))
+                })
+        };
+        let mut answers = Vec::new();
+        match self {
+            System::Cga | System::Euclidean => {
+                let dialect = if self == System::Cga {
+                    Dialect::Cga
+                } else {
+                    Dialect::Euclidean
+                };
+                for entry in reply::extract_cga_reply(text)? {
+                    let object = object_of(&entry.variable)?;
+                    let mut m = Multivector::ONE;
+                    for (n, source) in entry.expressions.iter().enumerate() {
+                        let item = expr::evaluate_in(source, &bindings, dialect)
+                            .and_then(|v| expr::to_transformation(&v))
+                            .map_err(|e| {
+                                let which = if entry.expressions.len() > 1 {
+                                    format!(" item {}", n + 1)
+                                } else {
+                                    String::new()
+                                };
+                                ExprError {
+                                    message: format!("{}{which}: {}", entry.variable, e.message),
+                                    column: e.column,
+                                }
+                            })?;
+                        m = item.versor * m;
+                    }
+                    let transformation = expr::to_transformation(&m)?;
+                    answers.push(Answer {
+                        variable: entry.variable,
+                        object,
+                        expressions: entry.expressions,
+                        transformation,
+                    });
+                }
+            }
+            System::Omniverse => {
+                let objects = reply::parse_relaxed_objects(text);
+                let Some((_, map)) = objects
+                    .iter()
+                    .rev()
+                    .find(|(_, m)| m.keys().any(|k| k.trim().starts_with(['X', 'x'])))
+                else {
+                    return Err(ExprError::whole(
+                        "no JSON object naming the variables found in the reply: answer with one JSON object such as {\"X1\": {\"position\": [0, 0.5, 0], \"rotation\": [0, 0, 0]}}",
+                    ));
+                };
+                for (key, value) in map {
+                    let variable = format!("X{}", key.trim().trim_start_matches(['X', 'x']));
+                    if variable.len() < 2 || !variable[1..].bytes().all(|b| b.is_ascii_digit()) {
+                        continue;
+                    }
+                    let object = object_of(&variable)?;
+                    let transformation = omniverse_transformation(scene, object, value)
+                        .map_err(|m| ExprError::whole(format!("{variable}: {m}")))?;
+                    answers.push(Answer {
+                        variable,
+                        object,
+                        expressions: vec![value.to_string()],
+                        transformation,
+                    });
+                }
+            }
+        }
+        if answers.is_empty() {
+            return Err(ExprError::whole(
+                "the reply changes no object: give a transformation for at least one variable",
+            ));
+        }
+        Ok(answers)
+    }
+}
+
+fn numbers<const N: usize>(values: [f64; N]) -> String {
+    values
+        .iter()
+        .map(|v| format!("{}", (v * 1e4).round() / 1e4 + 0.0))
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
+/// Euler angles in degrees, applied about X, then Y, then Z: `R = Rz·Ry·Rx`.
+fn euler_to_quat(degrees: [f64; 3]) -> DQuat {
+    let [x, y, z] = degrees.map(f64::to_radians);
+    DQuat::from_euler(EulerRot::ZYX, z, y, x)
+}
+
+fn quat_to_euler(q: DQuat) -> [f64; 3] {
+    let (z, y, x) = q.to_euler(EulerRot::ZYX);
+    [x.to_degrees(), y.to_degrees(), z.to_degrees()]
+}
+
+/// The local centre of an object's shape.
+fn local_centre(scene: &Scene, i: usize) -> DVec3 {
+    let object = &scene.objects[i];
+    match &object.shape {
+        Shape::Box { size } => DVec3::new(0.0, size.y * 0.5, 0.0),
+        Shape::Points { .. } => crate::geometry::Aabb::from_points(object.local_points())
+            .map_or(DVec3::ZERO, |b| b.center()),
+    }
+}
+
+/// Size (world box), centre and Euler angles, as the omniverse prompt gives them.
+fn omniverse_pose(scene: &Scene, i: usize) -> (DVec3, DVec3, [f64; 3]) {
+    let object = &scene.objects[i];
+    let pose = object.similarity();
+    let centre = pose.transform_point(local_centre(scene, i));
+    (
+        object.world_aabb().size(),
+        centre,
+        quat_to_euler(pose.rotation),
+    )
+}
+
+/// The transformation (about the pivot) that brings an object to the centre and Euler
+/// angles the omniverse reply gives.
+fn omniverse_transformation(
+    scene: &Scene,
+    i: usize,
+    value: &Value,
+) -> Result<Transformation, String> {
+    let triple = |key: &str| -> Result<Option<[f64; 3]>, String> {
+        match value.get(key) {
+            None | Some(Value::Null) => Ok(None),
+            Some(v) => {
+                let list = v
+                    .as_array()
+                    .filter(|a| a.len() == 3)
+                    .ok_or(format!("\"{key}\" must be a list of three numbers"))?;
+                let mut out = [0.0; 3];
+                for (k, item) in list.iter().enumerate() {
+                    out[k] = item
+                        .as_f64()
+                        .filter(|x| x.is_finite())
+                        .ok_or(format!("\"{key}\"[{k}] must be a number"))?;
+                }
+                Ok(Some(out))
+            }
+        }
+    };
+    if !value.is_object() {
+        return Err("give an object with \"position\" and \"rotation\"".into());
+    }
+    let (_, centre, euler) = omniverse_pose(scene, i);
+    let target_centre = triple("position")?.map_or(centre, DVec3::from);
+    let target_rotation = euler_to_quat(triple("rotation")?.unwrap_or(euler));
+    let pose = scene.objects[i].similarity();
+    let delta = (target_rotation * pose.rotation.inverse()).normalize();
+    let pivot = scene.objects[i].pivot_point();
+    // Turning about the pivot moves the centre; the translation makes up the rest.
+    let turned_centre = pivot + delta * (centre - pivot);
+    let m = Similarity {
+        translation: target_centre - turned_centre,
+        rotation: delta,
+        scale: 1.0,
+    }
+    .to_versor()
+    .map_err(|e| e.to_string())?;
+    expr::to_transformation(&m).map_err(|e| e.message)
+}
+
+#[cfg(test)]
+mod tests;

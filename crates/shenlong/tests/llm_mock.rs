@@ -1,0 +1,346 @@
+//! The real HTTP client and the pipeline against a mock OpenAI-compatible server on
+//! 127.0.0.1.
+
+mod support;
+
+use shenlong::llm::cache::Cache;
+use shenlong::llm::openai::{ClientOptions, OpenAiClient};
+use shenlong::llm::record::Recorder;
+use shenlong::llm::replay::Replay;
+use shenlong::pipeline::{edit, EditOptions, LlmTranslator, System};
+use std::time::Duration;
+use support::mock_llm::{MockLlm, Reply};
+
+const ON_TOP: &str = "T(((X2.max | e2) - (X1.min | e2)) * e2 + ((X2.center - X1.center) | e1) * e1 + ((X2.center - X1.center) | e3) * e3)";
+
+fn client(server: &MockLlm, key: Option<&str>) -> OpenAiClient {
+    let mut options = ClientOptions::new(server.url.clone(), "mock-model", key.map(str::to_string));
+    options.backoff = Duration::from_millis(10);
+    options.request_timeout = Duration::from_secs(5);
+    OpenAiClient::new(options)
+}
+
+fn translator(server: &MockLlm, system: System) -> LlmTranslator {
+    LlmTranslator {
+        backend: Box::new(client(server, Some("sk-test-secret"))),
+        system,
+        retries: 5,
+        cache: None,
+        recorder: None,
+    }
+}
+
+fn workshop() -> shenlong::scene::Scene {
+    shenlong::examples::build("workshop").unwrap()
+}
+
+const INSTRUCTION: &str = "put the 'orange bottle' on top of the 'tool table'";
+
+fn bottle_on_table(scene: &shenlong::scene::Scene) -> bool {
+    let b = scene.objects[scene.find("orange bottle").unwrap()].world_aabb();
+    (b.min.y - 0.9).abs() < 1e-9
+}
+
+#[test]
+fn request_shape_and_a_cga_edit() {
+    let server = MockLlm::start(vec![Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}"))]);
+    let mut scene = workshop();
+    let result = edit(
+        &mut scene,
+        INSTRUCTION,
+        &translator(&server, System::Cga),
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(bottle_on_table(&scene));
+    let requests = server.captured();
+    assert_eq!(requests.len(), 1);
+    let r = &requests[0];
+    assert_eq!(r.path, "/v1/chat/completions");
+    assert_eq!(r.header("authorization"), Some("Bearer sk-test-secret"));
+    assert_eq!(r.body["model"], "mock-model");
+    assert_eq!(r.body["temperature"], 0);
+    let messages = r.body["messages"].as_array().unwrap();
+    assert_eq!(messages[0]["role"], "system");
+    assert_eq!(
+        messages[1],
+        serde_json::json!({"role": "user", "content": "Instruction: put the X1 on top of the X2"})
+    );
+    assert_eq!(result.report.tokens.prompt, 321);
+    assert_eq!(result.report.model, "mock-model");
+    // The key appears nowhere in the report.
+    assert!(!serde_json::to_string(&result.report)
+        .unwrap()
+        .contains("sk-test-secret"));
+}
+
+#[test]
+fn replies_in_prose_fences_and_python_dicts() {
+    for reply in [
+        format!("Let me think.\n1. X1 must go up.\n```json\n{{\"X1\": \"{ON_TOP}\"}}\n```\nDone!"),
+        format!("```python\n{{'X1': '{ON_TOP}',}}\n```"),
+    ] {
+        let server = MockLlm::start(vec![Reply::Content(reply)]);
+        let mut scene = workshop();
+        edit(
+            &mut scene,
+            INSTRUCTION,
+            &translator(&server, System::Cga),
+            &EditOptions::default(),
+        )
+        .unwrap();
+        assert!(bottle_on_table(&scene));
+    }
+}
+
+#[test]
+fn a_broken_reply_is_retried_with_the_error() {
+    let server = MockLlm::start(vec![
+        Reply::Content("{\"X1\": \"T(X2.max | e2\"}".into()),
+        Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
+    ]);
+    let mut scene = workshop();
+    let result = edit(
+        &mut scene,
+        INSTRUCTION,
+        &translator(&server, System::Cga),
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(bottle_on_table(&scene));
+    assert_eq!(result.report.retries, 1);
+    let second = &server.captured()[1].body["messages"];
+    let messages = second.as_array().unwrap();
+    assert_eq!(messages.len(), 4, "system, user, the bad answer, the error");
+    assert_eq!(messages[2]["role"], "assistant");
+    let feedback = messages[3]["content"].as_str().unwrap();
+    assert!(
+        feedback.contains("X1: expected ')' but found the end of the expression at column 14"),
+        "{feedback}"
+    );
+    assert_eq!(result.report.exchanges.len(), 2);
+    assert!(result.report.exchanges[0].error.is_some());
+}
+
+#[test]
+fn rate_limits_are_retried_honouring_retry_after() {
+    let server = MockLlm::start(vec![
+        Reply::Raw(
+            429,
+            vec![("Retry-After".into(), "0".into())],
+            "{\"error\": {\"message\": \"slow down\"}}".into(),
+        ),
+        Reply::Raw(503, vec![], "overloaded".into()),
+        Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
+    ]);
+    let mut scene = workshop();
+    edit(
+        &mut scene,
+        INSTRUCTION,
+        &translator(&server, System::Cga),
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(bottle_on_table(&scene));
+    assert_eq!(server.count(), 3);
+}
+
+#[test]
+fn a_server_that_never_answers_times_out_clearly() {
+    let server = MockLlm::start(vec![Reply::Hang(Duration::from_secs(3)); 2]);
+    let mut options = ClientOptions::new(server.url.clone(), "mock-model", None);
+    options.request_timeout = Duration::from_millis(500);
+    options.max_attempts = 2;
+    options.backoff = Duration::from_millis(10);
+    let t = LlmTranslator {
+        backend: Box::new(OpenAiClient::new(options)),
+        system: System::Cga,
+        retries: 5,
+        cache: None,
+        recorder: None,
+    };
+    let mut scene = workshop();
+    let before = scene.clone();
+    let e = edit(&mut scene, INSTRUCTION, &t, &EditOptions::default()).unwrap_err();
+    assert!(e.message.contains("did not answer within 0.5 s"), "{e}");
+    assert!(e.message.contains("after 2 attempts"), "{e}");
+    assert_eq!(
+        scene.objects[1].similarity(),
+        before.objects[1].similarity(),
+        "nothing changed"
+    );
+}
+
+#[test]
+fn five_bad_replies_give_up_cleanly() {
+    let server = MockLlm::start(vec![
+        Reply::Content("I would move the bottle up.".into());
+        6
+    ]);
+    let mut scene = workshop();
+    let before = scene.clone();
+    let e = edit(
+        &mut scene,
+        INSTRUCTION,
+        &translator(&server, System::Cga),
+        &EditOptions::default(),
+    )
+    .unwrap_err();
+    assert!(
+        e.message
+            .starts_with("mock-model gave no usable answer after 6 attempts"),
+        "{e}"
+    );
+    assert!(e.message.contains("no JSON object found"), "{e}");
+    assert_eq!(server.count(), 6);
+    assert_eq!(
+        scene.objects[1].similarity(),
+        before.objects[1].similarity()
+    );
+}
+
+#[test]
+fn http_errors_name_the_cause_without_the_key() {
+    let server = MockLlm::start(vec![Reply::Raw(
+        401,
+        vec![],
+        "{\"error\": {\"message\": \"Incorrect API key provided: sk-te****cret\"}}".into(),
+    )]);
+    let mut scene = workshop();
+    let e = edit(
+        &mut scene,
+        INSTRUCTION,
+        &translator(&server, System::Cga),
+        &EditOptions::default(),
+    )
+    .unwrap_err();
+    assert!(e.message.contains("HTTP 401 (check OPENAI_API_KEY)"), "{e}");
+    assert!(!e.message.contains("sk-test-secret"));
+}
+
+#[test]
+fn the_cache_serves_one_reply_to_every_scene() {
+    let dir = tempfile::tempdir().unwrap();
+    let server = MockLlm::start(vec![Reply::Content("{\"X1\": \"T(0.5 * e1)\"}".into())]);
+    let make = || LlmTranslator {
+        backend: Box::new(client(&server, None)),
+        system: System::Cga,
+        retries: 0,
+        cache: Some(Cache::new(dir.path())),
+        recorder: None,
+    };
+    let mut kitchen = shenlong::examples::build("kitchen").unwrap();
+    let mut office = shenlong::examples::build("office").unwrap();
+    let first = edit(
+        &mut kitchen,
+        "move the 'trash can' to the right",
+        &make(),
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(!first.report.cache_hit);
+    // A different scene, a different object, the same templated query: no request.
+    let second = edit(
+        &mut office,
+        "move the 'plant' to the right",
+        &make(),
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(second.report.cache_hit);
+    assert_eq!(server.count(), 1);
+    let plant = office.objects[office.find("plant").unwrap()].similarity();
+    assert!((plant.translation.x - (-3.1 + 0.5)).abs() < 1e-9);
+}
+
+#[test]
+fn record_then_replay_gives_the_same_edit() {
+    let dir = tempfile::tempdir().unwrap();
+    let log = dir.path().join("exchanges.jsonl");
+    let server = MockLlm::start(vec![
+        Reply::ContentNoUsage("{\"X1\": \"R(np.pi/2, e3\"}".into()),
+        Reply::ContentNoUsage("{\"X1\": \"R(np.pi/2, e3, e1)\"}".into()),
+    ]);
+    let recorded = LlmTranslator {
+        backend: Box::new(client(&server, None)),
+        system: System::Cga,
+        retries: 2,
+        cache: None,
+        recorder: Some(Recorder::open(&log).unwrap()),
+    };
+    let mut a = workshop();
+    let first = edit(
+        &mut a,
+        "turn the 'stool' a quarter",
+        &recorded,
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(
+        first.report.tokens.estimated,
+        "no usage from the server: counted locally"
+    );
+    assert!(first.report.tokens.prompt > 100);
+    assert_eq!(std::fs::read_to_string(&log).unwrap().lines().count(), 2);
+    let replay = LlmTranslator {
+        backend: Box::new(Replay::load(&log).unwrap()),
+        system: System::Cga,
+        retries: 2,
+        cache: None,
+        recorder: None,
+    };
+    let mut b = workshop();
+    let second = edit(
+        &mut b,
+        "turn the 'stool' a quarter",
+        &replay,
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(second.report.retries, 1);
+    let stool = |s: &shenlong::scene::Scene| s.objects[s.find("stool").unwrap()].similarity();
+    assert_eq!(stool(&a), stool(&b));
+    // A request that was never recorded is a clear error.
+    let e = edit(
+        &mut b,
+        "move the 'stool' up",
+        &replay,
+        &EditOptions::default(),
+    )
+    .unwrap_err();
+    assert!(
+        e.message.contains("has no recorded reply for this request"),
+        "{e}"
+    );
+}
+
+#[test]
+fn the_baselines_work_against_the_server_too() {
+    let server = MockLlm::start(vec![
+        Reply::Content("{\"X1\": \"translation(X2.center[0] - X1.center[0], X2.max[1] - X1.min[1], X2.center[2] - X1.center[2])\"}".into()),
+        Reply::Content("{\"X1\": {\"position\": [0, 1.025, 0], \"rotation\": [0, 0, 0]}}".into()),
+    ]);
+    for system in [System::Euclidean, System::Omniverse] {
+        let mut scene = workshop();
+        let result = edit(
+            &mut scene,
+            INSTRUCTION,
+            &translator(&server, system),
+            &EditOptions::default(),
+        )
+        .unwrap();
+        assert!(bottle_on_table(&scene), "{}", system.name());
+        assert_eq!(result.report.system, system.name());
+    }
+    let captured = server.captured();
+    let euclidean_user = captured[0].body["messages"][1]["content"].as_str().unwrap();
+    assert!(
+        euclidean_user.contains("X2: min [-0.8, 0, -0.4], max [0.8, 0.9, 0.4]"),
+        "{euclidean_user}"
+    );
+    let omniverse_user = captured[1].body["messages"][1]["content"].as_str().unwrap();
+    assert!(
+        omniverse_user.contains("X1: dimensions [0.08, 0.25, 0.08], centre [-2, 0.125, 1.2]"),
+        "{omniverse_user}"
+    );
+}
