@@ -238,3 +238,60 @@ fn backend_specs_are_checked() {
         stderr(&o)
     );
 }
+
+#[test]
+fn bench_writes_the_report_and_charts() {
+    let dir = tempfile::tempdir().unwrap();
+    let suite = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../bench/dev.suite.json");
+    let out = dir.path().join("out");
+    let o = shenlong(
+        &[
+            "bench",
+            suite.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+            "--limit",
+            "120",
+            "--no-cache",
+        ],
+        &[],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let table = String::from_utf8_lossy(&o.stdout).into_owned();
+    assert!(
+        table.contains("cga") && table.contains("overall"),
+        "{table}"
+    );
+    for file in [
+        "report.json",
+        "report.md",
+        "success.svg",
+        "response.svg",
+        "success.png",
+        "results.jsonl",
+    ] {
+        assert!(out.join(file).is_file(), "{file}");
+    }
+    let md = std::fs::read_to_string(out.join("report.md")).unwrap();
+    assert!(
+        md.contains("| cga | 80.0 % | 18 s |"),
+        "the paper's figures beside ours"
+    );
+    let bad = dir.path().join("bad.suite.json");
+    std::fs::write(
+        &bad,
+        r#"{"name": "x", "scenes": ["nowhere.json"], "queries": []}"#,
+    )
+    .unwrap();
+    let o = shenlong(
+        &[
+            "bench",
+            bad.to_str().unwrap(),
+            "--out",
+            out.to_str().unwrap(),
+        ],
+        &[],
+    );
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("nowhere.json"), "{}", stderr(&o));
+}

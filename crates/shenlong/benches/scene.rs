@@ -106,5 +106,24 @@ fn collisions(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench, collisions);
+fn offline(c: &mut Criterion) {
+    use shenlong::pipeline::{template, Translator};
+    let scene = shenlong::examples::build("workshop").unwrap();
+    let translator = shenlong::offline::OfflineTranslator::new();
+    let mut group = c.benchmark_group("offline translator");
+    for (name, instruction) in [
+        ("simple", "move the 'stool' 2 units to the left"),
+        ("compositional", "rotate the 'stool' by 90 degrees and move it 0.5 m to the right"),
+        ("fuzzy", "put the 'orange bottle' on top of the 'tool table'"),
+        ("hard", "stack the 'cardboard box' on the 'tool table' and the 'orange bottle' on the 'cardboard box'"),
+    ] {
+        let templated = template(instruction, &scene).unwrap();
+        group.bench_function(format!("{name}: reply and evaluation"), |b| {
+            b.iter(|| translator.translate(black_box(&templated), &scene).unwrap())
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, collisions, offline);
 criterion_main!(benches);

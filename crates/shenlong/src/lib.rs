@@ -10,6 +10,7 @@
 
 #![warn(missing_docs)]
 
+pub mod bench;
 pub mod collide;
 pub mod examples;
 pub mod expr;

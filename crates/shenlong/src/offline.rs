@@ -197,6 +197,17 @@ enum Action {
     Move,
     Rotate,
     Scale,
+    Swap,
+    Align,
+}
+
+/// What a clause asks of one variable.
+#[derive(Clone, Debug, PartialEq)]
+enum Step {
+    /// A translation by this vector expression (inside `T(...)`).
+    Translate(String),
+    /// A rotor or dilator expression, applied about the pivot.
+    Turn(String),
 }
 
 /// A direction as (axis index 0..2, sign).
@@ -217,9 +228,10 @@ const AXIS: [&str; 3] = ["e1", "e2", "e3"];
 fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
     Some(match w {
         "move" | "shift" | "push" | "slide" | "nudge" | "translate" | "put" | "place" | "set"
-        | "bring" | "take" | "position" | "relocate" | "carry" | "drag" | "pull" => {
-            (Action::Move, None)
-        }
+        | "bring" | "take" | "position" | "relocate" | "carry" | "drag" | "pull" | "stack"
+        | "pile" | "sit" | "stand" => (Action::Move, None),
+        "swap" | "exchange" | "switch" | "interchange" => (Action::Swap, None),
+        "align" | "line" => (Action::Align, None),
         "raise" | "lift" | "elevate" => (Action::Move, Some((1, 1.0))),
         "lower" | "drop" | "sink" => (Action::Move, Some((1, -1.0))),
         "rotate" | "turn" | "spin" | "twist" | "revolve" | "flip" | "swivel" | "pivot" => {
@@ -235,40 +247,86 @@ fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
 pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
     let tokens = tokenize(query);
     let clauses = split_clauses(&tokens);
-    let mut out: BTreeMap<usize, Vec<String>> = BTreeMap::new();
+    let mut steps: BTreeMap<usize, Vec<Step>> = BTreeMap::new();
     let mut last_subjects: Vec<usize> = Vec::new();
     let mut last_action: Option<Action> = None;
     for clause in clauses {
         if clause.is_empty() {
             continue;
         }
-        let produced = read_clause(&clause, &mut last_subjects, &mut last_action, query)?;
-        for (var, expr) in produced {
-            out.entry(var).or_default().push(expr);
+        let produced = read_clause(&clause, &mut last_subjects, &mut last_action, &steps, query)?;
+        for (var, step) in produced {
+            steps.entry(var).or_default().push(step);
         }
     }
-    if out.is_empty() {
+    if steps.is_empty() {
         return Err(not_understood(query, query));
     }
-    if let Some(v) = out.keys().find(|&&v| v >= variables) {
+    if let Some(v) = steps.keys().find(|&&v| v >= variables) {
         return Err(format!(
             "the instruction names X{} but only {} objects are quoted",
             v + 1,
             variables
         ));
     }
-    let entries: Vec<String> = out
+    // A list acts in the pivot frame of the object's original place: turns and scales go
+    // first (about the object itself), then the translations (which commute).
+    let entries: Vec<String> = steps
         .iter()
         .map(|(v, list)| {
-            if list.len() == 1 {
-                format!("\"X{}\": \"{}\"", v + 1, list[0])
+            let mut exprs: Vec<String> = list
+                .iter()
+                .filter_map(|s| {
+                    if let Step::Turn(e) = s {
+                        Some(e.clone())
+                    } else {
+                        None
+                    }
+                })
+                .collect();
+            let moves: Vec<&str> = list
+                .iter()
+                .filter_map(|s| {
+                    if let Step::Translate(e) = s {
+                        Some(e.as_str())
+                    } else {
+                        None
+                    }
+                })
+                .collect();
+            if !moves.is_empty() {
+                exprs.push(format!("T({})", moves.join(" + ")));
+            }
+            if exprs.len() == 1 {
+                format!("\"X{}\": \"{}\"", v + 1, exprs[0])
             } else {
-                let items: Vec<String> = list.iter().map(|e| format!("\"{e}\"")).collect();
+                let items: Vec<String> = exprs.iter().map(|e| format!("\"{e}\"")).collect();
                 format!("\"X{}\": [{}]", v + 1, items.join(", "))
             }
         })
         .collect();
     Ok(format!("{{{}}}", entries.join(", ")))
+}
+
+/// `X2.max`, shifted by what earlier clauses of the instruction moved X2 by.
+fn boxed(var: usize, attribute: &str, steps: &BTreeMap<usize, Vec<Step>>) -> String {
+    let moves: Vec<&str> = steps
+        .get(&var)
+        .into_iter()
+        .flatten()
+        .filter_map(|s| {
+            if let Step::Translate(e) = s {
+                Some(e.as_str())
+            } else {
+                None
+            }
+        })
+        .collect();
+    if moves.is_empty() {
+        format!("X{}.{attribute}", var + 1)
+    } else {
+        format!("(X{}.{attribute} + {})", var + 1, moves.join(" + "))
+    }
 }
 
 fn not_understood(part: &str, _query: &str) -> String {
@@ -291,52 +349,82 @@ fn words_of(clause: &[Token]) -> String {
         .join(" ")
 }
 
-/// Splits at `and`, `then`, `after that`, commas — keeping `between Xa and Xb` together and
-/// `X1 and X2` lists of subjects together.
+/// Words that may stand between variables of a list: `the X1 and the X2`.
+fn filler(w: &str) -> bool {
+    matches!(
+        w,
+        "the"
+            | "a"
+            | "an"
+            | "both"
+            | "all"
+            | "of"
+            | "positions"
+            | "position"
+            | "places"
+            | "place"
+            | "up"
+    )
+}
+
+/// Splits at `and`, `then`, `after that`, commas — keeping `between X2 and X3`, `swap X1
+/// and X2` and subject lists such as `move both X1 and X2 up` together.
 fn split_clauses(tokens: &[Token]) -> Vec<Vec<Token>> {
+    let word = |k: usize| match tokens.get(k) {
+        Some(Token::Word(w)) => Some(w.as_str()),
+        _ => None,
+    };
+    // The variable next to position i, skipping articles, in direction `step`.
+    let var_near = |i: usize, step: isize| -> bool {
+        let mut k = i as isize + step;
+        while k >= 0 && (k as usize) < tokens.len() {
+            match &tokens[k as usize] {
+                Token::Variable(_) => return true,
+                Token::Word(w) if matches!(w.as_str(), "the" | "a" | "an") => k += step,
+                _ => return false,
+            }
+        }
+        false
+    };
     let mut clauses = vec![Vec::new()];
     for (i, t) in tokens.iter().enumerate() {
-        let word = |k: usize| match tokens.get(k) {
-            Some(Token::Word(w)) => Some(w.as_str()),
-            _ => None,
-        };
         let is_and = word(i) == Some("and");
-        let is_break = matches!(t, Token::Separator)
-            || word(i) == Some("then")
-            || (word(i) == Some("finally"));
-        if is_and {
-            // "between X2 and X3", "X1 and X2 …": a list, not a new clause.
-            let prev_var = i > 0 && matches!(tokens[i - 1], Token::Variable(_));
-            let next_var = matches!(tokens.get(i + 1), Some(Token::Variable(_)));
+        if is_and && var_near(i, -1) && var_near(i, 1) {
             let current = clauses.last().expect("one clause at least");
-            let has_verb = current
+            let words: Vec<&str> = current
                 .iter()
-                .any(|t| matches!(t, Token::Word(w) if verb(w).is_some()));
-            if prev_var
-                && next_var
-                && (!has_verb
-                    || current
-                        .iter()
-                        .any(|t| matches!(t, Token::Word(w) if w == "between")))
-            {
+                .filter_map(|t| {
+                    if let Token::Word(w) = t {
+                        Some(w.as_str())
+                    } else {
+                        None
+                    }
+                })
+                .collect();
+            let list_context = words
+                .iter()
+                .any(|w| matches!(*w, "between" | "swap" | "exchange" | "switch"));
+            // After the verb only articles and variables so far: a list of subjects.
+            let verb_at = words.iter().position(|w| verb(w).is_some());
+            let only_subjects = match verb_at {
+                Some(v) => words[v + 1..].iter().all(|w| filler(w)),
+                None => words.iter().all(|w| filler(w)),
+            };
+            if list_context || only_subjects {
                 clauses.last_mut().expect("one clause").push(t.clone());
                 continue;
             }
-            clauses.push(Vec::new());
-            continue;
         }
+        let is_break = is_and
+            || matches!(t, Token::Separator)
+            || matches!(word(i), Some("then" | "finally" | "afterwards"));
         if is_break {
             clauses.push(Vec::new());
             continue;
         }
         clauses.last_mut().expect("one clause").push(t.clone());
     }
-    clauses.retain(|c| {
-        !c.is_empty()
-            && !c
-                .iter()
-                .all(|t| matches!(t, Token::Word(w) if w == "it" || w == "them"))
-    });
+    clauses.retain(|c| !c.is_empty() && !c.iter().all(|t| matches!(t, Token::Word(w) if w == "it" || w == "them" || w == "after" || w == "that")));
     clauses
 }
 
@@ -344,8 +432,9 @@ fn read_clause(
     clause: &[Token],
     last_subjects: &mut Vec<usize>,
     last_action: &mut Option<Action>,
+    steps: &BTreeMap<usize, Vec<Step>>,
     query: &str,
-) -> Result<Vec<(usize, String)>, String> {
+) -> Result<Vec<(usize, Step)>, String> {
     let text = words_of(clause);
     let words: Vec<&str> = clause
         .iter()
@@ -370,48 +459,78 @@ fn read_clause(
         })
         .collect();
 
-    // Hard constructs first.
-    if has("swap") || has("exchange") {
-        if vars.len() >= 2 {
-            let (a, b) = (vars[0].1, vars[1].1);
-            let (xa, xb) = (format!("X{}", a + 1), format!("X{}", b + 1));
-            *last_subjects = vec![a, b];
-            return Ok(vec![
-                (a, format!("T((({xb}.center - {xa}.center) | e1) * e1 + (({xb}.center - {xa}.center) | e3) * e3 + (({xb}.min - {xa}.min) | e2) * e2)")),
-                (b, format!("T((({xa}.center - {xb}.center) | e1) * e1 + (({xa}.center - {xb}.center) | e3) * e3 + (({xa}.min - {xb}.min) | e2) * e2)")),
-            ]);
-        }
-        return Err(not_understood(&text, query));
-    }
-
     let verb_at = words.iter().position(|w| verb(w).is_some());
-    let (action, verb_direction) = match verb_at.and_then(|i| verb(words[i])) {
+    let (mut action, verb_direction) = match verb_at.and_then(|i| verb(words[i])) {
         Some(v) => v,
         None => match *last_action {
             Some(a) => (a, None),
             None => return Err(not_understood(&text, query)),
         },
     };
-    // "make X1 bigger": only a scale when a size word follows; "make" alone is not enough.
-    let action = if verb_at.is_some_and(|i| words[i] == "make")
-        && !words.iter().any(|w| size_word(w).is_some())
+    if verb_at.is_some_and(|i| words[i] == "make") && !words.iter().any(|w| size_word(w).is_some())
     {
         return Err(not_understood(&text, query));
-    } else {
-        action
-    };
+    }
+    // "turn X1 to face X2", "rotate X1 so that it faces X2".
+    let facing = words
+        .iter()
+        .position(|w| matches!(*w, "face" | "faces" | "facing"))
+        .filter(|&i| vars.iter().any(|(j, _)| *j > i));
+    if facing.is_some() {
+        action = Action::Rotate;
+    }
     *last_action = Some(action);
 
-    // Subjects: the variables before a relation word, or pronouns.
-    // A relation word counts only when an object follows it ("to the right" is a
-    // direction; "to the right of X2" a relation).
+    let at = |var: usize, attribute: &str| boxed(var, attribute, steps);
+    match action {
+        Action::Swap => {
+            if vars.len() < 2 {
+                return Err(not_understood(&text, query));
+            }
+            let (a, b) = (vars[0].1, vars[1].1);
+            *last_subjects = vec![a, b];
+            let to = |from: usize, to: usize| {
+                let (f, t) = (format!("X{}", from + 1), format!("X{}", to + 1));
+                format!("((({t}.center - {f}.center) | e1) * e1 + (({t}.center - {f}.center) | e3) * e3 + (({t}.min - {f}.min) | e2) * e2)")
+            };
+            return Ok(vec![
+                (a, Step::Translate(to(a, b))),
+                (b, Step::Translate(to(b, a))),
+            ]);
+        }
+        Action::Align => {
+            if vars.len() < 2 {
+                return Err(not_understood(&text, query));
+            }
+            let (a, b) = (vars[0].1, vars[1].1);
+            *last_subjects = vec![a];
+            let axis = named_axis(&words).unwrap_or(0);
+            let e = AXIS[axis];
+            return Ok(vec![(
+                a,
+                Step::Translate(format!(
+                    "(({} - X{}.center) | {e}) * {e}",
+                    at(b, "center"),
+                    a + 1
+                )),
+            )]);
+        }
+        _ => {}
+    }
+
+    // Subjects: the variables before a relation word that an object follows; for turns
+    // and scales every variable before "to face", or all of them.
     let relation_at = words
         .iter()
         .enumerate()
         .position(|(i, w)| is_relation_word(w) && vars.iter().any(|(j, _)| *j > i));
+    let cut = match action {
+        Action::Move => relation_at,
+        _ => facing,
+    };
     let mut subjects: Vec<usize> = vars
         .iter()
-        .filter(|(i, _)| relation_at.is_none_or(|r| *i < r))
+        .filter(|(i, _)| cut.is_none_or(|r| *i < r))
         .map(|(_, v)| *v)
         .collect();
     if subjects.is_empty() {
@@ -424,7 +543,7 @@ fn read_clause(
     *last_subjects = subjects.clone();
     let objects: Vec<usize> = vars
         .iter()
-        .filter(|(i, _)| relation_at.is_some_and(|r| *i > r))
+        .filter(|(i, _)| cut.is_some_and(|r| *i > r))
         .map(|(_, v)| *v)
         .collect();
 
@@ -433,11 +552,9 @@ fn read_clause(
         Action::Move => {
             if let Some(r) = relation_at {
                 for &s in &subjects {
-                    out.push((
-                        s,
-                        relation(&words[r..], s, &objects)
-                            .ok_or_else(|| not_understood(&text, query))?,
-                    ));
+                    let v = relation(&words[r..], s, &objects, steps)
+                        .ok_or_else(|| not_understood(&text, query))?;
+                    out.push((s, Step::Translate(v)));
                 }
             } else {
                 let (axis, sign) = find_direction(&words)
@@ -445,11 +562,26 @@ fn read_clause(
                     .ok_or_else(|| not_understood(&text, query))?;
                 let amount = find_amount(clause, Kind::Length).unwrap_or(1.0);
                 for &s in &subjects {
-                    out.push((s, format!("T({} * {})", fmt(sign * amount), AXIS[axis])));
+                    out.push((
+                        s,
+                        Step::Translate(format!("{} * {}", fmt(sign * amount), AXIS[axis])),
+                    ));
                 }
             }
         }
         Action::Rotate => {
+            if let (Some(_), Some(&target)) = (facing, objects.first()) {
+                for &s in &subjects {
+                    // Turn about the vertical so that the front (+Z) points at the target;
+                    // +θ about +Y takes +Z toward +X, so θ = atan2(dx, dz).
+                    let d = format!("({} - X{}.center)", at(target, "center"), s + 1);
+                    out.push((
+                        s,
+                        Step::Turn(format!("R(atan2({d} | e1, {d} | e3), e3, e1)")),
+                    ));
+                }
+                return Ok(out);
+            }
             let amount = find_amount(clause, Kind::Angle);
             // "turn it around" and "flip it" with no amount are half turns.
             let mut degrees = match amount {
@@ -457,7 +589,12 @@ fn read_clause(
                 None if has("around") || has("flip") => 180.0,
                 None => 90.0,
             };
-            if has("clockwise") && !has("counter") || has("cw") {
+            let counter = has("counterclockwise")
+                || has("anticlockwise")
+                || has("counter")
+                || has("anti")
+                || has("ccw");
+            if (has("clockwise") || has("cw")) && !counter {
                 degrees = -degrees;
             }
             if has("left") && !has("clockwise") {
@@ -468,18 +605,47 @@ fn read_clause(
             }
             let plane = rotation_plane(&words);
             for &s in &subjects {
-                out.push((s, format!("R({} * pi / 180, {})", fmt(degrees), plane)));
+                out.push((
+                    s,
+                    Step::Turn(format!("R({} * pi / 180, {})", fmt(degrees), plane)),
+                ));
             }
         }
         Action::Scale => {
             let factor =
                 scale_factor(clause, &words).ok_or_else(|| not_understood(&text, query))?;
             for &s in &subjects {
-                out.push((s, format!("D({})", fmt(factor))));
+                out.push((s, Step::Turn(format!("D({})", fmt(factor)))));
             }
         }
+        Action::Swap | Action::Align => unreachable!("handled above"),
     }
     Ok(out)
+}
+
+/// "along the x axis", "on the z axis", "horizontally" (x), "vertically" (y).
+fn named_axis(words: &[&str]) -> Option<usize> {
+    let at = words.iter().position(|w| *w == "axis");
+    if let Some(i) = at {
+        if let Some(name) = i.checked_sub(1).and_then(|k| words.get(k)) {
+            return match *name {
+                "x" | "e1" => Some(0),
+                "y" | "e2" => Some(1),
+                "z" | "e3" => Some(2),
+                _ => None,
+            };
+        }
+    }
+    if words.contains(&"vertically") || words.contains(&"height") {
+        return Some(1);
+    }
+    if words
+        .iter()
+        .any(|w| matches!(*w, "depth" | "front" | "forward" | "back"))
+    {
+        return Some(2);
+    }
+    None
 }
 
 fn fmt(x: f64) -> String {
@@ -679,43 +845,51 @@ fn is_relation_word(w: &str) -> bool {
     )
 }
 
-/// The expression for a relation phrase (`on top of X2`, `next to X2`, `left of X2`, …).
-fn relation(words: &[&str], s: usize, objects: &[usize]) -> Option<String> {
+/// The translation vector for a relation phrase (`on top of X2`, `next to X2`, `left of
+/// X2`, …), using the targets' boxes as earlier clauses left them.
+fn relation(
+    words: &[&str],
+    s: usize,
+    objects: &[usize],
+    steps: &BTreeMap<usize, Vec<Step>>,
+) -> Option<String> {
     let a = format!("X{}", s + 1);
     let has = |w: &str| words.contains(&w);
-    let b = objects.first().map(|o| format!("X{}", o + 1));
-    let centre = |b: &str, axis: &str| format!("(({b}.center - {a}.center) | {axis}) * {axis}");
-    let level = |b: &str| format!("(({b}.min - {a}.min) | e2) * e2");
+    let target = *objects.first()?;
+    let b = |attribute: &str| boxed(target, attribute, steps);
+    let centre = |axis: &str| format!("(({} - {a}.center) | {axis}) * {axis}", b("center"));
+    let level = format!("(({} - {a}.min) | e2) * e2", b("min"));
     if has("between") && objects.len() >= 2 {
-        let c = format!("X{}", objects[1] + 1);
-        let b = b?;
-        return Some(format!("T(((({b}.center + {c}.center) / 2 - {a}.center) | e1) * e1 + ((({b}.center + {c}.center) / 2 - {a}.center) | e3) * e3 + {})", level(&b)));
+        let c = boxed(objects[1], "center", steps);
+        let mid = format!("(({} + {c}) / 2 - {a}.center)", b("center"));
+        return Some(format!("({mid} | e1) * e1 + ({mid} | e3) * e3 + {level}"));
     }
-    let b = b?;
     if has("on") || has("onto") || has("atop") || has("top") {
         return Some(format!(
-            "T((({b}.max | e2) - ({a}.min | e2)) * e2 + {} + {})",
-            centre(&b, "e1"),
-            centre(&b, "e3")
+            "(({} | e2) - ({a}.min | e2)) * e2 + {} + {}",
+            b("max"),
+            centre("e1"),
+            centre("e3")
         ));
     }
     if has("under") || has("below") || has("beneath") || has("underneath") {
         return Some(format!(
-            "T((({b}.min | e2) - ({a}.min | e2)) * e2 + {} + {})",
-            centre(&b, "e1"),
-            centre(&b, "e3")
+            "(({} | e2) - ({a}.min | e2)) * e2 + {} + {}",
+            b("min"),
+            centre("e1"),
+            centre("e3")
         ));
     }
+    let gap = fmt(GAP);
     let side = |axis: usize, sign: f64| -> String {
         let e = AXIS[axis];
         let other = AXIS[2 - axis];
-        let gap = fmt(GAP);
         let along = if sign > 0.0 {
-            format!("((({b}.max | {e}) + {gap} - ({a}.min | {e})) * {e})")
+            format!("(({} | {e}) + {gap} - ({a}.min | {e})) * {e}", b("max"))
         } else {
-            format!("((({b}.min | {e}) - {gap} - ({a}.max | {e})) * {e})")
+            format!("(({} | {e}) - {gap} - ({a}.max | {e})) * {e}", b("min"))
         };
-        format!("T({along} + {} + {})", centre(&b, other), level(&b))
+        format!("{along} + {} + {level}", centre(other))
     };
     if has("left") {
         return Some(side(0, -1.0));
@@ -736,27 +910,23 @@ fn relation(words: &[&str], s: usize, objects: &[usize]) -> Option<String> {
         || has("nearby")
         || has("alongside")
         || has("adjacent")
+        || has("close")
     {
-        // The side of X_b nearest X_a along x: p is 1 when X_a is to the right, 0 otherwise.
+        // The side of the target nearest X_a along x: p is 1 when X_a is to the right (or
+        // level with it), 0 when to the left.
         let e = "e1";
-        let gap = fmt(GAP);
-        let p = format!("(1 + (({a}.center - {b}.center) | {e}) / (abs(({a}.center - {b}.center) | {e}) + 1e-9)) / 2");
-        let right = format!("(({b}.max | {e}) + {gap} - ({a}.min | {e}))");
-        let left = format!("(({b}.min | {e}) - {gap} - ({a}.max | {e}))");
+        let dx = format!("((({a}.center - {}) | {e}) + 1e-12)", b("center"));
+        let p = format!("((1 + {dx} / abs({dx})) / 2)");
+        let right = format!("(({} | {e}) + {gap} - ({a}.min | {e}))", b("max"));
+        let left = format!("(({} | {e}) - {gap} - ({a}.max | {e}))", b("min"));
         return Some(format!(
-            "T(({p} * {right} + (1 - {p}) * {left}) * {e} + {} + {})",
-            centre(&b, "e3"),
-            level(&b)
+            "({p} * {right} + (1 - {p}) * {left}) * {e} + {} + {level}",
+            centre("e3")
         ));
     }
-    if has("at") || has("to") || has("with") || has("toward") || has("towards") {
+    if has("at") || has("to") || has("with") || has("toward") || has("towards") || has("in") {
         // "move X1 to X2": to its place, standing on the same level.
-        return Some(format!(
-            "T({} + {} + {})",
-            centre(&b, "e1"),
-            centre(&b, "e3"),
-            level(&b)
-        ));
+        return Some(format!("{} + {} + {level}", centre("e1"), centre("e3")));
     }
     None
 }
@@ -813,8 +983,14 @@ mod tests {
             rest = rest.replace(name, "");
         }
         assert!(!rest.chars().any(|c| c.is_ascii_digit()), "{on}");
-        let between = r("place X1 between X2 and X3");
+        let between = r("place the X1 between the X2 and the X3");
         assert!(between.contains("X2.center + X3.center"), "{between}");
+        // Stacking: X3 goes onto X1's new top, X1's move included.
+        let stack = r("stack the X1 on the X2 and the X3 on the X1");
+        assert!(stack.contains("(X1.max + ((X2.max | e2)"), "{stack}");
+        assert!(r("swap the X1 and the X2").contains("\"X2\""));
+        assert!(r("align the X1 with the X2 along the z axis").contains("| e3) * e3"));
+        assert!(r("turn the X1 to face the X2").starts_with("{\"X1\": \"R(atan2("));
     }
 
     #[test]

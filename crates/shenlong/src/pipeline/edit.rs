@@ -187,8 +187,21 @@ pub fn edit(
     let mut motions = Vec::new();
     let mut moved = Vec::new();
     let mut carried = Vec::new();
+    // World motion each object has picked up so far in this edit by being carried.
+    let mut carried_motion: Vec<Option<cga::Multivector>> = vec![None; edited.objects.len()];
     for answer in &translation.answers {
+        // Every answer is computed against the scene as it was, so an object carried by an
+        // earlier answer first goes back to where it was, then takes its own answer.
+        if let Some(w) = carried_motion[answer.object].take() {
+            let back = w.inverse().expect("world motions are invertible");
+            motions.push(edited.apply_world(&[answer.object], &back));
+        }
         let motion = edited.apply(answer.object, &answer.transformation.versor, options.carry);
+        for &(i, w) in &motion.moves {
+            if i != answer.object {
+                carried_motion[i] = Some(w * carried_motion[i].unwrap_or(cga::Multivector::ONE));
+            }
+        }
         for i in motion.objects().filter(|&i| i != answer.object) {
             if !carried.contains(&edited.objects[i].name) {
                 carried.push(edited.objects[i].name.clone());
@@ -196,6 +209,10 @@ pub fn edit(
         }
         moved.push(answer.object);
         motions.push(motion);
+        // The moved object rests wherever it was put now, not on its old support: a later
+        // answer that moves the old support must not carry it back.
+        edited.objects[answer.object].support_from_file = false;
+        edited.detect_supports();
     }
     timings.apply = ms(t0);
 

@@ -51,7 +51,44 @@ pub struct MockLlm {
     pub requests: Arc<Mutex<Vec<Captured>>>,
 }
 
+/// Computes a reply from the request's JSON body.
+pub type Handler = Arc<dyn Fn(&serde_json::Value) -> Reply + Send + Sync>;
+
 impl MockLlm {
+    /// Starts a server that answers up to `max_requests` requests with `handler`, serving
+    /// connections on `threads` threads.
+    pub fn start_with(handler: Handler, max_requests: usize, threads: usize) -> Self {
+        let listener = TcpListener::bind("127.0.0.1:0").expect("bind 127.0.0.1");
+        listener.set_nonblocking(true).expect("non-blocking accept");
+        let url = format!("http://{}/v1", listener.local_addr().unwrap());
+        let requests = Arc::new(Mutex::new(Vec::new()));
+        let listener = Arc::new(listener);
+        let served = Arc::new(std::sync::atomic::AtomicUsize::new(0));
+        for _ in 0..threads.max(1) {
+            let (listener, requests, handler, served) = (
+                Arc::clone(&listener),
+                Arc::clone(&requests),
+                Arc::clone(&handler),
+                Arc::clone(&served),
+            );
+            std::thread::spawn(move || {
+                let deadline = Instant::now() + Duration::from_secs(300);
+                while served.load(std::sync::atomic::Ordering::SeqCst) < max_requests
+                    && Instant::now() < deadline
+                {
+                    match listener.accept() {
+                        Ok((stream, _)) => {
+                            served.fetch_add(1, std::sync::atomic::Ordering::SeqCst);
+                            serve_with(stream, &requests, |body| handler(body));
+                        }
+                        Err(_) => std::thread::sleep(Duration::from_millis(1)),
+                    }
+                }
+            });
+        }
+        Self { url, requests }
+    }
+
     /// Starts a server that answers with `script`, one reply a request.
     pub fn start(script: Vec<Reply>) -> Self {
         let listener = TcpListener::bind("127.0.0.1:0").expect("bind 127.0.0.1");
@@ -88,6 +125,14 @@ impl MockLlm {
 }
 
 fn serve(stream: TcpStream, reply: Reply, seen: &Arc<Mutex<Vec<Captured>>>) {
+    serve_with(stream, seen, move |_| reply.clone());
+}
+
+fn serve_with(
+    stream: TcpStream,
+    seen: &Arc<Mutex<Vec<Captured>>>,
+    reply: impl Fn(&serde_json::Value) -> Reply,
+) {
     stream.set_nonblocking(false).ok();
     stream.set_read_timeout(Some(Duration::from_secs(10))).ok();
     let mut reader = BufReader::new(stream.try_clone().expect("clone stream"));
@@ -115,7 +160,8 @@ fn serve(stream: TcpStream, reply: Reply, seen: &Arc<Mutex<Vec<Captured>>>) {
     if reader.read_exact(&mut body).is_err() {
         return;
     }
-    let body = serde_json::from_slice(&body).unwrap_or(serde_json::Value::Null);
+    let body: serde_json::Value = serde_json::from_slice(&body).unwrap_or(serde_json::Value::Null);
+    let reply = reply(&body);
     seen.lock().unwrap().push(Captured {
         path,
         headers,

@@ -1,0 +1,209 @@
+//! Running a suite: every instance through the pipeline for each system, checked, with
+//! results appended as JSON lines so an interrupted run can resume.
+
+use super::instantiate::{instantiate, Instance};
+use super::suite::Suite;
+use crate::pipeline::{edit, EditOptions, System, Translator};
+use crate::scene::Scene;
+use serde::{Deserialize, Serialize};
+use std::collections::{HashMap, HashSet};
+use std::io::Write;
+use std::path::Path;
+use std::sync::atomic::{AtomicBool, AtomicUsize, Ordering};
+use std::sync::Mutex;
+
+/// The result of one instance for one system.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+pub struct Outcome {
+    /// The instance id (`query@scene#variation`).
+    pub instance: String,
+    /// The query id.
+    pub query: String,
+    /// Its category.
+    pub category: String,
+    /// The scene's name.
+    pub scene: String,
+    /// The prompt system.
+    pub system: String,
+    /// The instruction as run.
+    pub instruction: String,
+    /// Whether every check passed.
+    pub success: bool,
+    /// The checks that failed, with their reasons.
+    pub failures: Vec<String>,
+    /// The pipeline's error, when the edit failed.
+    pub error: Option<String>,
+    /// Response time of the translator, retries included, in milliseconds.
+    pub response_ms: f64,
+    /// Attempts after the first.
+    pub retries: usize,
+    /// Tokens sent.
+    pub prompt_tokens: u64,
+    /// Tokens received.
+    pub completion_tokens: u64,
+    /// Whether the answer came from the cache.
+    pub cache_hit: bool,
+}
+
+/// How a run goes.
+#[derive(Clone, Debug)]
+pub struct RunOptions {
+    /// The systems to compare.
+    pub systems: Vec<System>,
+    /// Instances run at once.
+    pub jobs: usize,
+    /// Run at most this many instances per system.
+    pub limit: Option<usize>,
+    /// Resolve collisions as `edit` does (off: the run measures the translator alone).
+    pub collide: bool,
+}
+
+/// Every instance of a suite on its scenes, in a fixed order.
+pub fn instances(suite: &Suite, scenes: &[Scene]) -> Vec<Instance> {
+    let mut out = Vec::new();
+    for (s, scene) in scenes.iter().enumerate() {
+        for q in 0..suite.queries.len() {
+            out.extend(instantiate(suite, q, s, scene));
+        }
+    }
+    out
+}
+
+/// Runs one instance and checks it.
+pub fn run_one(
+    suite: &Suite,
+    scene: &Scene,
+    instance: &Instance,
+    translator: &dyn Translator,
+    collide: bool,
+) -> Outcome {
+    let query = &suite.queries[instance.query];
+    let mut after = scene.clone();
+    let options = EditOptions {
+        carry: true,
+        collisions: collide.then(Default::default),
+    };
+    let result = edit(&mut after, &instance.instruction, translator, &options);
+    let bound: HashMap<String, usize> = instance.bound.iter().cloned().collect();
+    let mut outcome = Outcome {
+        instance: instance.id.clone(),
+        query: query.id.clone(),
+        category: query.category.clone(),
+        scene: scene.name.clone(),
+        system: translator.system().name().into(),
+        instruction: instance.instruction.clone(),
+        success: false,
+        failures: Vec::new(),
+        error: None,
+        response_ms: 0.0,
+        retries: 0,
+        prompt_tokens: 0,
+        completion_tokens: 0,
+        cache_hit: false,
+    };
+    match result {
+        Err(e) => outcome.error = Some(e.message),
+        Ok(edit) => {
+            let r = &edit.report;
+            outcome.response_ms = r.timings_ms.translate;
+            outcome.retries = r.retries;
+            outcome.prompt_tokens = r.tokens.prompt;
+            outcome.completion_tokens = r.tokens.completion;
+            outcome.cache_hit = r.cache_hit;
+            for check in &query.expect {
+                if let Err(reason) = check.evaluate(scene, &after, &bound) {
+                    outcome.failures.push(reason);
+                }
+            }
+            outcome.success = outcome.failures.is_empty();
+        }
+    }
+    outcome
+}
+
+/// Runs the suite for every system, skipping what `results` (a JSON-lines file) already
+/// holds and appending each new outcome to it. `progress` is told of each instance done;
+/// `stop` ends the run early (between instances). Returns every outcome, old and new.
+#[allow(clippy::too_many_arguments)]
+pub fn run(
+    suite: &Suite,
+    scenes: &[Scene],
+    translators: &[(System, Box<dyn Translator>)],
+    options: &RunOptions,
+    results: &Path,
+    progress: &(dyn Fn(usize, usize) + Sync),
+    stop: &AtomicBool,
+) -> std::io::Result<Vec<Outcome>> {
+    let mut done: Vec<Outcome> = match std::fs::read_to_string(results) {
+        Ok(text) => text
+            .lines()
+            .filter_map(|l| serde_json::from_str(l).ok())
+            .collect(),
+        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+        Err(e) => return Err(e),
+    };
+    let finished: HashSet<(String, String)> = done
+        .iter()
+        .map(|o| (o.system.clone(), o.instance.clone()))
+        .collect();
+    let all = instances(suite, scenes);
+    let mut work: Vec<(usize, &Instance)> = Vec::new();
+    for (t, (system, _)) in translators.iter().enumerate() {
+        let limit = options.limit.unwrap_or(usize::MAX);
+        for instance in all.iter().take(limit) {
+            if !finished.contains(&(system.name().to_string(), instance.id.clone())) {
+                work.push((t, instance));
+            }
+        }
+    }
+    let total = work.len();
+    let file = Mutex::new(
+        std::fs::OpenOptions::new()
+            .create(true)
+            .append(true)
+            .open(results)?,
+    );
+    let next = AtomicUsize::new(0);
+    let completed = AtomicUsize::new(0);
+    let fresh = Mutex::new(Vec::new());
+    let write_error = Mutex::new(None);
+    std::thread::scope(|scope| {
+        for _ in 0..options.jobs.max(1) {
+            scope.spawn(|| loop {
+                if stop.load(Ordering::Relaxed) {
+                    return;
+                }
+                let k = next.fetch_add(1, Ordering::Relaxed);
+                let Some(&(t, instance)) = work.get(k) else {
+                    return;
+                };
+                let outcome = run_one(
+                    suite,
+                    &scenes[instance.scene],
+                    instance,
+                    translators[t].1.as_ref(),
+                    options.collide,
+                );
+                let mut line = serde_json::to_string(&outcome).expect("outcomes serialise");
+                line.push('\n');
+                {
+                    let mut f = file.lock().unwrap_or_else(|e| e.into_inner());
+                    if let Err(e) = f.write_all(line.as_bytes()).and_then(|_| f.flush()) {
+                        *write_error.lock().unwrap_or_else(|e| e.into_inner()) = Some(e);
+                        stop.store(true, Ordering::Relaxed);
+                    }
+                }
+                fresh
+                    .lock()
+                    .unwrap_or_else(|e| e.into_inner())
+                    .push(outcome);
+                progress(completed.fetch_add(1, Ordering::Relaxed) + 1, total);
+            });
+        }
+    });
+    if let Some(e) = write_error.into_inner().unwrap_or_else(|e| e.into_inner()) {
+        return Err(e);
+    }
+    done.extend(fresh.into_inner().unwrap_or_else(|e| e.into_inner()));
+    Ok(done)
+}

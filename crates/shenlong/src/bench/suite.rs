@@ -1,0 +1,231 @@
+//! The benchmark suite format (SPEC §6), read strictly: a suite written by others runs
+//! unchanged, and a bad suite fails with a clear error before anything runs.
+
+use super::checks::Check;
+use serde::Deserialize;
+use serde_json::Value;
+use std::collections::BTreeMap;
+use std::path::{Path, PathBuf};
+
+/// The query categories of the paper.
+pub const CATEGORIES: [&str; 5] = [
+    "simple",
+    "compositional",
+    "fuzzy",
+    "compositional_fuzzy",
+    "hard",
+];
+
+/// A suite, validated.
+#[derive(Clone, Debug)]
+pub struct Suite {
+    /// The suite's name.
+    pub name: String,
+    /// Scene files, resolved against the suite's folder.
+    pub scenes: Vec<PathBuf>,
+    /// Instantiations per query and scene.
+    pub variations: usize,
+    /// Seed of the instantiation.
+    pub seed: u64,
+    /// The queries.
+    pub queries: Vec<Query>,
+}
+
+/// One query template.
+#[derive(Clone, Debug)]
+pub struct Query {
+    /// Unique id.
+    pub id: String,
+    /// One of [`CATEGORIES`].
+    pub category: String,
+    /// The instruction, with placeholders `{A}`.
+    pub text: String,
+    /// Placeholders and their constraints, in order of first appearance in the text.
+    pub pick: Vec<(String, Pick)>,
+    /// The checks.
+    pub expect: Vec<Check>,
+}
+
+/// Constraints on the object a placeholder picks.
+#[derive(Clone, Debug, Default, PartialEq, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct Pick {
+    /// Standing on the floor (true) or resting on something (false).
+    pub on_floor: Option<bool>,
+    /// Resting on another object.
+    pub resting: Option<bool>,
+    /// Carrying other objects.
+    pub carries: Option<bool>,
+    /// Height at least, metres.
+    pub min_height: Option<f64>,
+    /// Height at most, metres.
+    pub max_height: Option<f64>,
+    /// Footprint area at least, m².
+    pub min_footprint: Option<f64>,
+    /// Footprint area at most, m².
+    pub max_footprint: Option<f64>,
+    /// Largest extent at most, metres.
+    pub max_size: Option<f64>,
+    /// The name contains this text.
+    pub name_contains: Option<String>,
+    /// Extension: not rotated (facing +Z), for queries whose answer depends on the
+    /// object's current orientation, which its box does not show.
+    pub unrotated: Option<bool>,
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawSuite {
+    name: String,
+    scenes: Vec<String>,
+    #[serde(default = "one")]
+    variations: usize,
+    #[serde(default)]
+    seed: u64,
+    queries: Vec<RawQuery>,
+}
+
+fn one() -> usize {
+    1
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawQuery {
+    id: String,
+    category: String,
+    text: String,
+    #[serde(default)]
+    pick: BTreeMap<String, Value>,
+    expect: Vec<Value>,
+}
+
+/// Why a suite cannot run.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SuiteError {
+    /// One line naming the problem and where.
+    pub message: String,
+}
+
+impl std::fmt::Display for SuiteError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for SuiteError {}
+
+fn err(message: impl Into<String>) -> SuiteError {
+    SuiteError {
+        message: message.into(),
+    }
+}
+
+impl Suite {
+    /// Reads and validates a suite file.
+    pub fn load(path: &Path) -> Result<Self, SuiteError> {
+        let text = std::fs::read_to_string(path)
+            .map_err(|e| err(format!("cannot read {}: {e}", path.display())))?;
+        let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
+        Self::parse(&text, &dir).map_err(|e| err(format!("{}: {}", path.display(), e.message)))
+    }
+
+    /// Parses a suite; scene paths are resolved against `dir`.
+    pub fn parse(text: &str, dir: &Path) -> Result<Self, SuiteError> {
+        let raw: RawSuite = serde_json::from_str(text).map_err(|e| {
+            err(format!(
+                "invalid suite at line {}, column {}: {e}",
+                e.line(),
+                e.column()
+            ))
+        })?;
+        if raw.scenes.is_empty() {
+            return Err(err("scenes: the suite names no scene"));
+        }
+        if raw.variations == 0 {
+            return Err(err("variations must be at least 1"));
+        }
+        let mut queries = Vec::new();
+        for (i, q) in raw.queries.into_iter().enumerate() {
+            let at = format!("queries[{i}] ('{}')", q.id);
+            if queries.iter().any(|p: &Query| p.id == q.id) {
+                return Err(err(format!("{at}: the id is used twice")));
+            }
+            if !CATEGORIES.contains(&q.category.as_str()) {
+                return Err(err(format!(
+                    "{at}: unknown category '{}': use {}",
+                    q.category,
+                    CATEGORIES.join(", ")
+                )));
+            }
+            let placeholders = placeholders(&q.text);
+            let mut pick = Vec::new();
+            for name in &placeholders {
+                let constraint = match q.pick.get(name) {
+                    Some(v) => serde_json::from_value::<Pick>(v.clone())
+                        .map_err(|e| err(format!("{at}: pick.{name}: {e}")))?,
+                    None => Pick::default(),
+                };
+                pick.push((name.clone(), constraint));
+            }
+            if let Some(extra) = q.pick.keys().find(|k| !placeholders.contains(k)) {
+                return Err(err(format!(
+                    "{at}: pick.{extra} is not a placeholder of the text"
+                )));
+            }
+            let mut expect = Vec::new();
+            for (k, value) in q.expect.iter().enumerate() {
+                let check =
+                    Check::parse(value).map_err(|m| err(format!("{at}: expect[{k}]: {m}")))?;
+                for name in check.placeholders() {
+                    if !placeholders.contains(&name)
+                        && name.len() <= 2
+                        && name.chars().all(|c| c.is_ascii_uppercase())
+                    {
+                        return Err(err(format!(
+                            "{at}: expect[{k}] names {{{name}}}, which the text does not have"
+                        )));
+                    }
+                }
+                expect.push(check);
+            }
+            if expect.is_empty() {
+                return Err(err(format!("{at}: expect has no check")));
+            }
+            queries.push(Query {
+                id: q.id,
+                category: q.category,
+                text: q.text,
+                pick,
+                expect,
+            });
+        }
+        Ok(Self {
+            name: raw.name,
+            scenes: raw.scenes.iter().map(|s| dir.join(s)).collect(),
+            variations: raw.variations,
+            seed: raw.seed,
+            queries,
+        })
+    }
+}
+
+/// The placeholders `{A}` of a text, in order of first appearance.
+pub fn placeholders(text: &str) -> Vec<String> {
+    let mut out: Vec<String> = Vec::new();
+    let mut rest = text;
+    while let Some(start) = rest.find('{') {
+        let Some(len) = rest[start + 1..].find('}') else {
+            break;
+        };
+        let name = &rest[start + 1..start + 1 + len];
+        if !name.is_empty()
+            && name.chars().all(|c| c.is_alphanumeric() || c == '_')
+            && !out.iter().any(|n| n == name)
+        {
+            out.push(name.to_string());
+        }
+        rest = &rest[start + 1 + len..];
+    }
+    out
+}
