@@ -250,11 +250,22 @@ pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
     let mut steps: BTreeMap<usize, Vec<Step>> = BTreeMap::new();
     let mut last_subjects: Vec<usize> = Vec::new();
     let mut last_action: Option<Action> = None;
+    let mut last_steps: Vec<Step> = Vec::new();
     for clause in clauses {
         if clause.is_empty() {
             continue;
         }
-        let produced = read_clause(&clause, &mut last_subjects, &mut last_action, &steps, query)?;
+        let produced = match repeat_previous(&clause, &last_steps, &last_subjects) {
+            Some(repeated) => repeated,
+            None => read_clause(&clause, &mut last_subjects, &mut last_action, &steps, query)?,
+        };
+        if let Some(&(first, _)) = produced.first() {
+            last_steps = produced
+                .iter()
+                .filter(|(v, _)| *v == first)
+                .map(|(_, s)| s.clone())
+                .collect();
+        }
         for (var, step) in produced {
             steps.entry(var).or_default().push(step);
         }
@@ -306,6 +317,73 @@ pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
         })
         .collect();
     Ok(format!("{{{}}}", entries.join(", ")))
+}
+
+/// "do the same for X2", "move X2 the other way", "mirror that for X2": the previous
+/// clause's steps, repeated, reversed or mirrored left–right for the variables named.
+fn repeat_previous(
+    clause: &[Token],
+    last: &[Step],
+    last_subjects: &[usize],
+) -> Option<Vec<(usize, Step)>> {
+    let words: Vec<&str> = clause
+        .iter()
+        .filter_map(|t| {
+            if let Token::Word(w) = t {
+                Some(w.as_str())
+            } else {
+                None
+            }
+        })
+        .collect();
+    let has = |w: &str| words.contains(&w);
+    let same = has("same") || has("likewise") || has("too") || has("also");
+    let opposite = has("opposite") || (has("other") && has("way")) || has("reverse");
+    let mirror = has("mirror") || has("mirrored") || has("symmetrically");
+    if last.is_empty()
+        || !(same || opposite || mirror)
+        || words.iter().any(|w| direction(w).is_some())
+    {
+        return None;
+    }
+    let mut subjects: Vec<usize> = clause
+        .iter()
+        .filter_map(|t| {
+            if let Token::Variable(v) = t {
+                Some(*v)
+            } else {
+                None
+            }
+        })
+        .collect();
+    let single = subjects.len() == 1;
+    subjects.retain(|v| !last_subjects.contains(v) || single);
+    if subjects.is_empty() {
+        return None;
+    }
+    let transform = |step: &Step| -> Step {
+        match step {
+            Step::Translate(v) if opposite => Step::Translate(format!("-1 * ({v})")),
+            Step::Translate(v) if mirror => {
+                Step::Translate(format!("({v}) - 2 * (({v}) | e1) * e1"))
+            }
+            Step::Turn(e) if opposite || mirror => Step::Turn(format!("~{e}")),
+            other => other.clone(),
+        }
+    };
+    // Relations name their subject's own box (X1.min …): repeat only plain moves and turns.
+    if last
+        .iter()
+        .any(|s| matches!(s, Step::Translate(v) if v.contains('X')))
+    {
+        return None;
+    }
+    Some(
+        subjects
+            .iter()
+            .flat_map(|&s| last.iter().map(move |step| (s, transform(step))))
+            .collect(),
+    )
 }
 
 /// `X2.max`, shifted by what earlier clauses of the instruction moved X2 by.
@@ -389,7 +467,8 @@ fn split_clauses(tokens: &[Token]) -> Vec<Vec<Token>> {
     let mut clauses = vec![Vec::new()];
     for (i, t) in tokens.iter().enumerate() {
         let is_and = word(i) == Some("and");
-        if is_and && var_near(i, -1) && var_near(i, 1) {
+        let is_list_mark = is_and || matches!(t, Token::Separator);
+        if is_list_mark && var_near(i, -1) && var_near(i, 1) {
             let current = clauses.last().expect("one clause at least");
             let words: Vec<&str> = current
                 .iter()
@@ -498,6 +577,29 @@ fn read_clause(
                 (b, Step::Translate(to(b, a))),
             ]);
         }
+        Action::Align if vars.len() >= 3 || (vars.len() >= 2 && !has("with") && !has("to")) => {
+            // "line up X1, X2 and X3", "arrange them in a row": each after the first goes to
+            // the right of the one before, level with and centred on the first.
+            let row: Vec<usize> = vars.iter().map(|(_, v)| *v).collect();
+            *last_subjects = row.clone();
+            let mut local = steps.clone();
+            let mut out = Vec::new();
+            for pair in row.windows(2) {
+                let (prev, s) = (pair[0], pair[1]);
+                let first = row[0];
+                let v = format!(
+                    "(({} | e1) + {} - (X{n}.min | e1)) * e1 + (({} - X{n}.center) | e3) * e3 + (({} - X{n}.min) | e2) * e2",
+                    boxed(prev, "max", &local),
+                    fmt(GAP),
+                    boxed(first, "center", &local),
+                    boxed(first, "min", &local),
+                    n = s + 1
+                );
+                local.entry(s).or_default().push(Step::Translate(v.clone()));
+                out.push((s, Step::Translate(v)));
+            }
+            return Ok(out);
+        }
         Action::Align => {
             if vars.len() < 2 {
                 return Err(not_understood(&text, query));
@@ -549,6 +651,37 @@ fn read_clause(
 
     let mut out = Vec::new();
     match action {
+        Action::Move if relation_at.is_none() && room_phrase(&words).is_some() => {
+            let place = room_phrase(&words).expect("checked");
+            for &s in &subjects {
+                out.push((s, Step::Translate(room_target(place, &words, s))));
+            }
+        }
+        Action::Move
+            if relation_at.is_some_and(|r| {
+                matches!(words[r], "from" | "toward" | "towards")
+                    || words[..r]
+                        .iter()
+                        .any(|w| matches!(*w, "away" | "closer" | "nearer"))
+            }) =>
+        {
+            let target = *objects
+                .first()
+                .ok_or_else(|| not_understood(&text, query))?;
+            let amount = find_amount(clause, Kind::Length);
+            for &s in &subjects {
+                let d = format!("({} - X{}.center)", at(target, "center"), s + 1);
+                let flat = format!("(({d} | e1) * e1 + ({d} | e3) * e3)");
+                let away = has("away") || (has("from") && !has("closer"));
+                let v = match (away, amount) {
+                    (true, a) => format!("-{} * {flat} / abs({flat})", fmt(a.unwrap_or(1.0))),
+                    (false, Some(a)) => format!("{} * {flat} / abs({flat})", fmt(a)),
+                    // "closer to X2" with no amount: halve the distance.
+                    (false, None) => format!("0.5 * {flat}"),
+                };
+                out.push((s, Step::Translate(v)));
+            }
+        }
         Action::Move => {
             if let Some(r) = relation_at {
                 for &s in &subjects {
@@ -621,6 +754,92 @@ fn read_clause(
         Action::Swap | Action::Align => unreachable!("handled above"),
     }
     Ok(out)
+}
+
+/// A place in the room an instruction names.
+#[derive(Clone, Copy, Debug, PartialEq)]
+enum RoomPlace {
+    Centre,
+    Corner,
+    Wall,
+}
+
+fn room_phrase(words: &[&str]) -> Option<RoomPlace> {
+    let has = |w: &str| words.contains(&w);
+    if has("corner") {
+        Some(RoomPlace::Corner)
+    } else if has("wall") || has("walls") {
+        Some(RoomPlace::Wall)
+    } else if (has("centre") || has("center") || has("middle"))
+        && (has("room") || !words.contains(&"of"))
+    {
+        Some(RoomPlace::Centre)
+    } else {
+        None
+    }
+}
+
+/// The translation to a place in the room, written with the `room` variable. Walls and
+/// corners keep a 2 cm clearance; "the wall" or "the corner" with no side is the nearest.
+fn room_target(place: RoomPlace, words: &[&str], s: usize) -> String {
+    let a = format!("X{}", s + 1);
+    let has = |w: &str| words.contains(&w);
+    let clear = "0.02";
+    let centre = |e: &str| format!("((room.center - {a}.center) | {e}) * {e}");
+    // Flush against the min or max wall along an axis.
+    let to_min = |e: &str| format!("(((room.min | {e}) + {clear} - ({a}.min | {e})) * {e})");
+    let to_max = |e: &str| format!("(((room.max | {e}) - {clear} - ({a}.max | {e})) * {e})");
+    // 1 when the object is on the max side of the room's centre along e, else 0.
+    let side_p = |e: &str| {
+        let d = format!("((({a}.center - room.center) | {e}) + 1e-12)");
+        format!("((1 + {d} / abs({d})) / 2)")
+    };
+    let nearest = |e: &str| {
+        format!(
+            "({p} * {} + (1 - {p}) * {})",
+            to_max(e),
+            to_min(e),
+            p = side_p(e)
+        )
+    };
+    let x = if has("left") {
+        Some(to_min("e1"))
+    } else if has("right") {
+        Some(to_max("e1"))
+    } else {
+        None
+    };
+    let z = if has("back") || has("rear") || has("far") {
+        Some(to_min("e3"))
+    } else if has("front") || has("near") {
+        Some(to_max("e3"))
+    } else {
+        None
+    };
+    match place {
+        RoomPlace::Centre => format!("{} + {}", centre("e1"), centre("e3")),
+        RoomPlace::Corner => format!(
+            "{} + {}",
+            x.unwrap_or_else(|| nearest("e1")),
+            z.unwrap_or_else(|| nearest("e3"))
+        ),
+        RoomPlace::Wall => match (x, z) {
+            (Some(x), _) => x,
+            (None, Some(z)) => z,
+            (None, None) => {
+                // The nearer of the nearest x wall and the nearest z wall.
+                let gap = |e: &str| {
+                    format!("(((room.max - room.min) | {e}) / 2 - abs(({a}.center - room.center) | {e}))")
+                };
+                let q = format!(
+                    "((1 + ({gz} - {gx} + 1e-12) / abs({gz} - {gx} + 1e-12)) / 2)",
+                    gx = gap("e1"),
+                    gz = gap("e3")
+                );
+                format!("{q} * {} + (1 - {q}) * {}", nearest("e1"), nearest("e3"))
+            }
+        },
+    }
 }
 
 /// "along the x axis", "on the z axis", "horizontally" (x), "vertically" (y).
@@ -815,7 +1034,9 @@ fn rotation_plane(words: &[&str]) -> &'static str {
 fn is_relation_word(w: &str) -> bool {
     matches!(
         w,
-        "on" | "onto"
+        "from"
+            | "on"
+            | "onto"
             | "atop"
             | "top"
             | "next"
@@ -994,11 +1215,97 @@ mod tests {
     }
 
     #[test]
+    fn room_places_distances_rows_and_repeats() {
+        let centre = r("move the X1 to the centre of the room");
+        assert!(centre.contains("room.center - X1.center"), "{centre}");
+        assert!(r("push the X1 into the back left corner").contains("room.min | e3"));
+        assert!(r("put the X1 in the corner").contains("room.max | e1"));
+        assert!(r("move the X1 against the right wall").contains("room.max | e1"));
+        assert!(r("put the X1 against the wall").contains("abs"));
+        assert!(r("move the X1 away from the X2 by 2 m").starts_with("{\"X1\": \"T(-2 * "));
+        assert!(r("bring the X1 closer to the X2").starts_with("{\"X1\": \"T(0.5 * "));
+        let row = r("line up the X1, the X2 and the X3");
+        assert!(
+            row.contains("\"X2\"") && row.contains("\"X3\"") && !row.contains("\"X1\""),
+            "{row}"
+        );
+        assert_eq!(
+            r("move X1 1 m to the left and move X2 the other way"),
+            r#"{"X1": "T(-1 * e1)", "X2": "T(-1 * (-1 * e1))"}"#
+        );
+        assert_eq!(
+            r("turn X1 45 degrees and do the same for X2"),
+            r#"{"X1": "R(45 * pi / 180, e3, e1)", "X2": "R(45 * pi / 180, e3, e1)"}"#
+        );
+        assert!(r("move X1 0.5 m to the right and mirror that for X2")
+            .contains("- 2 * ((0.5 * e1) | e1) * e1"));
+    }
+
+    #[test]
     fn unreadable_instructions_fail_clearly() {
         let e = reply_for("please do something nice with X1", 1).unwrap_err();
         assert!(
             e.contains("could not read") && e.contains("--llm openai:MODEL"),
             "{e}"
+        );
+    }
+}
+
+#[cfg(test)]
+mod scene_tests {
+    //! The room constructs on a built-in scene, end to end through the evaluator.
+    use super::*;
+    use crate::pipeline::{edit, EditOptions};
+
+    fn run(instruction: &str) -> Scene {
+        let mut scene = crate::examples::build("living_room").unwrap();
+        let options = EditOptions {
+            collisions: None,
+            ..EditOptions::default()
+        };
+        edit(&mut scene, instruction, &OfflineTranslator::new(), &options)
+            .unwrap_or_else(|e| panic!("{instruction}: {e}"));
+        scene
+    }
+
+    fn aabb(scene: &Scene, name: &str) -> crate::geometry::Aabb {
+        scene.objects[scene.find(name).unwrap()].world_aabb()
+    }
+
+    #[test]
+    fn room_places_land_where_they_say() {
+        // The room spans x ∈ [−3, 3], z ∈ [−2.5, 2.5].
+        let s = run("move the 'ottoman' to the centre of the room");
+        let c = aabb(&s, "ottoman").center();
+        assert!(c.x.abs() < 1e-9 && c.z.abs() < 1e-9, "{c}");
+        let s = run("push the 'plant' into the back left corner");
+        let b = aabb(&s, "plant");
+        assert!(
+            (b.min.x + 2.98).abs() < 1e-9 && (b.min.z + 2.48).abs() < 1e-9,
+            "{b:?}"
+        );
+        // The ottoman (centre x −1.2, z 0.4) is nearest the left wall of the x walls and
+        // the front wall of the z walls; the left wall (1.8 m from its centre) is nearer
+        // than the front one (2.1 m).
+        let s = run("put the 'ottoman' against the wall");
+        let b = aabb(&s, "ottoman");
+        assert!((b.min.x + 2.98).abs() < 1e-9, "{b:?}");
+        let s = run("move the 'ottoman' away from the 'sofa' by 1 m");
+        let (before, after) = (crate::examples::build("living_room").unwrap(), s);
+        let d0 = aabb(&before, "ottoman").center() - aabb(&before, "sofa").center();
+        let d1 = aabb(&after, "ottoman").center() - aabb(&after, "sofa").center();
+        let flat = |v: glam::DVec3| glam::DVec2::new(v.x, v.z).length();
+        assert!((flat(d1) - flat(d0) - 1.0).abs() < 1e-9);
+        let s = run("line up the 'speaker', the 'speaker 2' and the 'plant'");
+        let (a, b, c) = (
+            aabb(&s, "speaker"),
+            aabb(&s, "speaker 2"),
+            aabb(&s, "plant"),
+        );
+        assert!((b.min.x - a.max.x - GAP).abs() < 1e-9 && (c.min.x - b.max.x - GAP).abs() < 1e-9);
+        assert!(
+            (b.center().z - a.center().z).abs() < 1e-9
+                && (c.center().z - a.center().z).abs() < 1e-9
         );
     }
 }

@@ -150,6 +150,16 @@ impl System {
                 },
             );
         }
+        // Extension: the room, when the scene has one, as the variable `room`.
+        if let Some(room) = scene.bounds {
+            bindings.bind(
+                "room",
+                ObjectBox {
+                    min: room.min,
+                    max: room.max,
+                },
+            );
+        }
         let object_of = |variable: &str| -> Result<usize, ExprError> {
             let k: usize = variable[1..].parse().unwrap_or(0);
             templated
