@@ -26,6 +26,7 @@ enum Command {
     Convert(commands::convert::Args),
     Examples(commands::examples::Args),
     Render(commands::render::Args),
+    Serve(commands::serve::Args),
 }
 
 fn main() -> ExitCode {
@@ -38,6 +39,7 @@ fn main() -> ExitCode {
         Command::Convert(args) => commands::convert::run(args),
         Command::Examples(args) => commands::examples::run(args),
         Command::Render(args) => commands::render::run(args),
+        Command::Serve(args) => commands::serve::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

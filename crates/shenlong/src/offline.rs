@@ -47,10 +47,10 @@ impl Translator for OfflineTranslator {
     ) -> Result<Translation, TranslateError> {
         let started = Instant::now();
         let reply = reply_for(&templated.query, templated.objects.len())
-            .map_err(|message| TranslateError { message })?;
+            .map_err(TranslateError::not_understood)?;
         let answers = System::Cga
             .parse_reply(&reply, templated, scene)
-            .map_err(|e| TranslateError { message: format!("the offline translator wrote an invalid answer ({e}); please report this instruction") })?;
+            .map_err(|e| TranslateError::model(format!("the offline translator wrote an invalid answer ({e}); please report this instruction")))?;
         let exchange = Exchange {
             messages: vec![Message::new(
                 "user",

@@ -7,6 +7,7 @@ pub mod edit;
 pub mod eval;
 pub mod examples;
 pub mod render;
+pub mod serve;
 
 use anyhow::{Context, Result};
 use shenlong::format::SceneFile;

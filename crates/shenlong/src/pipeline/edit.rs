@@ -138,6 +138,22 @@ pub struct Tokens {
 pub struct EditError {
     /// One line for the user.
     pub message: String,
+    /// Which kind of failure.
+    pub kind: EditErrorKind,
+}
+
+/// The kinds of edit failure, for callers that answer differently (the HTTP API: 4xx for
+/// the user's input, 5xx for a model server).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum EditErrorKind {
+    /// The instruction is empty, too long, or names an unknown object.
+    Instruction,
+    /// The translator cannot read the instruction.
+    NotUnderstood,
+    /// The model or its server failed, or gave no usable answer.
+    Model,
+    /// No collision-free placement was found.
+    Placement,
 }
 
 impl std::fmt::Display for EditError {
@@ -171,14 +187,23 @@ pub fn edit(
     let started = Instant::now();
     let mut timings = Timings::default();
     let t0 = Instant::now();
-    let templated: Templated =
-        template(instruction, scene).map_err(|e| EditError { message: e.message })?;
+    let templated: Templated = template(instruction, scene).map_err(|e| EditError {
+        message: e.message,
+        kind: EditErrorKind::Instruction,
+    })?;
     timings.template = ms(t0);
 
     let t0 = Instant::now();
     let translation = translator
         .translate(&templated, scene)
-        .map_err(|e| EditError { message: e.message })?;
+        .map_err(|e| EditError {
+            kind: if e.not_understood {
+                EditErrorKind::NotUnderstood
+            } else {
+                EditErrorKind::Model
+            },
+            message: e.message,
+        })?;
     timings.translate = ms(t0);
 
     let t0 = Instant::now();
@@ -221,8 +246,13 @@ pub fn edit(
     let mut collisions_resolved = Vec::new();
     let mut overlaps_remaining = Vec::new();
     if let Some(resolve_options) = &options.collisions {
-        let resolution = collide::resolve(&mut edited, &before, &moved, resolve_options)
-            .map_err(|e| EditError { message: e.message })?;
+        let resolution =
+            collide::resolve(&mut edited, &before, &moved, resolve_options).map_err(|e| {
+                EditError {
+                    message: e.message,
+                    kind: EditErrorKind::Placement,
+                }
+            })?;
         for a in &resolution.adjustments {
             collisions_resolved.push(CollisionReport {
                 object: names[a.object].clone(),

@@ -9,7 +9,7 @@ pub mod prompts;
 pub mod template;
 pub mod translate;
 
-pub use edit::{edit, Edit, EditError, EditOptions, EditReport};
+pub use edit::{edit, Edit, EditError, EditErrorKind, EditOptions, EditReport};
 pub use prompts::System;
 pub use template::{template, TemplateError, Templated};
 pub use translate::{LlmTranslator, TranslateError, Translation, Translator};

@@ -47,6 +47,27 @@ pub struct Translation {
 pub struct TranslateError {
     /// One line for the user.
     pub message: String,
+    /// Whether the instruction itself was not understood (as opposed to a model or its
+    /// server failing).
+    pub not_understood: bool,
+}
+
+impl TranslateError {
+    /// A model or server failure.
+    pub fn model(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+            not_understood: false,
+        }
+    }
+
+    /// An instruction the translator cannot read.
+    pub fn not_understood(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+            not_understood: true,
+        }
+    }
 }
 
 impl std::fmt::Display for TranslateError {
@@ -134,9 +155,7 @@ impl Translator for LlmTranslator {
             let completion = self
                 .backend
                 .complete(&messages)
-                .map_err(|e| TranslateError {
-                    message: format!("{model}: {}", e.message),
-                })?;
+                .map_err(|e| TranslateError::model(format!("{model}: {}", e.message)))?;
             if let Some(recorder) = &self.recorder {
                 let record = Record {
                     system: name.into(),
@@ -147,8 +166,11 @@ impl Translator for LlmTranslator {
                     elapsed_ms: completion.elapsed.as_secs_f64() * 1000.0,
                     usage: completion.usage,
                 };
-                recorder.append(&record).map_err(|e| TranslateError {
-                    message: format!("cannot record to {}: {e}", recorder.path().display()),
+                recorder.append(&record).map_err(|e| {
+                    TranslateError::model(format!(
+                        "cannot record to {}: {e}",
+                        recorder.path().display()
+                    ))
                 })?;
             }
             let parsed = self.system.parse_reply(&completion.text, templated, scene);
@@ -187,11 +209,9 @@ impl Translator for LlmTranslator {
             .last()
             .and_then(|e| e.error.clone())
             .unwrap_or_default();
-        Err(TranslateError {
-            message: format!(
-                "{model} gave no usable answer after {} attempts; the last error: {last}",
-                self.retries + 1
-            ),
-        })
+        Err(TranslateError::model(format!(
+            "{model} gave no usable answer after {} attempts; the last error: {last}",
+            self.retries + 1
+        )))
     }
 }

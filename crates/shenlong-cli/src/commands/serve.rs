@@ -1,0 +1,91 @@
+//! `shenlong serve`: the interactive editor.
+
+use anyhow::{Context, Result};
+use shenlong::pipeline::backends::TranslatorSettings;
+use shenlong::pipeline::System;
+use shenlong_cli::server::{serve, App, ServeSettings};
+use std::path::PathBuf;
+use std::time::Duration;
+
+/// Serve a scene in a 3D web editor: type instructions, see them happen, undo, export.
+///
+/// One scene is kept in memory (a file or example:NAME). The page and its scripts are in
+/// the binary; nothing is loaded from elsewhere. The model's API key stays on the server.
+#[derive(clap::Args)]
+#[command(after_help = "Examples:
+  shenlong serve examples/living_room.json
+  shenlong serve example:workshop --addr 127.0.0.1:9000 --save edited.json
+  shenlong serve room.glb --llm openai:gpt-4o
+
+Then open the address in a browser. API: GET /api/scene, POST /api/edit
+{\"instruction\"}, POST /api/undo, POST /api/redo, GET /api/history,
+GET /api/export?format=json|glb|gltf|tdw, POST /api/apply {\"object\", \"expr\"}.")]
+pub struct Args {
+    /// The scene (a file or example:NAME).
+    scene: String,
+    /// Address to listen on.
+    #[arg(long, value_name = "ADDR", default_value = "127.0.0.1:8080")]
+    addr: String,
+    /// Write the scene to this file after every change (atomically).
+    #[arg(long, value_name = "FILE")]
+    save: Option<PathBuf>,
+    /// The default translator: offline, openai:MODEL, ollama:MODEL or replay:FILE.
+    #[arg(long, value_name = "BACKEND", default_value = "offline")]
+    llm: String,
+    /// The default prompt system.
+    #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
+    system: String,
+    /// The model server's base URL.
+    #[arg(long, value_name = "URL")]
+    base_url: Option<String>,
+    /// Seconds allowed for one request to the model.
+    #[arg(long, value_name = "S", default_value_t = 120.0)]
+    timeout: f64,
+    #[command(flatten)]
+    collisions: super::CollisionArgs,
+}
+
+pub fn run(args: Args) -> Result<()> {
+    let file = super::load_scene(&args.scene)?;
+    let settings = ServeSettings {
+        llm: args.llm.clone(),
+        system: System::from_name(&args.system).expect("clap checked the name"),
+        translator: TranslatorSettings {
+            base_url: args.base_url.clone(),
+            timeout: Duration::from_secs_f64(args.timeout.max(0.001)),
+            ..TranslatorSettings::default()
+        },
+        collisions: if args.collisions.no_collide() {
+            None
+        } else {
+            Some(args.collisions.options()?)
+        },
+        save: args.save.clone(),
+    };
+    // Fail on a bad default backend now rather than at the first edit.
+    shenlong::pipeline::backends::translator(
+        &settings.llm,
+        &TranslatorSettings {
+            system: settings.system,
+            ..settings.translator.clone()
+        },
+    )
+    .map_err(anyhow::Error::msg)?;
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .build()
+        .context("cannot start the server's runtime")?;
+    runtime.block_on(async {
+        let listener = tokio::net::TcpListener::bind(&args.addr)
+            .await
+            .with_context(|| format!("cannot listen on {}", args.addr))?;
+        let address = listener.local_addr()?;
+        eprintln!(
+            "shenlong: editing '{}' at http://{address}/ (Ctrl-C to stop)",
+            file.scene.name
+        );
+        serve(App::new(file, settings), listener)
+            .await
+            .context("the server stopped")
+    })
+}

@@ -1,0 +1,448 @@
+//! `shenlong serve`: one scene in memory, a JSON API to edit it, and a 3D page.
+//!
+//! Reads take the scene's lock only for as long as it takes to copy what they return.
+//! Edits are serialised by their own lock and run on a blocking thread against a snapshot,
+//! so a long language-model call never blocks other requests; the result is swapped in
+//! when it is ready. Every change can be undone and redone, and with `--save` the scene is
+//! written (atomically) after each one.
+
+pub mod assets;
+
+use axum::body::Bytes;
+use axum::extract::rejection::JsonRejection;
+use axum::extract::{DefaultBodyLimit, Query, State};
+use axum::http::{header, StatusCode, Uri};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::{Json, Router};
+use serde::Deserialize;
+use serde_json::{json, Value};
+use shenlong::collide::ResolveOptions;
+use shenlong::expr::{self, Bindings, ObjectBox};
+use shenlong::format::{Format, SceneFile};
+use shenlong::pipeline::backends::{translator, TranslatorSettings};
+use shenlong::pipeline::{edit, EditErrorKind, EditOptions, System};
+use shenlong::scene::Scene;
+use std::path::PathBuf;
+use std::sync::{Arc, Mutex};
+
+/// Largest request body, in bytes.
+pub const MAX_BODY: usize = 64 * 1024;
+/// Longest instruction, in characters.
+pub const MAX_INSTRUCTION: usize = shenlong::pipeline::template::MAX_INSTRUCTION_CHARS;
+
+/// How the server edits.
+#[derive(Clone, Debug)]
+pub struct ServeSettings {
+    /// The default `--llm` backend.
+    pub llm: String,
+    /// The default prompt system.
+    pub system: System,
+    /// Translator settings (retries, cache, base URL, timeout). The API key stays here.
+    pub translator: TranslatorSettings,
+    /// Collision resolution; `None` skips it.
+    pub collisions: Option<ResolveOptions>,
+    /// Where to save the scene after each change.
+    pub save: Option<PathBuf>,
+}
+
+/// One entry of the history.
+#[derive(Clone, Debug, serde::Serialize)]
+pub struct HistoryItem {
+    /// Running number.
+    pub id: u64,
+    /// `edit` or `apply`.
+    pub kind: String,
+    /// The instruction or expression.
+    pub text: String,
+    /// The objects that changed.
+    pub objects: Vec<String>,
+    /// Whether it is currently undone.
+    pub undone: bool,
+}
+
+struct Inner {
+    file: SceneFile,
+    undo: Vec<(u64, Scene)>,
+    redo: Vec<(u64, Scene)>,
+    history: Vec<HistoryItem>,
+    next_id: u64,
+}
+
+/// The server's state.
+pub struct App {
+    inner: Mutex<Inner>,
+    edits: tokio::sync::Mutex<()>,
+    settings: ServeSettings,
+}
+
+impl App {
+    /// A server for this scene.
+    pub fn new(file: SceneFile, settings: ServeSettings) -> Arc<Self> {
+        Arc::new(Self {
+            inner: Mutex::new(Inner {
+                file,
+                undo: Vec::new(),
+                redo: Vec::new(),
+                history: Vec::new(),
+                next_id: 1,
+            }),
+            edits: tokio::sync::Mutex::new(()),
+            settings,
+        })
+    }
+
+    fn lock(&self) -> std::sync::MutexGuard<'_, Inner> {
+        self.inner.lock().unwrap_or_else(|e| e.into_inner())
+    }
+}
+
+/// An error answer: a status and `{"error": "..."}`.
+#[derive(Debug)]
+pub struct ApiError(StatusCode, String);
+
+impl IntoResponse for ApiError {
+    fn into_response(self) -> Response {
+        (self.0, Json(json!({"error": self.1}))).into_response()
+    }
+}
+
+fn bad(message: impl Into<String>) -> ApiError {
+    ApiError(StatusCode::BAD_REQUEST, message.into())
+}
+
+fn unprocessable(message: impl Into<String>) -> ApiError {
+    ApiError(StatusCode::UNPROCESSABLE_ENTITY, message.into())
+}
+
+fn json_body<T>(body: Result<Json<T>, JsonRejection>) -> Result<T, ApiError> {
+    body.map(|Json(v)| v).map_err(|e| match e {
+        JsonRejection::BytesRejection(b) if b.status() == StatusCode::PAYLOAD_TOO_LARGE => {
+            ApiError(
+                StatusCode::PAYLOAD_TOO_LARGE,
+                format!("the request body is larger than {MAX_BODY} bytes"),
+            )
+        }
+        other => bad(format!("bad JSON body: {}", other.body_text())),
+    })
+}
+
+/// The router: the API and the page.
+pub fn router(app: Arc<App>) -> Router {
+    Router::new()
+        .route("/api/scene", get(scene))
+        .route("/api/edit", post(edit_scene))
+        .route("/api/apply", post(apply))
+        .route("/api/undo", post(undo))
+        .route("/api/redo", post(redo))
+        .route("/api/history", get(history))
+        .route("/api/export", get(export))
+        .fallback(get(asset))
+        .layer(DefaultBodyLimit::max(MAX_BODY))
+        .with_state(app)
+}
+
+async fn asset(uri: Uri) -> Response {
+    match assets::find(uri.path()) {
+        Some((content_type, bytes)) => (
+            [
+                (header::CONTENT_TYPE, content_type),
+                (header::CACHE_CONTROL, "no-cache"),
+            ],
+            bytes,
+        )
+            .into_response(),
+        None if uri.path().starts_with("/api/") => ApiError(
+            StatusCode::NOT_FOUND,
+            format!("no API endpoint {}", uri.path()),
+        )
+        .into_response(),
+        None => {
+            ApiError(StatusCode::NOT_FOUND, format!("nothing at {}", uri.path())).into_response()
+        }
+    }
+}
+
+/// The scene as the page draws it: scene-file JSON (boxes) plus supports.
+fn scene_json(inner: &Inner) -> Value {
+    let bytes = inner
+        .file
+        .to_bytes(Format::SceneJson)
+        .expect("scene JSON always serialises");
+    let mut value: Value = serde_json::from_slice(&bytes).expect("scene JSON parses");
+    let supports: Vec<Value> = inner
+        .file
+        .scene
+        .objects
+        .iter()
+        .map(|o| {
+            o.support.map_or(Value::Null, |s| {
+                Value::String(inner.file.scene.objects[s].name.clone())
+            })
+        })
+        .collect();
+    if let Some(objects) = value.get_mut("objects").and_then(Value::as_array_mut) {
+        for (o, s) in objects.iter_mut().zip(supports) {
+            if let Some(map) = o.as_object_mut() {
+                map.insert("resting_on".into(), s);
+            }
+        }
+    }
+    json!({"scene": value, "can_undo": !inner.undo.is_empty(), "can_redo": !inner.redo.is_empty()})
+}
+
+async fn scene(State(app): State<Arc<App>>) -> Json<Value> {
+    Json(scene_json(&app.lock()))
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct EditRequest {
+    instruction: String,
+    llm: Option<String>,
+    system: Option<String>,
+}
+
+/// Records a change: the scene before it goes on the undo stack; redo is cleared.
+fn commit(app: &App, before: Scene, after: Scene, kind: &str, text: &str) -> Result<u64, ApiError> {
+    let changed: Vec<String> = before
+        .objects
+        .iter()
+        .zip(&after.objects)
+        .filter(|(a, b)| a.similarity() != b.similarity())
+        .map(|(_, b)| b.name.clone())
+        .collect();
+    let mut inner = app.lock();
+    let id = inner.next_id;
+    inner.next_id += 1;
+    inner.undo.push((id, before));
+    inner.redo.clear();
+    inner.history.retain(|h| !h.undone);
+    inner.history.push(HistoryItem {
+        id,
+        kind: kind.into(),
+        text: text.into(),
+        objects: changed,
+        undone: false,
+    });
+    inner.file.scene = after;
+    save(app, &inner)?;
+    Ok(id)
+}
+
+fn save(app: &App, inner: &Inner) -> Result<(), ApiError> {
+    if let Some(path) = &app.settings.save {
+        inner.file.save(path).map_err(|e| {
+            ApiError(
+                StatusCode::INTERNAL_SERVER_ERROR,
+                format!("the edit was made but could not be saved: {e}"),
+            )
+        })?;
+    }
+    Ok(())
+}
+
+async fn edit_scene(
+    State(app): State<Arc<App>>,
+    body: Result<Json<EditRequest>, JsonRejection>,
+) -> Result<Json<Value>, ApiError> {
+    let request = json_body(body)?;
+    if request.instruction.chars().count() > MAX_INSTRUCTION {
+        return Err(ApiError(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            format!("the instruction is longer than {MAX_INSTRUCTION} characters"),
+        ));
+    }
+    let system = match &request.system {
+        Some(name) => System::from_name(name).ok_or_else(|| {
+            bad(format!(
+                "unknown system '{name}': use cga, euclidean or omniverse"
+            ))
+        })?,
+        None => app.settings.system,
+    };
+    let llm = request
+        .llm
+        .clone()
+        .unwrap_or_else(|| app.settings.llm.clone());
+    let settings = TranslatorSettings {
+        system,
+        ..app.settings.translator.clone()
+    };
+    let translator = translator(&llm, &settings).map_err(bad)?;
+    let options = EditOptions {
+        carry: true,
+        collisions: app.settings.collisions.clone(),
+    };
+    // One edit at a time; reads go on meanwhile.
+    let _turn = app.edits.lock().await;
+    let before = app.lock().file.scene.clone();
+    let instruction = request.instruction.clone();
+    let mut working = before.clone();
+    let outcome = tokio::task::spawn_blocking(move || {
+        edit(&mut working, &instruction, translator.as_ref(), &options).map(|e| (working, e.report))
+    })
+    .await
+    .map_err(|e| {
+        ApiError(
+            StatusCode::INTERNAL_SERVER_ERROR,
+            format!("the edit stopped: {e}"),
+        )
+    })?;
+    let (after, report) = outcome.map_err(|e| {
+        let status = match e.kind {
+            EditErrorKind::Instruction | EditErrorKind::NotUnderstood => {
+                StatusCode::UNPROCESSABLE_ENTITY
+            }
+            EditErrorKind::Placement => StatusCode::CONFLICT,
+            EditErrorKind::Model => StatusCode::BAD_GATEWAY,
+        };
+        ApiError(status, e.message)
+    })?;
+    let id = commit(&app, before, after, "edit", &request.instruction)?;
+    let mut value = serde_json::to_value(&report).expect("reports serialise");
+    value["history_id"] = json!(id);
+    Ok(Json(value))
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct ApplyRequest {
+    object: String,
+    expr: String,
+}
+
+async fn apply(
+    State(app): State<Arc<App>>,
+    body: Result<Json<ApplyRequest>, JsonRejection>,
+) -> Result<Json<Value>, ApiError> {
+    let request = json_body(body)?;
+    let _turn = app.edits.lock().await;
+    let before = app.lock().file.scene.clone();
+    let index = before.resolve(&request.object).map_err(unprocessable)?;
+    let aabb = before.objects[index].world_aabb();
+    let mut bindings = Bindings::new();
+    bindings.bind(
+        "X1",
+        ObjectBox {
+            min: aabb.min,
+            max: aabb.max,
+        },
+    );
+    let t = expr::evaluate_transformation(&request.expr, &bindings)
+        .map_err(|e| unprocessable(e.to_string()))?;
+    let mut after = before.clone();
+    after.apply(index, &t.versor, true);
+    if let Some(options) = &app.settings.collisions {
+        shenlong::collide::resolve(&mut after, &before.world_aabbs(), &[index], options)
+            .map_err(|e| ApiError(StatusCode::CONFLICT, e.message))?;
+    }
+    let s = t.similarity;
+    let id = commit(
+        &app,
+        before,
+        after,
+        "apply",
+        &format!("{}: {}", request.object, request.expr),
+    )?;
+    Ok(Json(json!({
+        "object": request.object, "expr": request.expr, "history_id": id,
+        "translation": s.translation.to_array(), "rotation": s.rotation.to_array(), "scale": s.scale,
+    })))
+}
+
+fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
+    let mut inner = app.lock();
+    let popped = if undo {
+        inner.undo.pop()
+    } else {
+        inner.redo.pop()
+    };
+    let Some((id, scene)) = popped else {
+        return Err(ApiError(
+            StatusCode::CONFLICT,
+            format!("nothing to {}", if undo { "undo" } else { "redo" }),
+        ));
+    };
+    let current = std::mem::replace(&mut inner.file.scene, scene);
+    if undo {
+        inner.redo.push((id, current));
+    } else {
+        inner.undo.push((id, current));
+    }
+    if let Some(item) = inner.history.iter_mut().find(|h| h.id == id) {
+        item.undone = undo;
+    }
+    save(app, &inner)?;
+    Ok(Json(scene_json(&inner)))
+}
+
+async fn undo(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
+    let _turn = app.edits.lock().await;
+    step(&app, true)
+}
+
+async fn redo(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
+    let _turn = app.edits.lock().await;
+    step(&app, false)
+}
+
+async fn history(State(app): State<Arc<App>>) -> Json<Value> {
+    Json(json!({"history": app.lock().history}))
+}
+
+#[derive(Deserialize)]
+struct ExportQuery {
+    format: Option<String>,
+}
+
+async fn export(
+    State(app): State<Arc<App>>,
+    Query(query): Query<ExportQuery>,
+) -> Result<Response, ApiError> {
+    let name = query.format.unwrap_or_else(|| "json".into());
+    let (format, content_type, extension) = match name.as_str() {
+        "json" => (Format::SceneJson, "application/json", "json"),
+        "glb" => (Format::Glb, "model/gltf-binary", "glb"),
+        "gltf" => (Format::Gltf, "model/gltf+json", "gltf"),
+        "tdw" => (Format::TdwCommands, "application/json", "tdw.json"),
+        other => {
+            return Err(bad(format!(
+                "unknown format '{other}': use json, glb, gltf or tdw"
+            )))
+        }
+    };
+    let inner = app.lock();
+    let bytes = inner
+        .file
+        .to_bytes(format)
+        .map_err(|e| unprocessable(e.message))?;
+    let filename = format!(
+        "{}.{extension}",
+        inner
+            .file
+            .scene
+            .name
+            .replace(|c: char| !c.is_alphanumeric() && c != '-' && c != '_', "_")
+    );
+    Ok((
+        [
+            (header::CONTENT_TYPE, content_type.to_string()),
+            (
+                header::CONTENT_DISPOSITION,
+                format!("attachment; filename=\"{filename}\""),
+            ),
+        ],
+        Bytes::from(bytes),
+    )
+        .into_response())
+}
+
+/// Serves until Ctrl-C.
+pub async fn serve(app: Arc<App>, listener: tokio::net::TcpListener) -> std::io::Result<()> {
+    axum::serve(listener, router(app))
+        .with_graceful_shutdown(async {
+            let _ = tokio::signal::ctrl_c().await;
+        })
+        .await
+}

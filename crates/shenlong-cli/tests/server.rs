@@ -1,0 +1,301 @@
+//! The editor's HTTP API: the router driven in-process, and the server over loopback.
+
+use axum::body::{to_bytes, Body};
+use axum::http::{Request, StatusCode};
+use serde_json::{json, Value};
+use shenlong::pipeline::backends::TranslatorSettings;
+use shenlong::pipeline::System;
+use shenlong_cli::server::{router, serve, App, ServeSettings};
+use std::sync::Arc;
+use tower::ServiceExt;
+
+fn app(save: Option<std::path::PathBuf>) -> Arc<App> {
+    let scene = shenlong::examples::build("workshop").unwrap();
+    let file = shenlong::format::SceneFile {
+        scene,
+        document: shenlong::format::Document::None,
+        path: None,
+    };
+    App::new(
+        file,
+        ServeSettings {
+            llm: "offline".into(),
+            system: System::Cga,
+            translator: TranslatorSettings {
+                cache_dir: None,
+                ..TranslatorSettings::default()
+            },
+            collisions: Some(Default::default()),
+            save,
+        },
+    )
+}
+
+async fn call(
+    app: &Arc<App>,
+    method: &str,
+    path: &str,
+    body: Option<&str>,
+) -> (StatusCode, Value, Vec<u8>) {
+    let request = Request::builder()
+        .method(method)
+        .uri(path)
+        .header("content-type", "application/json")
+        .body(body.map_or_else(Body::empty, |b| Body::from(b.to_string())))
+        .unwrap();
+    let response = router(Arc::clone(app)).oneshot(request).await.unwrap();
+    let status = response.status();
+    let bytes = to_bytes(response.into_body(), 16 * 1024 * 1024)
+        .await
+        .unwrap()
+        .to_vec();
+    let value = serde_json::from_slice(&bytes).unwrap_or(Value::Null);
+    (status, value, bytes)
+}
+
+fn position(scene: &Value, name: &str) -> Value {
+    scene["scene"]["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|o| o["name"] == name)
+        .unwrap()["position"]
+        .clone()
+}
+
+#[tokio::test]
+async fn edit_undo_redo_history() {
+    let dir = tempfile::tempdir().unwrap();
+    let saved = dir.path().join("saved.json");
+    let app = app(Some(saved.clone()));
+    let (status, report, _) = call(
+        &app,
+        "POST",
+        "/api/edit",
+        Some(r#"{"instruction": "put the 'orange bottle' on top of the 'tool table'"}"#),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{report}");
+    assert_eq!(report["query"], "put the X1 on top of the X2");
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(position(&scene, "orange bottle"), json!([0, 0.9, 0]));
+    assert_eq!(scene["can_undo"], true);
+    // --save wrote the edited scene.
+    let file: Value = serde_json::from_str(&std::fs::read_to_string(&saved).unwrap()).unwrap();
+    assert!(file["objects"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .any(|o| o["name"] == "orange bottle" && o["position"] == json!([0, 0.9, 0])));
+    let (status, undone, _) = call(&app, "POST", "/api/undo", None).await;
+    assert_eq!(status, StatusCode::OK);
+    assert_eq!(position(&undone, "orange bottle"), json!([-2, 0, 1.2]));
+    let (_, history, _) = call(&app, "GET", "/api/history", None).await;
+    assert_eq!(history["history"][0]["undone"], true);
+    let (status, redone, _) = call(&app, "POST", "/api/redo", None).await;
+    assert_eq!(status, StatusCode::OK);
+    assert_eq!(position(&redone, "orange bottle"), json!([0, 0.9, 0]));
+    let (status, e, _) = call(&app, "POST", "/api/redo", None).await;
+    assert_eq!(
+        (status, e["error"].as_str().unwrap()),
+        (StatusCode::CONFLICT, "nothing to redo")
+    );
+}
+
+#[tokio::test]
+async fn bad_input_gets_4xx_with_the_reason() {
+    let app = app(None);
+    let cases = [
+        (
+            r#"{"instruction": "move the 'sofaa' left"}"#,
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "unknown object 'sofaa'",
+        ),
+        (
+            r#"{"instruction": "sing about the 'stool'"}"#,
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "could not read",
+        ),
+        (
+            r#"{"instruction": 3}"#,
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "invalid type",
+        ),
+        ("not json", StatusCode::BAD_REQUEST, "bad JSON body"),
+        (
+            r#"{"instruction": "move the 'stool' left", "colour": "red"}"#,
+            StatusCode::UNPROCESSABLE_ENTITY,
+            "unknown field `colour`",
+        ),
+        (
+            r#"{"instruction": "move the 'stool' left", "system": "magic"}"#,
+            StatusCode::BAD_REQUEST,
+            "unknown system 'magic'",
+        ),
+        (
+            r#"{"instruction": "move the 'stool' left", "llm": "claude"}"#,
+            StatusCode::BAD_REQUEST,
+            "unknown --llm 'claude'",
+        ),
+    ];
+    for (body, expected, message) in cases {
+        let (status, value, _) = call(&app, "POST", "/api/edit", Some(body)).await;
+        let error = value["error"].as_str().unwrap_or_default().to_string();
+        assert!(status.is_client_error(), "{body}: {status}");
+        assert!(
+            status == expected || error.contains(message),
+            "{body}: {status} {error}"
+        );
+        assert!(error.contains(message), "{body}: {error}");
+    }
+    let long = json!({"instruction": "a".repeat(3000)}).to_string();
+    assert_eq!(
+        call(&app, "POST", "/api/edit", Some(&long)).await.0,
+        StatusCode::PAYLOAD_TOO_LARGE
+    );
+    let huge = json!({"instruction": "a".repeat(100_000)}).to_string();
+    let (status, value, _) = call(&app, "POST", "/api/edit", Some(&huge)).await;
+    assert_eq!(status, StatusCode::PAYLOAD_TOO_LARGE, "{value}");
+    let (status, value, _) = call(
+        &app,
+        "POST",
+        "/api/apply",
+        Some(r#"{"object": "stool", "expr": "T(e1"}"#),
+    )
+    .await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY);
+    assert!(value["error"].as_str().unwrap().contains("expected ')'"));
+    assert_eq!(
+        call(&app, "POST", "/api/undo", None).await.0,
+        StatusCode::CONFLICT
+    );
+    assert_eq!(
+        call(&app, "GET", "/api/export?format=obj", None).await.0,
+        StatusCode::BAD_REQUEST
+    );
+    assert_eq!(
+        call(&app, "GET", "/api/nothing", None).await.0,
+        StatusCode::NOT_FOUND
+    );
+    assert_eq!(
+        call(&app, "GET", "/../Cargo.toml", None).await.0,
+        StatusCode::NOT_FOUND
+    );
+}
+
+#[tokio::test]
+async fn apply_export_and_the_page() {
+    let app = app(None);
+    let (status, value, _) = call(
+        &app,
+        "POST",
+        "/api/apply",
+        Some(r#"{"object": "stool", "expr": "T(0.5 * e1)"}"#),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{value}");
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(position(&scene, "stool"), json!([0.5, 0, 1]));
+    let (status, _, bytes) = call(&app, "GET", "/api/export?format=json", None).await;
+    assert_eq!(status, StatusCode::OK);
+    let exported: Value = serde_json::from_slice(&bytes).unwrap();
+    assert_eq!(exported["name"], "workshop");
+    let (status, commands, _) = call(&app, "GET", "/api/export?format=tdw", None).await;
+    assert_eq!(status, StatusCode::OK);
+    assert_eq!(commands[0]["$type"], "teleport_object");
+    let (status, _, page) = call(&app, "GET", "/", None).await;
+    assert_eq!(status, StatusCode::OK);
+    let page = String::from_utf8(page).unwrap();
+    assert!(
+        page.contains("/vendor/three/three.module.js") && !page.contains("https://"),
+        "no CDN"
+    );
+    assert_eq!(
+        call(&app, "GET", "/vendor/three/OrbitControls.js", None)
+            .await
+            .0,
+        StatusCode::OK
+    );
+    // A glTF export of a scene that did not come from glTF is a clear 422.
+    assert_eq!(
+        call(&app, "GET", "/api/export?format=glb", None).await.0,
+        StatusCode::UNPROCESSABLE_ENTITY
+    );
+}
+
+#[test]
+fn over_loopback_a_slow_edit_does_not_block_reads() {
+    // A model server that first says "busy, retry in 1.5 s", then answers.
+    #[path = "../../shenlong/tests/support/mock_llm.rs"]
+    mod mock_llm;
+    let slow = mock_llm::MockLlm::start(vec![
+        mock_llm::Reply::Raw(
+            503,
+            vec![("Retry-After".into(), "1.5".into())],
+            "busy".into(),
+        ),
+        mock_llm::Reply::Content("{\"X1\": \"T(1 * e1)\"}".into()),
+    ]);
+    let scene = shenlong::examples::build("workshop").unwrap();
+    let file = shenlong::format::SceneFile {
+        scene,
+        document: shenlong::format::Document::None,
+        path: None,
+    };
+    let app = App::new(
+        file,
+        ServeSettings {
+            llm: "offline".into(),
+            system: System::Cga,
+            translator: TranslatorSettings {
+                cache_dir: None,
+                base_url: Some(slow.url.clone()),
+                ..TranslatorSettings::default()
+            },
+            collisions: None,
+            save: None,
+        },
+    );
+    let runtime = tokio::runtime::Runtime::new().unwrap();
+    let listener = runtime
+        .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
+        .unwrap();
+    let address = listener.local_addr().unwrap();
+    runtime.spawn(serve(app, listener));
+    let editor = std::thread::spawn(move || {
+        let body =
+            json!({"instruction": "move the 'stool' right", "llm": "ollama:mock"}).to_string();
+        let mut response = ureq::post(&format!("http://{address}/api/edit"))
+            .header("content-type", "application/json")
+            .send(body)
+            .unwrap();
+        response.body_mut().read_json::<Value>().unwrap()
+    });
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    let started = std::time::Instant::now();
+    let scene: Value = ureq::get(&format!("http://{address}/api/scene"))
+        .call()
+        .unwrap()
+        .body_mut()
+        .read_json()
+        .unwrap();
+    assert!(
+        started.elapsed() < std::time::Duration::from_millis(500),
+        "reads are not blocked by an edit"
+    );
+    assert_eq!(
+        position(&scene, "stool"),
+        json!([0, 0, 1]),
+        "the edit is not in yet"
+    );
+    let report = editor.join().unwrap();
+    assert_eq!(report["model"], "mock", "{report}");
+    assert_eq!(slow.count(), 2);
+    let scene: Value = ureq::get(&format!("http://{address}/api/scene"))
+        .call()
+        .unwrap()
+        .body_mut()
+        .read_json()
+        .unwrap();
+    assert_eq!(position(&scene, "stool"), json!([1, 0, 1]));
+}

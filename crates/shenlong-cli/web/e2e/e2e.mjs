@@ -1,0 +1,87 @@
+// End-to-end: `shenlong serve` in headless Chromium. Loads the page, types an instruction,
+// checks through the API that the scene changed, undoes it, and takes a screenshot.
+//
+//   SHENLONG_BIN=target/debug/shenlong node e2e.mjs [screenshot.png]
+//
+// Skips (exit 0, with a message) when Chromium is not installed.
+import { spawn } from 'node:child_process';
+import { existsSync } from 'node:fs';
+import { chromium } from 'playwright-core';
+
+const CHROMIUM = process.env.CHROMIUM || '/usr/bin/chromium';
+const BIN = process.env.SHENLONG_BIN || new URL('../../../../target/debug/shenlong', import.meta.url).pathname;
+const SCREENSHOT = process.argv[2] || '/tmp/shenlong-editor.png';
+
+if (!existsSync(CHROMIUM)) {
+  console.log(`e2e: skipped: no Chromium at ${CHROMIUM} (apt-get install chromium)`);
+  process.exit(0);
+}
+if (!existsSync(BIN)) {
+  console.error(`e2e: no shenlong binary at ${BIN}: build it first (cargo build)`);
+  process.exit(1);
+}
+
+const server = spawn(BIN, ['serve', 'example:workshop', '--addr', '127.0.0.1:0'], { stdio: ['ignore', 'ignore', 'pipe'] });
+const base = await new Promise((resolve, reject) => {
+  let text = '';
+  const timer = setTimeout(() => reject(new Error(`the server did not start: ${text}`)), 15000);
+  server.stderr.on('data', (chunk) => {
+    text += chunk;
+    const match = text.match(/http:\/\/127\.0\.0\.1:\d+\//);
+    if (match) { clearTimeout(timer); resolve(match[0]); }
+  });
+  server.on('exit', (code) => reject(new Error(`the server exited (${code}): ${text}`)));
+});
+
+let browser;
+let failed = 0;
+const check = (ok, what) => { if (!ok) { failed++; console.error(`e2e: FAILED: ${what}`); } };
+try {
+  browser = await chromium.launch({
+    executablePath: CHROMIUM,
+    headless: true,
+    args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-background-networking', '--disable-component-update',
+      '--disable-sync', '--no-first-run', '--disable-quic', '--use-gl=swiftshader', '--enable-unsafe-swiftshader'],
+  });
+  const page = await browser.newPage({ viewport: { width: 1280, height: 760 } });
+  const errors = [];
+  page.on('pageerror', (e) => errors.push(e.message));
+  await page.goto(base);
+  await page.waitForFunction(() => window.shenlong && window.shenlong.ready, null, { timeout: 20000 });
+  check(await page.locator('#scene-name').textContent() === 'workshop', 'the page shows the scene name');
+
+  const bottle = async () => {
+    const scene = await (await fetch(`${base}api/scene`)).json();
+    return scene.scene.objects.find((o) => o.name === 'orange bottle').position;
+  };
+  check(JSON.stringify(await bottle()) === JSON.stringify([-2, 0, 1.2]), 'the bottle starts on the floor');
+
+  await page.fill('#instruction', "put the 'orange bottle' on top of the 'tool table'");
+  await page.click('#run');
+  await page.waitForFunction(() => window.shenlong.lastReport !== null, null, { timeout: 20000 });
+  await page.waitForTimeout(900); // the animation
+  const report = await page.evaluate(() => window.shenlong.lastReport);
+  check(report.query === 'put the X1 on top of the X2', `the report's query: ${report.query}`);
+  check(JSON.stringify(await bottle()) === JSON.stringify([0, 0.9, 0]), 'the API shows the bottle on the table');
+  check((await page.locator('#report').textContent()).includes('put the X1 on top of the X2'), 'the report panel shows the query');
+  check((await page.locator('#history li').count()) === 1, 'one history entry');
+  await page.screenshot({ path: SCREENSHOT });
+
+  await page.click('#undo');
+  await page.waitForFunction(() => document.querySelector('#status').textContent === 'Undone', null, { timeout: 10000 });
+  check(JSON.stringify(await bottle()) === JSON.stringify([-2, 0, 1.2]), 'undo puts the bottle back');
+
+  await page.fill('#instruction', "move the 'sofaa' left");
+  await page.click('#run');
+  await page.waitForFunction(() => document.querySelector('#status').className === 'error', null, { timeout: 10000 });
+  check((await page.locator('#status').textContent()).includes("unknown object 'sofaa'"), 'errors show in the status line');
+  check(errors.length === 0, `no script errors: ${errors.join('; ')}`);
+} catch (error) {
+  failed++;
+  console.error(`e2e: FAILED: ${error.message}`);
+} finally {
+  if (browser) await browser.close();
+  server.kill();
+}
+console.log(`e2e: ${failed === 0 ? 1 : 0} passed, ${failed === 0 ? 0 : 1} failed (screenshot: ${SCREENSHOT})`);
+process.exit(failed === 0 ? 0 : 1);
