@@ -62,19 +62,23 @@ impl Multivector {
             // up(x) = x + ½x² einf + eo: e4 gets ½x² − ½, e5 gets ½x² + ½.
             let image =
                 crate::generated::sandwich_even_vector(c, &[x.x, x.y, x.z, h - 0.5, h + 0.5]);
-            let weight = image[4] - image[3];
-            let position = DVec3::new(image[0], image[1], image[2]);
-            if weight == 0.0
-                || !weight.is_finite()
-                || weight.abs() <= 1e-12 * position.abs().max_element()
-            {
-                return Err(CgaError::PointAtInfinity);
-            }
-            Ok(position / weight)
+            point_from_image(&image)
         } else {
             self.sandwich(&Self::up(x))?.down()
         }
     }
+}
+
+/// The Euclidean point of the `e1 … e5` coefficients of a conformal point's image:
+/// its Euclidean part over its weight `e5 − e4`.
+pub(crate) fn point_from_image(image: &[f64; 5]) -> Result<DVec3, CgaError> {
+    let weight = image[4] - image[3];
+    let position = DVec3::new(image[0], image[1], image[2]);
+    if weight == 0.0 || !weight.is_finite() || weight.abs() <= 1e-12 * position.abs().max_element()
+    {
+        return Err(CgaError::PointAtInfinity);
+    }
+    Ok(position / weight)
 }
 
 #[cfg(test)]

@@ -50,15 +50,7 @@ impl PointMap {
                 *out += w * c;
             }
         }
-        let weight = image[4] - image[3];
-        let position = DVec3::new(image[0], image[1], image[2]);
-        if weight == 0.0
-            || !weight.is_finite()
-            || weight.abs() <= 1e-12 * position.abs().max_element()
-        {
-            return Err(CgaError::PointAtInfinity);
-        }
-        Ok(position / weight)
+        crate::conformal::point_from_image(&image)
     }
 }
 

@@ -210,6 +210,24 @@ enum Step {
     Turn(String),
 }
 
+impl Step {
+    /// The vector of a translation.
+    fn translation(&self) -> Option<&str> {
+        match self {
+            Step::Translate(v) => Some(v),
+            Step::Turn(_) => None,
+        }
+    }
+
+    /// The expression of a turn or scale.
+    fn turn(&self) -> Option<&str> {
+        match self {
+            Step::Turn(e) => Some(e),
+            Step::Translate(_) => None,
+        }
+    }
+}
+
 /// A direction as (axis index 0..2, sign).
 fn direction(w: &str) -> Option<(usize, f64)> {
     Some(match w {
@@ -287,24 +305,9 @@ pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
         .map(|(v, list)| {
             let mut exprs: Vec<String> = list
                 .iter()
-                .filter_map(|s| {
-                    if let Step::Turn(e) = s {
-                        Some(e.clone())
-                    } else {
-                        None
-                    }
-                })
+                .filter_map(|s| s.turn().map(str::to_string))
                 .collect();
-            let moves: Vec<&str> = list
-                .iter()
-                .filter_map(|s| {
-                    if let Step::Translate(e) = s {
-                        Some(e.as_str())
-                    } else {
-                        None
-                    }
-                })
-                .collect();
+            let moves: Vec<&str> = list.iter().filter_map(Step::translation).collect();
             if !moves.is_empty() {
                 exprs.push(format!("T({})", moves.join(" + ")));
             }
@@ -392,13 +395,7 @@ fn boxed(var: usize, attribute: &str, steps: &BTreeMap<usize, Vec<Step>>) -> Str
         .get(&var)
         .into_iter()
         .flatten()
-        .filter_map(|s| {
-            if let Step::Translate(e) = s {
-                Some(e.as_str())
-            } else {
-                None
-            }
-        })
+        .filter_map(Step::translation)
         .collect();
     if moves.is_empty() {
         format!("X{}.{attribute}", var + 1)

@@ -5,12 +5,11 @@ use shenlong::bench::report;
 use shenlong::bench::run::{run, RunOptions};
 use shenlong::bench::Suite;
 use shenlong::format::SceneFile;
-use shenlong::pipeline::backends::{translator, TranslatorSettings};
+use shenlong::pipeline::backends::translator;
 use shenlong::pipeline::{System, Translator};
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
-use std::time::Duration;
 
 /// Run a benchmark suite through one or more prompt systems and report success rates,
 /// response times and tests of significance.
@@ -28,9 +27,6 @@ See docs/benchmark.md for the suite format and the checks.")]
 pub struct Args {
     /// The suite file (*.suite.json).
     suite: PathBuf,
-    /// The translator: offline, openai:MODEL, ollama:MODEL or replay:FILE.
-    #[arg(long, value_name = "BACKEND", default_value = "offline")]
-    llm: String,
     /// The prompt systems to compare, separated by commas.
     #[arg(long, value_name = "SYSTEMS", default_value = "cga")]
     system: String,
@@ -46,24 +42,8 @@ pub struct Args {
     /// Resolve collisions as `edit` does (off: the run measures the translator alone).
     #[arg(long)]
     collide: bool,
-    /// Attempts after the first when a model's reply cannot be used.
-    #[arg(long, value_name = "N", default_value_t = 5)]
-    retries: usize,
-    /// Append every exchange with the model to FILE.
-    #[arg(long, value_name = "FILE")]
-    record: Option<PathBuf>,
-    /// Where replies are cached.
-    #[arg(long, value_name = "DIR")]
-    cache_dir: Option<PathBuf>,
-    /// Do not read or write the reply cache.
-    #[arg(long)]
-    no_cache: bool,
-    /// The model server's base URL.
-    #[arg(long, value_name = "URL")]
-    base_url: Option<String>,
-    /// Seconds allowed for one request to the model.
-    #[arg(long, value_name = "S", default_value_t = 120.0)]
-    timeout: f64,
+    #[command(flatten)]
+    translator: super::TranslatorArgs,
 }
 
 pub fn run_bench(args: Args) -> Result<()> {
@@ -98,24 +78,10 @@ pub fn run_bench(args: Args) -> Result<()> {
     }
     let mut translators: Vec<(System, Box<dyn Translator>)> = Vec::new();
     for &system in &systems {
-        let settings = TranslatorSettings {
-            system,
-            retries: args.retries,
-            base_url: args.base_url.clone(),
-            api_key: None,
-            timeout: Duration::from_secs_f64(args.timeout.max(0.001)),
-            cache_dir: if args.no_cache {
-                None
-            } else {
-                args.cache_dir
-                    .clone()
-                    .or_else(shenlong::llm::cache::Cache::default_dir)
-            },
-            record: args.record.clone(),
-        };
+        let settings = args.translator.settings(system)?;
         translators.push((
             system,
-            translator(&args.llm, &settings).map_err(anyhow::Error::msg)?,
+            translator(&args.translator.llm, &settings).map_err(anyhow::Error::msg)?,
         ));
     }
     let out = args
@@ -139,7 +105,7 @@ pub fn run_bench(args: Args) -> Result<()> {
         .expect("a valid template")
         .progress_chars("=> "),
     );
-    bar.set_prefix(format!("{} ({})", suite.name, args.llm));
+    bar.set_prefix(format!("{} ({})", suite.name, args.translator.llm));
     let options = RunOptions {
         systems: systems.clone(),
         jobs: args.jobs,

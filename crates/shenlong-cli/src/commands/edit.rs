@@ -1,11 +1,10 @@
 //! `shenlong edit`: the main job — an instruction applied to a scene.
 
-use anyhow::{bail, Context, Result};
+use anyhow::{Context, Result};
 use shenlong::format::Format;
-use shenlong::pipeline::backends::{translator, TranslatorSettings};
+use shenlong::pipeline::backends::translator;
 use shenlong::pipeline::{edit, EditOptions, System};
 use std::path::PathBuf;
-use std::time::Duration;
 
 /// Edit a scene by instruction: "move the 'sofa' to the right".
 ///
@@ -32,9 +31,6 @@ pub struct Args {
     /// Where to write the edited scene (format by extension); stdout when omitted.
     #[arg(short, long, value_name = "OUT")]
     output: Option<PathBuf>,
-    /// The translator: offline, openai:MODEL, ollama:MODEL or replay:FILE.
-    #[arg(long, value_name = "BACKEND", default_value = "offline")]
-    llm: String,
     /// The prompt system: cga (Shenlong), euclidean or omniverse (the paper's baselines).
     #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
     system: String,
@@ -44,53 +40,20 @@ pub struct Args {
     /// Do not carry the objects resting on a moved object.
     #[arg(long)]
     no_carry: bool,
-    /// Attempts after the first when the model's reply cannot be used.
-    #[arg(long, value_name = "N", default_value_t = 5)]
-    retries: usize,
-    /// Append every exchange with the model to FILE (JSON lines; replay with replay:FILE).
-    #[arg(long, value_name = "FILE")]
-    record: Option<PathBuf>,
-    /// Where replies are cached (default: the user's cache folder, shenlong/replies).
-    #[arg(long, value_name = "DIR")]
-    cache_dir: Option<PathBuf>,
-    /// Do not read or write the reply cache.
-    #[arg(long)]
-    no_cache: bool,
-    /// The model server's base URL (overrides OPENAI_BASE_URL and the defaults).
-    #[arg(long, value_name = "URL")]
-    base_url: Option<String>,
-    /// Seconds allowed for one request to the model.
-    #[arg(long, value_name = "S", default_value_t = 120.0)]
-    timeout: f64,
     /// Also write the edit as ThreeDWorld commands to this file.
     #[arg(long, value_name = "FILE")]
     tdw: Option<PathBuf>,
+    #[command(flatten)]
+    translator: super::TranslatorArgs,
     #[command(flatten)]
     collisions: super::CollisionArgs,
 }
 
 pub fn run(args: Args) -> Result<()> {
-    if !(args.timeout.is_finite() && args.timeout > 0.0) {
-        bail!("--timeout {}: give a number of seconds > 0", args.timeout);
-    }
     let system = System::from_name(&args.system).expect("clap checked the name");
-    let settings = TranslatorSettings {
-        system,
-        retries: args.retries,
-        base_url: args.base_url.clone(),
-        api_key: None,
-        timeout: Duration::from_secs_f64(args.timeout),
-        cache_dir: if args.no_cache {
-            None
-        } else {
-            args.cache_dir
-                .clone()
-                .or_else(shenlong::llm::cache::Cache::default_dir)
-        },
-        record: args.record.clone(),
-    };
+    let settings = args.translator.settings(system)?;
     let mut file = super::load_scene(&args.scene)?;
-    let translator = translator(&args.llm, &settings).map_err(anyhow::Error::msg)?;
+    let translator = translator(&args.translator.llm, &settings).map_err(anyhow::Error::msg)?;
     let options = EditOptions {
         carry: !args.no_carry,
         collisions: if args.collisions.no_collide() {

@@ -128,3 +128,56 @@ impl CollisionArgs {
         Ok(Some(resolution))
     }
 }
+
+/// The translator, as every command that translates instructions offers it.
+#[derive(clap::Args, Debug)]
+pub struct TranslatorArgs {
+    /// The translator: offline, openai:MODEL, ollama:MODEL or replay:FILE.
+    #[arg(long, value_name = "BACKEND", default_value = "offline")]
+    pub llm: String,
+    /// Attempts after the first when the model's reply cannot be used.
+    #[arg(long, value_name = "N", default_value_t = 5)]
+    pub retries: usize,
+    /// Append every exchange with the model to FILE (JSON lines; replay with replay:FILE).
+    #[arg(long, value_name = "FILE")]
+    pub record: Option<std::path::PathBuf>,
+    /// Where replies are cached (default: the user's cache folder, shenlong/replies).
+    #[arg(long, value_name = "DIR")]
+    pub cache_dir: Option<std::path::PathBuf>,
+    /// Do not read or write the reply cache.
+    #[arg(long)]
+    pub no_cache: bool,
+    /// The model server's base URL (overrides OPENAI_BASE_URL and the defaults).
+    #[arg(long, value_name = "URL")]
+    pub base_url: Option<String>,
+    /// Seconds allowed for one request to the model.
+    #[arg(long, value_name = "S", default_value_t = 120.0)]
+    pub timeout: f64,
+}
+
+impl TranslatorArgs {
+    /// The translator settings for a prompt system, checked.
+    pub fn settings(
+        &self,
+        system: shenlong::pipeline::System,
+    ) -> Result<shenlong::pipeline::backends::TranslatorSettings> {
+        if !(self.timeout.is_finite() && self.timeout > 0.0) {
+            anyhow::bail!("--timeout {}: give a number of seconds > 0", self.timeout);
+        }
+        Ok(shenlong::pipeline::backends::TranslatorSettings {
+            system,
+            retries: self.retries,
+            base_url: self.base_url.clone(),
+            api_key: None,
+            timeout: std::time::Duration::from_secs_f64(self.timeout),
+            cache_dir: if self.no_cache {
+                None
+            } else {
+                self.cache_dir
+                    .clone()
+                    .or_else(shenlong::llm::cache::Cache::default_dir)
+            },
+            record: self.record.clone(),
+        })
+    }
+}

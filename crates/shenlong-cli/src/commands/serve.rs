@@ -5,7 +5,6 @@ use shenlong::pipeline::backends::TranslatorSettings;
 use shenlong::pipeline::System;
 use shenlong_cli::server::{serve, App, ServeSettings};
 use std::path::PathBuf;
-use std::time::Duration;
 
 /// Serve a scene in a 3D web editor: type instructions, see them happen, undo, export.
 ///
@@ -29,32 +28,22 @@ pub struct Args {
     /// Write the scene to this file after every change (atomically).
     #[arg(long, value_name = "FILE")]
     save: Option<PathBuf>,
-    /// The default translator: offline, openai:MODEL, ollama:MODEL or replay:FILE.
-    #[arg(long, value_name = "BACKEND", default_value = "offline")]
-    llm: String,
     /// The default prompt system.
     #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
     system: String,
-    /// The model server's base URL.
-    #[arg(long, value_name = "URL")]
-    base_url: Option<String>,
-    /// Seconds allowed for one request to the model.
-    #[arg(long, value_name = "S", default_value_t = 120.0)]
-    timeout: f64,
+    #[command(flatten)]
+    translator: super::TranslatorArgs,
     #[command(flatten)]
     collisions: super::CollisionArgs,
 }
 
 pub fn run(args: Args) -> Result<()> {
     let file = super::load_scene(&args.scene)?;
+    let system = System::from_name(&args.system).expect("clap checked the name");
     let settings = ServeSettings {
-        llm: args.llm.clone(),
-        system: System::from_name(&args.system).expect("clap checked the name"),
-        translator: TranslatorSettings {
-            base_url: args.base_url.clone(),
-            timeout: Duration::from_secs_f64(args.timeout.max(0.001)),
-            ..TranslatorSettings::default()
-        },
+        llm: args.translator.llm.clone(),
+        system,
+        translator: args.translator.settings(system)?,
         collisions: if args.collisions.no_collide() {
             None
         } else {

@@ -329,11 +329,10 @@ fn numbers<const N: usize>(values: [f64; N]) -> Value {
     Value::Array(values.into_iter().map(tidy).collect())
 }
 
-/// A number rounded to a nanometre, so that rounding noise (`0.30000000000000004`) does not
-/// reach the file; whole numbers are written without a fraction.
+/// A number for a file: rounded to a nanometre (`super::tidy`); whole numbers are written
+/// without a fraction.
 fn tidy(x: f64) -> Value {
-    let rounded = (x * 1e9).round() / 1e9;
-    let rounded = if rounded == 0.0 { 0.0 } else { rounded };
+    let rounded = super::tidy(x);
     if rounded.fract() == 0.0 && rounded.abs() < 1e15 {
         Value::from(rounded as i64)
     } else {

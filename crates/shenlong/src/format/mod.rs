@@ -20,6 +20,17 @@ use crate::scene::Scene;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
+/// A number rounded to a nanometre (or nano-unit), so that rounding noise
+/// (`0.30000000000000004`) does not reach files; −0 becomes 0.
+pub fn tidy(x: f64) -> f64 {
+    let r = (x * 1e9).round() / 1e9;
+    if r == 0.0 {
+        0.0
+    } else {
+        r
+    }
+}
+
 /// A problem with a scene file: what is wrong and, in the message, where.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FormatError {

@@ -11,7 +11,7 @@
 //! from the second of a kind (`remote control 2`). The import is a scene-JSON document
 //! that keeps `id`, `assetId` and `objectType`, and records supports as `"on"`.
 
-use super::FormatError;
+use super::{tidy, FormatError};
 use serde_json::{json, Map, Value};
 use std::collections::HashMap;
 use std::path::Path;
@@ -349,15 +349,6 @@ pub fn human_name(object_type: &str) -> String {
         words.push(current);
     }
     words.join(" ").to_lowercase()
-}
-
-fn tidy(x: f64) -> f64 {
-    let r = (x * 1e9).round() / 1e9;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
 }
 
 #[cfg(test)]

@@ -11,6 +11,7 @@
 //! | rotation | `{"$type": "rotate_object_to", "id", "rotation": {x, y, z, w}}` |
 //! | scale | `{"$type": "scale_object", "id", "scale_factor": {x, y, z}}` — TDW scales relative to the current scale, so the factor is new ÷ old |
 
+use super::tidy;
 use crate::scene::{Object, Scene, Shape};
 use cga::Similarity;
 use glam::{DQuat, DVec3};
@@ -88,15 +89,6 @@ fn rotate_to(id: i64, rotation: DQuat) -> Value {
 fn scale(id: i64, factor: f64) -> Value {
     let f = tidy(factor);
     json!({"$type": "scale_object", "id": id, "scale_factor": {"x": f, "y": f, "z": f}})
-}
-
-fn tidy(x: f64) -> f64 {
-    let r = (x * 1e9).round() / 1e9;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
 }
 
 #[cfg(test)]
