@@ -1130,16 +1130,30 @@ fn relation(
         || has("adjacent")
         || has("close")
     {
-        // The side of the target nearest X_a along x: p is 1 when X_a is to the right (or
-        // level with it), 0 when to the left.
-        let e = "e1";
-        let dx = format!("((({a}.center - {}) | {e}) + 1e-12)", b("center"));
-        let p = format!("((1 + {dx} / abs({dx})) / 2)");
-        let right = format!("(({} | {e}) + {gap} - ({a}.min | {e}))", b("max"));
-        let left = format!("(({} | {e}) - {gap} - ({a}.max | {e}))", b("min"));
+        // The side of the target nearest X_a: its x faces when X_a lies more to the side
+        // than in front or behind (compared in the target's own proportions), else its z
+        // faces; on each axis, the face on X_a's side (ties go to +).
+        let step = |d: &str| format!("((1 + ({d} + 1e-12) / abs({d} + 1e-12)) / 2)");
+        let along = |e: &str| {
+            let d = format!("(({a}.center - {}) | {e})", b("center"));
+            let p = step(&d);
+            let plus = format!("(({} | {e}) + {gap} - ({a}.min | {e}))", b("max"));
+            let minus = format!("(({} | {e}) - {gap} - ({a}.max | {e}))", b("min"));
+            format!("({p} * {plus} + (1 - {p}) * {minus}) * {e}")
+        };
+        let dx = format!("abs(({a}.center - {}) | e1)", b("center"));
+        let dz = format!("abs(({a}.center - {}) | e3)", b("center"));
+        let q = step(&format!(
+            "({dx} * ({} | e3) - {dz} * ({} | e1))",
+            b("size"),
+            b("size")
+        ));
         return Some(format!(
-            "({p} * {right} + (1 - {p}) * {left}) * {e} + {} + {level}",
-            centre("e3")
+            "{q} * ({} + {}) + (1 - {q}) * ({} + {}) + {level}",
+            along("e1"),
+            centre("e3"),
+            along("e3"),
+            centre("e1")
         ));
     }
     if has("at") || has("to") || has("with") || has("toward") || has("towards") || has("in") {
@@ -1304,5 +1318,57 @@ mod scene_tests {
             (b.center().z - a.center().z).abs() < 1e-9
                 && (c.center().z - a.center().z).abs() < 1e-9
         );
+    }
+}
+
+#[cfg(test)]
+mod next_to_tests {
+    use super::*;
+    use crate::pipeline::{edit, EditOptions};
+
+    #[test]
+    fn next_to_takes_the_nearest_side_in_either_axis() {
+        // In the office, the water cooler (x −3.2, z 0.6) is left of the meeting table
+        // (x 0.5, z 1.2): it lands against the table's left face. The coffee cup (on the
+        // table, z 1.4) is in front of nothing but behind the whiteboard (z 2.9), which is
+        // wide and thin: it lands against the whiteboard's back (−z) face.
+        for (instruction, object, check) in [
+            (
+                "put the 'water cooler' next to the 'meeting table'",
+                "water cooler",
+                "left",
+            ),
+            (
+                "put the 'coffee cup' beside the 'whiteboard'",
+                "coffee cup",
+                "back",
+            ),
+        ] {
+            let mut scene = crate::examples::build("office").unwrap();
+            let options = EditOptions {
+                collisions: None,
+                ..EditOptions::default()
+            };
+            edit(&mut scene, instruction, &OfflineTranslator::new(), &options).unwrap();
+            let a = scene.objects[scene.find(object).unwrap()].world_aabb();
+            let other = if check == "left" {
+                "meeting table"
+            } else {
+                "whiteboard"
+            };
+            let b = scene.objects[scene.find(other).unwrap()].world_aabb();
+            match check {
+                "left" => assert!(
+                    (b.min.x - a.max.x - GAP).abs() < 1e-9
+                        && (a.center().z - b.center().z).abs() < 1e-9,
+                    "{a:?} {b:?}"
+                ),
+                _ => assert!(
+                    (b.min.z - a.max.z - GAP).abs() < 1e-9
+                        && (a.center().x - b.center().x).abs() < 1e-9,
+                    "{a:?} {b:?}"
+                ),
+            }
+        }
     }
 }

@@ -150,9 +150,12 @@ pub struct TranslatorArgs {
     /// The model server's base URL (overrides OPENAI_BASE_URL and the defaults).
     #[arg(long, value_name = "URL")]
     pub base_url: Option<String>,
-    /// Seconds allowed for one request to the model.
+    /// Seconds allowed for one request to the model, reply included.
     #[arg(long, value_name = "S", default_value_t = 120.0)]
     pub timeout: f64,
+    /// Seconds allowed to connect to the model server.
+    #[arg(long, value_name = "S", default_value_t = 10.0)]
+    pub connect_timeout: f64,
 }
 
 impl TranslatorArgs {
@@ -161,8 +164,13 @@ impl TranslatorArgs {
         &self,
         system: shenlong::pipeline::System,
     ) -> Result<shenlong::pipeline::backends::TranslatorSettings> {
-        if !(self.timeout.is_finite() && self.timeout > 0.0) {
-            anyhow::bail!("--timeout {}: give a number of seconds > 0", self.timeout);
+        for (flag, value) in [
+            ("--timeout", self.timeout),
+            ("--connect-timeout", self.connect_timeout),
+        ] {
+            if !(value.is_finite() && value > 0.0) {
+                anyhow::bail!("{flag} {value}: give a number of seconds > 0");
+            }
         }
         Ok(shenlong::pipeline::backends::TranslatorSettings {
             system,
@@ -170,6 +178,7 @@ impl TranslatorArgs {
             base_url: self.base_url.clone(),
             api_key: None,
             timeout: std::time::Duration::from_secs_f64(self.timeout),
+            connect_timeout: std::time::Duration::from_secs_f64(self.connect_timeout),
             cache_dir: if self.no_cache {
                 None
             } else {

@@ -24,6 +24,8 @@ pub struct TranslatorSettings {
     pub api_key: Option<String>,
     /// Time allowed for one request.
     pub timeout: Duration,
+    /// Time allowed to connect to the model server.
+    pub connect_timeout: Duration,
     /// Where replies are cached; `None` disables the cache.
     pub cache_dir: Option<PathBuf>,
     /// Where exchanges are recorded.
@@ -38,6 +40,7 @@ impl Default for TranslatorSettings {
             base_url: None,
             api_key: None,
             timeout: Duration::from_secs(120),
+            connect_timeout: Duration::from_secs(10),
             cache_dir: Cache::default_dir(),
             record: None,
         }
@@ -103,6 +106,7 @@ pub fn translator(
             }
             let mut options = ClientOptions::new(base_url, rest, api_key);
             options.request_timeout = settings.timeout;
+            options.connect_timeout = settings.connect_timeout;
             Box::new(OpenAiClient::new(options))
         }
         "replay" => {
