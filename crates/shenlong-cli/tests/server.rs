@@ -299,3 +299,67 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
         .unwrap();
     assert_eq!(position(&scene, "stool"), json!([1, 0, 1]));
 }
+
+#[tokio::test]
+async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/data/gltf/DepthOfFieldExample.glb");
+    if !path.is_file() {
+        eprintln!(
+            "skipping: {} not found (the shared test data is absent)",
+            path.display()
+        );
+        return;
+    }
+    let file = shenlong::format::SceneFile::load(&path).unwrap();
+    let app = App::new(
+        file,
+        ServeSettings {
+            llm: "offline".into(),
+            system: System::Cga,
+            translator: TranslatorSettings {
+                cache_dir: None,
+                ..TranslatorSettings::default()
+            },
+            collisions: None,
+            save: None,
+        },
+    );
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(scene["model"], "/api/model");
+    let (status, _, before) = call(&app, "GET", "/api/model", None).await;
+    assert_eq!(status, StatusCode::OK);
+    assert!(before.starts_with(b"glTF"));
+    let (status, report, _) = call(
+        &app,
+        "POST",
+        "/api/edit",
+        Some(r#"{"instruction": "move the 'Cube' 0.5 units up"}"#),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{report}");
+    let (_, _, after) = call(&app, "GET", "/api/model", None).await;
+    assert_ne!(before, after, "the model follows the edit");
+    let dir = tempfile::tempdir().unwrap();
+    let edited = dir.path().join("edited.glb");
+    std::fs::write(&edited, &after).unwrap();
+    let reread = shenlong::format::SceneFile::load(&edited).unwrap();
+    let original = shenlong::format::SceneFile::load(&path).unwrap();
+    let cube = |f: &shenlong::format::SceneFile| {
+        f.scene.objects[f.scene.find("Cube").unwrap()]
+            .world_aabb()
+            .min
+            .y
+    };
+    assert!((cube(&reread) - cube(&original) - 0.5).abs() < 1e-5);
+    // A scene that is not glTF has no model.
+    let boxes = app_boxes();
+    assert_eq!(
+        call(&boxes, "GET", "/api/model", None).await.0,
+        StatusCode::NOT_FOUND
+    );
+}
+
+fn app_boxes() -> Arc<App> {
+    app(None)
+}

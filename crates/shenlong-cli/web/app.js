@@ -2,6 +2,7 @@
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/OrbitControls.js';
 import { VRButton } from 'three/addons/VRButton.js';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
 const view = document.getElementById('view');
 const status = document.getElementById('status');
@@ -135,6 +136,7 @@ function drawRoom(scene) {
     box.set(new THREE.Vector3(...scene.bounds.min), new THREE.Vector3(...scene.bounds.max));
   } else {
     for (const { group } of objects.values()) box.expandByObject(group);
+    if (box.isEmpty()) box.set(new THREE.Vector3(-1, 0, -1), new THREE.Vector3(1, 1, 1));
   }
   extent = box.clone();
   roomLines = new THREE.Group();
@@ -238,10 +240,27 @@ function setUndoRedo(data) {
   $('redo').disabled = !data.can_redo;
 }
 
+// A glTF scene is drawn with its own meshes; the boxes stay as outlines to pick by.
+let model = null;
+async function loadModel(url) {
+  const response = await fetch(url);
+  if (!response.ok) return;
+  const gltf = await new GLTFLoader().parseAsync(await response.arrayBuffer(), '');
+  if (model) world.remove(model);
+  model = gltf.scene;
+  world.add(model);
+  for (const { mesh, edges } of objects.values()) {
+    mesh.material.visible = false;
+    edges.material.opacity = 0.35;
+    edges.material.transparent = true;
+  }
+}
+
 async function load(animate) {
   const data = await api('/api/scene');
   build(data.scene, animate);
   setUndoRedo(data);
+  if (data.model) await loadModel(data.model);
   return data;
 }
 
@@ -289,7 +308,12 @@ $('topdown').addEventListener('click', () => {
   $('topdown').setAttribute('aria-pressed', String(top));
 });
 
-window.shenlong = { ready: false, lastReport: null };
+window.shenlong = {
+  ready: false,
+  lastReport: null,
+  // How many meshes are drawn (for tests): boxes, or a glTF model's meshes as well.
+  meshes: () => { let n = 0; world.traverse((o) => { if (o.isMesh) n += 1; }); return n; },
+};
 try {
   await load(false);
   frameCamera();

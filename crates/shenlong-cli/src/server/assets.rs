@@ -42,6 +42,21 @@ pub const ASSETS: &[(&str, &str, &[u8])] = &[
         include_bytes!("../../web/vendor/three/VRButton.js"),
     ),
     (
+        "/vendor/three/loaders/GLTFLoader.js",
+        "text/javascript; charset=utf-8",
+        include_bytes!("../../web/vendor/three/loaders/GLTFLoader.js"),
+    ),
+    (
+        "/vendor/three/utils/BufferGeometryUtils.js",
+        "text/javascript; charset=utf-8",
+        include_bytes!("../../web/vendor/three/utils/BufferGeometryUtils.js"),
+    ),
+    (
+        "/vendor/three/utils/SkeletonUtils.js",
+        "text/javascript; charset=utf-8",
+        include_bytes!("../../web/vendor/three/utils/SkeletonUtils.js"),
+    ),
+    (
         "/vendor/three/LICENSE",
         "text/plain; charset=utf-8",
         include_bytes!("../../web/vendor/three/LICENSE"),

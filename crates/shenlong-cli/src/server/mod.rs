@@ -19,7 +19,7 @@ use serde::Deserialize;
 use serde_json::{json, Value};
 use shenlong::collide::ResolveOptions;
 use shenlong::expr::{self, Bindings, ObjectBox};
-use shenlong::format::{Format, SceneFile};
+use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
 use shenlong::pipeline::{edit, EditErrorKind, EditOptions, System};
 use shenlong::scene::Scene;
@@ -137,6 +137,7 @@ pub fn router(app: Arc<App>) -> Router {
         .route("/api/redo", post(redo))
         .route("/api/history", get(history))
         .route("/api/export", get(export))
+        .route("/api/model", get(model))
         .fallback(get(asset))
         .layer(DefaultBodyLimit::max(MAX_BODY))
         .with_state(app)
@@ -188,7 +189,50 @@ fn scene_json(inner: &Inner) -> Value {
             }
         }
     }
-    json!({"scene": value, "can_undo": !inner.undo.is_empty(), "can_redo": !inner.redo.is_empty()})
+    json!({
+        "scene": value,
+        "can_undo": !inner.undo.is_empty(),
+        "can_redo": !inner.redo.is_empty(),
+        "model": model_bytes(inner).is_some().then_some("/api/model"),
+    })
+}
+
+/// The scene's meshes as glTF, when its source is a GLB or a self-contained `.gltf` (a
+/// `.gltf` with buffers in other files is drawn as boxes).
+fn model_bytes(inner: &Inner) -> Option<Vec<u8>> {
+    let Document::Gltf(document) = &inner.file.document else {
+        return None;
+    };
+    match document.container() {
+        shenlong::format::gltf::Container::Glb => inner.file.to_bytes(Format::Glb).ok(),
+        shenlong::format::gltf::Container::Gltf { .. } if document.external_uris().is_empty() => {
+            inner.file.to_bytes(Format::Gltf).ok()
+        }
+        _ => None,
+    }
+}
+
+async fn model(State(app): State<Arc<App>>) -> Result<Response, ApiError> {
+    let inner = app.lock();
+    let bytes = model_bytes(&inner).ok_or_else(|| {
+        ApiError(
+            StatusCode::NOT_FOUND,
+            "this scene has no self-contained glTF model: it is drawn as boxes".into(),
+        )
+    })?;
+    let content_type = if bytes.starts_with(b"glTF") {
+        "model/gltf-binary"
+    } else {
+        "model/gltf+json"
+    };
+    Ok((
+        [
+            (header::CONTENT_TYPE, content_type),
+            (header::CACHE_CONTROL, "no-cache"),
+        ],
+        Bytes::from(bytes),
+    )
+        .into_response())
 }
 
 async fn scene(State(app): State<Arc<App>>) -> Json<Value> {

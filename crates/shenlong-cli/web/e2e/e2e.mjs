@@ -21,17 +21,23 @@ if (!existsSync(BIN)) {
   process.exit(1);
 }
 
-const server = spawn(BIN, ['serve', 'example:workshop', '--addr', '127.0.0.1:0'], { stdio: ['ignore', 'ignore', 'pipe'] });
-const base = await new Promise((resolve, reject) => {
-  let text = '';
-  const timer = setTimeout(() => reject(new Error(`the server did not start: ${text}`)), 15000);
-  server.stderr.on('data', (chunk) => {
-    text += chunk;
-    const match = text.match(/http:\/\/127\.0\.0\.1:\d+\//);
-    if (match) { clearTimeout(timer); resolve(match[0]); }
+// Starts `shenlong serve SCENE` on a free port; resolves to the server and its base URL.
+function start(scene) {
+  const server = spawn(BIN, ['serve', scene, '--addr', '127.0.0.1:0'], { stdio: ['ignore', 'ignore', 'pipe'] });
+  return new Promise((resolve, reject) => {
+    let text = '';
+    const timer = setTimeout(() => reject(new Error(`the server did not start: ${text}`)), 15000);
+    server.stderr.on('data', (chunk) => {
+      text += chunk;
+      const match = text.match(/http:\/\/127\.0\.0\.1:\d+\//);
+      if (match) { clearTimeout(timer); resolve({ server, base: match[0] }); }
+    });
+    server.on('exit', (code) => reject(new Error(`the server exited (${code}): ${text}`)));
   });
-  server.on('exit', (code) => reject(new Error(`the server exited (${code}): ${text}`)));
-});
+}
+
+const { server, base } = await start('example:workshop');
+const GLTF = new URL('../../../../../shared/data/gltf/DepthOfFieldExample.glb', import.meta.url).pathname;
 
 let browser;
 let failed = 0;
@@ -58,7 +64,7 @@ try {
 
   await page.fill('#instruction', "put the 'orange bottle' on top of the 'tool table'");
   await page.click('#run');
-  await page.waitForFunction(() => window.shenlong.lastReport !== null, null, { timeout: 20000 });
+  await page.waitForFunction(() => document.querySelector('#status').textContent.startsWith('Done'), null, { timeout: 20000 });
   await page.waitForTimeout(900); // the animation
   const report = await page.evaluate(() => window.shenlong.lastReport);
   check(report.query === 'put the X1 on top of the X2', `the report's query: ${report.query}`);
@@ -76,6 +82,30 @@ try {
   await page.waitForFunction(() => document.querySelector('#status').className === 'error', null, { timeout: 10000 });
   check((await page.locator('#status').textContent()).includes("unknown object 'sofaa'"), 'errors show in the status line');
   check(errors.length === 0, `no script errors: ${errors.join('; ')}`);
+
+  // A glTF scene is drawn with its meshes (from the shared test data, when present).
+  if (existsSync(GLTF)) {
+    const gltf = await start(GLTF);
+    try {
+      const view = await browser.newPage({ viewport: { width: 1280, height: 760 } });
+      const gltfErrors = [];
+      view.on('pageerror', (e) => gltfErrors.push(e.message));
+      await view.goto(gltf.base);
+      await view.waitForFunction(() => window.shenlong && window.shenlong.ready, null, { timeout: 30000 });
+      const meshes = await view.evaluate(() => window.shenlong.meshes());
+      check(meshes > 16, `the glTF meshes are drawn (${meshes} meshes)`);
+      await view.fill('#instruction', "move the 'Cube' 0.5 units up");
+      await view.click('#run');
+      await view.waitForFunction(() => document.querySelector('#status').textContent.startsWith('Done'), null, { timeout: 30000 });
+      await view.waitForTimeout(900);
+      await view.screenshot({ path: SCREENSHOT.replace(/\.png$/, '-gltf.png') });
+      check(gltfErrors.length === 0, `no script errors on the glTF scene: ${gltfErrors.join('; ')}`);
+    } finally {
+      gltf.server.kill();
+    }
+  } else {
+    console.log(`e2e: the glTF scenario skipped: ${GLTF} not found (the shared test data is absent)`);
+  }
 } catch (error) {
   failed++;
   console.error(`e2e: FAILED: ${error.message}`);
