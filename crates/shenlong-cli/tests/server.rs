@@ -312,7 +312,7 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
         return;
     }
     let file = shenlong::format::SceneFile::load(&path).unwrap();
-    let app = App::new(
+    let glb = App::new(
         file,
         ServeSettings {
             llm: "offline".into(),
@@ -325,9 +325,9 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
             save: None,
         },
     );
-    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    let (_, scene, _) = call(&glb, "GET", "/api/scene", None).await;
     assert_eq!(scene["model"], "/api/model");
-    let (status, _, before) = call(&app, "GET", "/api/model", None).await;
+    let (status, _, before) = call(&glb, "GET", "/api/model", None).await;
     assert_eq!(status, StatusCode::OK);
     assert!(before.starts_with(b"glTF"));
     let (status, report, _) = call(
@@ -338,7 +338,7 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
     )
     .await;
     assert_eq!(status, StatusCode::OK, "{report}");
-    let (_, _, after) = call(&app, "GET", "/api/model", None).await;
+    let (_, _, after) = call(&glb, "GET", "/api/model", None).await;
     assert_ne!(before, after, "the model follows the edit");
     let dir = tempfile::tempdir().unwrap();
     let edited = dir.path().join("edited.glb");
@@ -353,13 +353,8 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
     };
     assert!((cube(&reread) - cube(&original) - 0.5).abs() < 1e-5);
     // A scene that is not glTF has no model.
-    let boxes = app_boxes();
     assert_eq!(
-        call(&boxes, "GET", "/api/model", None).await.0,
+        call(&app(None), "GET", "/api/model", None).await.0,
         StatusCode::NOT_FOUND
     );
-}
-
-fn app_boxes() -> Arc<App> {
-    app(None)
 }
