@@ -331,7 +331,7 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
     assert_eq!(status, StatusCode::OK);
     assert!(before.starts_with(b"glTF"));
     let (status, report, _) = call(
-        &app,
+        &glb,
         "POST",
         "/api/edit",
         Some(r#"{"instruction": "move the 'Cube' 0.5 units up"}"#),
