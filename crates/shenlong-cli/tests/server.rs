@@ -9,6 +9,25 @@ use shenlong_cli::server::{router, serve, App, ServeSettings};
 use std::sync::Arc;
 use tower::ServiceExt;
 
+/// Offline, no cache; a model server's base URL, collisions on or off, `--save`.
+fn settings(
+    base_url: Option<String>,
+    collide: bool,
+    save: Option<std::path::PathBuf>,
+) -> ServeSettings {
+    ServeSettings {
+        llm: "offline".into(),
+        system: System::Cga,
+        translator: TranslatorSettings {
+            cache_dir: None,
+            base_url,
+            ..TranslatorSettings::default()
+        },
+        collisions: collide.then(Default::default),
+        save,
+    }
+}
+
 fn app(save: Option<std::path::PathBuf>) -> Arc<App> {
     let scene = shenlong::examples::build("workshop").unwrap();
     let file = shenlong::format::SceneFile {
@@ -16,19 +35,7 @@ fn app(save: Option<std::path::PathBuf>) -> Arc<App> {
         document: shenlong::format::Document::None,
         path: None,
     };
-    App::new(
-        file,
-        ServeSettings {
-            llm: "offline".into(),
-            system: System::Cga,
-            translator: TranslatorSettings {
-                cache_dir: None,
-                ..TranslatorSettings::default()
-            },
-            collisions: Some(Default::default()),
-            save,
-        },
-    )
+    App::new(file, settings(None, true, save))
 }
 
 async fn call(
@@ -242,20 +249,7 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
         document: shenlong::format::Document::None,
         path: None,
     };
-    let app = App::new(
-        file,
-        ServeSettings {
-            llm: "offline".into(),
-            system: System::Cga,
-            translator: TranslatorSettings {
-                cache_dir: None,
-                base_url: Some(slow.url.clone()),
-                ..TranslatorSettings::default()
-            },
-            collisions: None,
-            save: None,
-        },
-    );
+    let app = App::new(file, settings(Some(slow.url.clone()), false, None));
     let runtime = tokio::runtime::Runtime::new().unwrap();
     let listener = runtime
         .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
@@ -312,19 +306,7 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
         return;
     }
     let file = shenlong::format::SceneFile::load(&path).unwrap();
-    let glb = App::new(
-        file,
-        ServeSettings {
-            llm: "offline".into(),
-            system: System::Cga,
-            translator: TranslatorSettings {
-                cache_dir: None,
-                ..TranslatorSettings::default()
-            },
-            collisions: None,
-            save: None,
-        },
-    );
+    let glb = App::new(file, settings(None, false, None));
     let (_, scene, _) = call(&glb, "GET", "/api/scene", None).await;
     assert_eq!(scene["model"], "/api/model");
     let (status, _, before) = call(&glb, "GET", "/api/model", None).await;

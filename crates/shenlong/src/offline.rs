@@ -329,16 +329,7 @@ fn repeat_previous(
     last: &[Step],
     last_subjects: &[usize],
 ) -> Option<Vec<(usize, Step)>> {
-    let words: Vec<&str> = clause
-        .iter()
-        .filter_map(|t| {
-            if let Token::Word(w) = t {
-                Some(w.as_str())
-            } else {
-                None
-            }
-        })
-        .collect();
+    let words = word_list(clause);
     let has = |w: &str| words.contains(&w);
     let same = has("same") || has("likewise") || has("too") || has("also");
     let opposite = has("opposite") || (has("other") && has("way")) || has("reverse");
@@ -411,6 +402,20 @@ fn not_understood(part: &str, _query: &str) -> String {
     )
 }
 
+/// The words of a token list, without numbers, variables and separators.
+fn word_list(tokens: &[Token]) -> Vec<&str> {
+    tokens
+        .iter()
+        .filter_map(|t| {
+            if let Token::Word(w) = t {
+                Some(w.as_str())
+            } else {
+                None
+            }
+        })
+        .collect()
+}
+
 fn words_of(clause: &[Token]) -> String {
     clause
         .iter()
@@ -467,16 +472,7 @@ fn split_clauses(tokens: &[Token]) -> Vec<Vec<Token>> {
         let is_list_mark = is_and || matches!(t, Token::Separator);
         if is_list_mark && var_near(i, -1) && var_near(i, 1) {
             let current = clauses.last().expect("one clause at least");
-            let words: Vec<&str> = current
-                .iter()
-                .filter_map(|t| {
-                    if let Token::Word(w) = t {
-                        Some(w.as_str())
-                    } else {
-                        None
-                    }
-                })
-                .collect();
+            let words = word_list(current);
             let list_context = words
                 .iter()
                 .any(|w| matches!(*w, "between" | "swap" | "exchange" | "switch"));

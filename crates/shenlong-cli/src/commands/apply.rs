@@ -1,7 +1,7 @@
 //! `shenlong apply`: apply one CGA expression to one object, with no translator.
 
 use anyhow::{Context, Result};
-use shenlong::expr::{self, Bindings, ObjectBox};
+use shenlong::expr;
 use shenlong::format::Format;
 use std::path::PathBuf;
 
@@ -44,15 +44,7 @@ pub fn run(args: Args) -> Result<()> {
         .scene
         .resolve(&args.object)
         .map_err(anyhow::Error::msg)?;
-    let aabb = file.scene.objects[index].world_aabb();
-    let mut bindings = Bindings::new();
-    bindings.bind(
-        "X1",
-        ObjectBox {
-            min: aabb.min,
-            max: aabb.max,
-        },
-    );
+    let bindings = shenlong::pipeline::bindings(&file.scene, &[index]);
     let t = expr::evaluate_transformation(&args.expr, &bindings)
         .with_context(|| format!("--expr {}", args.expr))?;
     let before = file.scene.clone();

@@ -18,7 +18,7 @@ use axum::{Json, Router};
 use serde::Deserialize;
 use serde_json::{json, Value};
 use shenlong::collide::ResolveOptions;
-use shenlong::expr::{self, Bindings, ObjectBox};
+use shenlong::expr;
 use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
 use shenlong::pipeline::{edit, EditErrorKind, EditOptions, System};
@@ -364,15 +364,7 @@ async fn apply(
     let _turn = app.edits.lock().await;
     let before = app.lock().file.scene.clone();
     let index = before.resolve(&request.object).map_err(unprocessable)?;
-    let aabb = before.objects[index].world_aabb();
-    let mut bindings = Bindings::new();
-    bindings.bind(
-        "X1",
-        ObjectBox {
-            min: aabb.min,
-            max: aabb.max,
-        },
-    );
+    let bindings = shenlong::pipeline::bindings(&before, &[index]);
     let t = expr::evaluate_transformation(&request.expr, &bindings)
         .map_err(|e| unprocessable(e.to_string()))?;
     let mut after = before.clone();

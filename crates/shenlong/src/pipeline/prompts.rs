@@ -4,7 +4,7 @@
 //! string that goes into cache keys and reports.
 
 use super::template::Templated;
-use crate::expr::{self, reply, Bindings, Dialect, ExprError, ObjectBox, Transformation};
+use crate::expr::{self, reply, Dialect, ExprError, Transformation};
 use crate::llm::Message;
 use crate::scene::{Scene, Shape};
 use cga::{Multivector, Similarity};
@@ -139,27 +139,7 @@ impl System {
         templated: &Templated,
         scene: &Scene,
     ) -> Result<Vec<Answer>, ExprError> {
-        let mut bindings = Bindings::new();
-        for (k, &i) in templated.objects.iter().enumerate() {
-            let b = scene.objects[i].world_aabb();
-            bindings.bind(
-                Templated::variable(k),
-                ObjectBox {
-                    min: b.min,
-                    max: b.max,
-                },
-            );
-        }
-        // Extension: the room, when the scene has one, as the variable `room`.
-        if let Some(room) = scene.bounds {
-            bindings.bind(
-                "room",
-                ObjectBox {
-                    min: room.min,
-                    max: room.max,
-                },
-            );
-        }
+        let bindings = super::bindings(scene, &templated.objects);
         let object_of = |variable: &str| -> Result<usize, ExprError> {
             let k: usize = variable[1..].parse().unwrap_or(0);
             templated
