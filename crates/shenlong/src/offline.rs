@@ -275,7 +275,7 @@ pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
         }
         let produced = match repeat_previous(&clause, &last_steps, &last_subjects) {
             Some(repeated) => repeated,
-            None => read_clause(&clause, &mut last_subjects, &mut last_action, &steps, query)?,
+            None => read_clause(&clause, &mut last_subjects, &mut last_action, &steps)?,
         };
         if let Some(&(first, _)) = produced.first() {
             last_steps = produced
@@ -289,7 +289,7 @@ pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
         }
     }
     if steps.is_empty() {
-        return Err(not_understood(query, query));
+        return Err(not_understood(query));
     }
     if let Some(v) = steps.keys().find(|&&v| v >= variables) {
         return Err(format!(
@@ -395,7 +395,7 @@ fn boxed(var: usize, attribute: &str, steps: &BTreeMap<usize, Vec<Step>>) -> Str
     }
 }
 
-fn not_understood(part: &str, _query: &str) -> String {
+fn not_understood(part: &str) -> String {
     format!(
         "the offline translator could not read \"{}\"; rephrase it, or use a language model with --llm openai:MODEL or --llm ollama:MODEL",
         part.trim()
@@ -505,7 +505,6 @@ fn read_clause(
     last_subjects: &mut Vec<usize>,
     last_action: &mut Option<Action>,
     steps: &BTreeMap<usize, Vec<Step>>,
-    query: &str,
 ) -> Result<Vec<(usize, Step)>, String> {
     let text = words_of(clause);
     let words: Vec<&str> = clause
@@ -536,12 +535,12 @@ fn read_clause(
         Some(v) => v,
         None => match *last_action {
             Some(a) => (a, None),
-            None => return Err(not_understood(&text, query)),
+            None => return Err(not_understood(&text)),
         },
     };
     if verb_at.is_some_and(|i| words[i] == "make") && !words.iter().any(|w| size_word(w).is_some())
     {
-        return Err(not_understood(&text, query));
+        return Err(not_understood(&text));
     }
     // "turn X1 to face X2", "rotate X1 so that it faces X2".
     let facing = words
@@ -557,7 +556,7 @@ fn read_clause(
     match action {
         Action::Swap => {
             if vars.len() < 2 {
-                return Err(not_understood(&text, query));
+                return Err(not_understood(&text));
             }
             let (a, b) = (vars[0].1, vars[1].1);
             *last_subjects = vec![a, b];
@@ -595,7 +594,7 @@ fn read_clause(
         }
         Action::Align => {
             if vars.len() < 2 {
-                return Err(not_understood(&text, query));
+                return Err(not_understood(&text));
             }
             let (a, b) = (vars[0].1, vars[1].1);
             *last_subjects = vec![a];
@@ -633,7 +632,7 @@ fn read_clause(
         subjects = last_subjects.clone();
     }
     if subjects.is_empty() {
-        return Err(not_understood(&text, query));
+        return Err(not_understood(&text));
     }
     *last_subjects = subjects.clone();
     let objects: Vec<usize> = vars
@@ -658,9 +657,7 @@ fn read_clause(
                         .any(|w| matches!(*w, "away" | "closer" | "nearer"))
             }) =>
         {
-            let target = *objects
-                .first()
-                .ok_or_else(|| not_understood(&text, query))?;
+            let target = *objects.first().ok_or_else(|| not_understood(&text))?;
             let amount = find_amount(clause, Kind::Length);
             for &s in &subjects {
                 let d = format!("({} - X{}.center)", at(target, "center"), s + 1);
@@ -679,13 +676,13 @@ fn read_clause(
             if let Some(r) = relation_at {
                 for &s in &subjects {
                     let v = relation(&words[r..], s, &objects, steps)
-                        .ok_or_else(|| not_understood(&text, query))?;
+                        .ok_or_else(|| not_understood(&text))?;
                     out.push((s, Step::Translate(v)));
                 }
             } else {
                 let (axis, sign) = find_direction(&words)
                     .or(verb_direction)
-                    .ok_or_else(|| not_understood(&text, query))?;
+                    .ok_or_else(|| not_understood(&text))?;
                 let amount = find_amount(clause, Kind::Length).unwrap_or(1.0);
                 for &s in &subjects {
                     out.push((
@@ -738,8 +735,7 @@ fn read_clause(
             }
         }
         Action::Scale => {
-            let factor =
-                scale_factor(clause, &words).ok_or_else(|| not_understood(&text, query))?;
+            let factor = scale_factor(clause, &words).ok_or_else(|| not_understood(&text))?;
             for &s in &subjects {
                 out.push((s, Step::Turn(format!("D({})", fmt(factor)))));
             }

@@ -2,7 +2,6 @@
 
 use anyhow::{Context, Result};
 use shenlong::expr;
-use shenlong::format::Format;
 use std::path::PathBuf;
 
 /// Apply a CGA expression to one object of a scene and write the result.
@@ -51,27 +50,6 @@ pub fn run(args: Args) -> Result<()> {
     file.scene.apply(index, &t.versor, !args.no_carry);
     args.collisions
         .resolve(&before, &mut file.scene, &[index])?;
-    // Render every output before writing any, so a failure leaves no file half-done.
-    let tdw = args.tdw.as_ref().map(|path| {
-        let commands = shenlong::format::tdw::edit(&before, &file.scene, &file.tdw_ids());
-        (
-            path,
-            shenlong::format::pretty::to_string(&serde_json::Value::Array(commands)),
-        )
-    });
-    match &args.output {
-        Some(path) => file.save(path)?,
-        None => {
-            let format = match &file.path {
-                Some(p) => Format::from_path(p)?,
-                None => Format::SceneJson,
-            };
-            super::write_stdout(&file.to_bytes(format)?)?;
-        }
-    }
-    if let Some((path, text)) = tdw {
-        shenlong::io::write_atomic(path, text.as_bytes())
-            .with_context(|| format!("cannot write {}", path.display()))?;
-    }
+    super::write_edit(&file, &before, args.output.as_deref(), args.tdw.as_deref())?;
     Ok(())
 }

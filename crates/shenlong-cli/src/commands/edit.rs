@@ -1,7 +1,6 @@
 //! `shenlong edit`: the main job — an instruction applied to a scene.
 
 use anyhow::{Context, Result};
-use shenlong::format::Format;
 use shenlong::pipeline::backends::translator;
 use shenlong::pipeline::{edit, EditOptions, System};
 use std::path::PathBuf;
@@ -71,29 +70,7 @@ pub fn run(args: Args) -> Result<()> {
     )?;
     let report = serde_json::to_string_pretty(&result.report).expect("reports serialise");
 
-    // Render every output before writing any; then write the scene, the commands, the report.
-    let scene_bytes = match &args.output {
-        Some(path) => file.to_bytes(Format::from_path(path)?)?,
-        None => file.to_bytes(match &file.path {
-            Some(p) => Format::from_path(p)?,
-            None => Format::SceneJson,
-        })?,
-    };
-    let tdw = args.tdw.as_ref().map(|path| {
-        let commands = shenlong::format::tdw::edit(&before, &file.scene, &file.tdw_ids());
-        (
-            path,
-            shenlong::format::pretty::to_string(&serde_json::Value::Array(commands)),
-        )
-    });
-    match &args.output {
-        Some(path) => file.save(path)?,
-        None => super::write_stdout(&scene_bytes)?,
-    }
-    if let Some((path, text)) = tdw {
-        shenlong::io::write_atomic(path, text.as_bytes())
-            .with_context(|| format!("cannot write {}", path.display()))?;
-    }
+    super::write_edit(&file, &before, args.output.as_deref(), args.tdw.as_deref())?;
     match args.json.as_deref() {
         Some("-") => eprintln!("{report}"),
         Some(path) => {

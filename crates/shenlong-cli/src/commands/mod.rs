@@ -28,6 +28,39 @@ pub fn load_scene(spec: &str) -> Result<SceneFile> {
     Ok(SceneFile::load(Path::new(spec))?)
 }
 
+/// Writes an edited scene to `output` (format by extension) or, without one, to stdout in
+/// the input's format; then, with `tdw`, the edit from `before` as ThreeDWorld commands.
+/// The commands are rendered before anything is written.
+pub fn write_edit(
+    file: &SceneFile,
+    before: &shenlong::scene::Scene,
+    output: Option<&Path>,
+    tdw: Option<&Path>,
+) -> Result<()> {
+    let commands = tdw.map(|path| {
+        let list = shenlong::format::tdw::edit(before, &file.scene, &file.tdw_ids());
+        (
+            path,
+            shenlong::format::pretty::to_string(&serde_json::Value::Array(list)),
+        )
+    });
+    match output {
+        Some(path) => file.save(path)?,
+        None => {
+            let format = match &file.path {
+                Some(p) => shenlong::format::Format::from_path(p)?,
+                None => shenlong::format::Format::SceneJson,
+            };
+            write_stdout(&file.to_bytes(format)?)?;
+        }
+    }
+    if let Some((path, text)) = commands {
+        shenlong::io::write_atomic(path, text.as_bytes())
+            .with_context(|| format!("cannot write {}", path.display()))?;
+    }
+    Ok(())
+}
+
 /// Writes bytes to stdout in one go.
 pub fn write_stdout(bytes: &[u8]) -> Result<()> {
     let mut out = std::io::stdout().lock();
