@@ -400,6 +400,7 @@ impl IndexMut<usize> for Multivector {
 impl Mul for Multivector {
     type Output = Self;
     /// The geometric product.
+    #[inline]
     fn mul(self, rhs: Self) -> Self {
         Self::from_coefficients(crate::dispatch::geometric(
             &self.coefficients,

@@ -180,22 +180,33 @@ fn write_blocked_geometric_avx(out: &mut String) {
         );
         let _ = writeln!(out, "    let b{k}_3 = _mm256_permute_pd::<0b0101>(b{k}_2);");
     }
-    for n in 0..32 {
-        let lanes: Vec<String> = (0..4)
-            .rev()
-            .map(|l| {
-                let sign = mask_sign(n, (n & 3) ^ l);
-                let s = if sign > 0.0 { "" } else { "-" };
-                format!("{s}a[{}]", MASK_TO_INDEX[n])
-            })
-            .collect();
-        let _ = writeln!(out, "    let a{n} = _mm256_set_pd({});", lanes.join(", "));
-    }
-    // One output block at a time keeps a single accumulator live; each block still sums
-    // over n in increasing order, as the scalar kernel does.
     for j in 0..8 {
         let _ = writeln!(out, "    let mut r{j} = _mm256_setzero_pd();");
-        for n in 0..32 {
+    }
+    // Step n adds a[n] times a permuted b block into each of the 8 output blocks. The
+    // empty asm block after each step takes all 8 accumulators, so every step finishes
+    // before the next starts: without it LLVM, to save registers, runs each output
+    // block's 32-step chain of additions to the end before starting the next, and the
+    // kernel waits on addition latency (115 ns against 72 ns, docs/performance.md).
+    for n in 0..32 {
+        let negate: Vec<bool> = (0..4).map(|l| mask_sign(n, (n & 3) ^ l) < 0.0).collect();
+        let broadcast = format!("_mm256_broadcast_sd(&a[{}])", MASK_TO_INDEX[n]);
+        if negate.iter().any(|&x| x) {
+            // Negation is a flip of the sign bit, so the xor rounds nothing.
+            let mask: Vec<&str> = negate
+                .iter()
+                .rev()
+                .map(|&x| if x { "-0.0" } else { "0.0" })
+                .collect();
+            let _ = writeln!(
+                out,
+                "    let a{n} = _mm256_xor_pd({broadcast}, _mm256_set_pd({}));",
+                mask.join(", ")
+            );
+        } else {
+            let _ = writeln!(out, "    let a{n} = {broadcast};");
+        }
+        for j in 0..8 {
             let k = j ^ (n >> 2);
             let f = if mask_sign(n, k << 2) > 0.0 {
                 "add"
@@ -208,6 +219,10 @@ fn write_blocked_geometric_avx(out: &mut String) {
                 n & 3
             );
         }
+        out.push_str(
+            "    // SAFETY: an empty asm block; it reads and writes only its register operands.\n\
+             \x20   unsafe { std::arch::asm!(\"/* {0} {1} {2} {3} {4} {5} {6} {7} */\", inout(ymm_reg) r0, inout(ymm_reg) r1, inout(ymm_reg) r2, inout(ymm_reg) r3, inout(ymm_reg) r4, inout(ymm_reg) r5, inout(ymm_reg) r6, inout(ymm_reg) r7, options(pure, nomem, nostack, preserves_flags)) };\n",
+        );
     }
     out.push_str("    let mut r = [[0.0f64; 4]; 8];\n");
     for j in 0..8 {
