@@ -819,34 +819,63 @@ pub(crate) fn geometric_avx(a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
     ]
 }
 
-/// The grade-1 part of `M X M̃` for an even `M` and a vector `X` (a conformal point),
-/// as the `e1 … e5` coefficients; all intermediate values stay in locals.
+/// The 2×2 matrix `[[a, b], [c, d]]` over Cl(3,0) of an even multivector, as
+/// `a (1, e12, e13, e23), b (e1, e2, e3, e123), c (e1, e2, e3, e123), d (1, e12, e13, e23)`.
+/// `a` and `d` are quaternions, `b` and `c` odd; `b` is zero for a similarity.
 #[inline(always)]
 #[rustfmt::skip]
-pub(crate) fn sandwich_even_vector(m: &[f64; 32], x: &[f64; 5]) -> [f64; 5] {
-    let p1 = m[0] * x[0] + m[6] * x[1] + m[7] * x[2] + m[8] * x[3] - m[9] * x[4];
-    let p2 = m[0] * x[1] - m[6] * x[0] + m[10] * x[2] + m[11] * x[3] - m[12] * x[4];
-    let p3 = m[0] * x[2] - m[7] * x[0] - m[10] * x[1] + m[13] * x[3] - m[14] * x[4];
-    let p4 = m[0] * x[3] - m[8] * x[0] - m[11] * x[1] - m[13] * x[2] - m[15] * x[4];
-    let p5 = m[0] * x[4] - m[9] * x[0] - m[12] * x[1] - m[14] * x[2] - m[15] * x[3];
-    let p16 = m[6] * x[2] - m[7] * x[1] + m[10] * x[0] + m[26] * x[3] - m[27] * x[4];
-    let p17 = m[6] * x[3] - m[8] * x[1] + m[11] * x[0] - m[26] * x[2] - m[28] * x[4];
-    let p18 = m[6] * x[4] - m[9] * x[1] + m[12] * x[0] - m[27] * x[2] - m[28] * x[3];
-    let p19 = m[7] * x[3] - m[8] * x[2] + m[13] * x[0] + m[26] * x[1] - m[29] * x[4];
-    let p20 = m[7] * x[4] - m[9] * x[2] + m[14] * x[0] + m[27] * x[1] - m[29] * x[3];
-    let p21 = m[8] * x[4] - m[9] * x[3] + m[15] * x[0] + m[28] * x[1] + m[29] * x[2];
-    let p22 = m[10] * x[3] - m[11] * x[2] + m[13] * x[1] - m[26] * x[0] - m[30] * x[4];
-    let p23 = m[10] * x[4] - m[12] * x[2] + m[14] * x[1] - m[27] * x[0] - m[30] * x[3];
-    let p24 = m[11] * x[4] - m[12] * x[3] + m[15] * x[1] - m[28] * x[0] + m[30] * x[2];
-    let p25 = m[13] * x[4] - m[14] * x[3] + m[15] * x[2] - m[29] * x[0] - m[30] * x[1];
-    let p31 = m[26] * x[4] - m[27] * x[3] + m[28] * x[2] - m[29] * x[1] + m[30] * x[0];
+pub(crate) fn vahlen_even(m: &[f64; 32]) -> [f64; 16] {
     [
-        p1 * m[0] + p2 * m[6] + p3 * m[7] + p4 * m[8] - p5 * m[9] + p16 * m[10] + p17 * m[11] - p18 * m[12] + p19 * m[13] - p20 * m[14] - p21 * m[15] + p22 * m[26] - p23 * m[27] - p24 * m[28] - p25 * m[29] - p31 * m[30], // e1
-        -p1 * m[6] + p2 * m[0] + p3 * m[10] + p4 * m[11] - p5 * m[12] - p16 * m[7] - p17 * m[8] + p18 * m[9] - p19 * m[26] + p20 * m[27] + p21 * m[28] + p22 * m[13] - p23 * m[14] - p24 * m[15] - p25 * m[30] + p31 * m[29], // e2
-        -p1 * m[7] - p2 * m[10] + p3 * m[0] + p4 * m[13] - p5 * m[14] + p16 * m[6] + p17 * m[26] - p18 * m[27] - p19 * m[8] + p20 * m[9] + p21 * m[29] - p22 * m[11] + p23 * m[12] + p24 * m[30] - p25 * m[15] - p31 * m[28], // e3
-        -p1 * m[8] - p2 * m[11] - p3 * m[13] + p4 * m[0] - p5 * m[15] - p16 * m[26] + p17 * m[6] - p18 * m[28] + p19 * m[7] - p20 * m[29] + p21 * m[9] + p22 * m[10] - p23 * m[30] + p24 * m[12] + p25 * m[14] + p31 * m[27], // e4
-        -p1 * m[9] - p2 * m[12] - p3 * m[14] - p4 * m[15] + p5 * m[0] - p16 * m[27] - p17 * m[28] + p18 * m[6] - p19 * m[29] + p20 * m[7] + p21 * m[8] - p22 * m[30] + p23 * m[10] + p24 * m[11] + p25 * m[13] + p31 * m[26], // e5
+        m[0] + m[15], // a: 1
+        m[6] + m[28], // a: e12
+        m[7] + m[29], // a: e13
+        m[10] + m[30], // a: e23
+        m[8] - m[9], // b: e1
+        m[11] - m[12], // b: e2
+        m[13] - m[14], // b: e3
+        m[26] - m[27], // b: e123
+        -m[8] - m[9], // c: e1
+        -m[11] - m[12], // c: e2
+        -m[13] - m[14], // c: e3
+        -m[26] - m[27], // c: e123
+        m[0] - m[15], // d: 1
+        m[6] - m[28], // d: e12
+        m[7] - m[29], // d: e13
+        m[10] - m[30], // d: e23
     ]
+}
+
+/// The image of the point `x` under the even versor with matrix `v` (see [`vahlen_even`]),
+/// as `(position, weight)`: the point is `position / weight`. This is
+/// `x' = (c + dx)(a + bx)⁻¹` (see the generator for the derivation).
+#[inline(always)]
+#[rustfmt::skip]
+pub(crate) fn moebius_point(v: &[f64; 16], x: &[f64; 3]) -> ([f64; 3], f64) {
+    let a0 = v[0];
+    let a3 = v[1];
+    let a5 = v[2];
+    let a6 = v[3];
+    let b1 = v[4];
+    let b2 = v[5];
+    let b4 = v[6];
+    let b7 = v[7];
+    let c1 = v[8];
+    let c2 = v[9];
+    let c4 = v[10];
+    let c7 = v[11];
+    let d0 = v[12];
+    let d3 = v[13];
+    let d5 = v[14];
+    let d6 = v[15];
+    let u1 = c1 + d0 * x[0] + d3 * x[1] + d5 * x[2];
+    let u2 = c2 + d0 * x[1] - d3 * x[0] + d6 * x[2];
+    let u4 = c4 + d0 * x[2] - d5 * x[0] - d6 * x[1];
+    let u7 = c7 + d3 * x[2] - d5 * x[1] + d6 * x[0];
+    let w0 = a0 + b1 * x[0] + b2 * x[1] + b4 * x[2];
+    let w3 = a3 + b1 * x[1] - b2 * x[0] + b7 * x[2];
+    let w5 = a5 + b1 * x[2] - b4 * x[0] - b7 * x[1];
+    let w6 = a6 + b2 * x[2] - b4 * x[1] + b7 * x[0];
+    ([u1 * w0 + u2 * w3 + u4 * w5 + u7 * w6, -u1 * w3 + u2 * w0 + u4 * w6 - u7 * w5, -u1 * w5 - u2 * w6 + u4 * w0 + u7 * w3], w0 * w0 + w3 * w3 + w5 * w5 + w6 * w6)
 }
 
 /// Dense outer product `a ∧ b`.

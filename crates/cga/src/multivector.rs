@@ -372,16 +372,6 @@ impl Multivector {
             &other.coefficients,
         ))
     }
-
-    /// The grade-1 part of `self X self~` for an even `self` and a vector `X`, reading
-    /// only the coefficients involved.
-    pub(crate) fn sandwich_even_on_vector(&self, x: &Self) -> Self {
-        let v = [x[1], x[2], x[3], x[4], x[5]];
-        let image = generated::sandwich_even_vector(&self.coefficients, &v);
-        let mut out = Self::ZERO;
-        out.coefficients[1..6].copy_from_slice(&image);
-        out
-    }
 }
 
 impl Index<usize> for Multivector {
@@ -547,10 +537,6 @@ mod tests {
         );
         let (ea, eb) = (a.even(), b.even());
         assert!(ea.geometric_even_even(&eb).is_close(&(ea * eb), 1e-14));
-        let v = a.grade(1);
-        assert!(ea
-            .sandwich_even_on_vector(&v)
-            .is_close(&(ea * v * ea.reverse()).grade(1), 1e-14));
         // The CPU-dispatched kernel rounds exactly as the baseline one.
         assert_eq!(
             crate::dispatch::geometric(&a.coefficients, &b.coefficients),

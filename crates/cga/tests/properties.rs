@@ -127,6 +127,25 @@ proptest! {
     }
 
     #[test]
+    fn even_versors_move_points_like_the_full_sandwich(
+        s in similarity(),
+        c in point(),
+        k in 0.0f64..0.05,
+        x in point(),
+    ) {
+        // A transversion K = 1 + c∧eo (a versor: K K̃ = 1) makes M a general conformal map,
+        // so the fast path's transversion terms are exercised too.
+        let transversion = Multivector::scalar(1.0) + (Multivector::from_vector(c * k) ^ Multivector::eo());
+        let m = s.to_versor().unwrap() * transversion;
+        let Ok(expected) = m.sandwich(&Multivector::up(x)).and_then(|y| y.down()) else {
+            return Ok(());
+        };
+        prop_assume!(expected.length() < 1e4);
+        let fast = m.transform_point(x).unwrap();
+        prop_assert!((fast - expected).length() < 1e-9 * (1.0 + expected.length()), "{fast} vs {expected}");
+    }
+
+    #[test]
     fn rotor_of_two_vectors_turns_u_toward_v(angle in -6.0f64..6.0, u in point(), v in point()) {
         let r = Multivector::rotor(angle, &Multivector::from_vector(u), &Multivector::from_vector(v));
         prop_assume!(u.cross(v).length() > 1e-3);

@@ -77,7 +77,7 @@ pub fn generate() -> String {
     );
     write_blocked_geometric(&mut out);
     write_blocked_geometric_avx(&mut out);
-    write_point_sandwich(&mut out);
+    write_vahlen_and_moebius(&mut out);
     for kernel in KERNELS {
         write_kernel(&mut out, kernel);
     }
@@ -245,56 +245,212 @@ fn write_blocked_geometric_avx(out: &mut String) {
     out.push_str("    ]\n}\n\n");
 }
 
-/// `M up(x) M̃` for an even `M`, kept in locals: returns the `e1, e2, e3, e4, e5`
-/// coefficients of the image of the point `x`.
-fn write_point_sandwich(out: &mut String) {
-    out.push_str(
-        "/// The grade-1 part of `M X M̃` for an even `M` and a vector `X` (a conformal point),\n\
-         /// as the `e1 … e5` coefficients; all intermediate values stay in locals.\n\
-         #[inline(always)]\n#[rustfmt::skip]\n\
-         pub(crate) fn sandwich_even_vector(m: &[f64; 32], x: &[f64; 5]) -> [f64; 5] {\n",
-    );
-    let even: Vec<usize> = (0..BLADE_COUNT).filter(|&i| grade(i) % 2 == 0).collect();
-    // First half: P = M X, odd.
-    let mut p_terms: Vec<Vec<(f64, usize, usize)>> = vec![Vec::new(); BLADE_COUNT];
-    for &i in &even {
-        for v in 1..6 {
-            let (r, sign) = product(i, v);
-            p_terms[r].push((sign, i, v));
+/// An element of the Euclidean subalgebra Cl(3,0), by bit mask (bits e1, e2, e3).
+type Cl3 = [f64; 8];
+
+/// A 2×2 matrix over Cl(3,0): the image of a multivector of G(4,1) under the algebra
+/// isomorphism G(4,1) ≅ Mat(2, Cl(3,0)).
+type Vahlen = [[Cl3; 2]; 2];
+
+fn cl3_product(x: &Cl3, y: &Cl3) -> Cl3 {
+    let mut r = [0.0; 8];
+    for p in 0..8 {
+        for q in 0..8 {
+            // e1, e2 and e3 square to +1, so only the reordering sign remains.
+            r[p ^ q] += blade::reorder_sign(p as u8, q as u8) * x[p] * y[q];
         }
     }
-    for (r, terms) in p_terms.iter().enumerate() {
-        if terms.is_empty() {
-            continue;
-        }
-        let expr = sum(terms
-            .iter()
-            .map(|&(s, i, v)| (s, format!("m[{i}] * x[{}]", v - 1))));
-        let _ = writeln!(out, "    let p{r} = {expr};");
-    }
-    // Second half: grade-1 part of P M̃; the reverse flips the sign of grades 2 and 3.
-    let mut lines = Vec::new();
-    for k in 1..6 {
-        let mut terms = Vec::new();
-        for (i, pt) in p_terms.iter().enumerate() {
-            if pt.is_empty() {
-                continue;
-            }
-            for &j in &even {
-                let (r, sign) = product(i, j);
-                if r == k {
-                    let rev = if matches!(grade(j), 2 | 3) { -1.0 } else { 1.0 };
-                    terms.push((sign * rev, format!("p{i} * m[{j}]")));
+    r
+}
+
+fn vahlen_product(x: &Vahlen, y: &Vahlen) -> Vahlen {
+    let mut r = [[[0.0; 8]; 2]; 2];
+    for i in 0..2 {
+        for j in 0..2 {
+            for k in 0..2 {
+                let t = cl3_product(&x[i][k], &y[k][j]);
+                for (r, t) in r[i][j].iter_mut().zip(t) {
+                    *r += t;
                 }
             }
         }
-        lines.push(format!(
-            "        {}, // {}",
-            sum(terms.into_iter()),
-            BLADE_NAMES[k]
-        ));
     }
-    let _ = writeln!(out, "    [\n{}\n    ]\n}}\n", lines.join("\n"));
+    r
+}
+
+/// The matrix of the blade with bit mask `mask`: the product of its factors' matrices,
+/// `e1, e2, e3 ↦ diag(e_k, −e_k)`, `e4 ↦ [[0, 1], [1, 0]]`, `e5 ↦ [[0, −1], [1, 0]]`.
+/// Then `einf ↦ [[0, 0], [2, 0]]`, `eo ↦ [[0, −1], [0, 0]]` and
+/// `up(x) ↦ [[x, −1], [x², −x]] = [1; x]·[x, −1]`.
+fn vahlen_of_blade(mask: usize) -> Vahlen {
+    let mut r: Vahlen = [[[0.0; 8]; 2]; 2];
+    r[0][0][0] = 1.0;
+    r[1][1][0] = 1.0;
+    for bit in 0..5 {
+        if mask & (1 << bit) == 0 {
+            continue;
+        }
+        let mut g: Vahlen = [[[0.0; 8]; 2]; 2];
+        match bit {
+            0..=2 => {
+                g[0][0][1 << bit] = 1.0;
+                g[1][1][1 << bit] = -1.0;
+            }
+            3 => {
+                g[0][1][0] = 1.0;
+                g[1][0][0] = 1.0;
+            }
+            _ => {
+                g[0][1][0] = -1.0;
+                g[1][0][0] = 1.0;
+            }
+        }
+        r = vahlen_product(&r, &g);
+    }
+    r
+}
+
+/// Name of the Cl(3,0) blade with bit mask `mask`, for comments.
+fn cl3_name(mask: usize) -> &'static str {
+    ["1", "e1", "e2", "e12", "e3", "e13", "e23", "e123"][mask]
+}
+
+/// A point moved by an even versor through its Vahlen matrix, without the 32-blade sandwich.
+///
+/// Under `G(4,1) ≅ Mat(2, Cl(3,0))` an even `M` is `[[a, b], [c, d]]` with `a, d` even
+/// (quaternions) and `b, c` odd in Cl(3,0). `M up(x) M̃ = (M [1; x]) ([x, −1] M̃)` is a multiple
+/// of `up(x') = [1; x'][x', −1]`, so `M [1; x] = [a + bx; c + dx]` is `[1; x']·(a + bx)`, and
+/// `x' = (c + dx)(a + bx)⁻¹`. With `w = a + bx` a quaternion, `w⁻¹ = w̃ / (w w̃)`, where
+/// `w w̃` is the sum of the squares of `w`'s four components. That is 43 products against
+/// the sandwich's 160, and no `x²` term.
+fn write_vahlen_and_moebius(out: &mut String) {
+    // The map must be an algebra homomorphism: check it on every pair of blades.
+    for n in 0..32 {
+        for m in 0..32 {
+            let lhs = vahlen_product(&vahlen_of_blade(n), &vahlen_of_blade(m));
+            let mut rhs = vahlen_of_blade(n ^ m);
+            let sign = mask_sign(n, m);
+            rhs.iter_mut().flatten().flatten().for_each(|v| *v *= sign);
+            assert_eq!(lhs, rhs, "not a homomorphism for masks {n}, {m}");
+        }
+    }
+    let even_cl3 = [0usize, 3, 5, 6];
+    let odd_cl3 = [1usize, 2, 4, 7];
+    let vector_cl3 = [1usize, 2, 4];
+    // The entries of [[a, b], [c, d]] as signed sums of M's even coefficients.
+    let entries = [
+        ("a", 0, 0, &even_cl3),
+        ("b", 0, 1, &odd_cl3),
+        ("c", 1, 0, &odd_cl3),
+        ("d", 1, 1, &even_cl3),
+    ];
+    out.push_str(
+        "/// The 2×2 matrix `[[a, b], [c, d]]` over Cl(3,0) of an even multivector, as\n\
+         /// `a (1, e12, e13, e23), b (e1, e2, e3, e123), c (e1, e2, e3, e123), d (1, e12, e13, e23)`.\n\
+         /// `a` and `d` are quaternions, `b` and `c` odd; `b` is zero for a similarity.\n\
+         #[inline(always)]\n#[rustfmt::skip]\n\
+         pub(crate) fn vahlen_even(m: &[f64; 32]) -> [f64; 16] {\n    [\n",
+    );
+    let mut defined = std::collections::HashSet::new();
+    let mut slot = 0;
+    for (name, row, col, masks) in entries {
+        for &q in masks.iter() {
+            let mut terms = Vec::new();
+            for i in (0..BLADE_COUNT).filter(|&i| grade(i) % 2 == 0) {
+                let v = vahlen_of_blade(BLADE_MASKS[i] as usize)[row][col][q];
+                if v != 0.0 {
+                    assert_eq!(v.abs(), 1.0, "entries are ± single coefficients");
+                    terms.push((v, format!("m[{i}]")));
+                }
+            }
+            assert!(
+                !terms.is_empty(),
+                "every entry of an even multivector's matrix is used"
+            );
+            let _ = writeln!(
+                out,
+                "        {}, // {name}: {}",
+                sum(terms.into_iter()),
+                cl3_name(q)
+            );
+            defined.insert(format!("{name}{q}"));
+            slot += 1;
+        }
+    }
+    assert_eq!(slot, 16);
+    out.push_str("    ]\n}\n\n");
+    out.push_str(
+        "/// The image of the point `x` under the even versor with matrix `v` (see [`vahlen_even`]),\n\
+         /// as `(position, weight)`: the point is `position / weight`. This is\n\
+         /// `x' = (c + dx)(a + bx)⁻¹` (see the generator for the derivation).\n\
+         #[inline(always)]\n#[rustfmt::skip]\n\
+         pub(crate) fn moebius_point(v: &[f64; 16], x: &[f64; 3]) -> ([f64; 3], f64) {\n",
+    );
+    let mut slot = 0;
+    for (name, _, _, masks) in entries {
+        for &q in masks.iter() {
+            let _ = writeln!(out, "    let {name}{q} = v[{slot}];");
+            slot += 1;
+        }
+    }
+    // Products of a named Cl(3,0) element with the vector x (or x with it), by result mask.
+    let times_x = |name: &str, masks: &[usize], result: usize, x_first: bool| {
+        let mut terms = Vec::new();
+        for &p in masks {
+            if !defined.contains(&format!("{name}{p}")) {
+                continue;
+            }
+            for &q in &vector_cl3 {
+                let (l, r) = if x_first { (q, p) } else { (p, q) };
+                if l ^ r == result {
+                    let x = [1, 2, 4].iter().position(|&v| v == q).unwrap();
+                    terms.push((
+                        blade::reorder_sign(l as u8, r as u8),
+                        format!("{name}{p} * x[{x}]"),
+                    ));
+                }
+            }
+        }
+        terms
+    };
+    // u = c + dx (odd), w = a + bx (even).
+    for (u, c, d, masks, inner) in [
+        ("u", "c", "d", &odd_cl3, &even_cl3),
+        ("w", "a", "b", &even_cl3, &odd_cl3),
+    ] {
+        for &r in masks.iter() {
+            let mut terms = Vec::new();
+            if defined.contains(&format!("{c}{r}")) {
+                terms.push((1.0, format!("{c}{r}")));
+            }
+            terms.extend(times_x(d, inner, r, false));
+            let _ = writeln!(out, "    let {u}{r} = {};", sum(terms.into_iter()));
+        }
+    }
+    // position = <u w̃>_1; the reverse flips the sign of w's bivectors.
+    let mut position = Vec::new();
+    for &q in &vector_cl3 {
+        let mut terms = Vec::new();
+        for &p in &odd_cl3 {
+            for &r in &even_cl3 {
+                if p ^ r == q {
+                    let rev = if r == 0 { 1.0 } else { -1.0 };
+                    terms.push((
+                        blade::reorder_sign(p as u8, r as u8) * rev,
+                        format!("u{p} * w{r}"),
+                    ));
+                }
+            }
+        }
+        position.push(sum(terms.into_iter()));
+    }
+    let weight: Vec<String> = even_cl3.iter().map(|r| format!("w{r} * w{r}")).collect();
+    let _ = writeln!(
+        out,
+        "    ([{}], {})\n}}\n",
+        position.join(", "),
+        weight.join(" + ")
+    );
 }
 
 fn sum(terms: impl Iterator<Item = (f64, String)>) -> String {
