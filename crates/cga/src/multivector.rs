@@ -7,7 +7,7 @@ use std::fmt;
 use std::ops::{Add, AddAssign, BitOr, BitXor, Div, Index, IndexMut, Mul, Neg, Sub, SubAssign};
 
 /// A multivector of G(4,1): 32 coefficients in canonical blade order
-/// (see [`blade`](crate::blade)).
+/// (see [`blade`]).
 ///
 /// Operators: `*` geometric product, `^` outer product, `|` inner product (as the Python
 /// `clifford` library's `|`), `+`, `-`, scalar `*` and `/`. Index with a canonical blade
