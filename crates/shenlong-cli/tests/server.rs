@@ -9,6 +9,10 @@ use shenlong_cli::server::{router, serve, App, ServeSettings};
 use std::sync::Arc;
 use tower::ServiceExt;
 
+// One rule for finding the shared test data, kept with the library's integration tests.
+#[path = "../../shenlong/tests/support/shared_data.rs"]
+mod shared_data;
+
 /// Offline, no cache; a model server's base URL, collisions on or off, `--save`.
 fn settings(
     base_url: Option<String>,
@@ -296,15 +300,9 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
 
 #[tokio::test]
 async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
-        .join("../../../shared/data/gltf/DepthOfFieldExample.glb");
-    if !path.is_file() {
-        eprintln!(
-            "skipping: {} not found (the shared test data is absent)",
-            path.display()
-        );
+    let Some(path) = shared_data::shared_data("gltf/DepthOfFieldExample.glb") else {
         return;
-    }
+    };
     let file = shenlong::format::SceneFile::load(&path).unwrap();
     let glb = App::new(file, settings(None, false, None));
     let (_, scene, _) = call(&glb, "GET", "/api/scene", None).await;

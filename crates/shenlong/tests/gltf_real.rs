@@ -9,20 +9,10 @@ use shenlong::format::{Document, SceneFile};
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+mod support;
+
 fn data_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("SHENLONG_SHARED_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data"));
-    let dir = dir.join("gltf");
-    if dir.is_dir() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "skipping: {} not found (the shared test data is absent)",
-            dir.display()
-        );
-        None
-    }
+    support::shared_data::shared_data("gltf")
 }
 
 fn validate(path: &Path) {

@@ -5,20 +5,14 @@ use shenlong::format::procthor::AssetDatabase;
 use shenlong::format::{json, SceneFile};
 use std::path::{Path, PathBuf};
 
+mod support;
+
+use support::shared_data::shared_data;
+
 fn data_dir() -> Option<PathBuf> {
-    let dir = std::env::var_os("SHENLONG_SHARED_DATA")
-        .map(PathBuf::from)
-        .unwrap_or_else(|| Path::new(env!("CARGO_MANIFEST_DIR")).join("../../../shared/data"))
-        .join("procthor");
-    if dir.join("houses.jsonl").is_file() && dir.join("asset-database.json").is_file() {
-        Some(dir)
-    } else {
-        eprintln!(
-            "skipping: {} not found (the shared test data is absent)",
-            dir.display()
-        );
-        None
-    }
+    let houses = shared_data("procthor/houses.jsonl")?;
+    shared_data("procthor/asset-database.json")?;
+    houses.parent().map(Path::to_path_buf)
 }
 
 #[test]
