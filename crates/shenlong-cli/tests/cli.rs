@@ -1,26 +1,9 @@
 //! The `shenlong` binary, run as a user runs it.
 
-use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
+mod support;
 
-fn shenlong(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_shenlong"))
-        .args(args)
-        .output()
-        .expect("the binary runs")
-}
-
-fn stdout(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stdout).into_owned()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
-
-fn examples_dir() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
+use std::process::Output;
+use support::{examples_dir, object, read_json, shenlong, stderr, stdout};
 
 #[track_caller]
 fn assert_fails_cleanly(o: &Output, message: &str) {
@@ -122,10 +105,8 @@ fn apply_writes_the_edit_and_carries_resting_objects() {
         out.to_str().unwrap(),
     ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    let objects = v["objects"].as_array().unwrap();
-    let find = |name: &str| objects.iter().find(|o| o["name"] == name).unwrap().clone();
+    let v = read_json(&out);
+    let find = |name: &str| object(&v, name);
     assert_eq!(
         find("tool table")["position"],
         serde_json::json!([0.5, 0, 0])
@@ -347,30 +328,16 @@ fn apply_resolves_collisions_unless_told_not_to() {
         "{}",
         stderr(&o)
     );
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    let stool = v["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == "stool")
-        .unwrap()
-        .clone();
+    let v = read_json(&out);
+    let stool = object(&v, "stool");
     let z = stool["position"][2].as_f64().unwrap();
     // Backed out the way it came, clear of the table (z ≤ 0.4) by the 2 cm buffer, on the
     // 5 cm grid: 0.65.
     assert!((z - 0.65).abs() < 1e-9, "just in front of the table: {z}");
     let o = shenlong(args(&["--no-collide"]));
     assert!(o.status.success());
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    let stool = v["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == "stool")
-        .unwrap()
-        .clone();
+    let v = read_json(&out);
+    let stool = object(&v, "stool");
     assert_eq!(stool["position"], serde_json::json!([0, 0, 0]));
     assert_fails_cleanly(
         &shenlong(args(&["--step", "0"])),

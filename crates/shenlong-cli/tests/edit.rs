@@ -3,62 +3,33 @@
 #[path = "../../shenlong/tests/support/mock_llm.rs"]
 mod mock_llm;
 
+mod support;
+
 use mock_llm::{MockLlm, Reply};
 use std::path::Path;
-use std::process::{Command, Output};
-
-fn shenlong(args: &[&str], env: &[(&str, &str)]) -> Output {
-    let mut command = Command::new(env!("CARGO_BIN_EXE_shenlong"));
-    command
-        .args(args)
-        .env_remove("OPENAI_API_KEY")
-        .env_remove("OPENAI_BASE_URL");
-    for (k, v) in env {
-        command.env(k, v);
-    }
-    command.output().expect("the binary runs")
-}
-
-fn examples() -> std::path::PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
+use support::{examples_dir, object, read_json, shenlong, shenlong_with_env, stderr};
 
 #[test]
 fn the_readme_command_works_offline() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("edited.json");
     let report = dir.path().join("report.json");
-    let scene = examples().join("workshop.json");
-    let o = shenlong(
-        &[
-            "edit",
-            scene.to_str().unwrap(),
-            "put the 'orange bottle' on top of the 'tool table'",
-            "-o",
-            out.to_str().unwrap(),
-            "--json",
-            report.to_str().unwrap(),
-            "--no-cache",
-        ],
-        &[],
-    );
+    let scene = examples_dir().join("workshop.json");
+    let o = shenlong(&[
+        "edit",
+        scene.to_str().unwrap(),
+        "put the 'orange bottle' on top of the 'tool table'",
+        "-o",
+        out.to_str().unwrap(),
+        "--json",
+        report.to_str().unwrap(),
+        "--no-cache",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    let bottle = v["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == "orange bottle")
-        .unwrap()
-        .clone();
+    let v = read_json(&out);
+    let bottle = object(&v, "orange bottle");
     assert_eq!(bottle["position"][1], 0.9);
-    let r: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&report).unwrap()).unwrap();
+    let r = read_json(&report);
     assert_eq!(r["query"], "put the X1 on top of the X2");
     assert_eq!(r["bindings"][1]["object"], "tool table");
     assert_eq!(r["model"], "offline");
@@ -81,32 +52,26 @@ fn an_unknown_object_fails_with_a_suggestion_and_writes_nothing() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.json");
     std::fs::write(&out, "keep").unwrap();
-    let o = shenlong(
-        &[
-            "edit",
-            "example:living_room",
-            "move the 'sofaa' left",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        &[],
-    );
+    let o = shenlong(&[
+        "edit",
+        "example:living_room",
+        "move the 'sofaa' left",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert!(!o.status.success());
     assert_eq!(
         stderr(&o).trim(),
         "shenlong: unknown object 'sofaa' — did you mean 'sofa'?"
     );
     assert_eq!(std::fs::read_to_string(&out).unwrap(), "keep");
-    let o = shenlong(
-        &[
-            "edit",
-            "example:living_room",
-            "sing a song about the 'sofa'",
-            "-o",
-            out.to_str().unwrap(),
-        ],
-        &[],
-    );
+    let o = shenlong(&[
+        "edit",
+        "example:living_room",
+        "sing a song about the 'sofa'",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
     assert!(!o.status.success());
     assert!(
         stderr(&o).contains("could not read") && stderr(&o).contains("--llm openai:MODEL"),
@@ -123,7 +88,7 @@ fn an_openai_compatible_server_through_base_url() {
     )]);
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.json");
-    let o = shenlong(
+    let o = shenlong_with_env(
         &[
             "edit",
             "example:living_room",
@@ -143,15 +108,8 @@ fn an_openai_compatible_server_through_base_url() {
     let r = &server.captured()[0];
     assert_eq!(r.header("authorization"), Some("Bearer sk-cli-secret"));
     assert_eq!(r.body["model"], "gpt-test");
-    let v: serde_json::Value =
-        serde_json::from_str(&std::fs::read_to_string(&out).unwrap()).unwrap();
-    let sofa = v["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == "sofa")
-        .unwrap()
-        .clone();
+    let v = read_json(&out);
+    let sofa = object(&v, "sofa");
     assert_eq!(sofa["position"], serde_json::json!([-1, 0, -1.9]));
 }
 
@@ -161,23 +119,20 @@ fn a_model_that_never_answers_right_leaves_the_output_alone() {
     let dir = tempfile::tempdir().unwrap();
     let out = dir.path().join("out.json");
     std::fs::write(&out, "keep").unwrap();
-    let o = shenlong(
-        &[
-            "edit",
-            "example:living_room",
-            "move the 'sofa' up",
-            "--llm",
-            "ollama:mock",
-            "--base-url",
-            &server.url,
-            "--retries",
-            "2",
-            "-o",
-            out.to_str().unwrap(),
-            "--no-cache",
-        ],
-        &[],
-    );
+    let o = shenlong(&[
+        "edit",
+        "example:living_room",
+        "move the 'sofa' up",
+        "--llm",
+        "ollama:mock",
+        "--base-url",
+        &server.url,
+        "--retries",
+        "2",
+        "-o",
+        out.to_str().unwrap(),
+        "--no-cache",
+    ]);
     assert!(!o.status.success());
     let e = stderr(&o);
     assert_eq!(e.lines().count(), 1, "{e}");
@@ -192,51 +147,28 @@ fn a_model_that_never_answers_right_leaves_the_output_alone() {
 
 #[test]
 fn backend_specs_are_checked() {
-    let o = shenlong(
-        &[
-            "edit",
-            "example:office",
-            "move the 'plant' left",
-            "--llm",
-            "openai:gpt-4o",
-        ],
-        &[],
-    );
-    assert!(
-        stderr(&o).contains("needs OPENAI_API_KEY"),
-        "{}",
-        stderr(&o)
-    );
-    let o = shenlong(
-        &[
-            "edit",
-            "example:office",
-            "move the 'plant' left",
-            "--llm",
-            "claude",
-        ],
-        &[],
-    );
-    assert!(
-        stderr(&o).contains("unknown --llm 'claude'"),
-        "{}",
-        stderr(&o)
-    );
-    let o = shenlong(
-        &[
-            "edit",
-            "example:office",
-            "move the 'plant' left",
+    for (option, value, message) in [
+        ("--llm", "openai:gpt-4o", "needs OPENAI_API_KEY"),
+        ("--llm", "claude", "unknown --llm 'claude'"),
+        (
             "--system",
             "omniverse",
-        ],
-        &[],
-    );
-    assert!(
-        stderr(&o).contains("the offline translator answers in CGA only"),
-        "{}",
-        stderr(&o)
-    );
+            "the offline translator answers in CGA only",
+        ),
+    ] {
+        let o = shenlong(&[
+            "edit",
+            "example:office",
+            "move the 'plant' left",
+            option,
+            value,
+        ]);
+        assert!(
+            stderr(&o).contains(message),
+            "{option} {value}: {}",
+            stderr(&o)
+        );
+    }
 }
 
 #[test]
@@ -244,18 +176,15 @@ fn bench_writes_the_report_and_charts() {
     let dir = tempfile::tempdir().unwrap();
     let suite = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../bench/dev.suite.json");
     let out = dir.path().join("out");
-    let o = shenlong(
-        &[
-            "bench",
-            suite.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-            "--limit",
-            "120",
-            "--no-cache",
-        ],
-        &[],
-    );
+    let o = shenlong(&[
+        "bench",
+        suite.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+        "--limit",
+        "120",
+        "--no-cache",
+    ]);
     assert!(o.status.success(), "{}", stderr(&o));
     let table = String::from_utf8_lossy(&o.stdout).into_owned();
     assert!(
@@ -283,15 +212,12 @@ fn bench_writes_the_report_and_charts() {
         r#"{"name": "x", "scenes": ["nowhere.json"], "queries": []}"#,
     )
     .unwrap();
-    let o = shenlong(
-        &[
-            "bench",
-            bad.to_str().unwrap(),
-            "--out",
-            out.to_str().unwrap(),
-        ],
-        &[],
-    );
+    let o = shenlong(&[
+        "bench",
+        bad.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     assert!(!o.status.success());
     assert!(stderr(&o).contains("nowhere.json"), "{}", stderr(&o));
 }

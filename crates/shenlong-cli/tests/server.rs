@@ -12,6 +12,7 @@ use tower::ServiceExt;
 // One rule for finding the shared test data, kept with the library's integration tests.
 #[path = "../../shenlong/tests/support/shared_data.rs"]
 mod shared_data;
+mod support;
 
 /// Offline, no cache; a model server's base URL, collisions on or off, `--save`.
 fn settings(
@@ -65,13 +66,7 @@ async fn call(
 }
 
 fn position(scene: &Value, name: &str) -> Value {
-    scene["scene"]["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == name)
-        .unwrap()["position"]
-        .clone()
+    support::object(&scene["scene"], name)["position"].clone()
 }
 
 #[tokio::test]
