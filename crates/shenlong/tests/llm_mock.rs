@@ -7,7 +7,7 @@ use shenlong::llm::cache::Cache;
 use shenlong::llm::openai::{ClientOptions, OpenAiClient};
 use shenlong::llm::record::Recorder;
 use shenlong::llm::replay::Replay;
-use shenlong::pipeline::{edit, EditOptions, LlmTranslator, System};
+use shenlong::pipeline::{edit, Edit, EditError, EditOptions, LlmTranslator, System};
 use std::time::Duration;
 use support::mock_llm::{MockLlm, Reply};
 
@@ -34,6 +34,20 @@ fn workshop() -> shenlong::scene::Scene {
     shenlong::examples::build("workshop").unwrap()
 }
 
+/// Runs [`INSTRUCTION`] on `scene` through the mock server, in the given prompt system.
+fn edit_workshop(
+    scene: &mut shenlong::scene::Scene,
+    server: &MockLlm,
+    system: System,
+) -> Result<Edit, EditError> {
+    edit(
+        scene,
+        INSTRUCTION,
+        &translator(server, system),
+        &EditOptions::default(),
+    )
+}
+
 const INSTRUCTION: &str = "put the 'orange bottle' on top of the 'tool table'";
 
 fn bottle_on_table(scene: &shenlong::scene::Scene) -> bool {
@@ -45,13 +59,7 @@ fn bottle_on_table(scene: &shenlong::scene::Scene) -> bool {
 fn request_shape_and_a_cga_edit() {
     let server = MockLlm::start(vec![Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}"))]);
     let mut scene = workshop();
-    let result = edit(
-        &mut scene,
-        INSTRUCTION,
-        &translator(&server, System::Cga),
-        &EditOptions::default(),
-    )
-    .unwrap();
+    let result = edit_workshop(&mut scene, &server, System::Cga).unwrap();
     assert!(bottle_on_table(&scene));
     let requests = server.captured();
     assert_eq!(requests.len(), 1);
@@ -82,13 +90,7 @@ fn replies_in_prose_fences_and_python_dicts() {
     ] {
         let server = MockLlm::start(vec![Reply::Content(reply)]);
         let mut scene = workshop();
-        edit(
-            &mut scene,
-            INSTRUCTION,
-            &translator(&server, System::Cga),
-            &EditOptions::default(),
-        )
-        .unwrap();
+        edit_workshop(&mut scene, &server, System::Cga).unwrap();
         assert!(bottle_on_table(&scene));
     }
 }
@@ -100,13 +102,7 @@ fn a_broken_reply_is_retried_with_the_error() {
         Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
     ]);
     let mut scene = workshop();
-    let result = edit(
-        &mut scene,
-        INSTRUCTION,
-        &translator(&server, System::Cga),
-        &EditOptions::default(),
-    )
-    .unwrap();
+    let result = edit_workshop(&mut scene, &server, System::Cga).unwrap();
     assert!(bottle_on_table(&scene));
     assert_eq!(result.report.retries, 1);
     let second = &server.captured()[1].body["messages"];
@@ -134,13 +130,7 @@ fn rate_limits_are_retried_honouring_retry_after() {
         Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
     ]);
     let mut scene = workshop();
-    edit(
-        &mut scene,
-        INSTRUCTION,
-        &translator(&server, System::Cga),
-        &EditOptions::default(),
-    )
-    .unwrap();
+    edit_workshop(&mut scene, &server, System::Cga).unwrap();
     assert!(bottle_on_table(&scene));
     assert_eq!(server.count(), 3);
 }
@@ -179,13 +169,7 @@ fn five_bad_replies_give_up_cleanly() {
     ]);
     let mut scene = workshop();
     let before = scene.clone();
-    let e = edit(
-        &mut scene,
-        INSTRUCTION,
-        &translator(&server, System::Cga),
-        &EditOptions::default(),
-    )
-    .unwrap_err();
+    let e = edit_workshop(&mut scene, &server, System::Cga).unwrap_err();
     assert!(
         e.message
             .starts_with("mock-model gave no usable answer after 6 attempts"),
@@ -207,13 +191,7 @@ fn http_errors_name_the_cause_without_the_key() {
         "{\"error\": {\"message\": \"Incorrect API key provided: sk-te****cret\"}}".into(),
     )]);
     let mut scene = workshop();
-    let e = edit(
-        &mut scene,
-        INSTRUCTION,
-        &translator(&server, System::Cga),
-        &EditOptions::default(),
-    )
-    .unwrap_err();
+    let e = edit_workshop(&mut scene, &server, System::Cga).unwrap_err();
     assert!(e.message.contains("HTTP 401 (check OPENAI_API_KEY)"), "{e}");
     assert!(!e.message.contains("sk-test-secret"));
 }
@@ -322,13 +300,7 @@ fn the_baselines_work_against_the_server_too() {
     ]);
     for system in [System::Euclidean, System::Omniverse] {
         let mut scene = workshop();
-        let result = edit(
-            &mut scene,
-            INSTRUCTION,
-            &translator(&server, system),
-            &EditOptions::default(),
-        )
-        .unwrap();
+        let result = edit_workshop(&mut scene, &server, system).unwrap();
         assert!(bottle_on_table(&scene), "{}", system.name());
         assert_eq!(result.report.system, system.name());
     }
