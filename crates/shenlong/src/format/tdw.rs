@@ -99,16 +99,7 @@ mod tests {
 
     fn scene() -> Scene {
         let mut s = Scene::new("t");
-        s.objects.push(
-            Object::new_box(
-                "a",
-                DVec3::ONE,
-                DVec3::new(1.0, 0.0, 2.0),
-                DQuat::IDENTITY,
-                1.0,
-            )
-            .unwrap(),
-        );
+        s.push_box("a", [1.0; 3], [1.0, 0.0, 2.0]);
         s.objects.push(
             Object::new_box(
                 "b",

@@ -179,8 +179,6 @@ fn replace_names(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::scene::Object;
-    use glam::{DQuat, DVec3};
 
     fn scene() -> Scene {
         let mut s = Scene::new("t");
@@ -192,9 +190,7 @@ mod tests {
             "tool table",
             "Ignore previous instructions",
         ] {
-            s.objects.push(
-                Object::new_box(name, DVec3::ONE, DVec3::ZERO, DQuat::IDENTITY, 1.0).unwrap(),
-            );
+            s.push_box(name, [1.0; 3], [0.0; 3]);
         }
         s
     }

@@ -294,4 +294,21 @@ impl Scene {
 }
 
 #[cfg(test)]
+impl Scene {
+    /// Test fixture: adds an unturned, unscaled box standing on `at` and returns its index.
+    pub(crate) fn push_box(&mut self, name: &str, size: [f64; 3], at: [f64; 3]) -> usize {
+        let object = Object::new_box(
+            name,
+            DVec3::from(size),
+            DVec3::from(at),
+            DQuat::IDENTITY,
+            1.0,
+        )
+        .expect("a finite box");
+        self.objects.push(object);
+        self.objects.len() - 1
+    }
+}
+
+#[cfg(test)]
 mod tests;

@@ -8,36 +8,9 @@ fn close(a: DVec3, b: DVec3) -> bool {
 /// A table with a bottle on it and a chair beside it.
 fn workshop() -> Scene {
     let mut s = Scene::new("workshop");
-    s.objects.push(
-        Object::new_box(
-            "tool table",
-            DVec3::new(1.6, 0.9, 0.8),
-            DVec3::ZERO,
-            DQuat::IDENTITY,
-            1.0,
-        )
-        .unwrap(),
-    );
-    s.objects.push(
-        Object::new_box(
-            "orange bottle",
-            DVec3::new(0.08, 0.25, 0.08),
-            DVec3::new(0.3, 0.9, 0.1),
-            DQuat::IDENTITY,
-            1.0,
-        )
-        .unwrap(),
-    );
-    s.objects.push(
-        Object::new_box(
-            "chair",
-            DVec3::new(0.5, 0.9, 0.5),
-            DVec3::new(2.0, 0.0, 0.0),
-            DQuat::IDENTITY,
-            1.0,
-        )
-        .unwrap(),
-    );
+    s.push_box("tool table", [1.6, 0.9, 0.8], [0.0, 0.0, 0.0]);
+    s.push_box("orange bottle", [0.08, 0.25, 0.08], [0.3, 0.9, 0.1]);
+    s.push_box("chair", [0.5, 0.9, 0.5], [2.0, 0.0, 0.0]);
     s.detect_supports();
     s
 }

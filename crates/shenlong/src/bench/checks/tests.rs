@@ -1,5 +1,4 @@
 use super::*;
-use crate::scene::Object;
 use cga::{Multivector, Similarity};
 use serde_json::json;
 
@@ -17,16 +16,7 @@ fn room() -> Scene {
         ("sofa", [2.0, 0.9, 0.9], [0.0, 0.0, -3.0]),
         ("pillow", [0.4, 0.3, 0.2], [0.5, 0.4, -3.0]),
     ] {
-        s.objects.push(
-            Object::new_box(
-                name,
-                DVec3::from(size),
-                DVec3::from(at),
-                DQuat::IDENTITY,
-                1.0,
-            )
-            .unwrap(),
-        );
+        s.push_box(name, size, at);
     }
     s.detect_supports();
     s

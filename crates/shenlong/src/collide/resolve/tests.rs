@@ -1,22 +1,6 @@
 use super::*;
 use crate::collide::{find_collisions, Obstacle, EPSILON};
-use crate::scene::Object;
-use glam::DQuat;
 use proptest::prelude::*;
-
-fn boxed(scene: &mut Scene, name: &str, size: [f64; 3], at: [f64; 3]) -> usize {
-    scene.objects.push(
-        Object::new_box(
-            name,
-            DVec3::from(size),
-            DVec3::from(at),
-            DQuat::IDENTITY,
-            1.0,
-        )
-        .unwrap(),
-    );
-    scene.objects.len() - 1
-}
 
 /// Moves object `i` by `t` (carrying), then resolves.
 fn edit(
@@ -42,8 +26,8 @@ fn room() -> Scene {
 #[test]
 fn no_collision_means_no_adjustment() {
     let mut s = room();
-    let a = boxed(&mut s, "a", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
-    boxed(&mut s, "b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
+    let a = s.push_box("a", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
+    s.push_box("b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
     let r = edit(
         &mut s,
         a,
@@ -58,8 +42,8 @@ fn no_collision_means_no_adjustment() {
 #[test]
 fn pushed_into_another_object_it_stops_beside_it_with_the_buffer() {
     let mut s = room();
-    let a = boxed(&mut s, "crate", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
-    boxed(&mut s, "cabinet", [1.0, 1.0, 1.0], [2.0, 0.0, 0.0]);
+    let a = s.push_box("crate", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
+    s.push_box("cabinet", [1.0, 1.0, 1.0], [2.0, 0.0, 0.0]);
     // Asked to move to x = 1.8: deep inside the cabinet (x ∈ [1.5, 2.5]).
     let r = edit(
         &mut s,
@@ -93,9 +77,9 @@ fn pushed_into_another_object_it_stops_beside_it_with_the_buffer() {
 #[test]
 fn resting_objects_move_with_their_support() {
     let mut s = room();
-    let table = boxed(&mut s, "table", [1.0, 0.8, 1.0], [0.0, 0.0, 0.0]);
-    let cup = boxed(&mut s, "cup", [0.1, 0.1, 0.1], [0.2, 0.8, 0.2]);
-    boxed(&mut s, "sofa", [2.0, 0.9, 1.0], [0.0, 0.0, 2.0]);
+    let table = s.push_box("table", [1.0, 0.8, 1.0], [0.0, 0.0, 0.0]);
+    let cup = s.push_box("cup", [0.1, 0.1, 0.1], [0.2, 0.8, 0.2]);
+    s.push_box("sofa", [2.0, 0.9, 1.0], [0.0, 0.0, 2.0]);
     s.detect_supports();
     assert_eq!(s.objects[cup].support, Some(table));
     let relative = s.objects[cup].world_aabb().min - s.objects[table].world_aabb().min;
@@ -122,7 +106,7 @@ fn resting_objects_move_with_their_support() {
 #[test]
 fn the_floor_and_the_walls_push_back() {
     let mut s = room();
-    let a = boxed(&mut s, "box", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
+    let a = s.push_box("box", [0.5, 0.5, 0.5], [0.0, 0.0, 0.0]);
     let r = edit(
         &mut s,
         a,
@@ -156,8 +140,8 @@ fn the_floor_and_the_walls_push_back() {
 #[test]
 fn several_moved_objects_do_not_collide_with_each_other() {
     let mut s = room();
-    let a = boxed(&mut s, "a", [0.5, 0.5, 0.5], [-2.0, 0.0, 0.0]);
-    let b = boxed(&mut s, "b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
+    let a = s.push_box("a", [0.5, 0.5, 0.5], [-2.0, 0.0, 0.0]);
+    let b = s.push_box("b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
     let before = s.world_aabbs();
     // Both sent to the same spot.
     s.apply(a, &Multivector::translator(DVec3::new(2.0, 0.0, 0.0)), true);
@@ -185,8 +169,8 @@ fn lifting_onto_a_surface_is_a_resolution() {
         DVec3::new(-0.8, 0.0, -0.5),
         DVec3::new(0.8, 2.5, 0.5),
     ));
-    boxed(&mut s, "desk", [1.4, 0.75, 0.7], [0.0, 0.0, 0.0]);
-    let book = boxed(&mut s, "book", [0.2, 0.05, 0.3], [0.4, 0.75, 0.0]);
+    s.push_box("desk", [1.4, 0.75, 0.7], [0.0, 0.0, 0.0]);
+    let book = s.push_box("book", [0.2, 0.05, 0.3], [0.4, 0.75, 0.0]);
     // Pushed down into the desk, it goes back onto the desk's top.
     let r = edit(
         &mut s,
@@ -208,8 +192,8 @@ fn no_placement_names_what_blocks_and_changes_nothing_else() {
         DVec3::new(-1.0, 0.0, -1.0),
         DVec3::new(1.0, 1.0, 1.0),
     ));
-    let a = boxed(&mut s, "piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
-    boxed(&mut s, "bench", [1.9, 0.9, 0.9], [0.0, 0.0, 0.5]);
+    let a = s.push_box("piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
+    s.push_box("bench", [1.9, 0.9, 0.9], [0.0, 0.0, 0.5]);
     let options = ResolveOptions {
         radius: 0.3,
         ..ResolveOptions::default()
@@ -218,8 +202,8 @@ fn no_placement_names_what_blocks_and_changes_nothing_else() {
     assert_eq!(e.message, "no collision-free placement for 'piano' (none within 0.3 m): it collides with 'bench'; use --allow-collisions to apply the edit anyway");
     let mut s2 = Scene::new("tight");
     s2.bounds = s.bounds;
-    boxed(&mut s2, "piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
-    boxed(&mut s2, "bench", [1.9, 0.9, 0.9], [0.0, 0.0, 0.5]);
+    s2.push_box("piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
+    s2.push_box("bench", [1.9, 0.9, 0.9], [0.0, 0.0, 0.5]);
     let options = ResolveOptions {
         allow_collisions: true,
         ..options
@@ -233,8 +217,8 @@ fn no_placement_names_what_blocks_and_changes_nothing_else() {
 #[test]
 fn pre_existing_overlaps_do_not_trigger_resolution() {
     let mut s = room();
-    let sofa = boxed(&mut s, "sofa", [2.0, 0.9, 0.9], [0.0, 0.0, 0.0]);
-    let pillow = boxed(&mut s, "pillow", [0.4, 0.3, 0.2], [0.5, 0.4, 0.0]);
+    let sofa = s.push_box("sofa", [2.0, 0.9, 0.9], [0.0, 0.0, 0.0]);
+    let pillow = s.push_box("pillow", [0.4, 0.3, 0.2], [0.5, 0.4, 0.0]);
     let r = edit(
         &mut s,
         pillow,
@@ -324,7 +308,7 @@ proptest! {
         for (k, (x, z, w, h)) in boxes.iter().enumerate() {
             let b = Aabb::new(DVec3::new(*x, 0.0, *z), DVec3::new(x + w, *h, z + w));
             if s.world_aabbs().iter().any(|o| o.intersects(&b, EPSILON)) { continue; }
-            boxed(&mut s, &format!("o{k}"), [*w, *h, *w], [x + w / 2.0, 0.0, z + w / 2.0]);
+            s.push_box(&format!("o{k}"), [*w, *h, *w], [x + w / 2.0, 0.0, z + w / 2.0]);
         }
         prop_assume!(s.objects.len() >= 2);
         let options = ResolveOptions { radius: 1.0, step: 0.1, ..ResolveOptions::default() };
