@@ -59,13 +59,8 @@ impl Multivector {
     /// multivector that is not a versor the image is not a point, and neither route means
     /// anything.
     pub fn transform_point(&self, x: DVec3) -> Result<DVec3, CgaError> {
-        let c = self.coefficients();
-        const ODD: [usize; 16] = [1, 2, 3, 4, 5, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 31];
-        // One OR over the bit patterns instead of 16 branches; `<< 1` drops the sign so
-        // that −0.0 counts as zero.
-        let odd_bits = ODD.iter().fold(0u64, |bits, &i| bits | c[i].to_bits());
-        if odd_bits << 1 == 0 {
-            let vahlen = crate::generated::vahlen_even(c);
+        if self.is_even() {
+            let vahlen = crate::generated::vahlen_even(self.coefficients());
             let (position, weight) = crate::generated::moebius_point(&vahlen, &x.to_array());
             point_from_weighted(DVec3::from_array(position), weight)
         } else {

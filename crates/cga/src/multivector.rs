@@ -148,6 +148,17 @@ impl Multivector {
         *self - self.even()
     }
 
+    /// Whether every odd-grade coefficient is exactly zero (either sign), as for any
+    /// product of translators, rotors and dilators. One OR over the bit patterns, cheap
+    /// enough for the per-point fast paths; `<< 1` drops the sign bit.
+    pub(crate) fn is_even(&self) -> bool {
+        const ODD: [usize; 16] = [1, 2, 3, 4, 5, 16, 17, 18, 19, 20, 21, 22, 23, 24, 25, 31];
+        let bits = ODD
+            .iter()
+            .fold(0u64, |bits, &i| bits | self.coefficients[i].to_bits());
+        bits << 1 == 0
+    }
+
     /// The grades with a coefficient whose magnitude exceeds `tolerance`, as a bit set
     /// (bit k set = grade k present).
     pub fn grades_present(&self, tolerance: f64) -> u8 {

@@ -34,7 +34,7 @@ impl PointMap {
         if !m.is_finite() {
             return Err(CgaError::NotFinite(m.to_string()));
         }
-        if m.odd().max_abs() != 0.0 {
+        if !m.is_even() {
             return Err(CgaError::NotSimilarity(format!(
                 "{m} has odd grades; a point map needs an even versor"
             )));

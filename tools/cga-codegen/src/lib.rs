@@ -351,7 +351,6 @@ fn write_vahlen_and_moebius(out: &mut String) {
          #[inline(always)]\n#[rustfmt::skip]\n\
          pub(crate) fn vahlen_even(m: &[f64; 32]) -> [f64; 16] {\n    [\n",
     );
-    let mut defined = std::collections::HashSet::new();
     let mut slot = 0;
     for (name, row, col, masks) in entries {
         for &q in masks.iter() {
@@ -373,7 +372,6 @@ fn write_vahlen_and_moebius(out: &mut String) {
                 sum(terms.into_iter()),
                 cl3_name(q)
             );
-            defined.insert(format!("{name}{q}"));
             slot += 1;
         }
     }
@@ -393,19 +391,14 @@ fn write_vahlen_and_moebius(out: &mut String) {
             slot += 1;
         }
     }
-    // Products of a named Cl(3,0) element with the vector x (or x with it), by result mask.
-    let times_x = |name: &str, masks: &[usize], result: usize, x_first: bool| {
+    // The terms of `name · x` with blade mask `result`, `name` having blades `masks`.
+    let times_x = |name: &str, masks: &[usize], result: usize| {
         let mut terms = Vec::new();
         for &p in masks {
-            if !defined.contains(&format!("{name}{p}")) {
-                continue;
-            }
-            for &q in &vector_cl3 {
-                let (l, r) = if x_first { (q, p) } else { (p, q) };
-                if l ^ r == result {
-                    let x = [1, 2, 4].iter().position(|&v| v == q).unwrap();
+            for (x, &q) in vector_cl3.iter().enumerate() {
+                if p ^ q == result {
                     terms.push((
-                        blade::reorder_sign(l as u8, r as u8),
+                        blade::reorder_sign(p as u8, q as u8),
                         format!("{name}{p} * x[{x}]"),
                     ));
                 }
@@ -419,11 +412,8 @@ fn write_vahlen_and_moebius(out: &mut String) {
         ("w", "a", "b", &even_cl3, &odd_cl3),
     ] {
         for &r in masks.iter() {
-            let mut terms = Vec::new();
-            if defined.contains(&format!("{c}{r}")) {
-                terms.push((1.0, format!("{c}{r}")));
-            }
-            terms.extend(times_x(d, inner, r, false));
+            let mut terms = vec![(1.0, format!("{c}{r}"))];
+            terms.extend(times_x(d, inner, r));
             let _ = writeln!(out, "    let {u}{r} = {};", sum(terms.into_iter()));
         }
     }
