@@ -37,7 +37,9 @@ function start(scene) {
 }
 
 const { server, base } = await start('example:workshop');
-const GLTF = new URL('../../../../../shared/data/gltf/DepthOfFieldExample.glb', import.meta.url).pathname;
+// The shared test data: ../shared/data beside the repository, or $SHENLONG_SHARED_DATA (as the Rust tests).
+const SHARED_DATA = process.env.SHENLONG_SHARED_DATA || new URL('../../../../../shared/data', import.meta.url).pathname;
+const GLTF = `${SHARED_DATA}/gltf/DepthOfFieldExample.glb`;
 
 let browser;
 let failed = 0;
