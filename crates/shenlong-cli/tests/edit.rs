@@ -30,7 +30,7 @@ fn the_readme_command_works_offline() {
     let bottle = object(&v, "orange bottle");
     assert_eq!(bottle["position"][1], 0.9);
     let r = read_json(&report);
-    assert_eq!(r["query"], "put the X1 on top of the X2");
+    assert_eq!(r["query"], "put X1 on top of X2");
     assert_eq!(r["bindings"][1]["object"], "tool table");
     assert_eq!(r["model"], "offline");
     assert_eq!(r["system"], "cga");

@@ -52,6 +52,7 @@ async fn call(
     let request = Request::builder()
         .method(method)
         .uri(path)
+        .header("host", "127.0.0.1:8080")
         .header("content-type", "application/json")
         .body(body.map_or_else(Body::empty, |b| Body::from(b.to_string())))
         .unwrap();
@@ -82,7 +83,7 @@ async fn edit_undo_redo_history() {
     )
     .await;
     assert_eq!(status, StatusCode::OK, "{report}");
-    assert_eq!(report["query"], "put the X1 on top of the X2");
+    assert_eq!(report["query"], "put X1 on top of X2");
     let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
     assert_eq!(position(&scene, "orange bottle"), json!([0, 0.9, 0]));
     assert_eq!(scene["can_undo"], true);
@@ -141,7 +142,7 @@ async fn bad_input_gets_4xx_with_the_reason() {
         (
             r#"{"instruction": "move the 'stool' left", "llm": "claude"}"#,
             StatusCode::BAD_REQUEST,
-            "unknown --llm 'claude'",
+            "'claude' is not one of them",
         ),
     ];
     for (body, expected, message) in cases {
@@ -248,7 +249,14 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
         document: shenlong::format::Document::None,
         path: None,
     };
-    let app = App::new(file, settings(Some(slow.url.clone()), false, None));
+    // The server is started with the model; a request may choose it (or "offline").
+    let app = App::new(
+        file,
+        ServeSettings {
+            llm: "ollama:mock".into(),
+            ..settings(Some(slow.url.clone()), false, None)
+        },
+    );
     let runtime = tokio::runtime::Runtime::new().unwrap();
     let listener = runtime
         .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
@@ -332,4 +340,106 @@ async fn a_glb_scene_serves_its_model_and_edits_reach_it() {
         call(&app(None), "GET", "/api/model", None).await.0,
         StatusCode::NOT_FOUND
     );
+}
+
+async fn raw(app: &Arc<App>, request: Request<Body>) -> (StatusCode, Value) {
+    let response = router(Arc::clone(app)).oneshot(request).await.unwrap();
+    let status = response.status();
+    let bytes = to_bytes(response.into_body(), 1 << 20).await.unwrap();
+    (
+        status,
+        serde_json::from_slice(&bytes).unwrap_or(Value::Null),
+    )
+}
+
+#[tokio::test]
+async fn a_request_cannot_choose_a_backend_that_reads_files() {
+    let dir = tempfile::tempdir().unwrap();
+    let secret = dir.path().join("secret.jsonl");
+    std::fs::write(&secret, "{\"reply\": \"TOP-SECRET\"}\n").unwrap();
+    let app = app(None);
+    for llm in [
+        format!("replay:{}", secret.display()),
+        "replay:/etc/shadow".to_string(),
+        "replay:/dev/zero".to_string(),
+        "openai:gpt-4o".to_string(),
+    ] {
+        let body = json!({"instruction": "move the 'hammer' left", "llm": llm}).to_string();
+        let (status, value, _) = call(&app, "POST", "/api/edit", Some(&body)).await;
+        assert_eq!(status, StatusCode::BAD_REQUEST, "{llm}: {value}");
+        let message = value["error"].as_str().unwrap();
+        assert!(
+            message.contains("offers the translators 'offline'"),
+            "{message}"
+        );
+        assert!(
+            !message.contains("TOP-SECRET") && !message.contains("exist"),
+            "{message}"
+        );
+    }
+    // The fixed set still works.
+    let body = json!({"instruction": "move the 'hammer' left", "llm": "offline"}).to_string();
+    let (status, _, _) = call(&app, "POST", "/api/edit", Some(&body)).await;
+    assert_eq!(status, StatusCode::OK);
+}
+
+#[tokio::test]
+async fn cross_site_requests_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let saved = dir.path().join("saved.json");
+    let app = app(Some(saved.clone()));
+    let body = json!({"instruction": "move the 'hammer' left"}).to_string();
+    let (status, _, _) = call(&app, "POST", "/api/edit", Some(&body)).await;
+    assert_eq!(status, StatusCode::OK);
+    let before = std::fs::read(&saved).unwrap();
+    let request = |content_type: &str, host: &str, origin: Option<&str>| {
+        let mut r = Request::builder()
+            .method("POST")
+            .uri("/api/undo")
+            .header("host", host)
+            .header("content-type", content_type);
+        if let Some(o) = origin {
+            r = r.header("origin", o);
+        }
+        r.body(Body::from("{}")).unwrap()
+    };
+    // A text/plain POST needs no CORS preflight: refused.
+    let (status, v) = raw(&app, request("text/plain", "127.0.0.1:8080", None)).await;
+    assert_eq!(status, StatusCode::UNSUPPORTED_MEDIA_TYPE, "{v}");
+    // Another site's page.
+    let (status, v) = raw(
+        &app,
+        request(
+            "application/json",
+            "127.0.0.1:8080",
+            Some("http://evil.example"),
+        ),
+    )
+    .await;
+    assert_eq!(status, StatusCode::FORBIDDEN, "{v}");
+    // DNS rebinding: the attacker's name in Host.
+    let (status, v) = raw(&app, request("application/json", "evil.example:8080", None)).await;
+    assert_eq!(status, StatusCode::FORBIDDEN, "{v}");
+    let get = Request::builder()
+        .uri("/api/scene")
+        .header("host", "rebind.evil.example")
+        .body(Body::empty())
+        .unwrap();
+    assert_eq!(raw(&app, get).await.0, StatusCode::FORBIDDEN);
+    // Nothing was undone, nothing rewritten.
+    assert_eq!(std::fs::read(&saved).unwrap(), before);
+    // The page's own requests pass: same-origin, JSON.
+    for (host, origin) in [
+        ("localhost:8080", Some("http://localhost:8080")),
+        ("[::1]:9000", None),
+    ] {
+        let (status, v) = raw(
+            &app,
+            request("application/json; charset=utf-8", host, origin),
+        )
+        .await;
+        assert_eq!(status, StatusCode::OK, "{host}: {v}");
+        let (status, _, _) = call(&app, "POST", "/api/redo", Some("{}")).await;
+        assert_eq!(status, StatusCode::OK);
+    }
 }

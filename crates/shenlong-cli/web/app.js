@@ -221,7 +221,10 @@ function showReport(r) {
   const collisions = r.collisions_resolved.length
     ? r.collisions_resolved.map((c) => `<dd>${escape(c.object)} moved [${fmt(c.displacement)}] to clear ${escape(c.collided_with.join(', '))}</dd>`).join('')
     : '<dd>none</dd>';
+  const grounding = (r.grounding || []).map((g) => `<dd class="grounding">“${escape(g.phrase)}” → <b>${escape(g.variables.join(', '))}</b> ${escape(g.objects.join(', '))}<br>
+    <span class="why">${g.reasons.map((why) => `${escape(why.kind)}: ${escape(why.detail)}`).join(' · ')}</span></dd>`).join('') || '<dd>none</dd>';
   $('report').innerHTML = `<dl>
+    <dt>Grounding</dt>${grounding}
     <dt>Query</dt><dd><code>${escape(r.query)}</code></dd>
     <dt>Objects</dt>${objectsHtml}
     <dt>Collisions resolved</dt>${collisions}

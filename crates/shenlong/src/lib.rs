@@ -16,6 +16,7 @@ pub mod examples;
 pub mod expr;
 pub mod format;
 pub mod geometry;
+pub mod ground;
 pub mod io;
 pub mod llm;
 pub mod offline;

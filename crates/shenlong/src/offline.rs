@@ -1199,7 +1199,7 @@ mod tests {
 
     #[test]
     fn relations_use_only_the_objects_boxes() {
-        let on = r("put the X1 on top of the X2");
+        let on = r("put X1 on top of X2");
         assert!(on.contains("X2.max | e2"), "{on}");
         // Apart from variable and blade names, no number at all: nothing from a scene.
         let mut rest = on.clone();

@@ -8,7 +8,6 @@ mod support;
 use shenlong::bench::report;
 use shenlong::bench::run::{instances, run, RunOptions};
 use shenlong::bench::Suite;
-use shenlong::format::SceneFile;
 use shenlong::llm::openai::{ClientOptions, OpenAiClient};
 use shenlong::pipeline::{LlmTranslator, System, Translator};
 use std::path::Path;
@@ -19,11 +18,7 @@ use support::mock_llm::{MockLlm, Reply};
 fn dev_suite() -> (Suite, Vec<shenlong::scene::Scene>) {
     let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../bench/dev.suite.json");
     let suite = Suite::load(&path).unwrap();
-    let scenes = suite
-        .scenes
-        .iter()
-        .map(|p| SceneFile::load(p).unwrap().scene)
-        .collect();
+    let scenes = suite.load_scenes().unwrap();
     (suite, scenes)
 }
 

@@ -72,7 +72,7 @@ fn request_shape_and_a_cga_edit() {
     assert_eq!(messages[0]["role"], "system");
     assert_eq!(
         messages[1],
-        serde_json::json!({"role": "user", "content": "Instruction: put the X1 on top of the X2"})
+        serde_json::json!({"role": "user", "content": "Instruction: put X1 on top of X2"})
     );
     assert_eq!(result.report.tokens.prompt, 321);
     assert_eq!(result.report.model, "mock-model");
@@ -315,4 +315,58 @@ fn the_baselines_work_against_the_server_too() {
         omniverse_user.contains("X1: dimensions [0.08, 0.25, 0.08], centre [-2, 0.125, 1.2]"),
         "{omniverse_user}"
     );
+}
+
+#[test]
+fn a_model_server_that_echoes_the_key_cannot_make_it_appear() {
+    // A 401 body with the bearer token verbatim, as some proxies answer.
+    let server = MockLlm::start(vec![Reply::Raw(
+        401,
+        vec![],
+        "{\"error\": {\"message\": \"invalid credentials: Authorization: Bearer sk-test-secret (sk-test-secret)\"}}".into(),
+    )]);
+    let mut scene = workshop();
+    let e = edit_workshop(&mut scene, &server, System::Cga).unwrap_err();
+    assert!(e.message.contains("HTTP 401"), "{e}");
+    assert!(!e.message.contains("sk-test-secret"), "{e}");
+    assert!(e.message.contains("[redacted]"), "{e}");
+}
+
+#[test]
+fn object_names_never_reach_the_model_in_any_system() {
+    // Unquoted names, a synonym, a typo, a group and a pick: only variables are sent.
+    let instructions = [
+        "put the orange bottle on the tool table",
+        "move the trash barrel to the left",
+        "put the hammer and the screwdriver on the workbench",
+        "move the drill a metre to the right",
+    ];
+    let names: Vec<String> = workshop().objects.iter().map(|o| o.name.clone()).collect();
+    for system in System::ALL {
+        for instruction in instructions {
+            let server = MockLlm::start(vec![Reply::Content("{\"X1\": \"T(0.1 * e1)\"}".into())]);
+            let mut scene = workshop();
+            let t = translator(&server, system);
+            let _ = edit(&mut scene, instruction, &t, &EditOptions::default());
+            let requests = server.requests.lock().unwrap().clone();
+            assert!(!requests.is_empty(), "{instruction}: nothing was sent");
+            for r in &requests {
+                let sent = r.body["messages"].to_string().to_lowercase();
+                // The prompts themselves use a few common words (a 'table' in an example);
+                // the user's message must carry none of the scene's names.
+                let user = r.body["messages"][1]["content"]
+                    .as_str()
+                    .unwrap_or_default()
+                    .to_lowercase();
+                for name in &names {
+                    assert!(
+                        !user.contains(&name.to_lowercase()),
+                        "{}: '{name}' reached the model in {user:?}",
+                        system.name()
+                    );
+                }
+                assert!(!sent.contains("orange bottle"), "{sent}");
+            }
+        }
+    }
 }

@@ -4,7 +4,6 @@ use anyhow::{bail, Context, Result};
 use shenlong::bench::report;
 use shenlong::bench::run::{run, RunOptions};
 use shenlong::bench::Suite;
-use shenlong::format::SceneFile;
 use shenlong::pipeline::backends::translator;
 use shenlong::pipeline::{System, Translator};
 use std::path::PathBuf;
@@ -68,14 +67,7 @@ pub fn run_bench(args: Args) -> Result<()> {
         bail!("--jobs must be at least 1");
     }
     // Everything is checked before anything runs: scenes, backends.
-    let mut scenes = Vec::new();
-    for path in &suite.scenes {
-        scenes.push(
-            SceneFile::load(path)
-                .with_context(|| format!("suite scene {}", path.display()))?
-                .scene,
-        );
-    }
+    let scenes = suite.load_scenes().map_err(anyhow::Error::msg)?;
     let mut translators: Vec<(System, Box<dyn Translator>)> = Vec::new();
     for &system in &systems {
         let settings = args.translator.settings(system)?;

@@ -74,6 +74,8 @@ pub struct App {
     inner: Mutex<Inner>,
     edits: tokio::sync::Mutex<()>,
     settings: ServeSettings,
+    /// The address the server listens on, besides loopback, that a `Host` may name.
+    bound: Mutex<Option<std::net::IpAddr>>,
 }
 
 impl App {
@@ -89,6 +91,7 @@ impl App {
             }),
             edits: tokio::sync::Mutex::new(()),
             settings,
+            bound: Mutex::new(None),
         })
     }
 
@@ -127,6 +130,85 @@ fn json_body<T>(body: Result<Json<T>, JsonRejection>) -> Result<T, ApiError> {
     })
 }
 
+/// Whether a `Host` or `Origin` host names this machine's loopback (any port), or the
+/// address the server was bound to.
+fn local_host(host: &str, bound: Option<std::net::IpAddr>) -> bool {
+    let host = host.trim();
+    // Strip the port: `[::1]:8080`, `127.0.0.1:8080`, `localhost:8080`.
+    let name = if let Some(rest) = host.strip_prefix('[') {
+        rest.split(']').next().unwrap_or_default()
+    } else {
+        host.rsplit_once(':')
+            .filter(|(_, port)| port.chars().all(|c| c.is_ascii_digit()))
+            .map_or(host, |(h, _)| h)
+    };
+    if name.eq_ignore_ascii_case("localhost") {
+        return true;
+    }
+    match name.parse::<std::net::IpAddr>() {
+        Ok(ip) => ip.is_loopback() || Some(ip) == bound,
+        Err(_) => false,
+    }
+}
+
+/// Refuses what a web page on another site could send: a `Host` that is not this machine
+/// (DNS rebinding), an `Origin` of another site, and a state-changing request that is not
+/// `application/json` (a form or a `text/plain` fetch needs no preflight).
+async fn guard(
+    State(app): State<Arc<App>>,
+    request: axum::extract::Request,
+    next: axum::middleware::Next,
+) -> Response {
+    let headers = request.headers();
+    let forbidden = |message: String| ApiError(StatusCode::FORBIDDEN, message).into_response();
+    let bound = *app.bound.lock().unwrap_or_else(|e| e.into_inner());
+    let host = headers
+        .get(header::HOST)
+        .and_then(|h| h.to_str().ok())
+        .or_else(|| request.uri().authority().map(|a| a.as_str()));
+    match host {
+        Some(h) if local_host(h, bound) => {}
+        Some(h) => {
+            return forbidden(format!(
+                "the Host header '{}' is not this server's address",
+                h.chars().take(100).collect::<String>()
+            ))
+        }
+        None => return forbidden("the request has no Host header".into()),
+    }
+    if let Some(origin) = headers.get(header::ORIGIN) {
+        let origin = origin.to_str().unwrap_or("");
+        let host = origin
+            .strip_prefix("http://")
+            .or_else(|| origin.strip_prefix("https://"))
+            .unwrap_or("");
+        if !local_host(host.trim_end_matches('/'), bound) {
+            return forbidden(format!(
+                "requests from the origin '{}' are not allowed",
+                origin.chars().take(100).collect::<String>()
+            ));
+        }
+    }
+    if request.method() != axum::http::Method::GET && request.method() != axum::http::Method::HEAD {
+        let json = headers
+            .get(header::CONTENT_TYPE)
+            .and_then(|c| c.to_str().ok())
+            .is_some_and(|c| {
+                c.split(';')
+                    .next()
+                    .is_some_and(|t| t.trim().eq_ignore_ascii_case("application/json"))
+            });
+        if !json {
+            return ApiError(
+                StatusCode::UNSUPPORTED_MEDIA_TYPE,
+                "state-changing requests must be sent as Content-Type: application/json".into(),
+            )
+            .into_response();
+        }
+    }
+    next.run(request).await
+}
+
 /// The router: the API and the page.
 pub fn router(app: Arc<App>) -> Router {
     Router::new()
@@ -140,6 +222,10 @@ pub fn router(app: Arc<App>) -> Router {
         .route("/api/model", get(model))
         .fallback(get(asset))
         .layer(DefaultBodyLimit::max(MAX_BODY))
+        .layer(axum::middleware::from_fn_with_state(
+            Arc::clone(&app),
+            guard,
+        ))
         .with_state(app)
 }
 
@@ -239,6 +325,20 @@ async fn scene(State(app): State<Arc<App>>) -> Json<Value> {
     Json(scene_json(&app.lock()))
 }
 
+/// The translator a request may choose: `offline`, or the one the server was started
+/// with. A request never names a backend of its own: `replay:FILE` or a model server
+/// would let a web page read files or spend the user's key.
+fn allowed_llm(configured: &str, requested: Option<&str>) -> Result<String, ApiError> {
+    match requested.map(str::trim) {
+        None | Some("") => Ok(configured.to_string()),
+        Some(r) if r == "offline" || r == configured => Ok(r.to_string()),
+        Some(other) => Err(bad(format!(
+            "this server offers the translators 'offline' and '{configured}' (its --llm); '{}' is not one of them",
+            other.chars().take(80).collect::<String>()
+        ))),
+    }
+}
+
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct EditRequest {
@@ -305,10 +405,7 @@ async fn edit_scene(
         })?,
         None => app.settings.system,
     };
-    let llm = request
-        .llm
-        .clone()
-        .unwrap_or_else(|| app.settings.llm.clone());
+    let llm = allowed_llm(&app.settings.llm, request.llm.as_deref())?;
     let settings = TranslatorSettings {
         system,
         ..app.settings.translator.clone()
@@ -476,6 +573,7 @@ async fn export(
 
 /// Serves until Ctrl-C.
 pub async fn serve(app: Arc<App>, listener: tokio::net::TcpListener) -> std::io::Result<()> {
+    *app.bound.lock().unwrap_or_else(|e| e.into_inner()) = Some(listener.local_addr()?.ip());
     axum::serve(listener, router(app))
         .with_graceful_shutdown(async {
             let _ = tokio::signal::ctrl_c().await;

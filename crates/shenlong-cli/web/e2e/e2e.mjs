@@ -69,9 +69,9 @@ try {
   await page.waitForFunction(() => document.querySelector('#status').textContent.startsWith('Done'), null, { timeout: 20000 });
   await page.waitForTimeout(900); // the animation
   const report = await page.evaluate(() => window.shenlong.lastReport);
-  check(report.query === 'put the X1 on top of the X2', `the report's query: ${report.query}`);
+  check(report.query === 'put X1 on top of X2', `the report's query: ${report.query}`);
   check(JSON.stringify(await bottle()) === JSON.stringify([0, 0.9, 0]), 'the API shows the bottle on the table');
-  check((await page.locator('#report').textContent()).includes('put the X1 on top of the X2'), 'the report panel shows the query');
+  check((await page.locator('#report').textContent()).includes('put X1 on top of X2'), 'the report panel shows the query');
   check((await page.locator('#history li').count()) === 1, 'one history entry');
   await page.screenshot({ path: SCREENSHOT });
 

@@ -114,6 +114,9 @@ pub enum Check {
     NoCollision,
     /// Every object is inside the room (or no farther out than before).
     InsideBounds,
+    /// Extension: the edit must be refused — fail, change nothing — with a message that
+    /// names each of `mentions` (the candidates of an ambiguous phrase, say).
+    Refused { mentions: Vec<ObjectRef> },
     /// Extension: `object` now stands where `other` stood and the other way round (bottom
     /// centres, within `tol`).
     Swapped {
@@ -145,6 +148,7 @@ const CHECKS: &[(&str, &[&str])] = &[
     ("no_collision", &[]),
     ("inside_bounds", &[]),
     ("swapped", &["object", "other", "tol"]),
+    ("refused", &["mentions"]),
 ];
 
 fn axis_of(text: &str) -> Option<(usize, f64)> {
@@ -324,6 +328,22 @@ impl Check {
                 },
             },
             "no_collision" => Check::NoCollision,
+            "refused" => Check::Refused {
+                mentions: match f.map.get("mentions") {
+                    None => Vec::new(),
+                    Some(Value::Array(items)) => items
+                        .iter()
+                        .map(|v| {
+                            v.as_str()
+                                .map(str::to_string)
+                                .ok_or("check 'refused': mentions must be names")
+                        })
+                        .collect::<Result<_, _>>()?,
+                    Some(_) => {
+                        return Err("check 'refused': mentions must be a list of names".into())
+                    }
+                },
+            },
             "swapped" => Check::Swapped {
                 object: f.object("object")?,
                 other: f.object("other")?,
@@ -362,9 +382,35 @@ impl Check {
             Check::Unchanged {
                 objects: Some(list),
             } => list.iter().collect(),
+            Check::Refused { mentions } => mentions.iter().collect(),
             Check::Unchanged { objects: None } | Check::NoCollision | Check::InsideBounds => vec![],
         };
         refs.into_iter().cloned().collect()
+    }
+
+    /// Evaluates a `refused` check on a failed edit's message: each mention (a placeholder
+    /// or a name) must be named in it. Other checks pass on a refusal only if they hold on
+    /// the unchanged scene.
+    pub fn evaluate_refusal(
+        &self,
+        message: &str,
+        scene: &Scene,
+        bound: &HashMap<String, usize>,
+    ) -> Result<(), String> {
+        match self {
+            Check::Refused { mentions } => {
+                for m in mentions {
+                    let name = bound
+                        .get(m)
+                        .map_or(m.as_str(), |&i| scene.objects[i].name.as_str());
+                    if !message.to_lowercase().contains(&name.to_lowercase()) {
+                        return Err(format!("the refusal does not name '{name}': {message}"));
+                    }
+                }
+                Ok(())
+            }
+            _ => self.evaluate(scene, scene, bound),
+        }
     }
 
     /// Evaluates the check; `Err` says why it failed. `bound` maps placeholders to
@@ -743,6 +789,9 @@ impl Check {
                         ))
                     }
                 }
+            }
+            Check::Refused { .. } => {
+                Err("the edit succeeded, but it should have been refused".to_string())
             }
             Check::Swapped { object, other, tol } => {
                 let (i, j) = (find(object)?, find(other)?);

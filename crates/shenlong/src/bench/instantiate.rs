@@ -92,10 +92,15 @@ pub fn instantiate(
     scene: &Scene,
 ) -> Vec<Instance> {
     let query: &Query = &suite.queries[query_index];
+    if query
+        .scenes
+        .as_ref()
+        .is_some_and(|names| !names.iter().any(|n| n == &scene.name))
+    {
+        return Vec::new();
+    }
     let mut rng = SplitMix64::new(
-        suite.seed
-            ^ hash(&query.id)
-            ^ hash(&suite.scenes[scene_index].to_string_lossy()).rotate_left(17),
+        suite.seed ^ hash(&query.id) ^ hash(&suite.scenes[scene_index].label()).rotate_left(17),
     );
     let candidates: Vec<Vec<usize>> = query
         .pick
@@ -107,9 +112,15 @@ pub fn instantiate(
         })
         .collect();
     let mut out = Vec::new();
+    // A query without placeholders names its objects itself: once per scene.
+    let variations = if query.pick.is_empty() {
+        1
+    } else {
+        suite.variations
+    };
     let mut seen: Vec<Vec<usize>> = Vec::new();
     let mut attempts = 0;
-    while out.len() < suite.variations && attempts < suite.variations * 50 {
+    while out.len() < variations && attempts < suite.variations * 50 {
         attempts += 1;
         let mut chosen: Vec<usize> = Vec::new();
         let mut ok = true;

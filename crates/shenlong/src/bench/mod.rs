@@ -9,4 +9,4 @@ pub mod run;
 pub mod stats;
 pub mod suite;
 
-pub use suite::{Suite, SuiteError};
+pub use suite::{SceneSource, Suite, SuiteError};

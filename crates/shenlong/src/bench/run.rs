@@ -101,7 +101,20 @@ pub fn run_one(
         completion_tokens: 0,
         cache_hit: false,
     };
+    let expects_refusal = query
+        .expect
+        .iter()
+        .any(|c| matches!(c, super::checks::Check::Refused { .. }));
     match result {
+        Err(e) if expects_refusal => {
+            for check in &query.expect {
+                if let Err(reason) = check.evaluate_refusal(&e.message, scene, &bound) {
+                    outcome.failures.push(reason);
+                }
+            }
+            outcome.success = outcome.failures.is_empty();
+            outcome.error = Some(e.message);
+        }
         Err(e) => outcome.error = Some(e.message),
         Ok(edit) => {
             let r = &edit.report;

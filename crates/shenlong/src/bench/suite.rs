@@ -22,7 +22,7 @@ pub struct Suite {
     /// The suite's name.
     pub name: String,
     /// Scene files, resolved against the suite's folder.
-    pub scenes: Vec<PathBuf>,
+    pub scenes: Vec<SceneSource>,
     /// Instantiations per query and scene.
     pub variations: usize,
     /// Seed of the instantiation.
@@ -44,6 +44,87 @@ pub struct Query {
     pub pick: Vec<(String, Pick)>,
     /// The checks.
     pub expect: Vec<Check>,
+    /// Extension: the names of the scenes it runs on (all when `None`).
+    pub scenes: Option<Vec<String>>,
+}
+
+/// Where a suite's scene comes from.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum SceneSource {
+    /// A scene file (scene JSON, glTF).
+    File(PathBuf),
+    /// Extension: house `house` of a ProcTHOR/Holodeck file, with the asset database for
+    /// sizes: `{"procthor": "houses.jsonl", "house": 3, "assets": "asset-database.json"}`.
+    House {
+        /// The houses file.
+        houses: PathBuf,
+        /// Which house, from 0.
+        house: usize,
+        /// The asset database.
+        assets: PathBuf,
+    },
+}
+
+impl SceneSource {
+    /// A stable label: the path, with `#house` for a house. Seeds the picks.
+    pub fn label(&self) -> String {
+        match self {
+            SceneSource::File(p) => p.to_string_lossy().into_owned(),
+            SceneSource::House { houses, house, .. } => {
+                format!("{}#{house}", houses.to_string_lossy())
+            }
+        }
+    }
+
+    /// The files it reads, for callers that check they exist.
+    pub fn files(&self) -> Vec<&Path> {
+        match self {
+            SceneSource::File(p) => vec![p.as_path()],
+            SceneSource::House { houses, assets, .. } => vec![houses.as_path(), assets.as_path()],
+        }
+    }
+}
+
+impl Suite {
+    /// Loads every scene of the suite, in order; an asset database is read once.
+    ///
+    /// # Errors
+    /// The first scene that cannot be read, naming it.
+    pub fn load_scenes(&self) -> Result<Vec<crate::scene::Scene>, SuiteError> {
+        use crate::format::{procthor::AssetDatabase, SceneFile};
+        let mut databases: Vec<(PathBuf, AssetDatabase)> = Vec::new();
+        let mut out = Vec::new();
+        for source in &self.scenes {
+            let scene = match source {
+                SceneSource::File(path) => {
+                    SceneFile::load(path)
+                        .map_err(|e| err(format!("suite scene {}: {e}", path.display())))?
+                        .scene
+                }
+                SceneSource::House {
+                    houses,
+                    house,
+                    assets,
+                } => {
+                    if !databases.iter().any(|(p, _)| p == assets) {
+                        let db = AssetDatabase::load(assets)
+                            .map_err(|e| err(format!("suite assets {}: {e}", assets.display())))?;
+                        databases.push((assets.clone(), db));
+                    }
+                    let db = &databases
+                        .iter()
+                        .find(|(p, _)| p == assets)
+                        .expect("loaded")
+                        .1;
+                    SceneFile::load_house(houses, *house, db)
+                        .map_err(|e| err(format!("suite house {}#{house}: {e}", houses.display())))?
+                        .scene
+                }
+            };
+            out.push(scene);
+        }
+        Ok(out)
+    }
 }
 
 /// Constraints on the object a placeholder picks.
@@ -77,7 +158,7 @@ pub struct Pick {
 #[serde(deny_unknown_fields)]
 struct RawSuite {
     name: String,
-    scenes: Vec<String>,
+    scenes: Vec<RawScene>,
     #[serde(default = "one")]
     variations: usize,
     #[serde(default)]
@@ -90,11 +171,28 @@ fn one() -> usize {
 }
 
 #[derive(Deserialize)]
+#[serde(untagged)]
+enum RawScene {
+    File(String),
+    House(RawHouse),
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields)]
+struct RawHouse {
+    procthor: String,
+    house: usize,
+    assets: String,
+}
+
+#[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct RawQuery {
     id: String,
     category: String,
     text: String,
+    #[serde(default)]
+    scenes: Option<Vec<String>>,
     #[serde(default)]
     pick: BTreeMap<String, Value>,
     expect: Vec<Value>,
@@ -192,17 +290,32 @@ impl Suite {
             if expect.is_empty() {
                 return Err(err(format!("{at}: expect has no check")));
             }
+            if q.scenes.as_ref().is_some_and(Vec::is_empty) {
+                return Err(err(format!("{at}: scenes lists no scene")));
+            }
             queries.push(Query {
                 id: q.id,
                 category: q.category,
                 text: q.text,
                 pick,
                 expect,
+                scenes: q.scenes,
             });
         }
         Ok(Self {
             name: raw.name,
-            scenes: raw.scenes.iter().map(|s| dir.join(s)).collect(),
+            scenes: raw
+                .scenes
+                .iter()
+                .map(|s| match s {
+                    RawScene::File(p) => SceneSource::File(dir.join(p)),
+                    RawScene::House(h) => SceneSource::House {
+                        houses: dir.join(&h.procthor),
+                        house: h.house,
+                        assets: dir.join(&h.assets),
+                    },
+                })
+                .collect(),
             variations: raw.variations,
             seed: raw.seed,
             queries,

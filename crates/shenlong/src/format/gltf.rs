@@ -11,7 +11,7 @@
 //! byte for byte. An unchanged scene is written back as the original bytes.
 
 use super::FormatError;
-use crate::scene::{Object, Pivot, Scene, Shape};
+use crate::scene::{Labels, Object, Pivot, Scene, Shape};
 use base64::Engine;
 use cga::Similarity;
 use glam::{DMat4, DQuat, DVec3};
@@ -205,6 +205,8 @@ pub fn read_bytes(
             Pivot::BottomCenter,
         )
         .expect("the identity pose is valid");
+        let mut object = object;
+        object.labels = labels_of(&node, &mesh);
         scene.objects.push(object);
         object_nodes.push(index);
     }
@@ -249,6 +251,32 @@ pub fn read_bytes(
             animated,
         },
     ))
+}
+
+/// What a mesh node is called besides its name: its mesh's name as the category (glTF
+/// files often name nodes `Chair.001` and meshes `Chair`), and its materials' names as
+/// attributes (`red_plastic`, `Oak`). Grounding splits camelCase and snake_case and drops
+/// numeric suffixes.
+fn labels_of(node: &::gltf::Node<'_>, mesh: &::gltf::Mesh<'_>) -> Labels {
+    let category = mesh
+        .name()
+        .map(str::trim)
+        .filter(|m| !m.is_empty() && node.name().is_none_or(|n| n.trim() != *m))
+        .map(str::to_string);
+    let mut attributes: Vec<String> = Vec::new();
+    for primitive in mesh.primitives() {
+        if let Some(name) = primitive.material().name() {
+            let name = name.trim();
+            if !name.is_empty() && !attributes.iter().any(|a| a == name) {
+                attributes.push(name.to_string());
+            }
+        }
+    }
+    Labels {
+        category,
+        aliases: Vec::new(),
+        attributes,
+    }
 }
 
 /// A node's local transform from its JSON, in f64: `matrix` (column-major) or

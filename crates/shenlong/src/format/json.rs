@@ -3,7 +3,7 @@
 
 use super::FormatError;
 use crate::geometry::Aabb;
-use crate::scene::{Object, Scene};
+use crate::scene::{Labels, Object, Scene};
 use cga::Similarity;
 use glam::{DQuat, DVec3};
 use serde_json::{Map, Value};
@@ -190,8 +190,54 @@ fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {
             s
         }
     };
-    Object::new_box(name, size, position, rotation, scale)
-        .map_err(|e| FormatError::new(format!("objects[{i}]: {e}")))
+    let mut object = Object::new_box(name, size, position, rotation, scale)
+        .map_err(|e| FormatError::new(format!("objects[{i}]: {e}")))?;
+    object.labels = labels(o, i)?;
+    Ok(object)
+}
+
+/// The optional words for an object (a documented extension of SPEC §2): `category` (a
+/// string; else a ProcTHOR `objectType` in plain words), `aliases` (strings), and the
+/// attributes `color` / `colour` / `material` (a string or a list of strings).
+fn labels(o: &Map<String, Value>, i: usize) -> Result<Labels, FormatError> {
+    let strings = |field: &str, list_ok: bool| -> Result<Vec<String>, FormatError> {
+        match o.get(field) {
+            None | Some(Value::Null) => Ok(Vec::new()),
+            Some(Value::String(s)) => Ok(vec![s.trim().to_string()]),
+            Some(Value::Array(items)) if list_ok => items
+                .iter()
+                .enumerate()
+                .map(|(k, v)| {
+                    v.as_str().map(|s| s.trim().to_string()).ok_or_else(|| {
+                        FormatError::new(format!("objects[{i}].{field}[{k}] must be a string"))
+                    })
+                })
+                .collect(),
+            Some(_) if list_ok => Err(FormatError::new(format!(
+                "objects[{i}].{field} must be a string or a list of strings"
+            ))),
+            Some(_) => Err(FormatError::new(format!(
+                "objects[{i}].{field} must be a string"
+            ))),
+        }
+    };
+    let mut category = strings("category", false)?.pop();
+    if category.is_none() {
+        if let Some(Value::String(t)) = o.get("objectType") {
+            category = Some(super::procthor::human_name(t));
+        }
+    }
+    let mut attributes = strings("color", true)?;
+    attributes.extend(strings("colour", true)?);
+    attributes.extend(strings("material", true)?);
+    Ok(Labels {
+        category: category.filter(|c| !c.is_empty()),
+        aliases: strings("aliases", true)?
+            .into_iter()
+            .filter(|a| !a.is_empty())
+            .collect(),
+        attributes: attributes.into_iter().filter(|a| !a.is_empty()).collect(),
+    })
 }
 
 /// A pose as written in the file: position, rotation, scale.

@@ -75,3 +75,63 @@ pub trait Backend: Send + Sync {
     /// The model's reply to `messages`.
     fn complete(&self, messages: &[Message]) -> Result<Completion, LlmError>;
 }
+
+/// Removes secrets from text that came from a model server before it is shown anywhere
+/// (stderr, reports, HTTP answers): the API key itself, `sk-…` tokens and `Bearer …`
+/// credentials. A server that echoes the request's `Authorization` header in an error
+/// body cannot make Shenlong print it.
+#[must_use]
+pub fn redact(text: &str, key: Option<&str>) -> String {
+    const HIDDEN: &str = "[redacted]";
+    let mut out = match key.map(str::trim).filter(|k| k.len() >= 4) {
+        Some(k) => text.replace(k, HIDDEN),
+        None => text.to_string(),
+    };
+    let token_char =
+        |c: char| c.is_ascii_alphanumeric() || matches!(c, '-' | '_' | '.' | '~' | '+' | '/' | '=');
+    for marker in ["Bearer ", "bearer ", "sk-"] {
+        let mut result = String::with_capacity(out.len());
+        let mut rest = out.as_str();
+        while let Some(at) = rest.find(marker) {
+            let after = &rest[at + marker.len()..];
+            let len = after.find(|c: char| !token_char(c)).unwrap_or(after.len());
+            let boundary = at == 0 || !rest[..at].ends_with(|c: char| c.is_ascii_alphanumeric());
+            if len >= 8 && boundary && !after.starts_with(HIDDEN) {
+                result.push_str(&rest[..at]);
+                result.push_str(if marker == "sk-" { HIDDEN } else { marker });
+                if marker != "sk-" {
+                    result.push_str(HIDDEN);
+                }
+                rest = &after[len..];
+            } else {
+                result.push_str(&rest[..at + marker.len()]);
+                rest = after;
+            }
+        }
+        result.push_str(rest);
+        out = result;
+    }
+    out
+}
+
+#[cfg(test)]
+mod redact_tests {
+    use super::redact;
+
+    #[test]
+    fn keys_and_tokens_are_hidden() {
+        let body = r#"{"error": {"message": "bad key sk-abcdef1234567890 in header Authorization: Bearer sk-abcdef1234567890"}}"#;
+        let r = redact(body, Some("sk-abcdef1234567890"));
+        assert!(!r.contains("abcdef"), "{r}");
+        assert!(r.contains("[redacted]"));
+        let r = redact("Authorization: Bearer zz.top-secret_token", None);
+        assert_eq!(r, "Authorization: Bearer [redacted]");
+        let r = redact("my key is hunter2hunter2!", Some("hunter2hunter2"));
+        assert_eq!(r, "my key is [redacted]!");
+        // Words that merely contain the markers are left alone.
+        assert_eq!(
+            redact("a task-list of desk-lamps", None),
+            "a task-list of desk-lamps"
+        );
+    }
+}

@@ -203,6 +203,7 @@ impl Backend for OpenAiClient {
         for attempt in 1..=self.options.max_attempts.max(1) {
             match self.attempt(&body) {
                 Ok((text, usage)) => {
+                    let text = super::redact(&text, self.options.api_key.as_deref());
                     let usage = usage.unwrap_or_else(|| tokens::estimate(messages, &text));
                     return Ok(Completion {
                         text,
@@ -221,8 +222,9 @@ impl Backend for OpenAiClient {
                         } else {
                             String::new()
                         };
+                        let key = self.options.api_key.as_deref();
                         return Err(LlmError {
-                            message: format!("{}{tries}", error.message),
+                            message: super::redact(&format!("{}{tries}", error.message), key),
                         });
                     }
                     std::thread::sleep(retry_after.unwrap_or(wait));
@@ -231,8 +233,12 @@ impl Backend for OpenAiClient {
                 }
             }
         }
-        Err(last.unwrap_or(LlmError {
-            message: "no attempt was made".into(),
-        }))
+        Err(last
+            .map(|e| LlmError {
+                message: super::redact(&e.message, self.options.api_key.as_deref()),
+            })
+            .unwrap_or(LlmError {
+                message: "no attempt was made".into(),
+            }))
     }
 }

@@ -2,9 +2,10 @@
 //! with a report of everything that happened. The scene is changed only when every stage
 //! succeeded.
 
-use super::template::{template, Templated};
+use super::template::{template_with, Templated};
 use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
+use crate::ground::{Grounder, Reason};
 use crate::scene::{AppliedMotion, Scene};
 use serde::Serialize;
 use std::time::Instant;
@@ -36,6 +37,8 @@ pub struct EditReport {
     pub query: String,
     /// Which object each variable stands for.
     pub bindings: Vec<Binding>,
+    /// Each phrase of the instruction that names objects: the objects and why.
+    pub grounding: Vec<GroundedPhrase>,
     /// The prompt system.
     pub system: String,
     /// The prompt's version.
@@ -69,6 +72,21 @@ pub struct Binding {
     pub variable: String,
     /// The object's name.
     pub object: String,
+}
+
+/// A phrase of the instruction and the objects it was read as.
+#[derive(Clone, Debug, Serialize)]
+pub struct GroundedPhrase {
+    /// The phrase as written: `the picture above the sofa`.
+    pub phrase: String,
+    /// Its byte range in the instruction.
+    pub span: [usize; 2],
+    /// The objects' names.
+    pub objects: Vec<String>,
+    /// Their variables.
+    pub variables: Vec<String>,
+    /// How the phrase was read.
+    pub reasons: Vec<Reason>,
 }
 
 /// One object's change.
@@ -110,7 +128,7 @@ pub struct CollisionReport {
 /// Stage timings in milliseconds.
 #[derive(Clone, Debug, Default, Serialize)]
 pub struct Timings {
-    /// Templating.
+    /// Grounding and templating.
     pub template: f64,
     /// Translation (the model's response time, retries included).
     pub translate: f64,
@@ -178,8 +196,23 @@ fn ms(since: Instant) -> f64 {
 }
 
 /// Runs an instruction on the scene. On any error the scene is left as it was.
+///
+/// Builds the scene's name index for grounding; to run many instructions on one scene,
+/// build a [`Grounder`] once and use [`edit_with`].
 pub fn edit(
     scene: &mut Scene,
+    instruction: &str,
+    translator: &dyn Translator,
+    options: &EditOptions,
+) -> Result<Edit, EditError> {
+    let grounder = Grounder::new(scene);
+    edit_with(scene, &grounder, instruction, translator, options)
+}
+
+/// [`edit`] with a grounder built for this scene (its names; poses may have changed).
+pub fn edit_with(
+    scene: &mut Scene,
+    grounder: &Grounder,
     instruction: &str,
     translator: &dyn Translator,
     options: &EditOptions,
@@ -187,10 +220,11 @@ pub fn edit(
     let started = Instant::now();
     let mut timings = Timings::default();
     let t0 = Instant::now();
-    let templated: Templated = template(instruction, scene).map_err(|e| EditError {
-        message: e.message,
-        kind: EditErrorKind::Instruction,
-    })?;
+    let templated: Templated =
+        template_with(grounder, instruction, scene).map_err(|e| EditError {
+            message: e.to_string(),
+            kind: EditErrorKind::Instruction,
+        })?;
     timings.template = ms(t0);
 
     let t0 = Instant::now();
@@ -302,6 +336,25 @@ pub fn edit(
         })
         .collect();
     let system = translator.system();
+    let variable_of = |object: usize| {
+        let k = templated
+            .objects
+            .iter()
+            .position(|&o| o == object)
+            .expect("every grounded object is bound");
+        Templated::variable(k)
+    };
+    let grounding = templated
+        .phrases
+        .iter()
+        .map(|p| GroundedPhrase {
+            phrase: p.text.clone(),
+            span: [p.span.start, p.span.end],
+            objects: p.objects.iter().map(|&o| names[o].clone()).collect(),
+            variables: p.objects.iter().map(|&o| variable_of(o)).collect(),
+            reasons: p.reasons.clone(),
+        })
+        .collect();
     let report = EditReport {
         instruction: templated.instruction.clone(),
         query: templated.query.clone(),
@@ -314,6 +367,7 @@ pub fn edit(
                 object: names[i].clone(),
             })
             .collect(),
+        grounding,
         system: system.name().into(),
         prompt_version: system.version().into(),
         model: translator.name(),

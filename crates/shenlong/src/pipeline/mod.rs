@@ -9,7 +9,7 @@ pub mod prompts;
 pub mod template;
 pub mod translate;
 
-pub use edit::{edit, Edit, EditError, EditErrorKind, EditOptions, EditReport};
+pub use edit::{edit, edit_with, Edit, EditError, EditErrorKind, EditOptions, EditReport};
 
 use crate::expr::{Bindings, ObjectBox};
 use crate::scene::Scene;
@@ -40,5 +40,5 @@ pub fn bindings(scene: &Scene, objects: &[usize]) -> Bindings {
     bindings
 }
 pub use prompts::System;
-pub use template::{template, TemplateError, Templated};
+pub use template::{template, template_with, Templated};
 pub use translate::{LlmTranslator, TranslateError, Translation, Translator};

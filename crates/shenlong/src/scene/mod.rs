@@ -66,7 +66,23 @@ pub struct Object {
     pub support: Option<usize>,
     /// Whether `support` came from the source file's hierarchy rather than geometry.
     pub support_from_file: bool,
+    /// Words a person may use for the object besides its name (grounding reads them).
+    pub labels: Labels,
     pose: Multivector,
+}
+
+/// What an object is called besides its name, from its source file: the words grounding
+/// (`crate::ground`) matches an instruction against.
+#[derive(Clone, Debug, Default, PartialEq, Eq)]
+pub struct Labels {
+    /// What kind of thing it is, in plain words: scene JSON's `category`, a ProcTHOR
+    /// `objectType` (`FloorLamp` → `floor lamp`), a glTF mesh name.
+    pub category: Option<String>,
+    /// Other names for this very object (scene JSON's `aliases`).
+    pub aliases: Vec<String>,
+    /// Attribute words: colours and materials (`color`, `material` in scene JSON; glTF
+    /// material names).
+    pub attributes: Vec<String>,
 }
 
 impl Object {
@@ -86,6 +102,7 @@ impl Object {
             pivot,
             support: None,
             support_from_file: false,
+            labels: Labels::default(),
             pose: pose.to_versor()?,
         })
     }

@@ -34,10 +34,7 @@ fn the_cga_user_message_is_only_the_templated_query() {
     let scene = workshop();
     let t = template("put the 'orange bottle' on top of the 'tool table'", &scene).unwrap();
     let messages = System::Cga.messages(&t, &scene);
-    assert_eq!(
-        messages[1].content,
-        "Instruction: put the X1 on top of the X2"
-    );
+    assert_eq!(messages[1].content, "Instruction: put X1 on top of X2");
     assert!(!messages.iter().any(|m| m.content.contains("orange")));
 }
 

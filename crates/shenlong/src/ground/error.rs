@@ -1,0 +1,111 @@
+//! Why an instruction's words cannot be grounded: each a one-line message that names the
+//! phrase, the objects it could mean, and how to say which.
+
+/// A grounding refusal. Nothing is edited.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum GroundError {
+    /// The instruction is empty.
+    #[error("the instruction is empty")]
+    Empty,
+    /// The instruction is too long.
+    #[error("the instruction is longer than {max} characters")]
+    TooLong {
+        /// The limit.
+        max: usize,
+    },
+    /// A quoted name that is no object's.
+    #[error("unknown object '{name}'{}", did_you_mean(suggestions))]
+    UnknownName {
+        /// The name as quoted.
+        name: String,
+        /// The nearest names.
+        suggestions: Vec<String>,
+    },
+    /// A noun phrase that fits no object.
+    #[error(
+        "\"{phrase}\" matches no object in the scene{}",
+        did_you_mean(suggestions)
+    )]
+    Unknown {
+        /// The phrase.
+        phrase: String,
+        /// The nearest names.
+        suggestions: Vec<String>,
+    },
+    /// A phrase that fits several objects with nothing to pick one.
+    #[error("\"{phrase}\" could mean {}: name one ('{example}') or say which ({})", list(candidates), hints.iter().map(|h| format!("'{h}'")).collect::<Vec<_>>().join(", "))]
+    Ambiguous {
+        /// The phrase.
+        phrase: String,
+        /// Every object it fits.
+        candidates: Vec<String>,
+        /// One of them, to show how to name one.
+        example: String,
+        /// Ways to say which, in this scene's words.
+        hints: Vec<String>,
+    },
+    /// A phrase that asks for a number of objects other than the number that fit.
+    #[error("\"{phrase}\" names {wanted}, but {} fit: {}; name them or say which", found.len(), list(found))]
+    Count {
+        /// The phrase.
+        phrase: String,
+        /// How many it asks for.
+        wanted: usize,
+        /// The objects that fit.
+        found: Vec<String>,
+    },
+    /// A modifier that picks nothing, or cannot pick clearly.
+    #[error("\"{phrase}\": {reason}")]
+    NoPick {
+        /// The phrase.
+        phrase: String,
+        /// What went wrong, with the candidates.
+        reason: String,
+    },
+    /// The instruction names no object of the scene.
+    #[error(
+        "the instruction names no object of the scene; name one (the scene has {})",
+        list(names)
+    )]
+    NoObject {
+        /// Some of the scene's names.
+        names: Vec<String>,
+    },
+}
+
+fn did_you_mean(suggestions: &[String]) -> String {
+    match suggestions {
+        [] => String::new(),
+        [one] => format!(" — did you mean '{one}'?"),
+        [a, b, ..] => format!(" — did you mean '{a}' or '{b}'?"),
+    }
+}
+
+/// `a, b and c`; long lists shortened: `a, b, c, …, z (12 objects)`.
+pub(crate) fn list(names: &[String]) -> String {
+    match names.len() {
+        0 => "nothing".into(),
+        1 => names[0].clone(),
+        n if n <= 8 => format!("{} and {}", names[..n - 1].join(", "), names[n - 1]),
+        n => format!(
+            "{}, … and {} ({n} objects)",
+            names[..6].join(", "),
+            names[n - 1]
+        ),
+    }
+}
+
+impl GroundError {
+    /// The objects a refusal names (candidates, or suggestions), for programs.
+    #[must_use]
+    pub fn mentions(&self) -> &[String] {
+        match self {
+            GroundError::UnknownName { suggestions, .. }
+            | GroundError::Unknown { suggestions, .. } => suggestions,
+            GroundError::Ambiguous { candidates, .. } => candidates,
+            GroundError::Count { found, .. } => found,
+            GroundError::NoObject { names } => names,
+            _ => &[],
+        }
+    }
+}

@@ -1,0 +1,1281 @@
+//! Grounding: the objects an instruction means, in the words people use — or a refusal
+//! that names the candidates. It runs before templating, for every translator.
+//!
+//! `lift the picture above the sofa by 10 cm` in a room with three paintings grounds
+//! "the picture above the sofa" to 'painting 2' ("picture" is a synonym of painting;
+//! "above the sofa" picked it), and templating makes it `lift X1 by 10 cm`.
+//!
+//! What a phrase may be (docs/grounding.md has the whole list):
+//! - a name: quoted (always wins), or unquoted with any case, hyphens, spaces or plural
+//!   (`Dog-Bed`, `dogbed`, `the hammers`), numbered (`chair 7`, `chair #7`, `chair number
+//!   7`);
+//! - a category or synonym, from the object's own fields (`category`, `aliases`, ProcTHOR
+//!   types, glTF mesh names) and from the WordNet-distilled [`Lexicon`];
+//! - a word one edit off a name word (five letters or more, when that leads to one object);
+//! - with modifiers that pick among several: place (`the left armchair`, `the one on the
+//!   right`), size (`the bigger box`), order (`the third chair from the left`), relation to
+//!   another object (`the lamp nearest the sofa`, `the book on the side table`), a word of
+//!   the name or an attribute (`the red chair`, `the teacher's desk`), `the other one`;
+//! - a group: `both armchairs`, `the two stools`, `all the chairs`, `every lamp`.
+//!
+//! A modifier after the noun (`the book on the side table`) is read as picking only when
+//! the noun alone fits several objects; otherwise it is left for the translator as where
+//! to put the object (`put the book on the side table`). Nothing is guessed: a phrase
+//! that still fits several objects, or none, is refused ([`GroundError`]).
+
+mod error;
+mod index;
+pub mod lexicon;
+mod select;
+pub(crate) mod words;
+
+pub use error::GroundError;
+pub use lexicon::Lexicon;
+
+use crate::scene::Scene;
+use index::{NameIndex, Tier};
+use select::{Direction, Relation, SizeError};
+use serde::Serialize;
+use std::ops::Range;
+use words::{Count, Kind, Token};
+
+/// Longest instruction accepted, in characters.
+pub const MAX_INSTRUCTION_CHARS: usize = 2_000;
+
+/// Shortest written word a typo is corrected in.
+pub const TYPO_MIN_LETTERS: usize = 5;
+
+/// How a phrase was read.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+#[serde(rename_all = "snake_case")]
+pub enum ReasonKind {
+    /// A quoted name.
+    Quoted,
+    /// The object's name as written.
+    Exact,
+    /// The name with other case, spacing, hyphens, number or plural.
+    Variant,
+    /// One of the object's aliases.
+    Alias,
+    /// Its category, or a last word of its name.
+    Category,
+    /// A synonym from the lexicon.
+    Synonym,
+    /// A broader category from the lexicon.
+    Hypernym,
+    /// A word read as the name word one edit away.
+    Typo,
+    /// A modifier picked among several.
+    Modifier,
+    /// A group: several objects.
+    Group,
+}
+
+/// One reason, with the words it concerns.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Reason {
+    /// What kind.
+    pub kind: ReasonKind,
+    /// In words: `"couch" is a synonym of 'sofa'`.
+    pub detail: String,
+}
+
+/// One referring phrase and the objects it means.
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
+pub struct Phrase {
+    /// Where it is in the instruction, in bytes.
+    pub span: Range<usize>,
+    /// The phrase as written.
+    pub text: String,
+    /// The objects (indices into the scene), in the order they are bound.
+    pub objects: Vec<usize>,
+    /// Why.
+    pub reasons: Vec<Reason>,
+}
+
+/// An instruction's phrases and objects.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Grounding {
+    /// The instruction as given (trimmed).
+    pub instruction: String,
+    /// The referring phrases, in order.
+    pub phrases: Vec<Phrase>,
+}
+
+/// Grounds instructions on one scene. Build it once per scene (the name index and the
+/// lexicon lookups are done here); each [`Grounder::ground`] reads only the instruction
+/// and the boxes of the candidates it compares.
+#[derive(Clone, Debug)]
+pub struct Grounder {
+    index: NameIndex,
+    lexicon: &'static Lexicon,
+    objects: usize,
+}
+
+/// A head noun found at a position.
+#[derive(Clone, Debug)]
+struct Head {
+    /// Token range of the head.
+    range: Range<usize>,
+    /// Candidates, by match.
+    objects: Vec<usize>,
+    tier: Tier,
+    plural: bool,
+    /// The head as a person wrote it, normalised (`chair`).
+    text: String,
+    reason: Reason,
+    typo: Option<Reason>,
+}
+
+/// A noun phrase read.
+#[derive(Clone, Debug)]
+struct Np {
+    range: Range<usize>,
+    objects: Vec<usize>,
+    /// The head's candidates before any pick: what "the other one" picks from.
+    pool: Vec<usize>,
+    reasons: Vec<Reason>,
+    head: String,
+}
+
+/// A modifier after the noun.
+#[derive(Clone, Debug)]
+enum Post {
+    Side(words::Axis, f64, String),
+    Middle,
+    From(Direction, String),
+    Relation(Relation, usize, String),
+}
+
+/// The instruction's words with corrections, shared by the readers.
+struct Reader<'a> {
+    g: &'a Grounder,
+    scene: &'a Scene,
+    text: &'a str,
+    tokens: Vec<Token>,
+    /// Per token: its normalised word(s) for name matching (`None`: cannot be in a
+    /// name; `Some("")`: skipped inside a name, like `#` or `number`).
+    words: Vec<Option<String>>,
+    /// Per token: the typo it was corrected from.
+    typos: Vec<Option<String>>,
+    consumed: Vec<bool>,
+}
+
+impl Grounder {
+    /// Indexes a scene's names with the built-in lexicon.
+    #[must_use]
+    pub fn new(scene: &Scene) -> Self {
+        Self::with_lexicon(scene, Lexicon::builtin())
+    }
+
+    /// Indexes a scene's names with a given lexicon.
+    #[must_use]
+    pub fn with_lexicon(scene: &Scene, lexicon: &'static Lexicon) -> Self {
+        Self {
+            index: NameIndex::new(scene, lexicon),
+            lexicon,
+            objects: scene.objects.len(),
+        }
+    }
+
+    /// Finds the phrases of `instruction` that name objects of `scene` (the scene this
+    /// grounder was built for, in its current state).
+    ///
+    /// # Errors
+    /// A phrase that fits no object, several with nothing to pick one, or a different
+    /// number than it asks for; an instruction that names no object.
+    pub fn ground(&self, instruction: &str, scene: &Scene) -> Result<Grounding, GroundError> {
+        let text = instruction.trim();
+        if text.is_empty() {
+            return Err(GroundError::Empty);
+        }
+        if text.chars().count() > MAX_INSTRUCTION_CHARS {
+            return Err(GroundError::TooLong {
+                max: MAX_INSTRUCTION_CHARS,
+            });
+        }
+        assert_eq!(
+            scene.objects.len(),
+            self.objects,
+            "a Grounder serves the scene it was built for"
+        );
+        let mut reader = Reader::new(self, scene, text);
+        let phrases = reader.read()?;
+        if phrases.is_empty() {
+            return Err(GroundError::NoObject {
+                names: scene
+                    .objects
+                    .iter()
+                    .take(12)
+                    .map(|o| o.name.clone())
+                    .collect(),
+            });
+        }
+        Ok(Grounding {
+            instruction: text.to_string(),
+            phrases,
+        })
+    }
+}
+
+fn grammar_word(w: &str) -> bool {
+    words::is_verb(w)
+        || words::is_preposition(w)
+        || words::is_determiner(w)
+        || words::side_word(w).is_some()
+        || words::size_word(w).is_some()
+        || words::ordinal(w).is_some()
+        || words::count_word(w).is_some()
+        || words::is_place_noun(w)
+        || words::is_relative_filler(w)
+        || matches!(
+            w,
+            "can"
+                | "could"
+                | "would"
+                | "will"
+                | "should"
+                | "may"
+                | "might"
+                | "must"
+                | "it"
+                | "them"
+                | "they"
+                | "you"
+                | "me"
+                | "us"
+                | "i"
+                | "we"
+                | "please"
+                | "and"
+                | "or"
+                | "then"
+                | "so"
+                | "light"
+                | "down"
+                | "away"
+                | "off"
+                | "out"
+                | "again"
+                | "clockwise"
+                | "counterclockwise"
+                | "anticlockwise"
+                | "counter"
+                | "too"
+                | "also"
+                | "very"
+                | "much"
+                | "more"
+                | "less"
+                | "bit"
+                | "little"
+                | "slightly"
+                | "degrees"
+                | "cm"
+                | "m"
+                | "mm"
+                | "ft"
+                | "in"
+                | "inches"
+                | "feet"
+        )
+}
+
+impl<'a> Reader<'a> {
+    fn new(g: &'a Grounder, scene: &'a Scene, text: &'a str) -> Self {
+        let tokens = words::tokenize(text);
+        let n = tokens.len();
+        let mut words: Vec<Option<String>> = Vec::with_capacity(n);
+        for (k, t) in tokens.iter().enumerate() {
+            let next_is_number =
+                matches!(tokens.get(k + 1).map(|t| &t.kind), Some(Kind::Number(_)));
+            words.push(match &t.kind {
+                Kind::Word(w)
+                    if next_is_number && matches!(w.as_str(), "number" | "no" | "nr" | "num") =>
+                {
+                    Some(String::new())
+                }
+                Kind::Word(w) => Some(words::normalize(w.trim_end_matches("'s"))),
+                Kind::Number(x) if x.fract() == 0.0 && *x >= 0.0 && *x < 1e6 => {
+                    Some(format!("{x}"))
+                }
+                Kind::Punct('#') if next_is_number => Some(String::new()),
+                _ => None,
+            });
+        }
+        let mut reader = Reader {
+            g,
+            scene,
+            text,
+            tokens,
+            words,
+            typos: vec![None; n],
+            consumed: vec![false; n],
+        };
+        reader.correct_typos();
+        reader
+    }
+
+    /// Reads a word of five letters or more that is no known word as the index word one
+    /// edit away, when there is exactly one.
+    fn correct_typos(&mut self) {
+        for k in 0..self.tokens.len() {
+            let Some(w) = self.tokens[k].word() else {
+                continue;
+            };
+            if w.chars().count() < TYPO_MIN_LETTERS
+                || !w.chars().all(char::is_alphabetic)
+                || grammar_word(w)
+                || self.g.index.knows_word(w)
+                || self.g.lexicon.knows(w)
+                || self
+                    .g
+                    .lexicon
+                    .singulars(w)
+                    .iter()
+                    .any(|s| self.g.index.knows_word(s) || self.g.lexicon.knows(s))
+            {
+                continue;
+            }
+            let near = self.g.index.one_edit_away(w);
+            if let [one] = near.as_slice() {
+                self.typos[k] = Some(w.to_string());
+                self.words[k] = Some(one.to_string());
+            }
+        }
+    }
+
+    fn word(&self, k: usize) -> Option<&str> {
+        self.tokens.get(k).and_then(Token::word)
+    }
+
+    fn is_word(&self, k: usize, options: &[&str]) -> bool {
+        self.word(k).is_some_and(|w| options.contains(&w))
+    }
+
+    fn span_text(&self, range: &Range<usize>) -> String {
+        let start = self.tokens[range.start].span.start;
+        let end = self.tokens[range.end - 1].span.end;
+        self.text[start..end].to_string()
+    }
+
+    fn name(&self, i: usize) -> String {
+        self.scene.objects[i].name.clone()
+    }
+
+    fn names(&self, objects: &[usize]) -> Vec<String> {
+        objects.iter().map(|&i| self.name(i)).collect()
+    }
+
+    /// Every phrase, left to right.
+    fn read(&mut self) -> Result<Vec<Phrase>, GroundError> {
+        let mut phrases: Vec<Phrase> = Vec::new();
+        let mut nps: Vec<Np> = Vec::new();
+        let mut k = 0;
+        while k < self.tokens.len() {
+            if self.consumed[k] {
+                k += 1;
+                continue;
+            }
+            if let Kind::Quoted(name) = &self.tokens[k].kind {
+                let index = self
+                    .scene
+                    .resolve(name)
+                    .map_err(|_| GroundError::UnknownName {
+                        name: name.trim().to_string(),
+                        suggestions: suggest(self.scene, name),
+                    })?;
+                let mut start = k;
+                if k > 0
+                    && !self.consumed[k - 1]
+                    && self.is_word(k - 1, &["the", "a", "an", "this", "that"])
+                {
+                    start = k - 1;
+                }
+                let np = Np {
+                    range: start..k + 1,
+                    objects: vec![index],
+                    pool: vec![index],
+                    reasons: vec![Reason {
+                        kind: ReasonKind::Quoted,
+                        detail: format!("'{}' is quoted", name.trim()),
+                    }],
+                    head: words::normalize(name),
+                };
+                self.commit(np, &mut phrases, &mut nps);
+                k += 1;
+                continue;
+            }
+            let bound: Vec<usize> = phrases.iter().flat_map(|p| p.objects.clone()).collect();
+            let head = self.head_at(k).or_else(|| self.anaphor_at(k, &nps, &bound));
+            match head {
+                Some(head) if self.opens_ok(&head) => {
+                    let end = head.range.end;
+                    let np = self.noun_phrase(head, &bound, true)?;
+                    self.commit(np, &mut phrases, &mut nps);
+                    k = end;
+                }
+                _ => {
+                    self.check_unknown(k)?;
+                    k += 1;
+                }
+            }
+        }
+        Ok(phrases)
+    }
+
+    fn commit(&mut self, np: Np, phrases: &mut Vec<Phrase>, nps: &mut Vec<Np>) {
+        for c in np.range.clone() {
+            self.consumed[c] = true;
+        }
+        phrases.push(Phrase {
+            span: self.tokens[np.range.start].span.start..self.tokens[np.range.end - 1].span.end,
+            text: self.span_text(&np.range),
+            objects: np.objects.clone(),
+            reasons: np.reasons.clone(),
+        });
+        nps.push(np);
+    }
+
+    /// The longest name, category or synonym starting at token `k`.
+    fn head_at(&self, k: usize) -> Option<Head> {
+        let index = &self.g.index;
+        let max = index.max_words + 1;
+        let mut pieces: Vec<&str> = Vec::new();
+        let mut ends: Vec<usize> = Vec::new();
+        let mut j = k;
+        while j < self.tokens.len() && pieces.len() < max * 2 && !self.consumed[j] {
+            match &self.words[j] {
+                Some(w) if w.is_empty() && j > k => {}
+                Some(w) if !w.is_empty() => {
+                    pieces.push(w);
+                    ends.push(j + 1);
+                }
+                _ => break,
+            }
+            j += 1;
+        }
+        if pieces.is_empty() || self.words[k].as_deref().is_none_or(str::is_empty) {
+            return None;
+        }
+        for len in (1..=pieces.len()).rev() {
+            let phrase = pieces[..len].join(" ");
+            let range = k..ends[len - 1];
+            let typo = range.clone().find_map(|t| {
+                self.typos[t].as_ref().map(|from| Reason {
+                    kind: ReasonKind::Typo,
+                    detail: format!(
+                        "\"{from}\" read as \"{}\"",
+                        self.words[t].as_deref().unwrap_or("")
+                    ),
+                })
+            });
+            if let Some((tier, entries)) = index.lookup(&phrase) {
+                let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
+                let via = entries[0].via.clone();
+                return Some(self.make_head(range, objects, tier, false, phrase, &via, typo));
+            }
+            for singular in self.g.lexicon.singulars(&phrase) {
+                if let Some((tier, entries)) = index.lookup(&singular) {
+                    let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
+                    let via = entries[0].via.clone();
+                    return Some(self.make_head(range, objects, tier, true, singular, &via, typo));
+                }
+            }
+            if len >= 1 && phrase.contains(' ') || phrase.chars().count() >= 4 {
+                if let Some(objects) = index.lookup_compact(&phrase) {
+                    let head = self.make_head(
+                        range,
+                        objects.to_vec(),
+                        Tier::Name,
+                        false,
+                        phrase.clone(),
+                        &phrase,
+                        typo,
+                    );
+                    return Some(Head {
+                        reason: Reason {
+                            kind: ReasonKind::Variant,
+                            detail: format!(
+                                "\"{}\" is written like the name",
+                                self.span_text(&head.range)
+                            ),
+                        },
+                        ..head
+                    });
+                }
+            }
+        }
+        None
+    }
+
+    #[allow(clippy::too_many_arguments)]
+    fn make_head(
+        &self,
+        range: Range<usize>,
+        objects: Vec<usize>,
+        tier: Tier,
+        plural: bool,
+        text: String,
+        via: &str,
+        typo: Option<Reason>,
+    ) -> Head {
+        let written = self.span_text(&range);
+        let exact = objects.len() == 1 && self.scene.objects[objects[0]].name == written;
+        let (kind, detail) = match tier {
+            Tier::Name if exact => (ReasonKind::Exact, format!("\"{written}\" is the name")),
+            Tier::Name => (
+                ReasonKind::Variant,
+                format!("\"{written}\" is the name written differently"),
+            ),
+            Tier::Alias => (ReasonKind::Alias, format!("\"{written}\" is an alias")),
+            Tier::Category => (ReasonKind::Category, format!("a '{via}' is a {text}")),
+            Tier::Synonym => (
+                ReasonKind::Synonym,
+                format!("\"{text}\" is a synonym of '{via}'"),
+            ),
+            Tier::Hypernym => (
+                ReasonKind::Hypernym,
+                format!("a '{via}' is a kind of {text}"),
+            ),
+        };
+        Head {
+            range,
+            objects,
+            tier,
+            plural,
+            text,
+            reason: Reason { kind, detail },
+            typo,
+        }
+    }
+
+    /// `one` / `ones` / `others` standing for the noun of the phrase before: `the left
+    /// one`, `the other one`, `the others`.
+    fn anaphor_at(&self, k: usize, nps: &[Np], bound: &[usize]) -> Option<Head> {
+        let w = self.word(k)?;
+        let (plural, other) = match w {
+            "one" => (false, false),
+            "ones" => (true, false),
+            "others" => (true, true),
+            "other" if !self.head_follows(k + 1) && !self.is_word(k + 1, &["one", "ones"]) => {
+                (false, true)
+            }
+            _ => return None,
+        };
+        if self.is_word(k + 1, &["of"]) {
+            return None;
+        }
+        let previous = nps.last()?;
+        let mut objects = previous.pool.clone();
+        if other {
+            objects.retain(|o| !bound.contains(o));
+        }
+        Some(Head {
+            range: k..k + 1,
+            objects,
+            tier: Tier::Name,
+            plural,
+            text: previous.head.clone(),
+            reason: Reason {
+                kind: ReasonKind::Modifier,
+                detail: format!("\"{w}\" stands for the {} named before", previous.head),
+            },
+            typo: None,
+        })
+    }
+
+    fn head_follows(&self, k: usize) -> bool {
+        k < self.tokens.len() && self.head_at(k).is_some()
+    }
+
+    /// Whether the words before a head let it start a noun phrase: a determiner, a verb,
+    /// a preposition, a conjunction or punctuation, or the start.
+    fn opens_ok(&self, head: &Head) -> bool {
+        let k = self.premodifier_start(head.range.start);
+        let det = k > 0 && self.word(k - 1).is_some_and(words::is_determiner);
+        if det {
+            return true;
+        }
+        let h = head.range.start;
+        let w = self.word(h).unwrap_or("");
+        // A single grammar word ("can you…", "stand it up", "turn it counter clockwise")
+        // or an anaphor ("one", "other") is a noun only after a determiner.
+        let needs_determiner = head.range.len() == 1
+            && ((grammar_word(w) && head.tier != Tier::Name)
+                || words::is_verb(w)
+                || matches!(
+                    w,
+                    "can" | "light" | "counter" | "one" | "ones" | "other" | "others"
+                ));
+        if needs_determiner {
+            return false;
+        }
+        if h == 0 {
+            return true;
+        }
+        match &self.tokens[h - 1].kind {
+            Kind::Punct(c) => matches!(c, ',' | ';' | ':' | '.' | '!' | '?' | '(' | '-'),
+            Kind::Word(w) => words::opens_phrase(w),
+            Kind::Number(_) => true,
+            Kind::Quoted(_) => false,
+        }
+    }
+
+    fn is_premodifier(&self, k: usize) -> bool {
+        if self.consumed[k] {
+            return false;
+        }
+        match &self.tokens[k].kind {
+            Kind::Number(x) => x.fract() == 0.0 && *x >= 1.0 && *x <= 100.0,
+            Kind::Word(w) if words::is_determiner(w) => false,
+            Kind::Word(w) => {
+                let w = w.trim_end_matches("'s");
+                words::side_word(w).is_some()
+                    || words::size_word(w).is_some()
+                    || words::ordinal(w).is_some()
+                    || words::count_word(w).is_some()
+                    || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
+                    || words::is_colour(w)
+                    || self.g.index.descriptor_words.contains(&words::normalize(w))
+            }
+            _ => false,
+        }
+    }
+
+    /// Where the modifiers before the head at `h` start, when a determiner opens them; else
+    /// `h` itself.
+    fn premodifier_start(&self, h: usize) -> usize {
+        let mut k = h;
+        while k > 0 && self.is_premodifier(k - 1) {
+            k -= 1;
+        }
+        if k < h && !(k > 0 && self.word(k - 1).is_some_and(words::is_determiner)) {
+            // Modifiers with no determiner before them are not read as modifiers.
+            return h;
+        }
+        k
+    }
+
+    /// Reads the noun phrase around a head: determiner and modifiers before it, and (when
+    /// `post` and the noun alone fits several) a modifier after it.
+    fn noun_phrase(&self, head: Head, bound: &[usize], post: bool) -> Result<Np, GroundError> {
+        let h = head.range.start;
+        let mut start = self.premodifier_start(h);
+        let premods: Vec<usize> = (start..h).collect();
+        let mut count = if head.plural { Count::All } else { Count::One };
+        if start > 0 && self.word(start - 1).is_some_and(words::is_determiner) {
+            start -= 1;
+            match self.word(start).unwrap_or("") {
+                "both" => count = Count::Exactly(2),
+                "all" | "every" | "each" => count = Count::All,
+                "these" | "those" if head.plural => count = Count::All,
+                _ => {}
+            }
+            // "all the", "both of the", "all of the".
+            if self.word(start) == Some("the") && start > 0 && !self.consumed[start - 1] {
+                if self.is_word(start - 1, &["all", "both", "each"]) {
+                    start -= 1;
+                } else if self.is_word(start - 1, &["of"])
+                    && start > 1
+                    && self.is_word(start - 2, &["all", "both", "each"])
+                {
+                    start -= 2;
+                }
+                match self.word(start).unwrap_or("") {
+                    "both" => count = Count::Exactly(2),
+                    "all" | "each" => count = Count::All,
+                    _ => {}
+                }
+            }
+        }
+        // "the bigger of the two boxes", "the left one of the two".
+        let mut outer: Vec<usize> = Vec::new();
+        let mut outer_count = None;
+        if start >= 2 && self.is_word(start - 1, &["of"]) && !self.consumed[start - 2] {
+            let m = start - 2;
+            let w = self.word(m).unwrap_or("");
+            let selector = words::size_word(w).is_some()
+                || words::side_word(w).is_some()
+                || words::ordinal(w).is_some();
+            if selector && m > 0 && self.is_word(m - 1, &["the"]) && !self.consumed[m - 1] {
+                outer.push(m);
+                start = m - 1;
+                outer_count = Some(Count::One);
+            }
+        }
+        let mut objects = head.objects.clone();
+        let pool = head.objects.clone();
+        let mut reasons = vec![head.reason.clone()];
+        if let Some(t) = &head.typo {
+            reasons.push(t.clone());
+        }
+        let mut ordinal: Option<usize> = None;
+        let mut selectors: Vec<usize> = Vec::new();
+        for &m in &premods {
+            match &self.tokens[m].kind {
+                Kind::Number(x) => count = Count::Exactly(*x as usize),
+                Kind::Word(w) => {
+                    let w = w.trim_end_matches("'s");
+                    if let Some(n) = words::count_word(w) {
+                        count = Count::Exactly(n);
+                    } else if let Some(o) = words::ordinal(w) {
+                        ordinal = Some(o);
+                    } else if w == "other" {
+                        let before = objects.len();
+                        objects.retain(|o| !bound.contains(o));
+                        if objects.len() < before {
+                            reasons.push(modifier("\"other\": not the one named before"));
+                        }
+                    } else if w == "same" {
+                        // "the same chair": no pick.
+                    } else if words::side_word(w).is_some()
+                        || words::size_word(w).is_some()
+                        || matches!(w, "middle" | "center" | "centre")
+                    {
+                        selectors.push(m);
+                    } else {
+                        let d = words::normalize(w);
+                        let fits: Vec<usize> = objects
+                            .iter()
+                            .copied()
+                            .filter(|&o| self.g.index.descriptors[o].contains(&d))
+                            .collect();
+                        if fits.is_empty() {
+                            if words::is_colour(w) || self.g.index.descriptor_words.contains(&d) {
+                                return Err(GroundError::NoPick {
+                                    phrase: self.span_text(&(start..head.range.end)),
+                                    reason: format!(
+                                        "no {} is {d}: the {}s here are {}",
+                                        head.text,
+                                        head.text,
+                                        error::list(&self.names(&objects))
+                                    ),
+                                });
+                            }
+                        } else {
+                            if fits.len() < objects.len() {
+                                reasons.push(modifier(&format!(
+                                    "\"{w}\" picked {}",
+                                    error::list(&self.names(&fits))
+                                )));
+                            }
+                            objects = fits;
+                        }
+                    }
+                }
+                _ => {}
+            }
+        }
+        // "the bigger of the two boxes": two fit, one is picked.
+        if let (Some(c), Count::Exactly(n)) = (outer_count, count) {
+            if objects.len() != n {
+                return Err(GroundError::Count {
+                    phrase: self.span_text(&(start..head.range.end)),
+                    wanted: n,
+                    found: self.names(&objects),
+                });
+            }
+            count = c;
+        } else if let Some(c) = outer_count {
+            count = c;
+        }
+        let need = |count: Count, have: usize| match count {
+            Count::One => 1,
+            Count::Exactly(n) => n,
+            Count::All => have,
+        };
+        let mut end = head.range.end;
+        let phrase_so_far = |end: usize| self.span_text(&(start..end));
+        selectors.extend(outer);
+        let last_selector = selectors.last().copied();
+        for &m in &selectors {
+            let w = self.word(m).unwrap_or("").to_string();
+            let n = need(count, objects.len());
+            // "the front left chair": every selector but the last keeps all the
+            // candidates at its end, the last picks.
+            if Some(m) != last_selector && ordinal.is_none() {
+                if let Some((axis, sign)) = words::side_word(&w) {
+                    let picked = select::at_side(self.scene, &objects, axis, sign);
+                    if picked.len() < objects.len() {
+                        reasons.push(modifier(&format!(
+                            "\"{w}\" kept {}",
+                            error::list(&self.names(&picked))
+                        )));
+                    }
+                    objects = picked;
+                    continue;
+                }
+            }
+            if let Some(o) = ordinal {
+                if let Some((axis, sign)) = words::side_word(&w) {
+                    // "the second left chair" reads as the second from the left.
+                    let picked = select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
+                        .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &w))?;
+                    objects = vec![picked];
+                    ordinal = None;
+                    reasons.push(modifier(&format!("\"{w}\" counted from the {w}")));
+                    continue;
+                }
+            }
+            if let Some((axis, sign)) = words::side_word(&w) {
+                let picked = select::by_side(self.scene, &objects, axis, sign, n)
+                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &w))?;
+                if picked.len() < objects.len() {
+                    reasons.push(modifier(&format!(
+                        "\"{w}\" picked {}",
+                        error::list(&self.names(&picked))
+                    )));
+                }
+                objects = picked;
+            } else if let Some((measure, sign, degree)) = words::size_word(&w) {
+                let picked = select::by_size(self.scene, &objects, measure, sign, degree, n).map_err(|e| {
+                    GroundError::NoPick {
+                        phrase: phrase_so_far(end),
+                        reason: match e {
+                            SizeError::ComparesTwo => format!(
+                                "\"{w}\" compares two, but {} {}s fit ({}); say 'the {}' or name one",
+                                objects.len(),
+                                head.text,
+                                error::list(&self.names(&objects)),
+                                superlative(&w)
+                            ),
+                            SizeError::TooClose => format!(
+                                "{} are too close in size to tell which is {w}; name one ('{}')",
+                                error::list(&self.names(&objects)),
+                                self.name(objects[0])
+                            ),
+                        },
+                    }
+                })?;
+                if picked.len() < objects.len() {
+                    reasons.push(modifier(&format!(
+                        "\"{w}\" picked {}",
+                        error::list(&self.names(&picked))
+                    )));
+                }
+                objects = picked;
+            } else if objects.len() > 1 {
+                let picked = select::middle(self.scene, &objects)
+                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &w))?;
+                reasons.push(modifier(&format!("\"{w}\" picked {}", self.name(picked))));
+                objects = vec![picked];
+            }
+        }
+        let wanted = need(count, objects.len());
+        if post && (objects.len() != wanted || ordinal.is_some()) && !matches!(count, Count::All) {
+            if let Some((p, p_end)) = self.post_modifier(end, bound)? {
+                match p {
+                    Post::Side(axis, sign, words) => {
+                        if let Some(o) = ordinal.take() {
+                            let picked =
+                                select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
+                                    .ok_or_else(|| {
+                                    self.too_close(
+                                        &self.span_text(&(start..p_end)),
+                                        &objects,
+                                        &words,
+                                    )
+                                })?;
+                            objects = vec![picked];
+                        } else {
+                            objects = select::by_side(self.scene, &objects, axis, sign, wanted)
+                                .ok_or_else(|| {
+                                    self.too_close(
+                                        &self.span_text(&(start..p_end)),
+                                        &objects,
+                                        &words,
+                                    )
+                                })?;
+                        }
+                        reasons.push(modifier(&format!(
+                            "\"{words}\" picked {}",
+                            error::list(&self.names(&objects))
+                        )));
+                    }
+                    Post::Middle => {
+                        let picked = select::middle(self.scene, &objects).ok_or_else(|| {
+                            self.too_close(
+                                &self.span_text(&(start..p_end)),
+                                &objects,
+                                "in the middle",
+                            )
+                        })?;
+                        objects = vec![picked];
+                        reasons.push(modifier(&format!(
+                            "\"in the middle\" picked {}",
+                            self.name(picked)
+                        )));
+                    }
+                    Post::From(direction, words) => {
+                        let o = ordinal.take().unwrap_or(1);
+                        let picked =
+                            select::nth(self.scene, &objects, o, direction).ok_or_else(|| {
+                                self.too_close(&self.span_text(&(start..p_end)), &objects, &words)
+                            })?;
+                        objects = vec![picked];
+                        reasons.push(modifier(&format!("counted {words}: {}", self.name(picked))));
+                    }
+                    Post::Relation(relation, target, words) => {
+                        let picked =
+                            select::by_relation(self.scene, &objects, relation, target, wanted)
+                                .ok_or_else(|| GroundError::NoPick {
+                                    phrase: self.span_text(&(start..p_end)),
+                                    reason: format!(
+                                        "no single {} is clearly {words} (the {}s here are {})",
+                                        head.text,
+                                        head.text,
+                                        error::list(&self.names(&objects))
+                                    ),
+                                })?;
+                        objects = picked;
+                        reasons.push(modifier(&format!(
+                            "\"{words}\" picked {}",
+                            error::list(&self.names(&objects))
+                        )));
+                    }
+                }
+                end = p_end;
+            }
+        }
+        let phrase = self.span_text(&(start..end));
+        if let Some(o) = ordinal {
+            if objects.len() > 1 {
+                return Err(GroundError::NoPick {
+                    reason: format!(
+                        "{} from where? say 'the {} {} from the left' or name one ('{}')",
+                        ordinal_word(o),
+                        ordinal_word(o),
+                        head.text,
+                        self.name(objects[0])
+                    ),
+                    phrase,
+                });
+            }
+        }
+        let wanted = need(count, objects.len());
+        if objects.is_empty() {
+            return Err(GroundError::Unknown {
+                phrase,
+                suggestions: Vec::new(),
+            });
+        }
+        if objects.len() != wanted {
+            let names = self.names(&objects);
+            return Err(match count {
+                Count::One => GroundError::Ambiguous {
+                    phrase,
+                    example: names[names.len().min(3) - 1].clone(),
+                    hints: self.hints(&head.text, &objects),
+                    candidates: names,
+                },
+                _ => GroundError::Count {
+                    phrase,
+                    wanted,
+                    found: names,
+                },
+            });
+        }
+        if head.typo.is_some() && objects.len() != 1 {
+            return Err(GroundError::Unknown {
+                phrase,
+                suggestions: self.names(&objects),
+            });
+        }
+        if objects.len() > 1 {
+            reasons.push(Reason {
+                kind: ReasonKind::Group,
+                detail: format!("{} objects", objects.len()),
+            });
+        }
+        // Groups bind in a stable order: left to right, then back to front.
+        if objects.len() > 1 {
+            objects.sort_by(|&a, &b| {
+                let (ca, cb) = (
+                    self.scene.objects[a].world_aabb().center(),
+                    self.scene.objects[b].world_aabb().center(),
+                );
+                ca.x.total_cmp(&cb.x)
+                    .then(ca.z.total_cmp(&cb.z))
+                    .then(a.cmp(&b))
+            });
+        }
+        Ok(Np {
+            range: start..end,
+            objects,
+            pool,
+            reasons,
+            head: head.text,
+        })
+    }
+
+    fn too_close(&self, phrase: &str, objects: &[usize], word: &str) -> GroundError {
+        GroundError::NoPick {
+            phrase: phrase.to_string(),
+            reason: format!(
+                "{} are too close to tell which is {word}; name one ('{}')",
+                error::list(&self.names(objects)),
+                self.name(objects[0])
+            ),
+        }
+    }
+
+    /// Ways to say which, with a real neighbour: `the left chair`, `the chair nearest the
+    /// table`.
+    fn hints(&self, head: &str, candidates: &[usize]) -> Vec<String> {
+        let mut hints = vec![format!("the left {head}")];
+        let c = self.scene.objects[candidates[0]].world_aabb().center();
+        let other = (0..self.scene.objects.len())
+            .filter(|i| !candidates.contains(i))
+            .min_by(|&a, &b| {
+                let da = (self.scene.objects[a].world_aabb().center() - c).length();
+                let db = (self.scene.objects[b].world_aabb().center() - c).length();
+                da.total_cmp(&db)
+            });
+        if let Some(o) = other {
+            hints.push(format!("the {head} nearest the {}", self.name(o)));
+        }
+        hints
+    }
+
+    /// A modifier after the noun at token `k`: `on the left`, `in the middle`, `from the
+    /// window`, `nearest the sofa`, `on the side table`, `that is next to the bed`.
+    fn post_modifier(
+        &self,
+        k: usize,
+        bound: &[usize],
+    ) -> Result<Option<(Post, usize)>, GroundError> {
+        let mut j = k;
+        while j < self.tokens.len()
+            && self.word(j).is_some_and(words::is_relative_filler)
+            && self.relation_at(j).is_none()
+        {
+            j += 1;
+        }
+        let w = |k: usize| self.word(k).unwrap_or("");
+        // on the left, on the far right, on the left-hand side, at the front, at the back.
+        if matches!(w(j), "on" | "at" | "in" | "to") && w(j + 1) == "the" {
+            let mut s = j + 2;
+            if w(s) == "far" || w(s) == "very" {
+                s += 1;
+            }
+            if let Some((axis, sign)) = words::side_word(w(s)) {
+                if !matches!(w(s + 1), "of") {
+                    let mut end = s + 1;
+                    if matches!(w(end), "side" | "end") {
+                        end += 1;
+                    } else if w(end) == "hand" && w(end + 1) == "side" {
+                        end += 2;
+                    }
+                    return Ok(Some((
+                        Post::Side(axis, sign, self.span_text(&(j..end))),
+                        end,
+                    )));
+                }
+            }
+            if matches!(w(s), "middle" | "center" | "centre") && w(s + 1) != "of" {
+                return Ok(Some((Post::Middle, s + 1)));
+            }
+        }
+        if w(j) == "from" {
+            if w(j + 1) == "the" {
+                if let Some((axis, sign)) = words::side_word(w(j + 2)) {
+                    if w(j + 3) != "of" {
+                        let end = j + 3;
+                        return Ok(Some((
+                            Post::From(Direction::Side(axis, sign), self.span_text(&(j..end))),
+                            end,
+                        )));
+                    }
+                }
+            }
+            if let Some((np, end)) = self.nested_np(j + 1, bound)? {
+                let c = self.scene.objects[np].world_aabb().center();
+                return Ok(Some((
+                    Post::From(Direction::From(c), self.span_text(&(j..end))),
+                    end,
+                )));
+            }
+            return Ok(None);
+        }
+        if let Some((relation, after)) = self.relation_at(j) {
+            if let Some((target, end)) = self.nested_np(after, bound)? {
+                return Ok(Some((
+                    Post::Relation(relation, target, self.span_text(&(j..end))),
+                    end,
+                )));
+            }
+        }
+        Ok(None)
+    }
+
+    /// A relation word group at `j` and where its object starts.
+    fn relation_at(&self, j: usize) -> Option<(Relation, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        let (r, len) = match (w(j), w(j + 1), w(j + 2)) {
+            ("on", "top", "of") => (Relation::On, 3),
+            ("in", "front", "of") => (Relation::InFront, 3),
+            ("in", "back", "of") => (Relation::Behind, 3),
+            ("to", "the", "left") if w(j + 3) == "of" => (Relation::LeftOf, 4),
+            ("to", "the", "right") if w(j + 3) == "of" => (Relation::RightOf, 4),
+            ("left", "of", _) => (Relation::LeftOf, 2),
+            ("right", "of", _) => (Relation::RightOf, 2),
+            ("next", "to", _) => (Relation::Near, 2),
+            ("close", "to", _) => (Relation::Near, 2),
+            ("near", "to", _) => (Relation::Near, 2),
+            ("nearest", "to", _) | ("closest", "to", _) => (Relation::Nearest, 2),
+            ("farthest" | "furthest", "from", _) | ("farthest" | "furthest", "away", _) => {
+                (Relation::Farthest, if w(j + 2) == "from" { 3 } else { 2 })
+            }
+            ("on" | "onto" | "upon" | "atop", _, _) => (Relation::On, 1),
+            ("under" | "below" | "beneath" | "underneath", _, _) => (Relation::Under, 1),
+            ("above" | "over", _, _) => (Relation::Above, 1),
+            ("beside" | "by" | "near" | "alongside" | "nearby", _, _) => (Relation::Near, 1),
+            ("nearest" | "closest", _, _) => (Relation::Nearest, 1),
+            ("behind", _, _) => (Relation::Behind, 1),
+            _ => return None,
+        };
+        Some((r, j + len))
+    }
+
+    /// A noun phrase naming one object, inside a modifier (`the side table` in `the book
+    /// on the side table`).
+    fn nested_np(&self, j: usize, bound: &[usize]) -> Result<Option<(usize, usize)>, GroundError> {
+        if let Some(Kind::Quoted(name)) = self.tokens.get(j).map(|t| &t.kind) {
+            return Ok(self.scene.find(name).map(|i| (i, j + 1)));
+        }
+        // Skip the determiner and modifiers to the head.
+        let mut h = j;
+        while h < self.tokens.len() && h < j + 5 {
+            if self.head_at(h).is_some() {
+                break;
+            }
+            let w = self.word(h).unwrap_or("");
+            if !(words::is_determiner(w) || self.is_premodifier(h)) {
+                return Ok(None);
+            }
+            h += 1;
+        }
+        let Some(head) = self.head_at(h) else {
+            return Ok(None);
+        };
+        let np = self.noun_phrase(head, bound, false)?;
+        if np.range.start > j {
+            return Ok(None);
+        }
+        match np.objects.as_slice() {
+            [one] => Ok(Some((*one, np.range.end))),
+            _ => Ok(None),
+        }
+    }
+
+    /// Refuses a noun the lexicon knows, after a determiner, that no object answers to:
+    /// `move the piano` in a room with no piano.
+    fn check_unknown(&self, k: usize) -> Result<(), GroundError> {
+        let Some(w) = self.word(k) else { return Ok(()) };
+        if grammar_word(w) || self.consumed[k] {
+            return Ok(());
+        }
+        let det =
+            k > 0 && self.word(k - 1).is_some_and(words::is_determiner) && !self.consumed[k - 1];
+        if !det {
+            return Ok(());
+        }
+        // Up to three words: "coffee machine".
+        for len in (1..=3).rev() {
+            if k + len > self.tokens.len() {
+                continue;
+            }
+            let pieces: Option<Vec<String>> = (k..k + len)
+                .map(|t| self.word(t).map(words::normalize))
+                .collect();
+            let Some(pieces) = pieces else { continue };
+            let phrase = pieces.join(" ");
+            let known = self.g.lexicon.knows(&phrase)
+                || self
+                    .g
+                    .lexicon
+                    .singulars(&phrase)
+                    .iter()
+                    .any(|s| self.g.lexicon.knows(s));
+            let is_room = self.g.lexicon.concepts_of(&phrase).iter().any(|&c| {
+                self.g
+                    .lexicon
+                    .concept(c)
+                    .hypernyms
+                    .iter()
+                    .any(|&h| self.g.lexicon.concept(h).term == "room")
+                    || self.g.lexicon.concept(c).term == "room"
+            });
+            if known && !is_room && !words::is_place_noun(&phrase) {
+                return Err(GroundError::Unknown {
+                    phrase: self.span_text(&(k - 1..k + len)),
+                    suggestions: suggest(self.scene, &phrase),
+                });
+            }
+        }
+        Ok(())
+    }
+}
+
+fn modifier(detail: &str) -> Reason {
+    Reason {
+        kind: ReasonKind::Modifier,
+        detail: detail.to_string(),
+    }
+}
+
+fn superlative(w: &str) -> String {
+    match w {
+        "big" | "bigger" => "biggest".into(),
+        "large" | "larger" => "largest".into(),
+        "small" | "smaller" | "little" | "tiny" => "smallest".into(),
+        "tall" | "taller" => "tallest".into(),
+        "short" | "shorter" => "shortest".into(),
+        "long" | "longer" => "longest".into(),
+        "wide" | "wider" => "widest".into(),
+        "narrow" | "narrower" => "narrowest".into(),
+        other => other.into(),
+    }
+}
+
+fn ordinal_word(n: usize) -> &'static str {
+    match n {
+        1 => "first",
+        2 => "second",
+        3 => "third",
+        4 => "fourth",
+        5 => "fifth",
+        6 => "sixth",
+        7 => "seventh",
+        8 => "eighth",
+        9 => "ninth",
+        10 => "tenth",
+        _ => "last",
+    }
+}
+
+/// The scene's names nearest a written one.
+fn suggest(scene: &Scene, written: &str) -> Vec<String> {
+    let wanted = words::normalize(written);
+    let mut scored: Vec<(f64, &str)> = scene
+        .objects
+        .iter()
+        .map(|o| {
+            (
+                strsim::jaro_winkler(&wanted, &words::normalize(&o.name)),
+                o.name.as_str(),
+            )
+        })
+        .filter(|(score, _)| *score >= 0.75)
+        .collect();
+    scored.sort_by(|a, b| b.0.total_cmp(&a.0));
+    scored
+        .into_iter()
+        .take(3)
+        .map(|(_, n)| n.to_string())
+        .collect()
+}
+
+#[cfg(test)]
+mod tests;

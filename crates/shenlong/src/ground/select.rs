@@ -1,0 +1,312 @@
+//! Picking among several objects that fit a phrase: by place in the room, by size, by
+//! order along a direction, and by relation to another object. Every pick needs a clear
+//! winner: when two candidates are too close to call, nothing is picked.
+
+use super::words::{Axis, Degree, Measure};
+use crate::geometry::Aabb;
+use crate::scene::Scene;
+use glam::DVec3;
+
+/// Positions closer than this along an axis cannot be told apart, in metres.
+pub(crate) const POSITION_MARGIN: f64 = 0.05;
+/// Sizes closer than this ratio cannot be told apart.
+pub(crate) const SIZE_RATIO: f64 = 1.1;
+/// The nearest candidate must be this much nearer than the next, in metres…
+pub(crate) const DISTANCE_MARGIN: f64 = 0.1;
+/// …or this many times nearer.
+pub(crate) const DISTANCE_RATIO: f64 = 1.25;
+/// "next to", "by", "beside", "near": at most this far (gap between boxes), in metres.
+pub(crate) const NEAR_LIMIT: f64 = 1.5;
+
+/// A relation to another object that picks candidates.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Relation {
+    /// Resting on it (`the book on the side table`).
+    On,
+    /// Under it.
+    Under,
+    /// Above or over it (`the painting above the sofa`).
+    Above,
+    /// Next to, by, beside, near it.
+    Near,
+    /// Nearest to it.
+    Nearest,
+    /// Farthest from it.
+    Farthest,
+    /// In front of it (+z).
+    InFront,
+    /// Behind it (−z).
+    Behind,
+    /// To its left (−x).
+    LeftOf,
+    /// To its right (+x).
+    RightOf,
+}
+
+fn boxes(scene: &Scene, objects: &[usize]) -> Vec<Aabb> {
+    objects
+        .iter()
+        .map(|&i| scene.objects[i].world_aabb())
+        .collect()
+}
+
+/// The `need` candidates at one end of a sorting key (smallest keys first), when they are
+/// clearly apart from the rest; `None` when too close to call.
+fn take_extreme(
+    candidates: &[usize],
+    keys: &[f64],
+    need: usize,
+    separated: impl Fn(f64, f64) -> bool,
+) -> Option<Vec<usize>> {
+    if need >= candidates.len() {
+        return Some(candidates.to_vec());
+    }
+    let mut order: Vec<usize> = (0..candidates.len()).collect();
+    order.sort_by(|&a, &b| keys[a].total_cmp(&keys[b]));
+    let (last_in, first_out) = (keys[order[need - 1]], keys[order[need]]);
+    separated(last_in, first_out).then(|| order[..need].iter().map(|&k| candidates[k]).collect())
+}
+
+/// The candidates at one side of the room (`left` = smallest x …).
+pub(crate) fn by_side(
+    scene: &Scene,
+    candidates: &[usize],
+    axis: Axis,
+    sign: f64,
+    need: usize,
+) -> Option<Vec<usize>> {
+    let keys: Vec<f64> = boxes(scene, candidates)
+        .iter()
+        .map(|b| -sign * axis.of(b.center()))
+        .collect();
+    take_extreme(candidates, &keys, need, |a, b| b - a > POSITION_MARGIN)
+}
+
+/// All the candidates at one side: those within [`POSITION_MARGIN`] of the extreme.
+pub(crate) fn at_side(scene: &Scene, candidates: &[usize], axis: Axis, sign: f64) -> Vec<usize> {
+    let keys: Vec<f64> = boxes(scene, candidates)
+        .iter()
+        .map(|b| -sign * axis.of(b.center()))
+        .collect();
+    let best = keys.iter().cloned().fold(f64::INFINITY, f64::min);
+    candidates
+        .iter()
+        .zip(&keys)
+        .filter(|(_, &k)| k - best <= POSITION_MARGIN)
+        .map(|(&c, _)| c)
+        .collect()
+}
+
+/// The middle one of an odd number of candidates, along the axis they spread most on.
+pub(crate) fn middle(scene: &Scene, candidates: &[usize]) -> Option<usize> {
+    if candidates.len() < 3 || candidates.len() % 2 == 0 {
+        return None;
+    }
+    let b = boxes(scene, candidates);
+    let spread = |axis: Axis| {
+        let v: Vec<f64> = b.iter().map(|b| axis.of(b.center())).collect();
+        v.iter().cloned().fold(f64::MIN, f64::max) - v.iter().cloned().fold(f64::MAX, f64::min)
+    };
+    let axis = if spread(Axis::X) >= spread(Axis::Z) {
+        Axis::X
+    } else {
+        Axis::Z
+    };
+    let mut order: Vec<(f64, usize)> = b
+        .iter()
+        .zip(candidates)
+        .map(|(b, &i)| (axis.of(b.center()), i))
+        .collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let m = order.len() / 2;
+    (order[m].0 - order[m - 1].0 > POSITION_MARGIN && order[m + 1].0 - order[m].0 > POSITION_MARGIN)
+        .then_some(order[m].1)
+}
+
+/// The candidates biggest or smallest by a measure. A comparative or plain word
+/// (`bigger`, `big`) compares exactly two.
+pub(crate) fn by_size(
+    scene: &Scene,
+    candidates: &[usize],
+    measure: Measure,
+    sign: f64,
+    degree: Degree,
+    need: usize,
+) -> Result<Vec<usize>, SizeError> {
+    if degree != Degree::Superlative && candidates.len() > 2 && need == 1 {
+        return Err(SizeError::ComparesTwo);
+    }
+    let keys: Vec<f64> = boxes(scene, candidates)
+        .iter()
+        .map(|b| {
+            let s = b.size();
+            let m = match measure {
+                Measure::Volume => s.x * s.y * s.z,
+                Measure::Height => s.y,
+                Measure::Length => s.x.max(s.z),
+            };
+            // Smallest key first: the log makes "10 % bigger" a fixed margin.
+            -sign * m.max(1e-12).ln()
+        })
+        .collect();
+    take_extreme(candidates, &keys, need, |a, b| b - a > SIZE_RATIO.ln()).ok_or(SizeError::TooClose)
+}
+
+/// Why a size word picked nothing.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum SizeError {
+    /// `bigger` with more than two candidates.
+    ComparesTwo,
+    /// The sizes are too close to call.
+    TooClose,
+}
+
+/// The `k`-th candidate (from 1; `usize::MAX` = the last) counted along a direction, or by
+/// distance from a point.
+pub(crate) fn nth(scene: &Scene, candidates: &[usize], k: usize, from: Direction) -> Option<usize> {
+    let b = boxes(scene, candidates);
+    let keys: Vec<f64> = b
+        .iter()
+        .map(|b| match from {
+            Direction::Side(axis, sign) => -sign * axis.of(b.center()),
+            Direction::From(p) => (b.center() - p).length(),
+        })
+        .collect();
+    let mut order: Vec<usize> = (0..candidates.len()).collect();
+    order.sort_by(|&a, &c| keys[a].total_cmp(&keys[c]));
+    let k = if k == usize::MAX { order.len() } else { k };
+    if k == 0 || k > order.len() {
+        return None;
+    }
+    let at = keys[order[k - 1]];
+    let apart =
+        |j: usize| j == 0 || j > order.len() || (keys[order[j - 1]] - at).abs() > POSITION_MARGIN;
+    (apart(k - 1) && apart(k + 1)).then_some(candidates[order[k - 1]])
+}
+
+/// Where an ordinal counts from.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Direction {
+    /// From one side of the room: `from the left` = (x, −1).
+    Side(Axis, f64),
+    /// From a point (another object's centre).
+    From(DVec3),
+}
+
+/// Horizontal gap between two boxes' footprints (0 when they overlap).
+fn footprint_gap(a: &Aabb, b: &Aabb) -> f64 {
+    let dx = (a.min.x - b.max.x).max(b.min.x - a.max.x).max(0.0);
+    let dz = (a.min.z - b.max.z).max(b.min.z - a.max.z).max(0.0);
+    (dx * dx + dz * dz).sqrt()
+}
+
+/// Gap between two boxes in 3D (0 when they touch or overlap).
+fn gap(a: &Aabb, b: &Aabb) -> f64 {
+    let d = (a.min - b.max).max(b.min - a.max).max(DVec3::ZERO);
+    d.length()
+}
+
+/// The candidates in `relation` to object `target`: `need` of them, clearly picked.
+/// Returns the picked objects, or `None` when no candidate (or not a clear one) stands in
+/// that relation.
+pub(crate) fn by_relation(
+    scene: &Scene,
+    candidates: &[usize],
+    relation: Relation,
+    target: usize,
+    need: usize,
+) -> Option<Vec<usize>> {
+    let t = scene.objects[target].world_aabb();
+    let pool: Vec<usize> = candidates
+        .iter()
+        .copied()
+        .filter(|&c| c != target)
+        .collect();
+    let b = boxes(scene, &pool);
+    // (candidate, key) of those that stand in the relation; smallest key = best.
+    let mut fits: Vec<(usize, f64)> = Vec::new();
+    for (&c, cb) in pool.iter().zip(&b) {
+        let key = match relation {
+            Relation::On => {
+                let rests = scene.objects[c].support == Some(target)
+                    || ((cb.min.y - t.max.y).abs() < 0.05 && footprint_gap(cb, &t) <= 0.0);
+                if !rests {
+                    continue;
+                }
+                0.0
+            }
+            Relation::Under => {
+                if footprint_gap(cb, &t) > 0.0
+                    || cb.center().y >= t.center().y
+                    || scene.objects[c].support == Some(target)
+                {
+                    continue;
+                }
+                0.0
+            }
+            Relation::Above => {
+                if cb.min.y < t.max.y - 0.05 {
+                    continue;
+                }
+                footprint_gap(cb, &t)
+            }
+            Relation::Near => {
+                let g = gap(cb, &t);
+                if g > NEAR_LIMIT {
+                    continue;
+                }
+                g
+            }
+            Relation::Nearest => gap(cb, &t),
+            Relation::Farthest => -(cb.center() - t.center()).length(),
+            Relation::InFront => {
+                if cb.center().z <= t.max.z {
+                    continue;
+                }
+                gap(cb, &t)
+            }
+            Relation::Behind => {
+                if cb.center().z >= t.min.z {
+                    continue;
+                }
+                gap(cb, &t)
+            }
+            Relation::LeftOf => {
+                if cb.center().x >= t.min.x {
+                    continue;
+                }
+                gap(cb, &t)
+            }
+            Relation::RightOf => {
+                if cb.center().x <= t.max.x {
+                    continue;
+                }
+                gap(cb, &t)
+            }
+        };
+        fits.push((c, key));
+    }
+    if fits.is_empty() {
+        return None;
+    }
+    if matches!(relation, Relation::On | Relation::Under) {
+        // Membership relations: all that stand in it, when that is the number wanted.
+        return (fits.len() == need || need == usize::MAX)
+            .then(|| fits.iter().map(|f| f.0).collect());
+    }
+    let need = need.min(fits.len());
+    fits.sort_by(|a, b| a.1.total_cmp(&b.1));
+    if need < fits.len() {
+        let (last_in, first_out) = (fits[need - 1].1, fits[need].1);
+        let clear = if relation == Relation::Farthest {
+            first_out - last_in > DISTANCE_MARGIN
+        } else {
+            first_out - last_in > DISTANCE_MARGIN
+                || first_out > DISTANCE_RATIO * last_in.max(1e-9) && first_out - last_in > 0.02
+        };
+        if !clear {
+            return None;
+        }
+    }
+    Some(fits[..need].iter().map(|f| f.0).collect())
+}

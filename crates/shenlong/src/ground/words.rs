@@ -1,0 +1,703 @@
+//! Words of an instruction for grounding: tokens with their byte spans, and the closed
+//! word classes a noun phrase is built from (determiners, counts, ordinals, spatial and
+//! size modifiers, relation words).
+
+use std::ops::Range;
+
+/// One token of an instruction.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) struct Token {
+    /// What it is.
+    pub kind: Kind,
+    /// Where it is in the instruction, in bytes.
+    pub span: Range<usize>,
+}
+
+/// The kinds of token.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Kind {
+    /// A word, lower-cased (`right-hand`, `teacher's`, `2m`).
+    Word(String),
+    /// A plain number (`7`, `1.5`).
+    Number(f64),
+    /// A quoted name, without its quotes.
+    Quoted(String),
+    /// Punctuation: `,` `.` `;` `#` `!` `?` …
+    Punct(char),
+}
+
+impl Token {
+    /// The word, if this is one.
+    pub fn word(&self) -> Option<&str> {
+        match &self.kind {
+            Kind::Word(w) => Some(w),
+            _ => None,
+        }
+    }
+}
+
+const QUOTES: &[(char, char)] = &[('\'', '\''), ('"', '"'), ('‘', '’'), ('“', '”'), ('`', '`')];
+
+/// Splits an instruction into tokens. Quoted names (`'…'`, `"…"`, `‘…’`, `“…”`) are one
+/// token; an apostrophe inside a word (`sofa's`, `don't`) is part of the word.
+pub(crate) fn tokenize(text: &str) -> Vec<Token> {
+    let chars: Vec<(usize, char)> = text.char_indices().collect();
+    let end_of = |k: usize| chars.get(k).map_or(text.len(), |&(b, _)| b);
+    let mut tokens = Vec::new();
+    let mut k = 0;
+    while k < chars.len() {
+        let (start, c) = chars[k];
+        let inside_word = c == '\'' && k > 0 && chars[k - 1].1.is_alphanumeric();
+        if let Some(&(_, close)) = QUOTES.iter().find(|(open, _)| *open == c) {
+            if !inside_word {
+                if let Some(len) = chars[k + 1..].iter().position(|&(_, d)| d == close) {
+                    let name: String = chars[k + 1..k + 1 + len].iter().map(|&(_, c)| c).collect();
+                    tokens.push(Token {
+                        kind: Kind::Quoted(name),
+                        span: start..end_of(k + len + 2),
+                    });
+                    k += len + 2;
+                    continue;
+                }
+            }
+        }
+        if c.is_alphanumeric() {
+            let mut j = k;
+            while j < chars.len() {
+                let d = chars[j].1;
+                let joins = matches!(d, '-' | '\'' | '’' | '.')
+                    && j + 1 < chars.len()
+                    && chars[j + 1].1.is_alphanumeric()
+                    && j > k
+                    // A period joins digits (1.5) only.
+                    && (d != '.' || (chars[j - 1].1.is_ascii_digit() && chars[j + 1].1.is_ascii_digit()));
+                if d.is_alphanumeric() || joins {
+                    j += 1;
+                } else {
+                    break;
+                }
+            }
+            let raw: String = chars[k..j].iter().map(|&(_, c)| c).collect();
+            let lower = raw.to_lowercase().replace('’', "'");
+            let kind = match lower.parse::<f64>() {
+                Ok(n) if n.is_finite() => Kind::Number(n),
+                _ => Kind::Word(lower),
+            };
+            tokens.push(Token {
+                kind,
+                span: start..end_of(j),
+            });
+            k = j;
+            continue;
+        }
+        if !c.is_whitespace() {
+            tokens.push(Token {
+                kind: Kind::Punct(c),
+                span: start..end_of(k + 1),
+            });
+        }
+        k += 1;
+    }
+    tokens
+}
+
+/// Normalises a name or phrase for comparison: lower case, `-` `_` `.` as spaces, runs of
+/// spaces folded, camelCase split (`SheenChair` → `sheen chair`), a trailing `.001`-style
+/// suffix kept as a number (`chair.001` → `chair 1`).
+pub fn normalize(name: &str) -> String {
+    let mut out = String::with_capacity(name.len() + 4);
+    let mut prev: Option<char> = None;
+    let chars: Vec<char> = name.trim().chars().collect();
+    for &c in &chars {
+        let split_camel = prev.is_some_and(|p| p.is_lowercase()) && c.is_uppercase();
+        let split_digit = prev.is_some_and(|p| p.is_alphabetic()) && c.is_ascii_digit()
+            || prev.is_some_and(|p| p.is_ascii_digit()) && c.is_alphabetic();
+        if split_camel || split_digit {
+            out.push(' ');
+        }
+        if matches!(c, '-' | '_' | '.' | '#' | '(' | ')' | ',' | '/') || c.is_whitespace() {
+            out.push(' ');
+        } else {
+            out.extend(c.to_lowercase());
+        }
+        prev = Some(c);
+    }
+    let words: Vec<String> = out
+        .split_whitespace()
+        .map(|w| {
+            // `001` → `1`: numbered copies in glTF files.
+            if w.len() > 1 && w.chars().all(|c| c.is_ascii_digit()) {
+                w.trim_start_matches('0').to_string()
+            } else {
+                w.to_string()
+            }
+        })
+        .map(|w| if w.is_empty() { "0".to_string() } else { w })
+        .filter(|w| w != "node")
+        .collect();
+    words.join(" ")
+}
+
+/// A name without its spaces: `dog bed` and `dogbed` compare equal.
+pub fn compact(normalized: &str) -> String {
+    normalized.chars().filter(|c| !c.is_whitespace()).collect()
+}
+
+/// Splits a trailing number off a normalised name: `chair 7` → (`chair`, 7).
+pub fn split_number(normalized: &str) -> (&str, Option<u32>) {
+    match normalized.rsplit_once(' ') {
+        Some((base, n)) if !base.is_empty() => match n.parse::<u32>() {
+            Ok(n) => (base, Some(n)),
+            Err(_) => (normalized, None),
+        },
+        _ => (normalized, None),
+    }
+}
+
+/// The singular of a regular English plural (`chairs`, `boxes`, `shelves`, `batteries`),
+/// or `None` when the word does not look plural. Irregular plurals come from the lexicon.
+pub fn singular(word: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    if word.len() < 3 || !word.ends_with('s') || word.ends_with("ss") || word.ends_with("us") {
+        return out;
+    }
+    if let Some(stem) = word.strip_suffix("ies") {
+        out.push(format!("{stem}y"));
+    }
+    if let Some(stem) = word.strip_suffix("ves") {
+        out.push(format!("{stem}f"));
+        out.push(format!("{stem}fe"));
+    }
+    if let Some(stem) = word.strip_suffix("es") {
+        if stem.ends_with("sh")
+            || stem.ends_with("ch")
+            || stem.ends_with('x')
+            || stem.ends_with('s')
+            || stem.ends_with('z')
+            || stem.ends_with('o')
+        {
+            out.push(stem.to_string());
+        }
+    }
+    out.push(word[..word.len() - 1].to_string());
+    out
+}
+
+/// Determiners and quantifiers that open a noun phrase.
+pub(crate) fn is_determiner(w: &str) -> bool {
+    matches!(
+        w,
+        "the"
+            | "a"
+            | "an"
+            | "this"
+            | "that"
+            | "these"
+            | "those"
+            | "my"
+            | "our"
+            | "your"
+            | "his"
+            | "her"
+            | "their"
+            | "both"
+            | "all"
+            | "every"
+            | "each"
+            | "any"
+    )
+}
+
+/// How many objects a phrase asks for, from its determiner or count word.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Count {
+    /// One object (a singular noun).
+    One,
+    /// Exactly this many (`both` = 2, `the three chairs`).
+    Exactly(usize),
+    /// All that fit (`all`, `every`, `each`, a plural noun).
+    All,
+}
+
+/// `two` → 2 … `ten` → 10 (counts of a group).
+pub(crate) fn count_word(w: &str) -> Option<usize> {
+    Some(match w {
+        "two" | "pair" => 2,
+        "three" => 3,
+        "four" => 4,
+        "five" => 5,
+        "six" => 6,
+        "seven" => 7,
+        "eight" => 8,
+        "nine" => 9,
+        "ten" => 10,
+        _ => return None,
+    })
+}
+
+/// `first` → 1, `3rd` → 3, `last` → `usize::MAX`.
+pub(crate) fn ordinal(w: &str) -> Option<usize> {
+    Some(match w {
+        "first" | "1st" => 1,
+        "second" | "2nd" => 2,
+        "third" | "3rd" => 3,
+        "fourth" | "4th" => 4,
+        "fifth" | "5th" => 5,
+        "sixth" | "6th" => 6,
+        "seventh" | "7th" => 7,
+        "eighth" | "8th" => 8,
+        "ninth" | "9th" => 9,
+        "tenth" | "10th" => 10,
+        "last" | "final" => usize::MAX,
+        _ => return None,
+    })
+}
+
+/// An axis of the world frame (SPEC §1).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Axis {
+    /// x: left (−) to right (+).
+    X,
+    /// y: down (−) to up (+).
+    Y,
+    /// z: back (−) to front (+).
+    Z,
+}
+
+impl Axis {
+    /// The coordinate along this axis.
+    pub fn of(self, v: glam::DVec3) -> f64 {
+        match self {
+            Axis::X => v.x,
+            Axis::Y => v.y,
+            Axis::Z => v.z,
+        }
+    }
+}
+
+/// A place word: the end of an axis (`left` = x−, `front` = z+, `top` = y+).
+pub(crate) fn side_word(w: &str) -> Option<(Axis, f64)> {
+    Some(match w {
+        "left" | "leftmost" | "left-most" | "left-hand" | "lefthand" => (Axis::X, -1.0),
+        "right" | "rightmost" | "right-most" | "right-hand" | "righthand" => (Axis::X, 1.0),
+        "front" | "frontmost" | "front-most" | "nearest" | "near" => (Axis::Z, 1.0),
+        "back" | "rear" | "backmost" | "back-most" | "rearmost" | "far" | "farthest"
+        | "furthest" => (Axis::Z, -1.0),
+        "top" | "topmost" | "top-most" | "upper" | "uppermost" | "higher" | "highest" => {
+            (Axis::Y, 1.0)
+        }
+        "bottom" | "bottommost" | "bottom-most" | "lowest" | "lowermost" => (Axis::Y, -1.0),
+        _ => return None,
+    })
+}
+
+/// What a size word measures.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Measure {
+    /// The box's volume.
+    Volume,
+    /// The box's height.
+    Height,
+    /// The box's largest horizontal extent.
+    Length,
+}
+
+/// Whether a size word compares two (`bigger`), picks one of all (`biggest`) or is plain
+/// (`big`, read as comparing two).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Degree {
+    /// `big`, `small`.
+    Plain,
+    /// `bigger`, `smaller`.
+    Comparative,
+    /// `biggest`, `smallest`.
+    Superlative,
+}
+
+/// A size word: what it measures, the sign (+1 = more), its degree.
+pub(crate) fn size_word(w: &str) -> Option<(Measure, f64, Degree)> {
+    use Degree::*;
+    use Measure::*;
+    Some(match w {
+        "big" | "large" | "huge" => (Volume, 1.0, Plain),
+        "bigger" | "larger" => (Volume, 1.0, Comparative),
+        "biggest" | "largest" => (Volume, 1.0, Superlative),
+        "small" | "little" | "tiny" => (Volume, -1.0, Plain),
+        "smaller" => (Volume, -1.0, Comparative),
+        "smallest" => (Volume, -1.0, Superlative),
+        "tall" => (Height, 1.0, Plain),
+        "taller" => (Height, 1.0, Comparative),
+        "tallest" => (Height, 1.0, Superlative),
+        "short" => (Height, -1.0, Plain),
+        "shorter" => (Height, -1.0, Comparative),
+        "shortest" => (Height, -1.0, Superlative),
+        "long" | "wide" => (Length, 1.0, Plain),
+        "longer" | "wider" => (Length, 1.0, Comparative),
+        "longest" | "widest" => (Length, 1.0, Superlative),
+        "narrow" => (Length, -1.0, Plain),
+        "narrower" => (Length, -1.0, Comparative),
+        "narrowest" => (Length, -1.0, Superlative),
+        _ => return None,
+    })
+}
+
+/// Words that may stand before a noun phrase's head and open it: a determiner, a verb of
+/// the instruction, a preposition or a conjunction. A candidate head after anything else
+/// (`turn the vase counter clockwise`, `can you …`) is not read as an object.
+pub(crate) fn opens_phrase(w: &str) -> bool {
+    is_determiner(w)
+        || is_verb(w)
+        || is_preposition(w)
+        || matches!(
+            w,
+            "and" | "or" | "then" | "please" | "also" | "now" | "too" | "plus" | "with"
+        )
+}
+
+/// Prepositions after which a noun phrase may follow.
+pub(crate) fn is_preposition(w: &str) -> bool {
+    matches!(
+        w,
+        "on" | "onto"
+            | "upon"
+            | "atop"
+            | "of"
+            | "to"
+            | "into"
+            | "in"
+            | "at"
+            | "by"
+            | "near"
+            | "beside"
+            | "besides"
+            | "next"
+            | "from"
+            | "off"
+            | "under"
+            | "below"
+            | "beneath"
+            | "underneath"
+            | "above"
+            | "over"
+            | "behind"
+            | "between"
+            | "toward"
+            | "towards"
+            | "against"
+            | "alongside"
+            | "around"
+            | "facing"
+            | "past"
+            | "than"
+            | "as"
+            | "like"
+            | "nearest"
+            | "closest"
+            | "nearer"
+            | "closer"
+            | "farther"
+            | "further"
+            | "farthest"
+            | "furthest"
+            | "among"
+            | "across"
+            | "beyond"
+            | "within"
+            | "inside"
+            | "outside"
+            | "about"
+            | "for"
+            | "up"
+    )
+}
+
+/// Verbs of instructions (used to tell a phrase's start, not to translate).
+pub(crate) fn is_verb(w: &str) -> bool {
+    matches!(
+        w,
+        "move"
+            | "moev"
+            | "put"
+            | "place"
+            | "set"
+            | "shift"
+            | "push"
+            | "pull"
+            | "slide"
+            | "nudge"
+            | "drag"
+            | "lift"
+            | "raise"
+            | "lower"
+            | "drop"
+            | "rotate"
+            | "turn"
+            | "spin"
+            | "flip"
+            | "twist"
+            | "swivel"
+            | "pivot"
+            | "scale"
+            | "resize"
+            | "grow"
+            | "shrink"
+            | "enlarge"
+            | "make"
+            | "swap"
+            | "switch"
+            | "exchange"
+            | "interchange"
+            | "align"
+            | "line"
+            | "stack"
+            | "pile"
+            | "bring"
+            | "take"
+            | "grab"
+            | "pick"
+            | "carry"
+            | "roll"
+            | "shove"
+            | "scoot"
+            | "center"
+            | "centre"
+            | "straighten"
+            | "square"
+            | "face"
+            | "position"
+            | "reposition"
+            | "relocate"
+            | "hang"
+            | "mount"
+            | "arrange"
+            | "get"
+            | "leave"
+            | "keep"
+            | "double"
+            | "halve"
+            | "triple"
+            | "translate"
+            | "elevate"
+            | "sink"
+            | "stand"
+            | "sit"
+            | "lay"
+            | "send"
+            | "shuffle"
+            | "mirror"
+            | "do"
+            | "let's"
+            | "lets"
+            | "want"
+            | "like"
+            | "need"
+            | "see"
+            | "point"
+    )
+}
+
+/// Nouns for places and amounts rather than objects: never an unknown object.
+pub(crate) fn is_place_noun(w: &str) -> bool {
+    matches!(
+        w,
+        "floor"
+            | "ground"
+            | "wall"
+            | "walls"
+            | "ceiling"
+            | "corner"
+            | "corners"
+            | "middle"
+            | "centre"
+            | "center"
+            | "side"
+            | "sides"
+            | "edge"
+            | "room"
+            | "window"
+            | "windows"
+            | "door"
+            | "doors"
+            | "doorway"
+            | "front"
+            | "back"
+            | "top"
+            | "bottom"
+            | "left"
+            | "right"
+            | "way"
+            | "end"
+            | "spot"
+            | "place"
+            | "position"
+            | "positions"
+            | "places"
+            | "area"
+            | "space"
+            | "angle"
+            | "direction"
+            | "axis"
+            | "row"
+            | "line"
+            | "half"
+            | "quarter"
+            | "third"
+            | "bit"
+            | "amount"
+            | "size"
+            | "height"
+            | "width"
+            | "length"
+            | "distance"
+            | "degree"
+            | "degrees"
+            | "turn"
+            | "metre"
+            | "meter"
+            | "metres"
+            | "meters"
+            | "foot"
+            | "feet"
+            | "inch"
+            | "inches"
+            | "unit"
+            | "units"
+            | "order"
+            | "same"
+            | "other"
+            | "one"
+            | "ones"
+            | "lot"
+            | "touch"
+            | "couple"
+            | "few"
+            | "time"
+            | "times"
+            | "percent"
+            | "scene"
+            | "house"
+            | "kitchen"
+            | "bedroom"
+            | "bathroom"
+            | "office"
+    )
+}
+
+/// Colour words, which must pick something when a phrase uses them.
+pub(crate) fn is_colour(w: &str) -> bool {
+    matches!(
+        w,
+        "red"
+            | "orange"
+            | "yellow"
+            | "green"
+            | "blue"
+            | "purple"
+            | "violet"
+            | "pink"
+            | "brown"
+            | "black"
+            | "white"
+            | "grey"
+            | "gray"
+            | "silver"
+            | "gold"
+            | "golden"
+            | "beige"
+            | "cream"
+            | "teal"
+            | "navy"
+    )
+}
+
+/// Words between a head and its relation that add nothing: `the lamp that is next to …`.
+pub(crate) fn is_relative_filler(w: &str) -> bool {
+    matches!(
+        w,
+        "that"
+            | "which"
+            | "who"
+            | "is"
+            | "that's"
+            | "thats"
+            | "which's"
+            | "sitting"
+            | "standing"
+            | "lying"
+            | "resting"
+            | "placed"
+            | "located"
+            | "hanging"
+            | "sits"
+            | "stands"
+            | "currently"
+            | "right"
+            | "just"
+            | "directly"
+    )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tokens_keep_their_spans() {
+        let text = "Put the ‘Dog-Bed’ by chair #7, please.";
+        let t = tokenize(text);
+        let words: Vec<String> = t
+            .iter()
+            .map(|t| match &t.kind {
+                Kind::Word(w) => w.clone(),
+                Kind::Number(n) => format!("{n}"),
+                Kind::Quoted(q) => format!("'{q}'"),
+                Kind::Punct(c) => c.to_string(),
+            })
+            .collect();
+        assert_eq!(
+            words,
+            [
+                "put",
+                "the",
+                "'Dog-Bed'",
+                "by",
+                "chair",
+                "#",
+                "7",
+                ",",
+                "please",
+                "."
+            ]
+        );
+        assert_eq!(&text[t[2].span.clone()], "‘Dog-Bed’");
+        assert_eq!(&text[t[8].span.clone()], "please");
+        assert_eq!(tokenize("the sofa's arm")[1].word(), Some("sofa's"));
+        assert_eq!(tokenize("1.5m")[0].word(), Some("1.5m"));
+    }
+
+    #[test]
+    fn names_normalise() {
+        assert_eq!(normalize("Dog-Bed"), "dog bed");
+        assert_eq!(normalize("SheenChair"), "sheen chair");
+        assert_eq!(normalize("Sphere.010"), "sphere 10");
+        assert_eq!(normalize("garbage_can  2"), "garbage can 2");
+        assert_eq!(normalize("TVStand"), "tvstand");
+        assert_eq!(normalize("large.box"), "large box");
+        assert_eq!(normalize("chair7"), "chair 7");
+        assert_eq!(normalize("Cube (node 4)"), "cube 4");
+        assert_eq!(compact("dog bed"), "dogbed");
+        assert_eq!(split_number("chair 7"), ("chair", Some(7)));
+        assert_eq!(split_number("chair"), ("chair", None));
+    }
+
+    #[test]
+    fn plurals() {
+        assert!(singular("chairs").contains(&"chair".to_string()));
+        assert!(singular("boxes").contains(&"box".to_string()));
+        assert!(singular("benches").contains(&"bench".to_string()));
+        assert!(singular("shelves").contains(&"shelf".to_string()));
+        assert!(singular("batteries").contains(&"battery".to_string()));
+        assert!(singular("glass").is_empty());
+        assert!(singular("bus").is_empty());
+    }
+}
