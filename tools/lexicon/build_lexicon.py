@@ -460,16 +460,19 @@ def build(wn: WordNet, concepts: dict[str, Concept], by_offset: dict[str, Concep
     #    by match_key, as the Rust side reads them ("living-room" is "living room").
     claims: dict[str, set[str]] = {}
     for c in concepts.values():
-        for phrase in [c.term, *c.seeds, *c.extra_synonyms, *c.wordnet]:
+        for phrase in [c.term, *c.seeds, *c.extra_synonyms]:
             claims.setdefault(match_key(phrase), set()).add(c.term)
 
-    # 3. The collision rule: a WordNet lemma that another concept also claims is
-    #    dropped, unless this concept claims it explicitly.
+    # 3. The collision rule: a WordNet lemma that another concept claims explicitly (as
+    #    its term, a seed or an extra synonym) is dropped, unless this concept claims it
+    #    explicitly too. A lemma two concepts share only through WordNet ("closet" for a
+    #    cupboard and a wardrobe) is kept in both: grounding then refuses it as ambiguous
+    #    where a scene has both, and reads it where a scene has one.
     for c in concepts.values():
         explicit = {match_key(x) for x in [c.term, *c.seeds, *c.extra_synonyms]}
         keep = []
         for phrase in c.wordnet:
-            others = sorted(claims[match_key(phrase)] - {c.term})
+            others = sorted(claims.get(match_key(phrase), set()) - {c.term})
             if others and match_key(phrase) not in explicit:
                 report["dropped"].append((c.term, phrase, others))
             else:

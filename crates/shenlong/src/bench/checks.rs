@@ -353,6 +353,36 @@ impl Check {
         })
     }
 
+    /// The objects the check is about (its `object` field; both objects of a swap): what
+    /// the instruction acts on, so not among the "others" that must stay unchanged.
+    pub fn subjects(&self) -> Vec<&ObjectRef> {
+        if let Check::Swapped { object, other, .. } = self {
+            return vec![object, other];
+        }
+        let one: Option<&ObjectRef> = match self {
+            Check::Moved { object, .. }
+            | Check::Direction { object, .. }
+            | Check::Rotated { object, .. }
+            | Check::Scaled { object, .. }
+            | Check::At { object, .. }
+            | Check::OnTop { object, .. }
+            | Check::NextTo { object, .. }
+            | Check::Side { object, .. }
+            | Check::Above { object, .. }
+            | Check::Below { object, .. }
+            | Check::Aligned { object, .. }
+            | Check::Faces { object, .. }
+            | Check::Distance { object, .. }
+            | Check::Between { object, .. }
+            | Check::Swapped { object, .. } => Some(object),
+            Check::Unchanged { .. }
+            | Check::NoCollision
+            | Check::InsideBounds
+            | Check::Refused { .. } => None,
+        };
+        one.into_iter().collect()
+    }
+
     /// The object references the check uses.
     pub fn placeholders(&self) -> Vec<String> {
         let refs: Vec<&ObjectRef> = match self {

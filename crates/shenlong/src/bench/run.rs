@@ -84,7 +84,18 @@ pub fn run_one(
         collisions: collide.then(Default::default),
     };
     let result = edit(&mut after, &instance.instruction, translator, &options);
-    let bound: HashMap<String, usize> = instance.bound.iter().cloned().collect();
+    // The placeholders, and the objects the checks are about by name: "others" are the
+    // objects none of these name (a swap's other object is a subject of its own check).
+    let mut bound: HashMap<String, usize> = instance.bound.iter().cloned().collect();
+    for check in &query.expect {
+        for name in check.subjects() {
+            if !bound.contains_key(name) {
+                if let Some(i) = scene.find(name) {
+                    bound.insert(name.clone(), i);
+                }
+            }
+        }
+    }
     let mut outcome = Outcome {
         instance: instance.id.clone(),
         query: query.id.clone(),

@@ -48,6 +48,9 @@ pub(crate) struct NameIndex {
     pub descriptors: Vec<HashSet<String>>,
     /// Every word that can describe some object.
     pub descriptor_words: HashSet<String>,
+    /// The words of the objects' attributes (colours, materials): a phrase that uses one
+    /// must be picking by it.
+    pub attribute_words: HashSet<String>,
     /// Single words of all terms, by length in characters, for typo correction.
     vocabulary: Vec<Vec<String>>,
     /// The longest term, in words.
@@ -99,7 +102,10 @@ impl NameIndex {
                 descriptors.extend(w.iter().map(|s| s.to_string()));
             }
             for attribute in &object.labels.attributes {
-                descriptors.extend(normalize(attribute).split(' ').map(str::to_string));
+                for w in normalize(attribute).split(' ') {
+                    descriptors.insert(w.to_string());
+                    index.attribute_words.insert(w.to_string());
+                }
             }
             // Lexicon: synonyms of what the object is called, and its hypernyms.
             for (kind, whole) in &kinds {
@@ -173,6 +179,19 @@ impl NameIndex {
         let list = self.terms.get(phrase)?;
         let best = list.iter().map(|e| e.tier).min()?;
         Some((best, list.iter().filter(|e| e.tier == best).collect()))
+    }
+
+    /// Every object a normalised phrase names literally — by name, alias or category, the
+    /// best tiers — when it names any that way: what modifiers pick among (`the smallest
+    /// barrel` compares 'barrel', 'barrel 2' and 'small barrel').
+    pub fn lookup_literal(&self, phrase: &str) -> Vec<usize> {
+        self.terms
+            .get(phrase)
+            .into_iter()
+            .flatten()
+            .filter(|e| e.tier <= Tier::Category)
+            .map(|e| e.object)
+            .collect()
     }
 
     /// The objects whose name or base name is this phrase without spaces (`dogbed`).

@@ -119,6 +119,11 @@ struct Head {
     range: Range<usize>,
     /// Candidates, by match.
     objects: Vec<usize>,
+    /// Every object the head names literally (name, alias, category): what modifiers
+    /// pick among.
+    literal: Vec<usize>,
+    /// `everything`, `the things`: a head that needs a modifier to say which.
+    generic: bool,
     tier: Tier,
     plural: bool,
     /// The head as a person wrote it, normalised (`chair`).
@@ -141,10 +146,18 @@ struct Np {
 /// A modifier after the noun.
 #[derive(Clone, Debug)]
 enum Post {
-    Side(words::Axis, f64, String),
+    Side(words::Axis, f64),
     Middle,
-    From(Direction, String),
-    Relation(Relation, usize, String),
+    From(Direction),
+    Relation(Relation, Vec<usize>),
+}
+
+/// Whether a noun phrase stands on its own, or names the other object of a modifier
+/// (where several fitting objects are fine: `the phone on the chair` looks at every chair).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Mode {
+    Main,
+    Nested,
 }
 
 /// The instruction's words with corrections, shared by the readers.
@@ -411,7 +424,7 @@ impl<'a> Reader<'a> {
             match head {
                 Some(head) if self.opens_ok(&head) => {
                     let end = head.range.end;
-                    let np = self.noun_phrase(head, &bound, true)?;
+                    let np = self.noun_phrase(head, &bound, Mode::Main)?;
                     self.commit(np, &mut phrases, &mut nps);
                     k = end;
                 }
@@ -482,7 +495,7 @@ impl<'a> Reader<'a> {
                     return Some(self.make_head(range, objects, tier, true, singular, &via, typo));
                 }
             }
-            if len >= 1 && phrase.contains(' ') || phrase.chars().count() >= 4 {
+            if phrase.contains(' ') || phrase.chars().count() >= 4 {
                 if let Some(objects) = index.lookup_compact(&phrase) {
                     let head = self.make_head(
                         range,
@@ -505,6 +518,24 @@ impl<'a> Reader<'a> {
                     });
                 }
             }
+        }
+        let w = self.words[k].as_deref().unwrap_or("");
+        if matches!(w, "everything" | "things" | "stuff" | "items" | "objects") {
+            let all: Vec<usize> = (0..self.scene.objects.len()).collect();
+            return Some(Head {
+                range: k..k + 1,
+                literal: all.clone(),
+                objects: all,
+                generic: true,
+                tier: Tier::Category,
+                plural: true,
+                text: "thing".into(),
+                reason: Reason {
+                    kind: ReasonKind::Group,
+                    detail: format!("\"{w}\": the objects the modifier names"),
+                },
+                typo: None,
+            });
         }
         None
     }
@@ -539,9 +570,15 @@ impl<'a> Reader<'a> {
                 format!("a '{via}' is a kind of {text}"),
             ),
         };
+        let mut literal = self.g.index.lookup_literal(&text);
+        if literal.is_empty() || tier > Tier::Category {
+            literal = objects.clone();
+        }
         Head {
             range,
             objects,
+            literal,
+            generic: false,
             tier,
             plural,
             text,
@@ -573,7 +610,9 @@ impl<'a> Reader<'a> {
         }
         Some(Head {
             range: k..k + 1,
+            literal: objects.clone(),
             objects,
+            generic: false,
             tier: Tier::Name,
             plural,
             text: previous.head.clone(),
@@ -631,7 +670,7 @@ impl<'a> Reader<'a> {
             Kind::Word(w) if words::is_determiner(w) => false,
             Kind::Word(w) => {
                 let w = w.trim_end_matches("'s");
-                words::side_word(w).is_some()
+                words::side_parts(w).is_some()
                     || words::size_word(w).is_some()
                     || words::ordinal(w).is_some()
                     || words::count_word(w).is_some()
@@ -659,7 +698,7 @@ impl<'a> Reader<'a> {
 
     /// Reads the noun phrase around a head: determiner and modifiers before it, and (when
     /// `post` and the noun alone fits several) a modifier after it.
-    fn noun_phrase(&self, head: Head, bound: &[usize], post: bool) -> Result<Np, GroundError> {
+    fn noun_phrase(&self, head: Head, bound: &[usize], mode: Mode) -> Result<Np, GroundError> {
         let h = head.range.start;
         let mut start = self.premodifier_start(h);
         let premods: Vec<usize> = (start..h).collect();
@@ -704,15 +743,24 @@ impl<'a> Reader<'a> {
                 outer_count = Some(Count::One);
             }
         }
-        let mut objects = head.objects.clone();
-        let pool = head.objects.clone();
+        // With modifiers, every object the noun names literally is a candidate: "the
+        // smallest barrel" compares 'barrel', 'barrel 2' and 'small barrel'.
+        let modified = !premods.is_empty() || !outer.is_empty();
+        let mut objects = if modified {
+            head.literal.clone()
+        } else {
+            head.objects.clone()
+        };
+        let pool = head.literal.clone();
         let mut reasons = vec![head.reason.clone()];
         if let Some(t) = &head.typo {
             reasons.push(t.clone());
         }
         let mut ordinal: Option<usize> = None;
-        let mut selectors: Vec<usize> = Vec::new();
-        for &m in &premods {
+        let mut sides: Vec<(words::Axis, f64, String)> = Vec::new();
+        let mut sizes: Vec<String> = Vec::new();
+        let mut middle = false;
+        for &m in premods.iter().chain(&outer) {
             match &self.tokens[m].kind {
                 Kind::Number(x) => count = Count::Exactly(*x as usize),
                 Kind::Word(w) => {
@@ -729,11 +777,12 @@ impl<'a> Reader<'a> {
                         }
                     } else if w == "same" {
                         // "the same chair": no pick.
-                    } else if words::side_word(w).is_some()
-                        || words::size_word(w).is_some()
-                        || matches!(w, "middle" | "center" | "centre")
-                    {
-                        selectors.push(m);
+                    } else if let Some(parts) = words::side_parts(w) {
+                        sides.extend(parts.into_iter().map(|(a, s)| (a, s, w.to_string())));
+                    } else if words::size_word(w).is_some() {
+                        sizes.push(w.to_string());
+                    } else if matches!(w, "middle" | "center" | "centre") {
+                        middle = true;
                     } else {
                         let d = words::normalize(w);
                         let fits: Vec<usize> = objects
@@ -742,7 +791,9 @@ impl<'a> Reader<'a> {
                             .filter(|&o| self.g.index.descriptors[o].contains(&d))
                             .collect();
                         if fits.is_empty() {
-                            if words::is_colour(w) || self.g.index.descriptor_words.contains(&d) {
+                            // A colour or material must pick; a word of another object's
+                            // name ("the dining chair") says nothing about these.
+                            if words::is_colour(w) || self.g.index.attribute_words.contains(&d) {
                                 return Err(GroundError::NoPick {
                                     phrase: self.span_text(&(start..head.range.end)),
                                     reason: format!(
@@ -787,59 +838,128 @@ impl<'a> Reader<'a> {
         };
         let mut end = head.range.end;
         let phrase_so_far = |end: usize| self.span_text(&(start..end));
-        selectors.extend(outer);
-        let last_selector = selectors.last().copied();
-        for &m in &selectors {
-            let w = self.word(m).unwrap_or("").to_string();
-            let n = need(count, objects.len());
-            // "the front left chair": every selector but the last keeps all the
-            // candidates at its end, the last picks.
-            if Some(m) != last_selector && ordinal.is_none() {
-                if let Some((axis, sign)) = words::side_word(&w) {
-                    let picked = select::at_side(self.scene, &objects, axis, sign);
-                    if picked.len() < objects.len() {
-                        reasons.push(modifier(&format!(
-                            "\"{w}\" kept {}",
-                            error::list(&self.names(&picked))
-                        )));
+        let wanted = need(count, objects.len());
+        let needs_post = objects.len() != wanted || ordinal.is_some() || head.generic;
+        if mode == Mode::Main && needs_post && (!matches!(count, Count::All) || head.generic) {
+            if !modified {
+                objects = head.literal.clone();
+            }
+            if let Some((p, p_end)) = self.post_modifier(end, bound)? {
+                let words = self.span_text(&(end..p_end));
+                let at = self.span_text(&(start..p_end));
+                // With modifiers before the noun still to pick ("the front painting on the
+                // right wall"), the modifier after it keeps every object it fits.
+                let filter = !sides.is_empty() || !sizes.is_empty() || middle;
+                let wanted = if head.generic || filter {
+                    usize::MAX
+                } else {
+                    wanted
+                };
+                match p {
+                    Post::Side(axis, sign) => {
+                        if let Some(o) = ordinal.take() {
+                            let picked =
+                                select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
+                                    .ok_or_else(|| self.too_close(&at, &objects, &words))?;
+                            objects = vec![picked];
+                        } else if filter {
+                            objects = select::at_side(self.scene, &objects, axis, sign);
+                        } else {
+                            let mut direction = glam::DVec3::ZERO;
+                            direction[axis as usize] = sign;
+                            objects = select::by_direction(
+                                self.scene,
+                                &objects,
+                                direction,
+                                wanted.min(objects.len()),
+                            )
+                            .ok_or_else(|| self.too_close(&at, &objects, &words))?;
+                        }
                     }
-                    objects = picked;
-                    continue;
+                    Post::Middle => {
+                        let picked = select::middle(self.scene, &objects)
+                            .ok_or_else(|| self.too_close(&at, &objects, "in the middle"))?;
+                        objects = vec![picked];
+                    }
+                    Post::From(direction) => {
+                        let o = ordinal.take().unwrap_or(1);
+                        let picked = select::nth(self.scene, &objects, o, direction)
+                            .ok_or_else(|| self.too_close(&at, &objects, &words))?;
+                        objects = vec![picked];
+                    }
+                    Post::Relation(relation, targets) => {
+                        objects =
+                            select::by_relation(self.scene, &objects, relation, &targets, wanted)
+                                .ok_or_else(|| GroundError::NoPick {
+                                phrase: at.clone(),
+                                reason: if head.generic {
+                                    format!("nothing is {words}")
+                                } else {
+                                    format!(
+                                        "no single {} is clearly {words} (the {}s here are {})",
+                                        head.text,
+                                        head.text,
+                                        error::list(&self.names(&objects))
+                                    )
+                                },
+                            })?;
+                    }
                 }
+                reasons.push(modifier(&format!(
+                    "\"{words}\" picked {}",
+                    error::list(&self.names(&objects))
+                )));
+                end = p_end;
+            } else if head.generic {
+                return Err(GroundError::NoPick {
+                    phrase: phrase_so_far(end),
+                    reason: "say which things ('everything on the table')".into(),
+                });
             }
-            if let Some(o) = ordinal {
-                if let Some((axis, sign)) = words::side_word(&w) {
-                    // "the second left chair" reads as the second from the left.
-                    let picked = select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
-                        .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &w))?;
-                    objects = vec![picked];
-                    ordinal = None;
-                    reasons.push(modifier(&format!("\"{w}\" counted from the {w}")));
-                    continue;
+        }
+        if !sides.is_empty() {
+            let words_used: Vec<String> = sides.iter().map(|s| s.2.clone()).collect();
+            let label = words_used.join(" ");
+            if let (Some(o), [(axis, sign, _)]) = (ordinal, sides.as_slice()) {
+                // "the second left chair": the second from the left.
+                let picked = select::nth(self.scene, &objects, o, Direction::Side(*axis, *sign))
+                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &label))?;
+                objects = vec![picked];
+                ordinal = None;
+            } else {
+                let mut direction = glam::DVec3::ZERO;
+                for (axis, sign, _) in &sides {
+                    let mut unit = glam::DVec3::ZERO;
+                    unit[*axis as usize] = *sign;
+                    if direction.dot(unit) <= 0.0 {
+                        direction += unit;
+                    }
                 }
-            }
-            if let Some((axis, sign)) = words::side_word(&w) {
-                let picked = select::by_side(self.scene, &objects, axis, sign, n)
-                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &w))?;
-                if picked.len() < objects.len() {
-                    reasons.push(modifier(&format!(
-                        "\"{w}\" picked {}",
-                        error::list(&self.names(&picked))
-                    )));
-                }
+                let n = need(count, objects.len());
+                let picked = select::by_direction(self.scene, &objects, direction, n)
+                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &label))?;
                 objects = picked;
-            } else if let Some((measure, sign, degree)) = words::size_word(&w) {
-                let picked = select::by_size(self.scene, &objects, measure, sign, degree, n).map_err(|e| {
+            }
+            reasons.push(modifier(&format!(
+                "\"{label}\" picked {}",
+                error::list(&self.names(&objects))
+            )));
+        }
+        for w in &sizes {
+            let (measure, sign, degree) = words::size_word(w).expect("a size word");
+            let n = need(count, objects.len());
+            let picked =
+                select::by_size(self.scene, &objects, measure, sign, degree, n).map_err(|e| {
                     GroundError::NoPick {
                         phrase: phrase_so_far(end),
                         reason: match e {
                             SizeError::ComparesTwo => format!(
-                                "\"{w}\" compares two, but {} {}s fit ({}); say 'the {}' or name one",
-                                objects.len(),
-                                head.text,
-                                error::list(&self.names(&objects)),
-                                superlative(&w)
-                            ),
+                            "\"{w}\" compares two, but {} {}s fit ({}); say 'the {}' or name one",
+                            objects.len(),
+                            head.text,
+                            error::list(&self.names(&objects)),
+                            superlative(w)
+                        ),
                             SizeError::TooClose => format!(
                                 "{} are too close in size to tell which is {w}; name one ('{}')",
                                 error::list(&self.names(&objects)),
@@ -848,95 +968,22 @@ impl<'a> Reader<'a> {
                         },
                     }
                 })?;
-                if picked.len() < objects.len() {
-                    reasons.push(modifier(&format!(
-                        "\"{w}\" picked {}",
-                        error::list(&self.names(&picked))
-                    )));
-                }
-                objects = picked;
-            } else if objects.len() > 1 {
-                let picked = select::middle(self.scene, &objects)
-                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &w))?;
-                reasons.push(modifier(&format!("\"{w}\" picked {}", self.name(picked))));
-                objects = vec![picked];
+            if picked.len() < objects.len() {
+                reasons.push(modifier(&format!(
+                    "\"{w}\" picked {}",
+                    error::list(&self.names(&picked))
+                )));
             }
+            objects = picked;
         }
-        let wanted = need(count, objects.len());
-        if post && (objects.len() != wanted || ordinal.is_some()) && !matches!(count, Count::All) {
-            if let Some((p, p_end)) = self.post_modifier(end, bound)? {
-                match p {
-                    Post::Side(axis, sign, words) => {
-                        if let Some(o) = ordinal.take() {
-                            let picked =
-                                select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
-                                    .ok_or_else(|| {
-                                    self.too_close(
-                                        &self.span_text(&(start..p_end)),
-                                        &objects,
-                                        &words,
-                                    )
-                                })?;
-                            objects = vec![picked];
-                        } else {
-                            objects = select::by_side(self.scene, &objects, axis, sign, wanted)
-                                .ok_or_else(|| {
-                                    self.too_close(
-                                        &self.span_text(&(start..p_end)),
-                                        &objects,
-                                        &words,
-                                    )
-                                })?;
-                        }
-                        reasons.push(modifier(&format!(
-                            "\"{words}\" picked {}",
-                            error::list(&self.names(&objects))
-                        )));
-                    }
-                    Post::Middle => {
-                        let picked = select::middle(self.scene, &objects).ok_or_else(|| {
-                            self.too_close(
-                                &self.span_text(&(start..p_end)),
-                                &objects,
-                                "in the middle",
-                            )
-                        })?;
-                        objects = vec![picked];
-                        reasons.push(modifier(&format!(
-                            "\"in the middle\" picked {}",
-                            self.name(picked)
-                        )));
-                    }
-                    Post::From(direction, words) => {
-                        let o = ordinal.take().unwrap_or(1);
-                        let picked =
-                            select::nth(self.scene, &objects, o, direction).ok_or_else(|| {
-                                self.too_close(&self.span_text(&(start..p_end)), &objects, &words)
-                            })?;
-                        objects = vec![picked];
-                        reasons.push(modifier(&format!("counted {words}: {}", self.name(picked))));
-                    }
-                    Post::Relation(relation, target, words) => {
-                        let picked =
-                            select::by_relation(self.scene, &objects, relation, target, wanted)
-                                .ok_or_else(|| GroundError::NoPick {
-                                    phrase: self.span_text(&(start..p_end)),
-                                    reason: format!(
-                                        "no single {} is clearly {words} (the {}s here are {})",
-                                        head.text,
-                                        head.text,
-                                        error::list(&self.names(&objects))
-                                    ),
-                                })?;
-                        objects = picked;
-                        reasons.push(modifier(&format!(
-                            "\"{words}\" picked {}",
-                            error::list(&self.names(&objects))
-                        )));
-                    }
-                }
-                end = p_end;
-            }
+        if middle && objects.len() > 1 {
+            let picked = select::middle(self.scene, &objects)
+                .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, "in the middle"))?;
+            reasons.push(modifier(&format!(
+                "\"middle\" picked {}",
+                self.name(picked)
+            )));
+            objects = vec![picked];
         }
         let phrase = self.span_text(&(start..end));
         if let Some(o) = ordinal {
@@ -953,6 +1000,12 @@ impl<'a> Reader<'a> {
                 });
             }
         }
+        if head.generic && end == head.range.end {
+            return Err(GroundError::NoPick {
+                phrase,
+                reason: "say which things ('everything on the table')".into(),
+            });
+        }
         let wanted = need(count, objects.len());
         if objects.is_empty() {
             return Err(GroundError::Unknown {
@@ -960,7 +1013,8 @@ impl<'a> Reader<'a> {
                 suggestions: Vec::new(),
             });
         }
-        if objects.len() != wanted {
+        let ambiguous_ok = mode == Mode::Nested && count == Count::One;
+        if objects.len() != wanted && !ambiguous_ok {
             let names = self.names(&objects);
             return Err(match count {
                 Count::One => GroundError::Ambiguous {
@@ -976,20 +1030,18 @@ impl<'a> Reader<'a> {
                 },
             });
         }
-        if head.typo.is_some() && objects.len() != 1 {
+        if head.typo.is_some() && objects.len() != 1 && mode == Mode::Main {
             return Err(GroundError::Unknown {
                 phrase,
                 suggestions: self.names(&objects),
             });
         }
-        if objects.len() > 1 {
+        if objects.len() > 1 && mode == Mode::Main {
             reasons.push(Reason {
                 kind: ReasonKind::Group,
                 detail: format!("{} objects", objects.len()),
             });
-        }
-        // Groups bind in a stable order: left to right, then back to front.
-        if objects.len() > 1 {
+            // Groups bind in a stable order: left to right, then back to front.
             objects.sort_by(|&a, &b| {
                 let (ca, cb) = (
                     self.scene.objects[a].world_aabb().center(),
@@ -1038,8 +1090,9 @@ impl<'a> Reader<'a> {
         hints
     }
 
-    /// A modifier after the noun at token `k`: `on the left`, `in the middle`, `from the
-    /// window`, `nearest the sofa`, `on the side table`, `that is next to the bed`.
+    /// A modifier after the noun at token `k`: `on the left`, `on the right wall`, `in the
+    /// middle`, `from the window`, `nearest the sofa`, `on the side table`, `that is next
+    /// to the bed`, `with the lamp on it`.
     fn post_modifier(
         &self,
         k: usize,
@@ -1053,8 +1106,11 @@ impl<'a> Reader<'a> {
             j += 1;
         }
         let w = |k: usize| self.word(k).unwrap_or("");
-        // on the left, on the far right, on the left-hand side, at the front, at the back.
-        if matches!(w(j), "on" | "at" | "in" | "to") && w(j + 1) == "the" {
+        // on the left, on the far right, on the left-hand side, on the right wall, at the
+        // front, at the back.
+        if matches!(w(j), "on" | "at" | "in" | "to" | "against" | "along" | "by")
+            && w(j + 1) == "the"
+        {
             let mut s = j + 2;
             if w(s) == "far" || w(s) == "very" {
                 s += 1;
@@ -1062,15 +1118,12 @@ impl<'a> Reader<'a> {
             if let Some((axis, sign)) = words::side_word(w(s)) {
                 if !matches!(w(s + 1), "of") {
                     let mut end = s + 1;
-                    if matches!(w(end), "side" | "end") {
+                    if matches!(w(end), "side" | "end" | "wall") {
                         end += 1;
                     } else if w(end) == "hand" && w(end + 1) == "side" {
                         end += 2;
                     }
-                    return Ok(Some((
-                        Post::Side(axis, sign, self.span_text(&(j..end))),
-                        end,
-                    )));
+                    return Ok(Some((Post::Side(axis, sign), end)));
                 }
             }
             if matches!(w(s), "middle" | "center" | "centre") && w(s + 1) != "of" {
@@ -1081,29 +1134,49 @@ impl<'a> Reader<'a> {
             if w(j + 1) == "the" {
                 if let Some((axis, sign)) = words::side_word(w(j + 2)) {
                     if w(j + 3) != "of" {
-                        let end = j + 3;
-                        return Ok(Some((
-                            Post::From(Direction::Side(axis, sign), self.span_text(&(j..end))),
-                            end,
-                        )));
+                        let mut end = j + 3;
+                        if matches!(w(end), "side" | "end" | "wall") {
+                            end += 1;
+                        }
+                        return Ok(Some((Post::From(Direction::Side(axis, sign)), end)));
                     }
                 }
             }
-            if let Some((np, end)) = self.nested_np(j + 1, bound)? {
-                let c = self.scene.objects[np].world_aabb().center();
-                return Ok(Some((
-                    Post::From(Direction::From(c), self.span_text(&(j..end))),
-                    end,
-                )));
+            if let Some((targets, end)) = self.nested_np(j + 1, bound)? {
+                if let [one] = targets.as_slice() {
+                    let c = self.scene.objects[*one].world_aabb().center();
+                    return Ok(Some((Post::From(Direction::From(c)), end)));
+                }
+            }
+            return Ok(None);
+        }
+        // with the lamp (on it), that has the clock on it, holding the vase.
+        if matches!(
+            w(j),
+            "with" | "has" | "holds" | "holding" | "carrying" | "having"
+        ) {
+            if let Some((targets, mut end)) = self.nested_np(j + 1, bound)? {
+                for tail in [
+                    &["on", "top", "of", "it"][..],
+                    &["on", "top"],
+                    &["on", "it"],
+                    &["in", "it"],
+                    &["on"],
+                ] {
+                    if tail.iter().enumerate().all(|(t, x)| w(end + t) == *x)
+                        && (tail.len() > 1 || matches!(w(end + 1), "it" | ""))
+                    {
+                        end += tail.len();
+                        break;
+                    }
+                }
+                return Ok(Some((Post::Relation(Relation::Carries, targets), end)));
             }
             return Ok(None);
         }
         if let Some((relation, after)) = self.relation_at(j) {
-            if let Some((target, end)) = self.nested_np(after, bound)? {
-                return Ok(Some((
-                    Post::Relation(relation, target, self.span_text(&(j..end))),
-                    end,
-                )));
+            if let Some((targets, end)) = self.nested_np(after, bound)? {
+                return Ok(Some((Post::Relation(relation, targets), end)));
             }
         }
         Ok(None)
@@ -1112,21 +1185,29 @@ impl<'a> Reader<'a> {
     /// A relation word group at `j` and where its object starts.
     fn relation_at(&self, j: usize) -> Option<(Relation, usize)> {
         let w = |k: usize| self.word(k).unwrap_or("");
+        let four = (w(j), w(j + 1), w(j + 2), w(j + 3));
+        let by_four = match four {
+            ("to" | "on" | "at", "the", "left", "of") => Some(Relation::LeftOf),
+            ("to" | "on" | "at", "the", "right", "of") => Some(Relation::RightOf),
+            ("at" | "on" | "in", "the", "back" | "rear", "of") => Some(Relation::Behind),
+            ("at" | "on" | "in", "the", "front", "of") => Some(Relation::InFront),
+            _ => None,
+        };
+        if let Some(r) = by_four {
+            return Some((r, j + 4));
+        }
         let (r, len) = match (w(j), w(j + 1), w(j + 2)) {
             ("on", "top", "of") => (Relation::On, 3),
             ("in", "front", "of") => (Relation::InFront, 3),
             ("in", "back", "of") => (Relation::Behind, 3),
-            ("to", "the", "left") if w(j + 3) == "of" => (Relation::LeftOf, 4),
-            ("to", "the", "right") if w(j + 3) == "of" => (Relation::RightOf, 4),
             ("left", "of", _) => (Relation::LeftOf, 2),
             ("right", "of", _) => (Relation::RightOf, 2),
             ("next", "to", _) => (Relation::Near, 2),
             ("close", "to", _) => (Relation::Near, 2),
             ("near", "to", _) => (Relation::Near, 2),
             ("nearest", "to", _) | ("closest", "to", _) => (Relation::Nearest, 2),
-            ("farthest" | "furthest", "from", _) | ("farthest" | "furthest", "away", _) => {
-                (Relation::Farthest, if w(j + 2) == "from" { 3 } else { 2 })
-            }
+            ("farthest" | "furthest", "from", _) => (Relation::Farthest, 2),
+            ("farthest" | "furthest", "away", "from") => (Relation::Farthest, 3),
             ("on" | "onto" | "upon" | "atop", _, _) => (Relation::On, 1),
             ("under" | "below" | "beneath" | "underneath", _, _) => (Relation::Under, 1),
             ("above" | "over", _, _) => (Relation::Above, 1),
@@ -1138,11 +1219,16 @@ impl<'a> Reader<'a> {
         Some((r, j + len))
     }
 
-    /// A noun phrase naming one object, inside a modifier (`the side table` in `the book
-    /// on the side table`).
-    fn nested_np(&self, j: usize, bound: &[usize]) -> Result<Option<(usize, usize)>, GroundError> {
+    /// The other object(s) of a modifier (`the side table` in `the book on the side
+    /// table`): one object, or every object a still ambiguous phrase fits (`the phone on
+    /// the chair` looks at every chair).
+    fn nested_np(
+        &self,
+        j: usize,
+        bound: &[usize],
+    ) -> Result<Option<(Vec<usize>, usize)>, GroundError> {
         if let Some(Kind::Quoted(name)) = self.tokens.get(j).map(|t| &t.kind) {
-            return Ok(self.scene.find(name).map(|i| (i, j + 1)));
+            return Ok(self.scene.find(name).map(|i| (vec![i], j + 1)));
         }
         // Skip the determiner and modifiers to the head.
         let mut h = j;
@@ -1159,14 +1245,14 @@ impl<'a> Reader<'a> {
         let Some(head) = self.head_at(h) else {
             return Ok(None);
         };
-        let np = self.noun_phrase(head, bound, false)?;
+        if head.generic {
+            return Ok(None);
+        }
+        let np = self.noun_phrase(head, bound, Mode::Nested)?;
         if np.range.start > j {
             return Ok(None);
         }
-        match np.objects.as_slice() {
-            [one] => Ok(Some((*one, np.range.end))),
-            _ => Ok(None),
-        }
+        Ok(Some((np.objects, np.range.end)))
     }
 
     /// Refuses a noun the lexicon knows, after a determiner, that no object answers to:

@@ -23,6 +23,8 @@ pub(crate) const NEAR_LIMIT: f64 = 1.5;
 pub(crate) enum Relation {
     /// Resting on it (`the book on the side table`).
     On,
+    /// Carrying it (`the desk with the lamp on it`).
+    Carries,
     /// Under it.
     Under,
     /// Above or over it (`the painting above the sofa`).
@@ -67,19 +69,29 @@ fn take_extreme(
     separated(last_in, first_out).then(|| order[..need].iter().map(|&k| candidates[k]).collect())
 }
 
-/// The candidates at one side of the room (`left` = smallest x …).
-pub(crate) fn by_side(
+/// The `need` candidates farthest along a direction (`front left` = (−1, 0, +1)), when
+/// clearly apart from the rest. A diagonal needs twice the margin of a side.
+pub(crate) fn by_direction(
     scene: &Scene,
     candidates: &[usize],
-    axis: Axis,
-    sign: f64,
+    direction: DVec3,
     need: usize,
 ) -> Option<Vec<usize>> {
+    let axes = [direction.x, direction.y, direction.z]
+        .iter()
+        .filter(|c| **c != 0.0)
+        .count();
+    let margin = if axes > 1 {
+        2.0 * POSITION_MARGIN
+    } else {
+        POSITION_MARGIN
+    };
+    let d = direction.normalize_or_zero();
     let keys: Vec<f64> = boxes(scene, candidates)
         .iter()
-        .map(|b| -sign * axis.of(b.center()))
+        .map(|b| -b.center().dot(d))
         .collect();
-    take_extreme(candidates, &keys, need, |a, b| b - a > POSITION_MARGIN)
+    take_extreme(candidates, &keys, need, |a, b| b - a > margin)
 }
 
 /// All the candidates at one side: those within [`POSITION_MARGIN`] of the extreme.
@@ -88,7 +100,7 @@ pub(crate) fn at_side(scene: &Scene, candidates: &[usize], axis: Axis, sign: f64
         .iter()
         .map(|b| -sign * axis.of(b.center()))
         .collect();
-    let best = keys.iter().cloned().fold(f64::INFINITY, f64::min);
+    let best = keys.iter().copied().fold(f64::INFINITY, f64::min);
     candidates
         .iter()
         .zip(&keys)
@@ -206,90 +218,39 @@ fn gap(a: &Aabb, b: &Aabb) -> f64 {
     d.length()
 }
 
-/// The candidates in `relation` to object `target`: `need` of them, clearly picked.
-/// Returns the picked objects, or `None` when no candidate (or not a clear one) stands in
-/// that relation.
+/// The candidates in `relation` to some of the `targets` (one object, or every object a
+/// still ambiguous phrase fits): `need` of them, clearly picked (`usize::MAX`: all that
+/// stand in a membership relation). `None` when no candidate, or no clear one, does.
 pub(crate) fn by_relation(
     scene: &Scene,
     candidates: &[usize],
     relation: Relation,
-    target: usize,
+    targets: &[usize],
     need: usize,
 ) -> Option<Vec<usize>> {
-    let t = scene.objects[target].world_aabb();
     let pool: Vec<usize> = candidates
         .iter()
         .copied()
-        .filter(|&c| c != target)
+        .filter(|c| !targets.contains(c))
         .collect();
-    let b = boxes(scene, &pool);
-    // (candidate, key) of those that stand in the relation; smallest key = best.
+    let target_boxes = boxes(scene, targets);
+    // (candidate, key) of those that stand in the relation to some target; smallest key
+    // is best.
     let mut fits: Vec<(usize, f64)> = Vec::new();
-    for (&c, cb) in pool.iter().zip(&b) {
-        let key = match relation {
-            Relation::On => {
-                let rests = scene.objects[c].support == Some(target)
-                    || ((cb.min.y - t.max.y).abs() < 0.05 && footprint_gap(cb, &t) <= 0.0);
-                if !rests {
-                    continue;
-                }
-                0.0
-            }
-            Relation::Under => {
-                if footprint_gap(cb, &t) > 0.0
-                    || cb.center().y >= t.center().y
-                    || scene.objects[c].support == Some(target)
-                {
-                    continue;
-                }
-                0.0
-            }
-            Relation::Above => {
-                if cb.min.y < t.max.y - 0.05 {
-                    continue;
-                }
-                footprint_gap(cb, &t)
-            }
-            Relation::Near => {
-                let g = gap(cb, &t);
-                if g > NEAR_LIMIT {
-                    continue;
-                }
-                g
-            }
-            Relation::Nearest => gap(cb, &t),
-            Relation::Farthest => -(cb.center() - t.center()).length(),
-            Relation::InFront => {
-                if cb.center().z <= t.max.z {
-                    continue;
-                }
-                gap(cb, &t)
-            }
-            Relation::Behind => {
-                if cb.center().z >= t.min.z {
-                    continue;
-                }
-                gap(cb, &t)
-            }
-            Relation::LeftOf => {
-                if cb.center().x >= t.min.x {
-                    continue;
-                }
-                gap(cb, &t)
-            }
-            Relation::RightOf => {
-                if cb.center().x <= t.max.x {
-                    continue;
-                }
-                gap(cb, &t)
-            }
-        };
-        fits.push((c, key));
+    for (&c, cb) in pool.iter().zip(&boxes(scene, &pool)) {
+        let key = targets
+            .iter()
+            .zip(&target_boxes)
+            .filter_map(|(&t, tb)| relation_key(scene, (c, cb), relation, (t, tb)))
+            .reduce(f64::min);
+        if let Some(key) = key {
+            fits.push((c, key));
+        }
     }
     if fits.is_empty() {
         return None;
     }
-    if matches!(relation, Relation::On | Relation::Under) {
+    if matches!(relation, Relation::On | Relation::Under | Relation::Carries) {
         // Membership relations: all that stand in it, when that is the number wanted.
         return (fits.len() == need || need == usize::MAX)
             .then(|| fits.iter().map(|f| f.0).collect());
@@ -298,15 +259,46 @@ pub(crate) fn by_relation(
     fits.sort_by(|a, b| a.1.total_cmp(&b.1));
     if need < fits.len() {
         let (last_in, first_out) = (fits[need - 1].1, fits[need].1);
-        let clear = if relation == Relation::Farthest {
-            first_out - last_in > DISTANCE_MARGIN
-        } else {
-            first_out - last_in > DISTANCE_MARGIN
-                || first_out > DISTANCE_RATIO * last_in.max(1e-9) && first_out - last_in > 0.02
-        };
+        let clear = first_out - last_in > DISTANCE_MARGIN
+            || (relation != Relation::Farthest
+                && first_out > DISTANCE_RATIO * last_in.max(1e-9)
+                && first_out - last_in > 0.02);
         if !clear {
             return None;
         }
     }
     Some(fits[..need].iter().map(|f| f.0).collect())
+}
+
+/// Whether `upper` rests on `lower`: its support, or its bottom on the other's top over it.
+fn rests_on(scene: &Scene, (upper, ub): (usize, &Aabb), (lower, lb): (usize, &Aabb)) -> bool {
+    scene.objects[upper].support == Some(lower)
+        || ((ub.min.y - lb.max.y).abs() < 0.05 && footprint_gap(ub, lb) <= 0.0)
+}
+
+/// How well a candidate stands in `relation` to a target (smaller is better), or `None`
+/// when it does not.
+fn relation_key(
+    scene: &Scene,
+    (c, cb): (usize, &Aabb),
+    relation: Relation,
+    (t, tb): (usize, &Aabb),
+) -> Option<f64> {
+    let key = match relation {
+        Relation::On => rests_on(scene, (c, cb), (t, tb)).then_some(0.0)?,
+        Relation::Carries => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
+        Relation::Under => (footprint_gap(cb, tb) <= 0.0
+            && cb.center().y < tb.center().y
+            && scene.objects[c].support != Some(t))
+        .then_some(0.0)?,
+        Relation::Above => (cb.min.y >= tb.max.y - 0.05).then(|| footprint_gap(cb, tb))?,
+        Relation::Near => Some(gap(cb, tb)).filter(|g| *g <= NEAR_LIMIT)?,
+        Relation::Nearest => gap(cb, tb),
+        Relation::Farthest => -(cb.center() - tb.center()).length(),
+        Relation::InFront => (cb.center().z > tb.max.z).then(|| gap(cb, tb))?,
+        Relation::Behind => (cb.center().z < tb.min.z).then(|| gap(cb, tb))?,
+        Relation::LeftOf => (cb.center().x < tb.min.x).then(|| gap(cb, tb))?,
+        Relation::RightOf => (cb.center().x > tb.max.x).then(|| gap(cb, tb))?,
+    };
+    Some(key)
 }

@@ -291,6 +291,16 @@ pub(crate) fn side_word(w: &str) -> Option<(Axis, f64)> {
     })
 }
 
+/// The sides a word names: one (`left`), or several for a compound (`back-left`,
+/// `front-right`).
+pub(crate) fn side_parts(w: &str) -> Option<Vec<(Axis, f64)>> {
+    if let Some(one) = side_word(w) {
+        return Some(vec![one]);
+    }
+    let parts: Option<Vec<(Axis, f64)>> = w.split('-').map(side_word).collect();
+    parts.filter(|p| p.len() > 1)
+}
+
 /// What a size word measures.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Measure {
