@@ -159,8 +159,13 @@ impl NameIndex {
             return;
         }
         self.max_words = self.max_words.max(phrase.split(' ').count());
-        let list = self.terms.entry(phrase.to_string()).or_default();
-        match list.iter_mut().find(|e| e.object == object) {
+        // Objects are indexed one after another, so an object's entry for a phrase, if
+        // any, is the list's last: no scan of a list that may hold thousands.
+        let list = match self.terms.get_mut(phrase) {
+            Some(list) => list,
+            None => self.terms.entry(phrase.to_string()).or_default(),
+        };
+        match list.last_mut().filter(|e| e.object == object) {
             Some(e) if e.tier <= tier => {}
             Some(e) => {
                 e.tier = tier;

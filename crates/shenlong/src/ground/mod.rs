@@ -42,6 +42,10 @@ use words::{Count, Kind, Token};
 /// Longest instruction accepted, in characters.
 pub const MAX_INSTRUCTION_CHARS: usize = 2_000;
 
+/// The most objects an ambiguous phrase inside a modifier may stand for: `the phone on
+/// the chair` looks at every chair when there are at most this many.
+pub const MAX_TARGETS: usize = 8;
+
 /// Shortest written word a typo is corrected in.
 pub const TYPO_MIN_LETTERS: usize = 5;
 
@@ -1077,13 +1081,15 @@ impl<'a> Reader<'a> {
     fn hints(&self, head: &str, candidates: &[usize]) -> Vec<String> {
         let mut hints = vec![format!("the left {head}")];
         let c = self.scene.objects[candidates[0]].world_aabb().center();
+        let mut is_candidate = vec![false; self.scene.objects.len()];
+        for &k in candidates {
+            is_candidate[k] = true;
+        }
         let other = (0..self.scene.objects.len())
-            .filter(|i| !candidates.contains(i))
-            .min_by(|&a, &b| {
-                let da = (self.scene.objects[a].world_aabb().center() - c).length();
-                let db = (self.scene.objects[b].world_aabb().center() - c).length();
-                da.total_cmp(&db)
-            });
+            .filter(|&i| !is_candidate[i])
+            .map(|i| (i, (self.scene.objects[i].world_aabb().center() - c).length_squared()))
+            .min_by(|a, b| a.1.total_cmp(&b.1))
+            .map(|(i, _)| i);
         if let Some(o) = other {
             hints.push(format!("the {head} nearest the {}", self.name(o)));
         }
@@ -1248,9 +1254,21 @@ impl<'a> Reader<'a> {
         if head.generic {
             return Ok(None);
         }
+        let text = head.text.clone();
         let np = self.noun_phrase(head, bound, Mode::Nested)?;
         if np.range.start > j {
             return Ok(None);
+        }
+        // A few fitting objects are all looked at ("the phone on the chair"); past that the
+        // phrase itself is what needs saying better.
+        if np.objects.len() > MAX_TARGETS {
+            let names = self.names(&np.objects);
+            return Err(GroundError::Ambiguous {
+                phrase: self.span_text(&np.range),
+                example: names[2].clone(),
+                hints: self.hints(&text, &np.objects),
+                candidates: names,
+            });
         }
         Ok(Some((np.objects, np.range.end)))
     }
