@@ -150,6 +150,8 @@ struct Np {
 /// A modifier after the noun.
 #[derive(Clone, Debug)]
 enum Post {
+    /// On the floor: standing on nothing.
+    Floor,
     Side(words::Axis, f64),
     Middle,
     From(Direction),
@@ -358,6 +360,15 @@ impl<'a> Reader<'a> {
             if let [one] = near.as_slice() {
                 self.typos[k] = Some(w.to_string());
                 self.words[k] = Some(one.to_string());
+            } else if let Some(stem) = w
+                .strip_suffix('s')
+                .filter(|s| s.chars().count() >= TYPO_MIN_LETTERS - 1)
+            {
+                // A typo in a plural: "speakrs".
+                if let [one] = self.g.index.one_edit_away(stem).as_slice() {
+                    self.typos[k] = Some(w.to_string());
+                    self.words[k] = Some(format!("{one}s"));
+                }
             }
         }
     }
@@ -462,6 +473,10 @@ impl<'a> Reader<'a> {
         let mut ends: Vec<usize> = Vec::new();
         let mut j = k;
         while j < self.tokens.len() && pieces.len() < max * 2 && !self.consumed[j] {
+            // "the box 2 m to the right": a number with a unit is an amount, not a name's.
+            if matches!(self.tokens[j].kind, Kind::Number(_)) && self.unit_follows(j + 1) {
+                break;
+            }
             match &self.words[j] {
                 Some(w) if w.is_empty() && j > k => {}
                 Some(w) if !w.is_empty() => {
@@ -487,17 +502,29 @@ impl<'a> Reader<'a> {
                     ),
                 })
             });
-            if let Some((tier, entries)) = index.lookup(&phrase) {
-                let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
-                let via = entries[0].via.clone();
-                return Some(self.make_head(range, objects, tier, false, phrase, &via, typo));
-            }
-            for singular in self.g.lexicon.singulars(&phrase) {
-                if let Some((tier, entries)) = index.lookup(&singular) {
+            // A plural reads as the plural of a name before it reads as a synonym that
+            // happens to be written the same ("eggs" among WordNet's words for an egg).
+            let direct = index.lookup(&phrase);
+            let plural = self
+                .g
+                .lexicon
+                .singulars(&phrase)
+                .into_iter()
+                .find_map(|singular| index.lookup(&singular).map(|hit| (singular, hit)));
+            match (direct, plural) {
+                (Some((tier, entries)), plural)
+                    if plural.as_ref().is_none_or(|(_, (t, _))| tier < *t) =>
+                {
+                    let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
+                    let via = entries[0].via.clone();
+                    return Some(self.make_head(range, objects, tier, false, phrase, &via, typo));
+                }
+                (_, Some((singular, (tier, entries)))) => {
                     let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
                     let via = entries[0].via.clone();
                     return Some(self.make_head(range, objects, tier, true, singular, &via, typo));
                 }
+                _ => {}
             }
             if phrase.contains(' ') || phrase.chars().count() >= 4 {
                 if let Some(objects) = index.lookup_compact(&phrase) {
@@ -607,8 +634,23 @@ impl<'a> Reader<'a> {
         if self.is_word(k + 1, &["of"]) {
             return None;
         }
-        let previous = nps.last()?;
-        let mut objects = previous.pool.clone();
+        // "the blue one" with nothing before it: one of all the objects, which its
+        // modifiers must pick.
+        let everything: Vec<usize>;
+        let (pool, text) = match nps.last() {
+            Some(previous) => (&previous.pool, previous.head.clone()),
+            None if k > 0
+                && !other
+                && self.word(k - 1).is_some_and(|w| {
+                    words::is_colour(w) || self.g.index.attribute_words.contains(w)
+                }) =>
+            {
+                everything = (0..self.scene.objects.len()).collect();
+                (&everything, "object".to_string())
+            }
+            None => return None,
+        };
+        let mut objects = pool.clone();
         if other {
             objects.retain(|o| !bound.contains(o));
         }
@@ -619,13 +661,108 @@ impl<'a> Reader<'a> {
             generic: false,
             tier: Tier::Name,
             plural,
-            text: previous.head.clone(),
             reason: Reason {
                 kind: ReasonKind::Modifier,
-                detail: format!("\"{w}\" stands for the {} named before", previous.head),
+                detail: format!("\"{w}\" stands for the {text} named before"),
             },
+            text,
             typo: None,
         })
+    }
+
+    /// `except the front-left one`, `but chair 3`, `apart from chair 2 and chair 4` after a
+    /// group at token `k`: the objects left out, and where the phrase ends.
+    fn exclusion(
+        &self,
+        k: usize,
+        group: &[usize],
+        head: &str,
+        bound: &[usize],
+    ) -> Result<Option<(Vec<usize>, usize)>, GroundError> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        let mut q = match (w(k), w(k + 1)) {
+            ("except" | "excepting", "for")
+            | ("apart" | "aside", "from")
+            | ("other", "than")
+            | ("save", "for") => k + 2,
+            ("except" | "excepting" | "but" | "excluding" | "minus" | "bar", _) => k + 1,
+            _ => return Ok(None),
+        };
+        let mut excluded = Vec::new();
+        loop {
+            // Skip to the head: a name, or "one" for one of the group.
+            let mut h = q;
+            while h < self.tokens.len()
+                && h < q + 5
+                && self.head_at(h).is_none()
+                && !self.is_word(h, &["one", "ones"])
+            {
+                if !(self.word(h).is_some_and(words::is_determiner) || self.is_premodifier(h)) {
+                    return Ok(None);
+                }
+                h += 1;
+            }
+            let head = match self.head_at(h) {
+                Some(head) => head,
+                None if self.is_word(h, &["one", "ones"]) => Head {
+                    range: h..h + 1,
+                    objects: group.to_vec(),
+                    literal: group.to_vec(),
+                    generic: false,
+                    tier: Tier::Name,
+                    plural: self.is_word(h, &["ones"]),
+                    text: head.to_string(),
+                    reason: modifier("one of them"),
+                    typo: None,
+                },
+                None => return Ok(None),
+            };
+            let plural = head.plural;
+            let text = head.text.clone();
+            let np = self.noun_phrase(head, bound, Mode::Nested)?;
+            if np.objects.len() > 1 && !plural {
+                let names = self.names(&np.objects);
+                return Err(GroundError::Ambiguous {
+                    phrase: self.span_text(&np.range),
+                    example: names[names.len().min(3) - 1].clone(),
+                    hints: self.hints(&text, &np.objects),
+                    candidates: names,
+                });
+            }
+            excluded.extend(np.objects);
+            q = np.range.end;
+            if self.is_word(q, &["and", "or"])
+                || matches!(self.tokens.get(q).map(|t| &t.kind), Some(Kind::Punct(',')))
+            {
+                let next = q + 1;
+                // Another excluded phrase follows only if a name or "the … one" does.
+                let more = (next..(next + 4).min(self.tokens.len()))
+                    .any(|t| self.head_at(t).is_some() || self.is_word(t, &["one"]));
+                if more && !self.word(next).is_some_and(words::is_verb) {
+                    q = next;
+                    continue;
+                }
+            }
+            return Ok(Some((excluded, q)));
+        }
+    }
+
+    /// Whether a unit of length, angle or proportion stands at token `k`.
+    fn unit_follows(&self, k: usize) -> bool {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        match w(k) {
+            "m" | "cm" | "mm" | "km" | "ft" | "foot" | "feet" | "inch" | "inches" | "metre"
+            | "metres" | "meter" | "meters" | "centimetre" | "centimetres" | "centimeter"
+            | "centimeters" | "millimetre" | "millimetres" | "millimeter" | "millimeters"
+            | "units" | "unit" | "degrees" | "degree" | "deg" | "radians" | "percent" | "times"
+            | "x" | "yards" | "yard" | "°" => true,
+            // "2 in to the left" is inches; "chair 2 in front of" is not.
+            "in" => !matches!(w(k + 1), "front" | "the" | "a" | "its" | "back"),
+            _ => matches!(
+                self.tokens.get(k).map(|t| &t.kind),
+                Some(Kind::Punct('%' | '°'))
+            ),
+        }
     }
 
     fn head_follows(&self, k: usize) -> bool {
@@ -778,6 +915,17 @@ impl<'a> Reader<'a> {
                         objects.retain(|o| !bound.contains(o));
                         if objects.len() < before {
                             reasons.push(modifier("\"other\": not the one named before"));
+                        } else {
+                            // "put the lamp on the other nightstand": not the one the
+                            // objects named before stand on.
+                            let supports: Vec<usize> = bound
+                                .iter()
+                                .filter_map(|&b| self.scene.objects[b].support)
+                                .collect();
+                            objects.retain(|o| !supports.contains(o));
+                            if objects.len() < before {
+                                reasons.push(modifier("\"other\": not the one it stands on now"));
+                            }
                         }
                     } else if w == "same" {
                         // "the same chair": no pick.
@@ -843,23 +991,72 @@ impl<'a> Reader<'a> {
         let mut end = head.range.end;
         let phrase_so_far = |end: usize| self.span_text(&(start..end));
         let wanted = need(count, objects.len());
-        let needs_post = objects.len() != wanted || ordinal.is_some() || head.generic;
-        if mode == Mode::Main && needs_post && (!matches!(count, Count::All) || head.generic) {
+        let group = matches!(count, Count::All) && !head.generic;
+        let post = if mode == Mode::Main {
+            self.post_modifier(end, bound)?
+        } else {
+            None
+        };
+        // A modifier after the noun picks when the noun alone does not (`the book on the
+        // side table` with two books), and describes when the clause goes on with its own
+        // amount or place, or has a verb that takes none (`move the book on the table 10
+        // cm left`, `rotate the tv on the stand`). Otherwise it is where the object goes
+        // (`put the book on the side table`) and is left for the translator.
+        let describes = post.as_ref().is_some_and(|(_, p_end)| {
+            self.clause_goes_on(*p_end) || self.verb_takes_no_place(start)
+        });
+        let picks = (objects.len() != wanted && !group) || ordinal.is_some() || head.generic;
+        if let Some((p, p_end)) = post.filter(|_| picks || describes) {
             if !modified {
                 objects = head.literal.clone();
             }
-            if let Some((p, p_end)) = self.post_modifier(end, bound)? {
+            {
                 let words = self.span_text(&(end..p_end));
                 let at = self.span_text(&(start..p_end));
                 // With modifiers before the noun still to pick ("the front painting on the
-                // right wall"), the modifier after it keeps every object it fits.
-                let filter = !sides.is_empty() || !sizes.is_empty() || middle;
+                // right wall"), or for a group, the modifier after it keeps every object
+                // it fits.
+                let filter = !sides.is_empty() || !sizes.is_empty() || middle || group;
+                if group && matches!(p, Post::Relation(Relation::Nearest | Relation::Farthest, _)) {
+                    return Err(GroundError::NoPick {
+                        phrase: at,
+                        reason: format!("say how many ('the two {}s {words}')", head.text),
+                    });
+                }
                 let wanted = if head.generic || filter {
                     usize::MAX
                 } else {
                     wanted
                 };
                 match p {
+                    Post::Floor => {
+                        let floor = self.scene.floor();
+                        let on_floor: Vec<usize> = objects
+                            .iter()
+                            .copied()
+                            .filter(|&o| {
+                                self.scene.objects[o].support.is_none()
+                                    && self.scene.objects[o].world_aabb().min.y <= floor + 0.05
+                            })
+                            .collect();
+                        if on_floor.is_empty() || (wanted != usize::MAX && on_floor.len() != wanted)
+                        {
+                            return Err(GroundError::NoPick {
+                                phrase: at,
+                                reason: format!(
+                                    "{} on the floor ({} of {})",
+                                    if on_floor.is_empty() {
+                                        "none is"
+                                    } else {
+                                        "not one is"
+                                    },
+                                    on_floor.len(),
+                                    error::list(&self.names(&objects))
+                                ),
+                            });
+                        }
+                        objects = on_floor;
+                    }
                     Post::Side(axis, sign) => {
                         if let Some(o) = ordinal.take() {
                             let picked =
@@ -898,6 +1095,8 @@ impl<'a> Reader<'a> {
                                 phrase: at.clone(),
                                 reason: if head.generic {
                                     format!("nothing is {words}")
+                                } else if objects.len() == 1 {
+                                    format!("the {} is not {words}", self.name(objects[0]))
                                 } else {
                                     format!(
                                         "no single {} is clearly {words} (the {}s here are {})",
@@ -914,15 +1113,11 @@ impl<'a> Reader<'a> {
                     error::list(&self.names(&objects))
                 )));
                 end = p_end;
-            } else if head.generic {
-                return Err(GroundError::NoPick {
-                    phrase: phrase_so_far(end),
-                    reason: "say which things ('everything on the table')".into(),
-                });
             }
         }
         if !sides.is_empty() {
-            let words_used: Vec<String> = sides.iter().map(|s| s.2.clone()).collect();
+            let mut words_used: Vec<String> = sides.iter().map(|s| s.2.clone()).collect();
+            words_used.dedup();
             let label = words_used.join(" ");
             if let (Some(o), [(axis, sign, _)]) = (ordinal, sides.as_slice()) {
                 // "the second left chair": the second from the left.
@@ -939,10 +1134,15 @@ impl<'a> Reader<'a> {
                         direction += unit;
                     }
                 }
-                let n = need(count, objects.len());
-                let picked = select::by_direction(self.scene, &objects, direction, n)
-                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &label))?;
-                objects = picked;
+                if matches!(count, Count::All) {
+                    // "the front chairs": every one at that end.
+                    objects = select::at_direction(self.scene, &objects, direction);
+                } else {
+                    let n = need(count, objects.len());
+                    let picked = select::by_direction(self.scene, &objects, direction, n)
+                        .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &label))?;
+                    objects = picked;
+                }
             }
             reasons.push(modifier(&format!(
                 "\"{label}\" picked {}",
@@ -950,6 +1150,16 @@ impl<'a> Reader<'a> {
             )));
         }
         for w in &sizes {
+            if matches!(count, Count::All) && objects.len() > 1 {
+                return Err(GroundError::NoPick {
+                    phrase: phrase_so_far(end),
+                    reason: format!(
+                        "say how many ('the two {} {}s') or name them",
+                        superlative(w),
+                        head.text
+                    ),
+                });
+            }
             let (measure, sign, degree) = words::size_word(w).expect("a size word");
             let n = need(count, objects.len());
             let picked =
@@ -988,6 +1198,25 @@ impl<'a> Reader<'a> {
                 self.name(picked)
             )));
             objects = vec![picked];
+        }
+        // "all the chairs except the front-left one", "every chair but chair 3".
+        if mode == Mode::Main && matches!(count, Count::All) && !head.generic {
+            if let Some((excluded, e_end)) = self.exclusion(end, &objects, &head.text, bound)? {
+                let at = self.span_text(&(start..e_end));
+                if let Some(&stray) = excluded.iter().find(|o| !objects.contains(o)) {
+                    return Err(GroundError::NoPick {
+                        phrase: at,
+                        reason: format!("'{}' is not one of them", self.name(stray)),
+                    });
+                }
+                objects.retain(|o| !excluded.contains(o));
+                reasons.push(modifier(&format!(
+                    "\"{}\" left out {}",
+                    self.span_text(&(end..e_end)),
+                    error::list(&self.names(&excluded))
+                )));
+                end = e_end;
+            }
         }
         let phrase = self.span_text(&(start..end));
         if let Some(o) = ordinal {
@@ -1087,13 +1316,117 @@ impl<'a> Reader<'a> {
         }
         let other = (0..self.scene.objects.len())
             .filter(|&i| !is_candidate[i])
-            .map(|i| (i, (self.scene.objects[i].world_aabb().center() - c).length_squared()))
+            .map(|i| {
+                (
+                    i,
+                    (self.scene.objects[i].world_aabb().center() - c).length_squared(),
+                )
+            })
             .min_by(|a, b| a.1.total_cmp(&b.1))
             .map(|(i, _)| i);
         if let Some(o) = other {
             hints.push(format!("the {head} nearest the {}", self.name(o)));
         }
         hints
+    }
+
+    /// Whether the clause goes on after token `k` with an amount, a direction or a place
+    /// of its own: then a modifier before `k` describes the object rather than saying
+    /// where it goes.
+    fn clause_goes_on(&self, k: usize) -> bool {
+        let place_or_amount = |w: &str| {
+            words::side_word(w).is_some()
+                || words::count_word(w).is_some()
+                || matches!(
+                    w,
+                    "up" | "down"
+                        | "upward"
+                        | "upwards"
+                        | "downward"
+                        | "downwards"
+                        | "forward"
+                        | "forwards"
+                        | "backward"
+                        | "backwards"
+                        | "ahead"
+                        | "clockwise"
+                        | "counterclockwise"
+                        | "anticlockwise"
+                        | "around"
+                        | "degrees"
+                        | "over"
+                        | "away"
+                        | "closer"
+                        | "nearer"
+                        | "half"
+                        | "twice"
+                        | "onto"
+                        | "into"
+                        | "to"
+                        | "toward"
+                        | "towards"
+                        | "next"
+                        | "beside"
+                        | "under"
+                        | "behind"
+                        | "between"
+                        | "against"
+                        | "off"
+                        | "on"
+                        | "in"
+                        | "by"
+                        | "near"
+                )
+        };
+        for t in &self.tokens[k.min(self.tokens.len())..] {
+            match &t.kind {
+                Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
+                Kind::Number(_) => return true,
+                Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
+                Kind::Word(w) if place_or_amount(w) => return true,
+                _ => {}
+            }
+        }
+        false
+    }
+
+    /// Whether the verb of the clause before token `k` takes no place to put the object
+    /// (`rotate`, `scale`, `lift`): then `the tv on the stand` describes the tv.
+    fn verb_takes_no_place(&self, k: usize) -> bool {
+        for t in self.tokens[..k.min(self.tokens.len())].iter().rev() {
+            match &t.kind {
+                Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
+                Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
+                Kind::Word(w) if words::is_verb(w) => {
+                    return matches!(
+                        w.as_str(),
+                        "rotate"
+                            | "turn"
+                            | "spin"
+                            | "twist"
+                            | "flip"
+                            | "swivel"
+                            | "pivot"
+                            | "scale"
+                            | "resize"
+                            | "grow"
+                            | "shrink"
+                            | "enlarge"
+                            | "lift"
+                            | "raise"
+                            | "lower"
+                            | "elevate"
+                            | "double"
+                            | "halve"
+                            | "triple"
+                            | "straighten"
+                            | "face"
+                    )
+                }
+                _ => {}
+            }
+        }
+        false
     }
 
     /// A modifier after the noun at token `k`: `on the left`, `on the right wall`, `in the
@@ -1114,9 +1447,14 @@ impl<'a> Reader<'a> {
         let w = |k: usize| self.word(k).unwrap_or("");
         // on the left, on the far right, on the left-hand side, on the right wall, at the
         // front, at the back.
-        if matches!(w(j), "on" | "at" | "in" | "to" | "against" | "along" | "by")
+        if matches!(w(j), "on" | "at")
             && w(j + 1) == "the"
+            && matches!(w(j + 2), "floor" | "ground")
         {
+            return Ok(Some((Post::Floor, j + 3)));
+        }
+        // ("to the left" is a direction, not a place: it is not read here.)
+        if matches!(w(j), "on" | "at" | "in" | "against" | "along") && w(j + 1) == "the" {
             let mut s = j + 2;
             if w(s) == "far" || w(s) == "very" {
                 s += 1;
@@ -1220,6 +1558,7 @@ impl<'a> Reader<'a> {
             ("beside" | "by" | "near" | "alongside" | "nearby", _, _) => (Relation::Near, 1),
             ("nearest" | "closest", _, _) => (Relation::Nearest, 1),
             ("behind", _, _) => (Relation::Behind, 1),
+            ("in" | "inside" | "within", _, _) => (Relation::Inside, 1),
             _ => return None,
         };
         Some((r, j + len))

@@ -25,6 +25,8 @@ pub(crate) enum Relation {
     On,
     /// Carrying it (`the desk with the lamp on it`).
     Carries,
+    /// Inside its box (`the apple in the fridge`).
+    Inside,
     /// Under it.
     Under,
     /// Above or over it (`the painting above the sofa`).
@@ -92,6 +94,23 @@ pub(crate) fn by_direction(
         .map(|b| -b.center().dot(d))
         .collect();
     take_extreme(candidates, &keys, need, |a, b| b - a > margin)
+}
+
+/// All the candidates at one end of a direction (`the front chairs`): those within
+/// [`POSITION_MARGIN`] of the farthest along it.
+pub(crate) fn at_direction(scene: &Scene, candidates: &[usize], direction: DVec3) -> Vec<usize> {
+    let d = direction.normalize_or_zero();
+    let keys: Vec<f64> = boxes(scene, candidates)
+        .iter()
+        .map(|b| -b.center().dot(d))
+        .collect();
+    let best = keys.iter().copied().fold(f64::INFINITY, f64::min);
+    candidates
+        .iter()
+        .zip(&keys)
+        .filter(|(_, &k)| k - best <= POSITION_MARGIN)
+        .map(|(&c, _)| c)
+        .collect()
 }
 
 /// All the candidates at one side: those within [`POSITION_MARGIN`] of the extreme.
@@ -250,7 +269,10 @@ pub(crate) fn by_relation(
     if fits.is_empty() {
         return None;
     }
-    if matches!(relation, Relation::On | Relation::Under | Relation::Carries) {
+    if matches!(
+        relation,
+        Relation::On | Relation::Under | Relation::Carries | Relation::Inside
+    ) {
         // Membership relations: all that stand in it, when that is the number wanted.
         return (fits.len() == need || need == usize::MAX)
             .then(|| fits.iter().map(|f| f.0).collect());
@@ -287,6 +309,10 @@ fn relation_key(
     let key = match relation {
         Relation::On => rests_on(scene, (c, cb), (t, tb)).then_some(0.0)?,
         Relation::Carries => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
+        Relation::Inside => {
+            let p = cb.center();
+            (p.cmpge(tb.min).all() && p.cmple(tb.max).all()).then_some(0.0)?
+        }
         Relation::Under => (footprint_gap(cb, tb) <= 0.0
             && cb.center().y < tb.center().y
             && scene.objects[c].support != Some(t))

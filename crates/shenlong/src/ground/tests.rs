@@ -176,11 +176,23 @@ fn picking_by_relation() {
         &[&["chair 4"], &["sideboard"]],
     );
     // "the painting over the sofa" picks; it never moves the sofa.
-    // One book: "on the coffee table" is not needed to pick it, so it stays a place.
+    // One book, and the clause goes on ("left"): "on the coffee table" describes it.
     means(
         "living_room",
         "move the book on the coffee table left",
-        &[&["book"], &["coffee table"]],
+        &[&["book"]],
+    );
+    // With no amount or place after it, it is where the book goes.
+    means(
+        "living_room",
+        "put the book on the side table",
+        &[&["book"], &["side table"]],
+    );
+    // A description that does not hold is refused.
+    refused(
+        "living_room",
+        "move the book on the side table 10 cm left",
+        &["book", "side table"],
     );
 }
 
@@ -313,4 +325,78 @@ fn scene_json_categories_aliases_and_colours() {
     );
     let e = g(&s, "move the green armchair left").unwrap_err();
     assert!(e.to_string().contains("no armchair is green"), "{e}");
+}
+
+#[test]
+fn amounts_are_not_name_numbers() {
+    // "the speaker 2 m" is an amount after an ambiguous phrase, not 'speaker 2'.
+    refused(
+        "living_room",
+        "move the speaker 2 m to the left",
+        &["speaker", "speaker 2"],
+    );
+    means(
+        "living_room",
+        "move speaker 2 2 m to the left",
+        &[&["speaker 2"]],
+    );
+}
+
+#[test]
+fn groups_with_modifiers_keep_the_members_they_name() {
+    means(
+        "dining_room",
+        "move the front chairs 20 cm forward",
+        &[&["chair 3", "chair 4"]],
+    );
+    means(
+        "dining_room",
+        "move the chairs on the left 20 cm to the left",
+        &[&["chair", "chair 3"]],
+    );
+    means(
+        "dining_room",
+        "lift all the chairs except the front-left one 10 cm",
+        &[&["chair", "chair 2", "chair 4"]],
+    );
+    means(
+        "dining_room",
+        "lift every chair but chair 3 10 cm",
+        &[&["chair", "chair 2", "chair 4"]],
+    );
+    refused(
+        "dining_room",
+        "lift the chairs nearest the sideboard 10 cm",
+        &["say how many"],
+    );
+}
+
+#[test]
+fn a_description_of_a_single_object_is_not_a_destination() {
+    // The tv is the only tv: "on the tv stand" describes it, and the stand is not bound.
+    means(
+        "living_room",
+        "rotate the tv on the tv stand 30 degrees",
+        &[&["tv"]],
+    );
+    means(
+        "bedroom",
+        "put the lamp on the other nightstand",
+        &[&["bedside lamp"], &["nightstand 2"]],
+    );
+}
+
+#[test]
+fn colours_and_one() {
+    let text = r#"{"objects": [
+        {"name": "a", "category": "armchair", "color": "red", "size": [1, 1, 1], "position": [-1, 0, 0]},
+        {"name": "b", "category": "armchair", "color": "blue", "size": [1, 1, 1], "position": [1, 0, 0]}
+    ]}"#;
+    let s = crate::format::json::read(text, "t").unwrap().scene;
+    assert_eq!(
+        g(&s, "move the blue one left").unwrap(),
+        vec![vec!["b".to_string()]]
+    );
+    // "the left one" with nothing before it is not the leftmost object of the scene.
+    assert!(g(&s, "move the left one right").is_err());
 }
