@@ -221,3 +221,51 @@ fn bench_writes_the_report_and_charts() {
     assert!(!o.status.success());
     assert!(stderr(&o).contains("nowhere.json"), "{}", stderr(&o));
 }
+
+#[test]
+fn natural_names_are_grounded_and_reported() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("edited.json");
+    let report = dir.path().join("report.json");
+    let o = shenlong(&[
+        "edit",
+        "example:living_room",
+        "move the couch 30 cm to the left and turn the right-hand speaker 90 degrees",
+        "-o",
+        out.to_str().unwrap(),
+        "--json",
+        report.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let v = read_json(&out);
+    assert_eq!(object(&v, "sofa")["position"][0], -0.3);
+    assert!(object(&v, "speaker 2")["rotation"].is_array());
+    assert!(object(&v, "speaker")["rotation"].is_null());
+    let r = read_json(&report);
+    assert_eq!(r["grounding"][0]["phrase"], "the couch");
+    assert_eq!(r["grounding"][0]["objects"][0], "sofa");
+    assert_eq!(r["grounding"][0]["reasons"][0]["kind"], "synonym");
+    assert_eq!(r["grounding"][1]["objects"][0], "speaker 2");
+    assert_eq!(r["grounding"][1]["reasons"][1]["kind"], "modifier");
+}
+
+#[test]
+fn an_ambiguous_phrase_is_refused_naming_the_candidates_and_writes_nothing() {
+    let dir = tempfile::tempdir().unwrap();
+    let out = dir.path().join("out.json");
+    let o = shenlong(&[
+        "edit",
+        "example:dining_room",
+        "move the chair 30 cm to the left",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let e = stderr(&o);
+    assert_eq!(e.lines().count(), 1, "{e}");
+    assert!(
+        e.starts_with("shenlong: \"the chair\" could mean chair, chair 2, chair 3 and chair 4: name one ('chair 3') or say which ('the left chair', 'the chair nearest the "),
+        "{e}"
+    );
+    assert!(!out.exists());
+}

@@ -64,14 +64,16 @@ try {
   };
   check(JSON.stringify(await bottle()) === JSON.stringify([-2, 0, 1.2]), 'the bottle starts on the floor');
 
-  await page.fill('#instruction', "put the 'orange bottle' on top of the 'tool table'");
+  await page.fill('#instruction', 'put the orange bottle on the tool table');
   await page.click('#run');
   await page.waitForFunction(() => document.querySelector('#status').textContent.startsWith('Done'), null, { timeout: 20000 });
   await page.waitForTimeout(900); // the animation
   const report = await page.evaluate(() => window.shenlong.lastReport);
-  check(report.query === 'put X1 on top of X2', `the report's query: ${report.query}`);
+  check(report.query === 'put X1 on X2', `the report's query: ${report.query}`);
+  check(report.grounding.length === 2 && report.grounding[0].objects[0] === 'orange bottle', 'the report grounds both phrases');
   check(JSON.stringify(await bottle()) === JSON.stringify([0, 0.9, 0]), 'the API shows the bottle on the table');
-  check((await page.locator('#report').textContent()).includes('put X1 on top of X2'), 'the report panel shows the query');
+  check((await page.locator('#report').textContent()).includes('put X1 on X2'), 'the report panel shows the query');
+  check((await page.locator('#report').textContent()).includes('“the tool table” → X2 tool table'), 'the report panel shows the grounding');
   check((await page.locator('#history li').count()) === 1, 'one history entry');
   await page.screenshot({ path: SCREENSHOT });
 
@@ -83,6 +85,10 @@ try {
   await page.click('#run');
   await page.waitForFunction(() => document.querySelector('#status').className === 'error', null, { timeout: 10000 });
   check((await page.locator('#status').textContent()).includes("unknown object 'sofaa'"), 'errors show in the status line');
+  await page.fill('#instruction', 'move the can 30 cm to the left');
+  await page.click('#run');
+  await page.waitForFunction(() => document.querySelector('#status').textContent.includes('could mean'), null, { timeout: 10000 });
+  check((await page.locator('#status').textContent()).includes('paint can and oil can'), 'an ambiguous phrase is refused with its candidates');
   check(errors.length === 0, `no script errors: ${errors.join('; ')}`);
 
   // A glTF scene is drawn with its meshes (from the shared test data, when present).

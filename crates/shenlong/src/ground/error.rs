@@ -64,12 +64,15 @@ pub enum GroundError {
     },
     /// The instruction names no object of the scene.
     #[error(
-        "the instruction names no object of the scene; name one (the scene has {})",
-        list(names)
+        "the instruction names no object of the scene; name one (it has {total}: {}{})",
+        names.join(", "),
+        if *total > names.len() { ", …" } else { "" }
     )]
     NoObject {
-        /// Some of the scene's names.
+        /// The first of the scene's names.
         names: Vec<String>,
+        /// How many objects the scene has.
+        total: usize,
     },
 }
 
@@ -104,7 +107,7 @@ impl GroundError {
             | GroundError::Unknown { suggestions, .. } => suggestions,
             GroundError::Ambiguous { candidates, .. } => candidates,
             GroundError::Count { found, .. } => found,
-            GroundError::NoObject { names } => names,
+            GroundError::NoObject { names, .. } => names,
             _ => &[],
         }
     }

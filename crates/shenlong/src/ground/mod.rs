@@ -225,9 +225,10 @@ impl Grounder {
                 names: scene
                     .objects
                     .iter()
-                    .take(12)
+                    .take(6)
                     .map(|o| o.name.clone())
                     .collect(),
+                total: scene.objects.len(),
             });
         }
         Ok(Grounding {
