@@ -23,3 +23,4 @@ pub mod offline;
 pub mod pipeline;
 pub mod render;
 pub mod scene;
+pub mod translate;

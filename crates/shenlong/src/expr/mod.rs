@@ -159,6 +159,15 @@ pub fn evaluate_in(
         .evaluate(&expr)
 }
 
+/// Evaluates a syntax tree built by a program (the offline translator builds its answers
+/// as trees), in the CGA dialect, within the default limits. Errors point into the tree's
+/// printed text.
+pub fn evaluate_tree(tree: &Expr, bindings: &Bindings) -> Result<Multivector, ExprError> {
+    let limits = Limits::default();
+    let source = tree.to_string();
+    eval::Evaluator::new(&source, bindings, &limits).evaluate(tree)
+}
+
 /// Parses and evaluates an expression that must be a transformation `T·R·D`.
 pub fn evaluate_transformation(
     source: &str,

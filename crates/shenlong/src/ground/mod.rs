@@ -627,7 +627,11 @@ impl<'a> Reader<'a> {
             "one" => (false, false),
             "ones" => (true, false),
             "others" => (true, true),
-            "other" if !self.head_follows(k + 1) && !self.is_word(k + 1, &["one", "ones"]) => {
+            "other"
+                if !self.head_follows(k + 1)
+                    && !self.is_word(k + 1, &["one", "ones"])
+                    && !self.word(k + 1).is_some_and(words::is_place_noun) =>
+            {
                 (false, true)
             }
             _ => return None,
@@ -1461,7 +1465,8 @@ impl<'a> Reader<'a> {
                 s += 1;
             }
             if let Some((axis, sign)) = words::side_word(w(s)) {
-                if !matches!(w(s + 1), "of") {
+                // "at the left desk" names a desk; "on the left" is a side.
+                if !matches!(w(s + 1), "of") && self.head_at(s + 1).is_none() {
                     let mut end = s + 1;
                     if matches!(w(end), "side" | "end" | "wall") {
                         end += 1;
@@ -1556,7 +1561,7 @@ impl<'a> Reader<'a> {
             ("on" | "onto" | "upon" | "atop", _, _) => (Relation::On, 1),
             ("under" | "below" | "beneath" | "underneath", _, _) => (Relation::Under, 1),
             ("above" | "over", _, _) => (Relation::Above, 1),
-            ("beside" | "by" | "near" | "alongside" | "nearby", _, _) => (Relation::Near, 1),
+            ("beside" | "by" | "near" | "alongside" | "nearby" | "at", _, _) => (Relation::Near, 1),
             ("nearest" | "closest", _, _) => (Relation::Nearest, 1),
             ("behind", _, _) => (Relation::Behind, 1),
             ("in" | "inside" | "within", _, _) => (Relation::Inside, 1),

@@ -3,64 +3,20 @@
 //! transformation per variable. The prompts live in `prompts/*.md`, each with a version
 //! string that goes into cache keys and reports.
 
-use super::template::Templated;
 use crate::expr::{self, reply, Dialect, ExprError, Transformation};
 use crate::llm::Message;
 use crate::scene::{Scene, Shape};
+use crate::translate::Templated;
+pub use crate::translate::{Answer, System};
 use cga::{Multivector, Similarity};
 use glam::{DQuat, DVec3, EulerRot};
 use serde_json::Value;
-
-/// A prompt system.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum System {
-    /// Shenlong: the model answers in CGA expressions; only the templated query is sent.
-    Cga,
-    /// After "Language Models as Zero-Shot Trajectory Generators": matrices composed from
-    /// templated functions, with the named objects' boxes given as numbers.
-    Euclidean,
-    /// After NVIDIA Omniverse's AI Room Generator: the named objects' sizes, centres and
-    /// Euler angles in, their final centres and Euler angles out.
-    Omniverse,
-}
 
 const CGA_PROMPT: &str = include_str!("../../prompts/cga.md");
 const EUCLIDEAN_PROMPT: &str = include_str!("../../prompts/euclidean.md");
 const OMNIVERSE_PROMPT: &str = include_str!("../../prompts/omniverse.md");
 
-/// One variable's answer.
-#[derive(Clone, Debug, PartialEq)]
-pub struct Answer {
-    /// `X1`, `X2`, ….
-    pub variable: String,
-    /// The object it stands for.
-    pub object: usize,
-    /// What the model wrote for it (expressions, or the pose as JSON for omniverse).
-    pub expressions: Vec<String>,
-    /// The transformation, about the object's pivot.
-    pub transformation: Transformation,
-}
-
 impl System {
-    /// All systems.
-    pub const ALL: [System; 3] = [System::Cga, System::Euclidean, System::Omniverse];
-
-    /// The name used on the command line and in reports.
-    pub fn name(self) -> &'static str {
-        match self {
-            System::Cga => "cga",
-            System::Euclidean => "euclidean",
-            System::Omniverse => "omniverse",
-        }
-    }
-
-    /// The system by name.
-    pub fn from_name(name: &str) -> Option<Self> {
-        Self::ALL
-            .into_iter()
-            .find(|s| s.name() == name.trim().to_lowercase())
-    }
-
     /// The system prompt, without its version comment.
     pub fn prompt(self) -> &'static str {
         let text = match self {

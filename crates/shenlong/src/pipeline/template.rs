@@ -7,30 +7,11 @@
 //! variable. Object names never reach a language model — which also keeps hostile names
 //! ("ignore previous instructions…") out of the prompt.
 
-use crate::ground::{GroundError, Grounder, Phrase};
+use crate::ground::{GroundError, Grounder};
 use crate::scene::Scene;
+pub use crate::translate::Templated;
 
 pub use crate::ground::MAX_INSTRUCTION_CHARS;
-
-/// An instruction with its object phrases replaced by variables.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct Templated {
-    /// The instruction as the user wrote it.
-    pub instruction: String,
-    /// The instruction with variables: `move X1 next to X2`.
-    pub query: String,
-    /// The objects the variables stand for, in order: `objects[0]` is X1.
-    pub objects: Vec<usize>,
-    /// The phrases grounded, with the objects they mean and why.
-    pub phrases: Vec<Phrase>,
-}
-
-impl Templated {
-    /// The variable name of the `k`-th bound object (from 0): `X1`, `X2`, ….
-    pub fn variable(k: usize) -> String {
-        format!("X{}", k + 1)
-    }
-}
 
 /// Grounds `instruction` on `scene` and replaces its object phrases by variables. Builds
 /// the scene's name index; to template many instructions on one scene, build a

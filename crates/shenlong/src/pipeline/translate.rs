@@ -1,96 +1,13 @@
 //! Translation: a templated instruction → one transformation per variable, behind one
 //! seam ([`Translator`]) for language models and the built-in offline translator.
 
-use super::prompts::{Answer, System};
-use super::template::Templated;
 use crate::llm::cache::Cache;
 use crate::llm::record::{Record, Recorder};
 use crate::llm::{Backend, Message, Usage};
 use crate::scene::Scene;
-use serde::Serialize;
-use std::time::{Duration, Instant};
-
-/// One request and reply, as the report shows it.
-#[derive(Clone, Debug, Serialize)]
-pub struct Exchange {
-    /// The messages sent.
-    pub messages: Vec<Message>,
-    /// The reply, or the empty string when the backend failed.
-    pub reply: String,
-    /// Time the reply took, in milliseconds (0 for a cache hit).
-    pub elapsed_ms: f64,
-    /// Token counts.
-    pub usage: Usage,
-    /// What was wrong with the reply, sent back to the model in the next attempt.
-    pub error: Option<String>,
-    /// Whether the reply came from the cache.
-    pub cached: bool,
-}
-
-/// The result of translating one instruction.
-#[derive(Clone, Debug)]
-pub struct Translation {
-    /// One answer per variable the reply changes.
-    pub answers: Vec<Answer>,
-    /// Every exchange, retries included.
-    pub exchanges: Vec<Exchange>,
-    /// Attempts after the first.
-    pub retries: usize,
-    /// Whether the valid reply came from the cache.
-    pub cache_hit: bool,
-    /// Response time, retries included (the paper's measure).
-    pub elapsed: Duration,
-}
-
-/// Why an instruction could not be translated.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct TranslateError {
-    /// One line for the user.
-    pub message: String,
-    /// Whether the instruction itself was not understood (as opposed to a model or its
-    /// server failing).
-    pub not_understood: bool,
-}
-
-impl TranslateError {
-    /// A model or server failure.
-    pub fn model(message: impl Into<String>) -> Self {
-        Self {
-            message: message.into(),
-            not_understood: false,
-        }
-    }
-
-    /// An instruction the translator cannot read.
-    pub fn not_understood(message: impl Into<String>) -> Self {
-        Self {
-            message: message.into(),
-            not_understood: true,
-        }
-    }
-}
-
-impl std::fmt::Display for TranslateError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for TranslateError {}
-
-/// Turns templated instructions into transformations.
-pub trait Translator: Send + Sync {
-    /// The translator's name for reports: `offline`, or the model.
-    fn name(&self) -> String;
-    /// The prompt system it answers in.
-    fn system(&self) -> System;
-    /// Translates one instruction.
-    fn translate(
-        &self,
-        templated: &Templated,
-        scene: &Scene,
-    ) -> Result<Translation, TranslateError>;
-}
+pub use crate::translate::{Exchange, TranslateError, Translation, Translator};
+use crate::translate::{System, Templated};
+use std::time::Instant;
 
 /// A language model prompted with one of the three systems, retrying with the error when a
 /// reply cannot be used.

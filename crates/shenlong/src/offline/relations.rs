@@ -1,0 +1,179 @@
+//! Relations to other objects, as translation vectors written with only the objects'
+//! boxes (`X2.max`, `X1.center`, …): never the scene's numbers, so answers are
+//! scene-independent. Targets are taken where earlier clauses of the instruction left them.
+
+use super::build::*;
+use crate::expr::Expr;
+use std::collections::BTreeMap;
+
+/// Gap left between objects placed next to each other, in metres.
+pub const GAP: f64 = 0.05;
+
+/// What a clause asks of one variable.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Step {
+    /// A translation by this vector (inside `T(...)`).
+    Translate(Expr),
+    /// A rotor or dilator, applied about the pivot.
+    Turn(Expr),
+}
+
+/// The steps so far, per variable.
+pub(crate) type Steps = BTreeMap<usize, Vec<Step>>;
+
+/// `X{k}.attribute` where earlier clauses left it: shifted by their translations.
+pub(crate) fn boxed(k: usize, attribute: &str, steps: &Steps) -> Expr {
+    let moves: Vec<Expr> = steps
+        .get(&k)
+        .into_iter()
+        .flatten()
+        .filter_map(|s| match s {
+            Step::Translate(v) => Some(v.clone()),
+            Step::Turn(_) => None,
+        })
+        .collect();
+    if moves.is_empty() {
+        var(k, attribute)
+    } else {
+        add(var(k, attribute), sum(moves))
+    }
+}
+
+/// The relations a clause may name.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Relation {
+    /// On top of.
+    On,
+    /// Under.
+    Under,
+    /// Against one side: (axis, sign).
+    Side(usize, f64),
+    /// Next to, beside, by, near: the side of the target nearest the object.
+    NextTo,
+    /// To its place, standing on the same level (`to X2`, `at X2`).
+    To,
+    /// Between two targets.
+    Between,
+    /// Away from by an amount.
+    Away(f64),
+    /// Closer by an amount, or halfway with none.
+    Closer(Option<f64>),
+    /// Onto the floor beside it (`off X2`).
+    Off,
+    /// Mirrored through it, along the axis the object is offset most (`to the other side of
+    /// X2`).
+    OtherSide,
+}
+
+/// The vector that takes subject `s` into `relation` with `targets`.
+pub(crate) fn vector(
+    relation: Relation,
+    s: usize,
+    targets: &[usize],
+    steps: &Steps,
+    floor: &Expr,
+) -> Option<Expr> {
+    let t = *targets.first()?;
+    let b = |attribute: &str| boxed(t, attribute, steps);
+    let a = |attribute: &str| var(s, attribute);
+    let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
+    let level = along(sub(b("min"), a("min")), 1);
+    let gap = num(GAP);
+    Some(match relation {
+        Relation::On => sum([
+            scaled_axis(sub(dot(b("max"), axis(1)), dot(a("min"), axis(1))), 1),
+            centre(0),
+            centre(2),
+        ]),
+        Relation::Under => sum([
+            scaled_axis(sub(dot(b("min"), axis(1)), dot(a("min"), axis(1))), 1),
+            centre(0),
+            centre(2),
+        ]),
+        Relation::Side(e, sign) => {
+            let other = 2 - e;
+            let along_axis = if sign > 0.0 {
+                scaled_axis(
+                    sub(add(dot(b("max"), axis(e)), gap), dot(a("min"), axis(e))),
+                    e,
+                )
+            } else {
+                scaled_axis(
+                    sub(sub(dot(b("min"), axis(e)), gap), dot(a("max"), axis(e))),
+                    e,
+                )
+            };
+            sum([along_axis, centre(other), level])
+        }
+        Relation::NextTo => next_to(s, t, steps, level),
+        Relation::To => sum([centre(0), centre(2), level]),
+        Relation::Between => {
+            let c = boxed(*targets.get(1)?, "center", steps);
+            let mid = sub(div(add(b("center"), c), num(2.0)), a("center"));
+            sum([along(mid.clone(), 0), along(mid, 2), level])
+        }
+        Relation::Away(amount) => {
+            let f = flat(sub(b("center"), a("center")));
+            neg(mul(num(amount), div(f.clone(), call("abs", vec![f]))))
+        }
+        Relation::Closer(amount) => {
+            let f = flat(sub(b("center"), a("center")));
+            match amount {
+                Some(x) => mul(num(x), div(f.clone(), call("abs", vec![f]))),
+                None => mul(num(0.5), f),
+            }
+        }
+        Relation::Off => {
+            // Beside the target, on the floor.
+            let down = scaled_axis(sub(floor.clone(), dot(a("min"), axis(1))), 1);
+            let beside = next_to(s, t, steps, num(0.0));
+            add(beside, down)
+        }
+        Relation::OtherSide => {
+            let d = sub(b("center"), a("center"));
+            let dx = call("abs", vec![dot(d.clone(), axis(0))]);
+            let dz = call("abs", vec![dot(d.clone(), axis(2))]);
+            let q = step(sub(dx, dz));
+            add(
+                mul(q.clone(), mul(num(2.0), along(d.clone(), 0))),
+                mul(sub(num(1.0), q), mul(num(2.0), along(d, 2))),
+            )
+        }
+    })
+}
+
+/// Against the face of the target nearest the object: its x faces when the object lies
+/// more to the side than in front or behind (in the target's own proportions), else its z
+/// faces; on each axis the face on the object's side (ties go to +); 5 cm gap; centred
+/// along that face; `level` added.
+fn next_to(s: usize, t: usize, steps: &Steps, level: Expr) -> Expr {
+    let b = |attribute: &str| boxed(t, attribute, steps);
+    let a = |attribute: &str| var(s, attribute);
+    let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
+    let side = |e: usize| {
+        let p = step(dot(sub(a("center"), b("center")), axis(e)));
+        let plus = sub(
+            add(dot(b("max"), axis(e)), num(GAP)),
+            dot(a("min"), axis(e)),
+        );
+        let minus = sub(
+            sub(dot(b("min"), axis(e)), num(GAP)),
+            dot(a("max"), axis(e)),
+        );
+        mul(
+            add(mul(p.clone(), plus), mul(sub(num(1.0), p), minus)),
+            axis(e),
+        )
+    };
+    let dx = call("abs", vec![dot(sub(a("center"), b("center")), axis(0))]);
+    let dz = call("abs", vec![dot(sub(a("center"), b("center")), axis(2))]);
+    let q = step(sub(
+        mul(dx, dot(b("size"), axis(2))),
+        mul(dz, dot(b("size"), axis(0))),
+    ));
+    sum([
+        mul(q.clone(), add(side(0), centre(2))),
+        mul(sub(num(1.0), q), add(side(2), centre(0))),
+        level,
+    ])
+}

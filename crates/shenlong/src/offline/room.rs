@@ -1,0 +1,139 @@
+//! Places in the room, written with the `room` variable (the scene's bounds): its centre,
+//! corners and walls, the floor, and how far an object can go toward a wall.
+
+use super::amounts::FAR_METRES;
+use super::build::*;
+use crate::expr::Expr;
+
+/// Clearance kept from walls, in metres.
+pub const CLEARANCE: f64 = 0.02;
+
+/// A place in the room.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Place {
+    /// The centre of the floor.
+    Centre,
+    /// A corner: the sides named (x side, z side), else the nearest.
+    Corner(Option<f64>, Option<f64>),
+    /// A wall: the one named (axis, sign), else the nearest.
+    Wall(Option<(usize, f64)>),
+}
+
+/// Flush against the min or max wall along an axis.
+fn to_wall(s: usize, e: usize, sign: f64) -> Expr {
+    if sign > 0.0 {
+        scaled_axis(
+            sub(
+                sub(dot(room("max"), axis(e)), num(CLEARANCE)),
+                dot(var(s, "max"), axis(e)),
+            ),
+            e,
+        )
+    } else {
+        scaled_axis(
+            sub(
+                add(dot(room("min"), axis(e)), num(CLEARANCE)),
+                dot(var(s, "min"), axis(e)),
+            ),
+            e,
+        )
+    }
+}
+
+/// 1 when the object is on the max side of the room's centre along an axis, else 0.
+fn max_side(s: usize, e: usize) -> Expr {
+    step(dot(sub(var(s, "center"), room("center")), axis(e)))
+}
+
+/// Against the nearer wall along an axis.
+fn nearer_wall(s: usize, e: usize) -> Expr {
+    let p = max_side(s, e);
+    add(
+        mul(p.clone(), to_wall(s, e, 1.0)),
+        mul(sub(num(1.0), p), to_wall(s, e, -1.0)),
+    )
+}
+
+/// The translation that takes subject `s` to a place in the room.
+pub(crate) fn place(p: Place, s: usize) -> Expr {
+    let centre = |e: usize| along(sub(room("center"), var(s, "center")), e);
+    match p {
+        Place::Centre => add(centre(0), centre(2)),
+        Place::Corner(x, z) => {
+            let x = x.map_or_else(|| nearer_wall(s, 0), |sign| to_wall(s, 0, sign));
+            let z = z.map_or_else(|| nearer_wall(s, 2), |sign| to_wall(s, 2, sign));
+            add(x, z)
+        }
+        Place::Wall(Some((e, sign))) => to_wall(s, e, sign),
+        Place::Wall(None) => {
+            // The nearest of the four walls: compare the distances to the nearer x wall and
+            // the nearer z wall.
+            let distance = |e: usize| {
+                let half = dot(sub(room("max"), room("min")), axis(e));
+                sub(
+                    div(half, num(2.0)),
+                    call(
+                        "abs",
+                        vec![dot(sub(var(s, "center"), room("center")), axis(e))],
+                    ),
+                )
+            };
+            let x_nearer = step(sub(distance(2), distance(0)));
+            add(
+                mul(x_nearer.clone(), nearer_wall(s, 0)),
+                mul(sub(num(1.0), x_nearer), nearer_wall(s, 2)),
+            )
+        }
+    }
+}
+
+/// How far subject `s` can go along a direction before the wall (at least 0).
+fn room_left(s: usize, e: usize, sign: f64) -> Expr {
+    let d = if sign > 0.0 {
+        sub(
+            sub(dot(room("max"), axis(e)), num(CLEARANCE)),
+            dot(var(s, "max"), axis(e)),
+        )
+    } else {
+        sub(
+            dot(var(s, "min"), axis(e)),
+            add(dot(room("min"), axis(e)), num(CLEARANCE)),
+        )
+    };
+    call("max", vec![num(0.0), d])
+}
+
+/// "a lot to the left": [`FAR_METRES`] or up to the wall, whichever is less (the full
+/// amount when the scene has no room).
+pub(crate) fn far(s: usize, e: usize, sign: f64, has_room: bool) -> Expr {
+    if has_room && e != 1 {
+        scaled_axis(
+            mul(
+                num(sign),
+                call("min", vec![num(FAR_METRES), room_left(s, e, sign)]),
+            ),
+            e,
+        )
+    } else {
+        scaled_axis(num(sign * FAR_METRES), e)
+    }
+}
+
+/// "all the way to the left": against that wall.
+pub(crate) fn all_the_way(s: usize, e: usize, sign: f64) -> Expr {
+    to_wall(s, e, sign)
+}
+
+/// The floor height: the room's `min.y`, or 0 without a room.
+pub(crate) fn floor(has_room: bool) -> Expr {
+    if has_room {
+        dot(room("min"), axis(1))
+    } else {
+        num(0.0)
+    }
+}
+
+/// Down onto the floor, where it is.
+pub(crate) fn onto_floor(s: usize, has_room: bool) -> Expr {
+    scaled_axis(sub(floor(has_room), dot(var(s, "min"), axis(1))), 1)
+}

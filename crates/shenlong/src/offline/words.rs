@@ -1,0 +1,388 @@
+//! The words the offline translator reads: tokens of a templated query, and its closed
+//! word lists (verbs, directions, units, fillers), with one-letter typos of verbs and
+//! directions corrected.
+
+/// A token of a templated instruction.
+#[derive(Clone, Debug, PartialEq)]
+pub(crate) enum Token {
+    /// A lower-case word.
+    Word(String),
+    /// A number.
+    Number(f64),
+    /// A variable `X{k+1}`.
+    Variable(usize),
+    /// `,`, `;`, `.`, `!`, `?`, `:`.
+    Separator,
+}
+
+/// Splits a templated query into tokens: `1.5m` → 1.5, `m`; `3/4` → 0.75; `°` → degrees;
+/// `%` → percent; hyphenated words are split (`forward-left`) except known compounds
+/// (`counter-clockwise`).
+pub(crate) fn tokenize(query: &str) -> Vec<Token> {
+    let lower = query
+        .to_lowercase()
+        .replace('’', "'")
+        .replace('°', " degrees ")
+        .replace('%', " percent ")
+        .replace("counter-clockwise", "counterclockwise")
+        .replace("anti-clockwise", "anticlockwise")
+        .replace("counter clockwise", "counterclockwise")
+        .replace("anti clockwise", "anticlockwise");
+    let mut tokens = Vec::new();
+    let mut word = String::new();
+    let flush = |word: &mut String, tokens: &mut Vec<Token>| {
+        if word.is_empty() {
+            return;
+        }
+        let w = std::mem::take(word);
+        let w = w
+            .trim_matches(|c: char| c == '.' || c == '\'' || c == '-')
+            .to_string();
+        if w.is_empty() {
+            return;
+        }
+        if let Some(n) = w
+            .strip_prefix('x')
+            .and_then(|d| d.parse::<usize>().ok())
+            .filter(|n| *n >= 1)
+        {
+            tokens.push(Token::Variable(n - 1));
+        } else if let Some((a, b)) = w
+            .split_once('/')
+            .and_then(|(a, b)| Some((a.parse::<f64>().ok()?, b.parse::<f64>().ok()?)))
+            .filter(|(_, b)| *b != 0.0)
+        {
+            tokens.push(Token::Number(a / b));
+        } else if let Ok(n) = w.parse::<f64>() {
+            if n.is_finite() {
+                tokens.push(Token::Number(n));
+            }
+        } else if let Some((n, unit)) = split_number_unit(&w) {
+            tokens.push(Token::Number(n));
+            tokens.push(Token::Word(unit));
+        } else if w.contains('-') && !w.starts_with('-') {
+            for part in w.split('-').filter(|p| !p.is_empty()) {
+                tokens.push(Token::Word(part.to_string()));
+            }
+        } else {
+            tokens.push(Token::Word(w));
+        }
+    };
+    let chars: Vec<char> = lower.chars().collect();
+    for (i, &c) in chars.iter().enumerate() {
+        let joins_number =
+            c == '.' && !word.is_empty() && chars.get(i + 1).is_some_and(char::is_ascii_digit);
+        if c.is_alphanumeric()
+            || c == '/'
+            || c == '\''
+            || joins_number
+            || (c == '-'
+                && (!word.is_empty() || chars.get(i + 1).is_some_and(char::is_ascii_digit)))
+        {
+            word.push(c);
+        } else {
+            flush(&mut word, &mut tokens);
+            if matches!(c, ',' | ';' | '.' | '!' | '?' | ':') {
+                tokens.push(Token::Separator);
+            }
+        }
+    }
+    flush(&mut word, &mut tokens);
+    tokens
+}
+
+/// `2m` → (2, "m"), `90deg` → (90, "deg").
+fn split_number_unit(w: &str) -> Option<(f64, String)> {
+    let split = w.find(|c: char| c.is_alphabetic())?;
+    let (n, unit) = w.split_at(split);
+    let n: f64 = n.parse().ok()?;
+    (n.is_finite() && unit.chars().all(char::is_alphabetic)).then(|| (n, unit.to_string()))
+}
+
+/// Number words: `two` → 2, `twenty` → 20.
+pub(crate) fn number_word(w: &str) -> Option<f64> {
+    Some(match w {
+        "zero" => 0.0,
+        "one" => 1.0,
+        "two" => 2.0,
+        "three" => 3.0,
+        "four" => 4.0,
+        "five" => 5.0,
+        "six" => 6.0,
+        "seven" => 7.0,
+        "eight" => 8.0,
+        "nine" => 9.0,
+        "ten" => 10.0,
+        "eleven" => 11.0,
+        "twelve" => 12.0,
+        "fifteen" => 15.0,
+        "twenty" => 20.0,
+        "thirty" => 30.0,
+        "forty" | "fourty" => 40.0,
+        "fifty" => 50.0,
+        "sixty" => 60.0,
+        "seventy" => 70.0,
+        "eighty" => 80.0,
+        "ninety" => 90.0,
+        "hundred" => 100.0,
+        _ => return None,
+    })
+}
+
+/// Length units to metres.
+pub(crate) fn length_unit(w: &str) -> Option<f64> {
+    Some(match w {
+        "m" | "meter" | "meters" | "metre" | "metres" | "unit" | "units" => 1.0,
+        "cm" | "centimeter" | "centimeters" | "centimetre" | "centimetres" | "cms" => 0.01,
+        "mm" | "millimeter" | "millimeters" | "millimetre" | "millimetres" => 0.001,
+        "ft" | "foot" | "feet" => 0.3048,
+        "in" | "inch" | "inches" => 0.0254,
+        "yard" | "yards" | "yd" => 0.9144,
+        _ => return None,
+    })
+}
+
+/// Angle units to degrees.
+pub(crate) fn angle_unit(w: &str) -> Option<f64> {
+    Some(match w {
+        "degree" | "degrees" | "deg" | "degs" => 1.0,
+        "radian" | "radians" | "rad" | "rads" => 180.0 / std::f64::consts::PI,
+        "turn" | "turns" | "revolution" | "revolutions" => 360.0,
+        _ => return None,
+    })
+}
+
+/// What a verb does.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Action {
+    /// Move, put, place, push, lift (with an implied direction for some).
+    Move,
+    /// Rotate, turn, spin.
+    Rotate,
+    /// Scale, resize, grow, shrink.
+    Scale,
+    /// Swap two objects' places.
+    Swap,
+    /// Align one with another, or line several up.
+    Align,
+    /// Take, pick up, grab: holds the objects for a later clause (`… and put it on X2`).
+    Take,
+    /// Centre (in the room).
+    Centre,
+    /// Straighten, square with the walls.
+    Straighten,
+}
+
+/// A verb: its action and an implied direction (`lift` = up).
+pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
+    use Action::*;
+    Some(match w {
+        "move" | "moved" | "moving" | "shift" | "shifted" | "push" | "pushed" | "slide"
+        | "nudge" | "translate" | "put" | "place" | "placed" | "set" | "bring" | "position"
+        | "reposition" | "relocate" | "carry" | "drag" | "pull" | "stack" | "pile" | "sit"
+        | "stand" | "roll" | "shove" | "scoot" | "send" | "hang" | "mount" | "get" | "stick"
+        | "leave" | "lay" | "shuffle" => (Move, None),
+        "take" | "grab" | "pick" | "fetch" => (Take, None),
+        "swap" | "exchange" | "switch" | "interchange" | "trade" => (Swap, None),
+        "align" | "line" => (Align, None),
+        "raise" | "raised" | "lift" | "lifted" | "elevate" | "hoist" => (Move, Some((1, 1.0))),
+        "lower" | "lowered" | "drop" | "sink" => (Move, Some((1, -1.0))),
+        "rotate" | "rotated" | "turn" | "turned" | "spin" | "twist" | "revolve" | "flip"
+        | "swivel" | "pivot" | "angle" => (Rotate, None),
+        "scale" | "scaled" | "resize" | "resized" | "enlarge" | "grow" | "shrink" | "double"
+        | "halve" | "triple" | "magnify" | "reduce" | "make" | "shrunk" => (Scale, None),
+        "center" | "centre" => (Centre, None),
+        "straighten" | "square" => (Straighten, None),
+        _ => return None,
+    })
+}
+
+/// A direction word as (axis 0..2, sign).
+pub(crate) fn direction(w: &str) -> Option<(usize, f64)> {
+    Some(match w {
+        "left" | "leftward" | "leftwards" | "west" => (0, -1.0),
+        "right" | "rightward" | "rightwards" | "east" => (0, 1.0),
+        "up" | "upward" | "upwards" | "higher" | "above" => (1, 1.0),
+        "down" | "downward" | "downwards" | "lower" => (1, -1.0),
+        "forward" | "forwards" | "front" | "ahead" | "south" | "frontward" | "frontwards" => {
+            (2, 1.0)
+        }
+        "back" | "backward" | "backwards" | "rear" | "north" => (2, -1.0),
+        _ => return None,
+    })
+}
+
+/// Words that may stand anywhere and mean nothing for the edit (docs/offline.md lists
+/// them): articles, politeness, and discourse words.
+pub(crate) fn filler(w: &str) -> bool {
+    matches!(
+        w,
+        "the"
+            | "a"
+            | "an"
+            | "please"
+            | "pls"
+            | "plz"
+            | "kindly"
+            | "just"
+            | "now"
+            | "ok"
+            | "okay"
+            | "so"
+            | "thanks"
+            | "thank"
+            | "you"
+            | "then"
+            | "too"
+            | "and"
+            | "also"
+            | "again"
+            | "over"
+            | "its"
+            | "their"
+            | "some"
+            | "gently"
+            | "carefully"
+            | "quickly"
+            | "simply"
+            | "straight"
+            | "directly"
+            | "exactly"
+    )
+}
+
+/// Every word the translator knows, for typo correction.
+const KNOWN: &[&str] = &[
+    "move",
+    "shift",
+    "push",
+    "slide",
+    "nudge",
+    "place",
+    "bring",
+    "position",
+    "relocate",
+    "carry",
+    "drag",
+    "pull",
+    "stack",
+    "roll",
+    "shove",
+    "scoot",
+    "raise",
+    "lift",
+    "lower",
+    "drop",
+    "rotate",
+    "turn",
+    "spin",
+    "twist",
+    "flip",
+    "swivel",
+    "scale",
+    "resize",
+    "enlarge",
+    "grow",
+    "shrink",
+    "swap",
+    "switch",
+    "exchange",
+    "align",
+    "center",
+    "centre",
+    "straighten",
+    "left",
+    "right",
+    "forward",
+    "forwards",
+    "backward",
+    "backwards",
+    "back",
+    "upward",
+    "downward",
+    "clockwise",
+    "counterclockwise",
+    "anticlockwise",
+    "degrees",
+    "metre",
+    "metres",
+    "meter",
+    "meters",
+    "centimetres",
+    "centimeters",
+    "inches",
+    "feet",
+    "bigger",
+    "smaller",
+    "larger",
+    "closer",
+    "further",
+    "farther",
+    "towards",
+    "toward",
+    "between",
+    "behind",
+    "beside",
+    "under",
+    "below",
+    "above",
+    "front",
+    "corner",
+    "middle",
+    "room",
+    "wall",
+    "floor",
+    "please",
+    "slightly",
+    "little",
+    "around",
+];
+
+/// The known word one edit (insertion, deletion, substitution, swap of neighbours) from a
+/// word of four letters or more, when exactly one is.
+pub(crate) fn correct(w: &str) -> Option<&'static str> {
+    if w.chars().count() < 4 || KNOWN.contains(&w) || !w.chars().all(char::is_alphabetic) {
+        return None;
+    }
+    let mut near = KNOWN.iter().filter(|k| strsim::osa_distance(w, k) == 1);
+    let first = near.next()?;
+    near.next().is_none().then_some(*first)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn tokens() {
+        assert_eq!(
+            tokenize("Move X1 1.5m forward-left, please."),
+            vec![
+                Token::Word("move".into()),
+                Token::Variable(0),
+                Token::Number(1.5),
+                Token::Word("m".into()),
+                Token::Word("forward".into()),
+                Token::Word("left".into()),
+                Token::Separator,
+                Token::Word("please".into()),
+                Token::Separator,
+            ]
+        );
+        assert_eq!(
+            tokenize("turn it counter-clockwise")[2],
+            Token::Word("counterclockwise".into())
+        );
+        assert_eq!(tokenize("3/4")[0], Token::Number(0.75));
+        assert_eq!(tokenize("let's")[0], Token::Word("let's".into()));
+    }
+
+    #[test]
+    fn typos() {
+        assert_eq!(correct("moev"), Some("move"));
+        assert_eq!(correct("rigth"), Some("right"));
+        assert_eq!(correct("lfet"), Some("left"));
+        assert_eq!(correct("move"), None);
+        assert_eq!(correct("mvoe"), Some("move"));
+    }
+}

@@ -1,0 +1,185 @@
+//! The translator seam: what every translator — the offline one and the language models
+//! behind the three prompt systems — takes (a [`Templated`] instruction and the scene) and
+//! gives (a [`Translation`]: one [`Answer`] per variable), below both the pipeline and the
+//! offline translator so neither depends on the other.
+
+use crate::expr::{Bindings, ObjectBox, Transformation};
+use crate::ground::Phrase;
+use crate::llm::{Message, Usage};
+use crate::scene::Scene;
+use serde::Serialize;
+use std::time::Duration;
+
+/// An instruction with its object phrases replaced by variables.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Templated {
+    /// The instruction as the user wrote it.
+    pub instruction: String,
+    /// The instruction with variables: `move X1 next to X2`.
+    pub query: String,
+    /// The objects the variables stand for, in order: `objects[0]` is X1.
+    pub objects: Vec<usize>,
+    /// The phrases grounded, with the objects they mean and why.
+    pub phrases: Vec<Phrase>,
+}
+
+impl Templated {
+    /// The variable name of the `k`-th bound object (from 0): `X1`, `X2`, ….
+    pub fn variable(k: usize) -> String {
+        format!("X{}", k + 1)
+    }
+}
+
+/// A prompt system.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum System {
+    /// Shenlong: the model answers in CGA expressions; only the templated query is sent.
+    Cga,
+    /// After "Language Models as Zero-Shot Trajectory Generators": matrices composed from
+    /// templated functions, with the named objects' boxes given as numbers.
+    Euclidean,
+    /// After NVIDIA Omniverse's AI Room Generator: the named objects' sizes, centres and
+    /// Euler angles in, their final centres and Euler angles out.
+    Omniverse,
+}
+
+impl System {
+    /// All systems.
+    pub const ALL: [System; 3] = [System::Cga, System::Euclidean, System::Omniverse];
+
+    /// The name used on the command line and in reports.
+    pub fn name(self) -> &'static str {
+        match self {
+            System::Cga => "cga",
+            System::Euclidean => "euclidean",
+            System::Omniverse => "omniverse",
+        }
+    }
+
+    /// The system by name.
+    pub fn from_name(name: &str) -> Option<Self> {
+        Self::ALL
+            .into_iter()
+            .find(|s| s.name() == name.trim().to_lowercase())
+    }
+}
+
+/// One variable's answer.
+#[derive(Clone, Debug, PartialEq)]
+pub struct Answer {
+    /// `X1`, `X2`, ….
+    pub variable: String,
+    /// The object it stands for.
+    pub object: usize,
+    /// What the model wrote for it (expressions, or the pose as JSON for omniverse).
+    pub expressions: Vec<String>,
+    /// The transformation, about the object's pivot.
+    pub transformation: Transformation,
+}
+
+/// The variables of an expression about `objects` of `scene`: `X1`, `X2`, … bound to their
+/// world boxes in order, and (an extension) `room` when the scene has bounds.
+pub fn bindings(scene: &Scene, objects: &[usize]) -> Bindings {
+    let mut bindings = Bindings::new();
+    for (k, &i) in objects.iter().enumerate() {
+        let b = scene.objects[i].world_aabb();
+        bindings.bind(
+            Templated::variable(k),
+            ObjectBox {
+                min: b.min,
+                max: b.max,
+            },
+        );
+    }
+    if let Some(room) = scene.bounds {
+        bindings.bind(
+            "room",
+            ObjectBox {
+                min: room.min,
+                max: room.max,
+            },
+        );
+    }
+    bindings
+}
+/// One request and reply, as the report shows it.
+#[derive(Clone, Debug, Serialize)]
+pub struct Exchange {
+    /// The messages sent.
+    pub messages: Vec<Message>,
+    /// The reply, or the empty string when the backend failed.
+    pub reply: String,
+    /// Time the reply took, in milliseconds (0 for a cache hit).
+    pub elapsed_ms: f64,
+    /// Token counts.
+    pub usage: Usage,
+    /// What was wrong with the reply, sent back to the model in the next attempt.
+    pub error: Option<String>,
+    /// Whether the reply came from the cache.
+    pub cached: bool,
+}
+
+/// The result of translating one instruction.
+#[derive(Clone, Debug)]
+pub struct Translation {
+    /// One answer per variable the reply changes.
+    pub answers: Vec<Answer>,
+    /// Every exchange, retries included.
+    pub exchanges: Vec<Exchange>,
+    /// Attempts after the first.
+    pub retries: usize,
+    /// Whether the valid reply came from the cache.
+    pub cache_hit: bool,
+    /// Response time, retries included (the paper's measure).
+    pub elapsed: Duration,
+}
+
+/// Why an instruction could not be translated.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct TranslateError {
+    /// One line for the user.
+    pub message: String,
+    /// Whether the instruction itself was not understood (as opposed to a model or its
+    /// server failing).
+    pub not_understood: bool,
+}
+
+impl TranslateError {
+    /// A model or server failure.
+    pub fn model(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+            not_understood: false,
+        }
+    }
+
+    /// An instruction the translator cannot read.
+    pub fn not_understood(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+            not_understood: true,
+        }
+    }
+}
+
+impl std::fmt::Display for TranslateError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for TranslateError {}
+
+/// Turns templated instructions into transformations.
+pub trait Translator: Send + Sync {
+    /// The translator's name for reports: `offline`, or the model.
+    fn name(&self) -> String;
+    /// The prompt system it answers in.
+    fn system(&self) -> System;
+    /// Translates one instruction.
+    fn translate(
+        &self,
+        templated: &Templated,
+        scene: &Scene,
+    ) -> Result<Translation, TranslateError>;
+}
