@@ -28,10 +28,10 @@ pub use relations::GAP;
 
 use crate::expr::{self, Bindings, Expr};
 use crate::llm::{Message, Usage};
-use crate::pipeline::prompts::{Answer, System};
-use crate::pipeline::template::Templated;
 use crate::scene::Scene;
-use crate::translate::{Exchange, TranslateError, Translation, Translator};
+use crate::translate::{
+    bindings, Answer, Exchange, System, Templated, TranslateError, Translation, Translator,
+};
 use read::{Facts, Reader};
 use relations::Step;
 use std::time::Instant;
@@ -168,7 +168,7 @@ impl Translator for OfflineTranslator {
             &yaw,
         )
         .map_err(TranslateError::not_understood)?;
-        let bindings: Bindings = crate::pipeline::bindings(scene, &templated.objects);
+        let bindings: Bindings = bindings(scene, &templated.objects);
         let reply = reply_text(&entries);
         let mut answers = Vec::new();
         for e in &entries {
