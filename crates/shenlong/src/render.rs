@@ -194,11 +194,12 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
             path(&footprints[i]),
             escape(&object.name)
         );
-        // A tick from the centre toward the front (local +Z) of box objects.
+        // A tick from the centre toward the front of box objects.
         if let Shape::Box { size } = &object.shape {
             let pose = object.similarity();
             let centre = pose.transform_point(DVec3::new(0.0, 0.0, 0.0));
-            let front = pose.transform_point(DVec3::new(0.0, 0.0, size.z * 0.5));
+            let reach = (object.front * *size * 0.5).length();
+            let front = pose.transform_point(object.front * reach);
             let (a, b) = (
                 to_px(DVec2::new(centre.x, centre.z)),
                 to_px(DVec2::new(front.x, front.z)),

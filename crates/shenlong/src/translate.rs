@@ -82,12 +82,14 @@ pub struct Answer {
 pub fn bindings(scene: &Scene, objects: &[usize]) -> Bindings {
     let mut bindings = Bindings::new();
     for (k, &i) in objects.iter().enumerate() {
-        let b = scene.objects[i].world_aabb();
+        let o = &scene.objects[i];
+        let b = o.world_aabb();
         bindings.bind(
             Templated::variable(k),
             ObjectBox {
                 min: b.min,
                 max: b.max,
+                front: o.world_front(),
             },
         );
     }
@@ -97,6 +99,8 @@ pub fn bindings(scene: &Scene, objects: &[usize]) -> Bindings {
             ObjectBox {
                 min: room.min,
                 max: room.max,
+                // The room faces the viewer.
+                front: glam::DVec3::Z,
             },
         );
     }

@@ -98,12 +98,14 @@ fn bindings(args: &Args) -> Result<Bindings> {
             bail!("--bind {binding}: the variable must be X1, X2, …");
         }
         let index = file.scene.resolve(name).map_err(anyhow::Error::msg)?;
-        let aabb = file.scene.objects[index].world_aabb();
+        let object = &file.scene.objects[index];
+        let aabb = object.world_aabb();
         bindings.bind(
             variable,
             ObjectBox {
                 min: aabb.min,
                 max: aabb.max,
+                front: object.world_front(),
             },
         );
     }

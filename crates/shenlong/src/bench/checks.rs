@@ -727,7 +727,7 @@ impl Check {
                 tol,
             } => {
                 let (i, j) = (find(object)?, find(target)?);
-                let forward = after.objects[i].similarity().rotation * DVec3::Z;
+                let forward = after.objects[i].world_front();
                 let to = b1(j).center() - b1(i).center();
                 let (f2, t2) = (
                     glam::DVec2::new(forward.x, forward.z),

@@ -295,10 +295,11 @@ impl<'a> Evaluator<'a> {
                     "max" => b.max,
                     "center" | "centre" => (b.min + b.max) * 0.5,
                     "size" => b.max - b.min,
+                    "front" => b.front,
                     _ => {
                         return Err(self.error(
                             format!(
-                                "{} has no attribute '{name}': use .min, .max, .center or .size",
+                                "{} has no attribute '{name}': use .min, .max, .center, .size or .front",
                                 self.bindings.variable(index)
                             ),
                             expr,

@@ -55,6 +55,8 @@ pub struct ObjectBox {
     pub min: DVec3,
     /// The corner with the largest coordinates (`X1.max`).
     pub max: DVec3,
+    /// The world direction the object faces (`X1.front`), a unit vector.
+    pub front: DVec3,
 }
 
 /// The variables `X1 … Xn` and the boxes of the objects they stand for.

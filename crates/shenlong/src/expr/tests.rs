@@ -14,6 +14,7 @@ fn two_objects() -> Bindings {
         ObjectBox {
             min: DVec3::new(-0.05, 0.0, -0.05),
             max: DVec3::new(0.05, 0.3, 0.05),
+            front: DVec3::Z,
         },
     );
     b.bind(
@@ -21,6 +22,7 @@ fn two_objects() -> Bindings {
         ObjectBox {
             min: DVec3::new(1.2, 0.0, -0.4),
             max: DVec3::new(2.8, 0.9, 0.4),
+            front: DVec3::NEG_X,
         },
     );
     b
@@ -474,4 +476,19 @@ fn the_euclidean_dialect() {
     assert!(error("T(X1.max[1] * e2)").starts_with("indexing is not part of the CGA language"));
     assert!(error("T(e1) @ T(e2)").starts_with("'@' is not part of the CGA language"));
     assert!(error("translation(1, 0, 0)").starts_with("unknown name 'translation'"));
+}
+
+#[test]
+fn front_is_the_world_direction_an_object_faces() {
+    let b = two_objects();
+    let v = crate::expr::evaluate("X2.front", &b).unwrap();
+    assert!((v.coefficients()[1] + 1.0).abs() < 1e-12, "{v:?}");
+    // Turning X1 to face the way X2 faces: from +Z to −X is −90° about +Y.
+    let t = crate::expr::evaluate_transformation(
+        "R(atan2(X2.front | e1, X2.front | e3) - atan2(X1.front | e1, X1.front | e3), e3, e1)",
+        &b,
+    )
+    .unwrap();
+    let turned = t.similarity.rotation * glam::DVec3::Z;
+    assert!((turned - glam::DVec3::NEG_X).length() < 1e-12, "{turned}");
 }

@@ -193,6 +193,16 @@ fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {
     let mut object = Object::new_box(name, size, position, rotation, scale)
         .map_err(|e| FormatError::new(format!("objects[{i}]: {e}")))?;
     object.labels = labels(o, i)?;
+    if let Some(front) = o.get("front").filter(|v| !v.is_null()) {
+        let f = vec3(Some(front), &at("front"))?;
+        if f.length() < 1e-9 {
+            return Err(FormatError::new(format!(
+                "{} must be a non-zero direction [x, y, z]",
+                at("front")
+            )));
+        }
+        object.front = f.normalize();
+    }
     Ok(object)
 }
 
@@ -330,7 +340,11 @@ fn fresh_document(scene: &Scene) -> Value {
                 }
             };
             // The pose is filled in by `update_pose`, like any moved object's.
-            serde_json::json!({"name": o.name, "size": numbers(size.to_array())})
+            let mut v = serde_json::json!({"name": o.name, "size": numbers(size.to_array())});
+            if (o.front - DVec3::Z).length() > 1e-12 {
+                v["front"] = serde_json::json!(numbers(o.front.to_array()));
+            }
+            v
         })
         .collect();
     root.insert("objects".into(), Value::Array(objects));

@@ -238,6 +238,8 @@ fn convert_object(
     if let Some(parent) = parent {
         map.insert("on".into(), Value::String(parent.to_string()));
     }
+    // Unity's forward (+Z) is −Z after the mirror: ProcTHOR assets face local −Z here.
+    map.insert("front".into(), json!([0.0, 0.0, -1.0]));
     map.insert("objectType".into(), Value::String(object_type.to_string()));
     map.insert("assetId".into(), Value::String(asset_id.to_string()));
     if let Some(id) = object.get("id") {

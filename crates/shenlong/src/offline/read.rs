@@ -235,7 +235,9 @@ impl<'a> Reader<'a> {
                 None => return Err(not_read(&text, &text)),
             },
         };
-        if facing.is_some() && matches!(action, Action::Scale | Action::Move) {
+        let face_word = (0..c.len())
+            .any(|i| c.free(i) && matches!(c.word(i), Some("face" | "faces" | "facing")));
+        if (facing.is_some() || face_word) && matches!(action, Action::Scale | Action::Move) {
             // "make X1 face X2", "have X1 face X2".
             action = Action::Rotate;
         }
@@ -498,13 +500,135 @@ impl<'a> Reader<'a> {
                     // About the vertical, so that the front (+Z) points at the target: +θ
                     // about +Y takes +Z toward +X, so θ = atan2(dx, dz); away adds a half turn.
                     let d = sub(boxed(f.target, "center", &self.steps), var(s, "center"));
-                    let mut angle = call("atan2", vec![dot(d.clone(), axis(0)), dot(d, axis(2))]);
+                    let mut angle = sub(heading(d), heading(var(s, "front")));
                     if f.away {
                         angle = add(angle, name("pi"));
                     }
                     (s, Step::Turn(rotor(angle, (2, 0))))
                 })
                 .collect());
+        }
+        // "face the same way as X2", "in the same direction as X2": its front along X2's.
+        for words in [
+            &["the", "same", "way", "as"][..],
+            &["the", "same", "direction", "as"],
+            &["same", "way", "as"],
+            &["same", "direction", "as"],
+        ] {
+            if let Some(i) = c.find(words) {
+                if let Some((t, v)) = c.variable_after(i + words.len()) {
+                    c.mark(i..t + 1);
+                    for k in 0..c.len() {
+                        if matches!(
+                            c.word(k),
+                            Some(
+                                "to" | "face"
+                                    | "faces"
+                                    | "facing"
+                                    | "point"
+                                    | "in"
+                                    | "so"
+                                    | "that"
+                                    | "it"
+                                    | "is"
+                            )
+                        ) {
+                            c.mark(k..k + 1);
+                        }
+                    }
+                    let subjects = self.subjects(c, Some(i));
+                    if subjects.is_empty() {
+                        return Err(not_read(text, text));
+                    }
+                    self.last_subjects = subjects.clone();
+                    return Ok(subjects
+                        .iter()
+                        .map(|&s| {
+                            let angle = sub(heading(var(v, "front")), heading(var(s, "front")));
+                            (s, Step::Turn(rotor(angle, (2, 0))))
+                        })
+                        .collect());
+                }
+            }
+        }
+        // "face the left wall", "face the middle of the room", "face the wall".
+        if let Some(i) = ["face", "faces", "facing"]
+            .iter()
+            .find_map(|w| c.find(&[w]))
+        {
+            let wall = c.find(&["wall"]);
+            let centre = ["centre", "center", "middle"]
+                .iter()
+                .find_map(|w| c.find(&[w]));
+            let room_word = c.find(&["room"]);
+            if (wall.is_some() || centre.is_some() || room_word.is_some()) && self.facts.room {
+                c.mark(i..i + 1);
+                let side = [
+                    ("left", (0usize, -1.0)),
+                    ("right", (0, 1.0)),
+                    ("back", (2, -1.0)),
+                    ("front", (2, 1.0)),
+                ]
+                .iter()
+                .find_map(|(w, d)| c.find(&[w]).map(|k| (k, *d)));
+                for k in [wall, centre, room_word].into_iter().flatten() {
+                    c.mark(k..k + 1);
+                }
+                if let Some((k, _)) = side {
+                    c.mark(k..k + 1);
+                }
+                for k in 0..c.len() {
+                    if matches!(
+                        c.word(k),
+                        Some(
+                            "to" | "of"
+                                | "the"
+                                | "so"
+                                | "that"
+                                | "it"
+                                | "is"
+                                | "towards"
+                                | "toward"
+                        )
+                    ) {
+                        c.mark(k..k + 1);
+                    }
+                }
+                let subjects = self.subjects(c, Some(i));
+                if subjects.is_empty() {
+                    return Err(not_read(text, text));
+                }
+                self.last_subjects = subjects.clone();
+                return Ok(subjects
+                    .iter()
+                    .map(|&s| {
+                        let target = match (wall, side) {
+                            // A named wall: its direction.
+                            (Some(_), Some((_, (e, sign)))) => scaled_axis(num(sign), e),
+                            // The nearest wall: away from the room's centre, along the axis
+                            // it is nearer a wall on.
+                            (Some(_), None) => {
+                                let off = sub(var(s, "center"), room("center"));
+                                let slack = |e: usize| {
+                                    sub(
+                                        div(dot(sub(room("max"), room("min")), axis(e)), num(2.0)),
+                                        call("abs", vec![dot(off.clone(), axis(e))]),
+                                    )
+                                };
+                                let x_nearer = step(sub(slack(2), slack(0)));
+                                add(
+                                    mul(x_nearer.clone(), along(off.clone(), 0)),
+                                    mul(sub(num(1.0), x_nearer), along(off, 2)),
+                                )
+                            }
+                            // The room's centre.
+                            _ => sub(room("center"), var(s, "center")),
+                        };
+                        let angle = sub(heading(target), heading(var(s, "front")));
+                        (s, Step::Turn(rotor(angle, (2, 0))))
+                    })
+                    .collect());
+            }
         }
         // "turn X1's back to X2" (templated "turn X1 back to X2"): facing away.
         if let Some(i) = c.find(&["back", "to"]) {
@@ -881,6 +1005,12 @@ impl<'a> Reader<'a> {
         }
         Ok(None)
     }
+}
+
+/// The heading of a horizontal direction about the vertical: θ with +θ about +Y taking +Z
+/// toward +X, so θ = atan2(x, z).
+fn heading(v: Expr) -> Expr {
+    call("atan2", vec![dot(v.clone(), axis(0)), dot(v, axis(2))])
 }
 
 fn length_value(l: Option<Length>) -> Option<f64> {

@@ -66,11 +66,12 @@ impl System {
                     .map(|(k, &i)| {
                         let (size, centre, euler) = omniverse_pose(scene, i);
                         format!(
-                            "{}: dimensions [{}], centre [{}], rotation [{}]",
+                            "{}: dimensions [{}], centre [{}], rotation [{}], front [{}]",
                             Templated::variable(k),
                             numbers(size.to_array()),
                             numbers(centre.to_array()),
-                            numbers(euler)
+                            numbers(euler),
+                            numbers(scene.objects[i].world_front().to_array())
                         )
                     })
                     .collect();

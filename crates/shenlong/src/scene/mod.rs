@@ -68,6 +68,9 @@ pub struct Object {
     pub support_from_file: bool,
     /// Words a person may use for the object besides its name (grounding reads them).
     pub labels: Labels,
+    /// The local direction the object faces (a unit vector; +Z, glTF's convention, unless
+    /// its source says otherwise).
+    pub front: DVec3,
     pose: Multivector,
 }
 
@@ -103,6 +106,7 @@ impl Object {
             support: None,
             support_from_file: false,
             labels: Labels::default(),
+            front: DVec3::Z,
             pose: pose.to_versor()?,
         })
     }
@@ -163,6 +167,11 @@ impl Object {
             Shape::Points { points } => Aabb::from_points(points.iter().map(|&p| transform(p))),
         }
         .expect("shapes have at least one point")
+    }
+
+    /// The world direction the object faces: its rotation applied to its local front.
+    pub fn world_front(&self) -> DVec3 {
+        (self.similarity().rotation * self.front).normalize_or(DVec3::Z)
     }
 
     /// The pivot in world coordinates.

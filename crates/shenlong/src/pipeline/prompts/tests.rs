@@ -22,9 +22,9 @@ fn prompts_are_snapshotted() {
 
 #[test]
 fn versions_and_names() {
-    assert_eq!(System::Cga.version(), "cga-3");
-    assert_eq!(System::Euclidean.version(), "euclidean-2");
-    assert_eq!(System::Omniverse.version(), "omniverse-2");
+    assert_eq!(System::Cga.version(), "cga-4");
+    assert_eq!(System::Euclidean.version(), "euclidean-3");
+    assert_eq!(System::Omniverse.version(), "omniverse-3");
     assert_eq!(System::from_name("CGA"), Some(System::Cga));
     assert!(!System::Cga.prompt().contains("version:"));
 }
