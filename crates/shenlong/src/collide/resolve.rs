@@ -55,6 +55,8 @@ pub struct Adjustment {
     pub displacement: DVec3,
     /// What it collided with at the requested placement.
     pub collided_with: Vec<Obstacle>,
+    /// The object it was lifted onto, when no spot on its own level was free.
+    pub lifted_onto: Option<usize>,
 }
 
 /// The result of resolution.
@@ -170,10 +172,60 @@ pub fn resolve(
         let lifts = lifts(&span, &obstacles, &after, floor, options.radius);
         let root = group[0];
         let requested = after[root].bottom_center();
+        // The level the edit put the object on: the top of an object it stands on there,
+        // or the floor. Resolution slides along that level first — keeping a placement on
+        // a top face on that face — and lifts onto another object only when nothing on
+        // the level is free within the radius.
+        let surface = obstacles.iter().copied().find(|&j| {
+            let t = after[j];
+            let b = after[root];
+            (b.min.y - t.max.y).abs() < 0.01
+                && requested.x >= t.min.x
+                && requested.x <= t.max.x
+                && requested.z >= t.min.z
+                && requested.z <= t.max.z
+        });
+        let on_surface = |offset: DVec3| -> bool {
+            let Some(j) = surface else { return true };
+            if offset.y.abs() > 1e-12 {
+                return true;
+            }
+            let t = after[j];
+            let b = after[root].translated(offset);
+            let fits_x = b.max.x - b.min.x <= t.max.x - t.min.x;
+            let fits_z = b.max.z - b.min.z <= t.max.z - t.min.z;
+            let c = b.center();
+            // On the top face: within it where it fits, its centre over it where it does not.
+            let x_ok = if fits_x {
+                b.min.x >= t.min.x - 1e-9 && b.max.x <= t.max.x + 1e-9
+            } else {
+                c.x >= t.min.x && c.x <= t.max.x
+            };
+            let z_ok = if fits_z {
+                b.min.z >= t.min.z - 1e-9 && b.max.z <= t.max.z + 1e-9
+            } else {
+                c.z >= t.min.z && c.z <= t.max.z
+            };
+            x_ok && z_ok
+        };
         // Among equally near placements, prefer the one closest to where the object was
         // before the edit: it backs out the way it came.
         let origin = before[root].bottom_center();
-        let mut candidates = ordered_candidates(&horizontal, &lifts).peekable();
+        // The level first (no lift, or back up to the floor), then lifts onto surfaces.
+        let level: Vec<f64> = lifts
+            .iter()
+            .copied()
+            .filter(|&dy| dy.abs() < 1e-12 || after[root].min.y + dy <= floor + EPSILON)
+            .collect();
+        let raised: Vec<f64> = lifts
+            .iter()
+            .copied()
+            .filter(|dy| !level.contains(dy))
+            .collect();
+        let mut candidates = ordered_candidates(&horizontal, &level)
+            .chain(ordered_candidates(&horizontal, &raised))
+            .filter(|&offset| on_surface(offset))
+            .peekable();
         let mut ties: Vec<DVec3> = Vec::new();
         let mut found = None;
         'search: while let Some(first) = candidates.next() {
@@ -219,6 +271,21 @@ pub fn resolve(
                 for &i in group {
                     after[i] = after[i].translated(offset);
                 }
+                let bottom = after[root].min.y;
+                let centre = after[root].center();
+                let lifted_onto = if offset.y > EPSILON && bottom > floor + EPSILON {
+                    obstacles
+                        .iter()
+                        .copied()
+                        .filter(|&j| (after[j].max.y - bottom).abs() < 1e-6)
+                        .min_by(|&a, &b| {
+                            (after[a].center() - centre)
+                                .length_squared()
+                                .total_cmp(&(after[b].center() - centre).length_squared())
+                        })
+                } else {
+                    None
+                };
                 resolution.adjustments.push(Adjustment {
                     object: root,
                     group: group.clone(),
@@ -226,6 +293,7 @@ pub fn resolve(
                     resolved: requested + offset,
                     displacement: offset,
                     collided_with: hits,
+                    lifted_onto,
                 });
             }
             None if options.allow_collisions => {

@@ -877,7 +877,10 @@ impl<'a> Reader<'a> {
         // "the bigger of the two boxes", "the left one of the two".
         let mut outer: Vec<usize> = Vec::new();
         let mut outer_count = None;
-        if start >= 2 && self.is_word(start - 1, &["of"]) && !self.consumed[start - 2] {
+        // Only of a group: "the left of the dresser" is a place, not a pick.
+        let of_a_group = !matches!(count, Count::One);
+        if of_a_group && start >= 2 && self.is_word(start - 1, &["of"]) && !self.consumed[start - 2]
+        {
             let m = start - 2;
             let w = self.word(m).unwrap_or("");
             let selector = words::size_word(w).is_some()
@@ -1465,8 +1468,13 @@ impl<'a> Reader<'a> {
                 s += 1;
             }
             if let Some((axis, sign)) = words::side_word(w(s)) {
-                // "at the left desk" names a desk; "on the left" is a side.
-                if !matches!(w(s + 1), "of") && self.head_at(s + 1).is_none() {
+                // "at the left desk" names a desk, "in the back left corner" a place; "on
+                // the left" is a side.
+                let next = w(s + 1);
+                let names_a_place = |word: &str| matches!(word, "corner" | "corners");
+                let corner = names_a_place(next)
+                    || (words::side_word(next).is_some() && names_a_place(w(s + 2)));
+                if next != "of" && self.head_at(s + 1).is_none() && !corner {
                     let mut end = s + 1;
                     if matches!(w(end), "side" | "end" | "wall") {
                         end += 1;

@@ -328,6 +328,15 @@ fn scene_json_categories_aliases_and_colours() {
 }
 
 #[test]
+fn the_left_of_an_object_is_a_place_not_a_pick() {
+    means(
+        "bedroom",
+        "put the laundry basket to the left of the dresser",
+        &[&["laundry basket"], &["dresser"]],
+    );
+}
+
+#[test]
 fn amounts_are_not_name_numbers() {
     // "the speaker 2 m" is an amount after an ambiguous phrase, not 'speaker 2'.
     refused(

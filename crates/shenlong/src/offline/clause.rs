@@ -50,6 +50,21 @@ impl Clause {
             .all(|(k, w)| self.free(i + k) && self.word(i + k) == Some(*w))
     }
 
+    /// Replaces the word at `i` (a typo by what it stands for).
+    pub fn replace(&mut self, i: usize, word: &str) {
+        if let Some(t) = self.tokens.get_mut(i) {
+            *t = Token::Word(word.to_string());
+        }
+    }
+
+    /// Whether `words` stand at `i`, read or not.
+    pub fn words_at_any(&self, i: usize, words: &[&str]) -> bool {
+        words
+            .iter()
+            .enumerate()
+            .all(|(k, w)| self.word(i + k) == Some(*w))
+    }
+
     /// The first unread position where `words` stand.
     pub fn find(&self, words: &[&str]) -> Option<usize> {
         (0..self.len()).find(|&i| self.words_at(i, words))

@@ -666,6 +666,14 @@ impl<'a> Reader<'a> {
                 c.mark(i..i + 1);
             }
         }
+        // Typos of the turn words: "clockwsie".
+        for i in 0..c.len() {
+            if let Some(fixed) = c.word(i).filter(|_| c.free(i)).and_then(words::correct) {
+                if matches!(fixed, "clockwise" | "counterclockwise" | "anticlockwise") {
+                    c.replace(i, fixed);
+                }
+            }
+        }
         let counter = ["counterclockwise", "anticlockwise", "ccw"]
             .iter()
             .find_map(|w| has(c, w));
@@ -748,6 +756,36 @@ impl<'a> Reader<'a> {
         text: &str,
     ) -> Result<Vec<(usize, Step)>, String> {
         let floor = room::floor(self.facts.room);
+        // A relation to an object named before: "move X2 next to it".
+        let pronoun_target = if find_relation(c).is_none() {
+            self.pronoun_relation(c)
+        } else {
+            None
+        };
+        if let Some((r, targets)) = pronoun_target {
+            c.mark(r.clone());
+            let subjects = self.subjects(c, Some(r.start));
+            if subjects.is_empty() || targets.iter().any(|t| subjects.contains(t)) {
+                return Err(not_read(text, text));
+            }
+            self.last_subjects = subjects.clone();
+            let mut out = Vec::new();
+            for &s in &subjects {
+                let kind = MARKERS
+                    .iter()
+                    .find(|(w, _)| c.words_at_any(r.start, w))
+                    .map(|(_, k)| *k);
+                let relation = match kind {
+                    Some(RelKind::Fixed(rel)) => rel,
+                    Some(RelKind::Away) => Relation::Away(DEFAULT_METRES),
+                    Some(RelKind::Closer) | None => Relation::Closer(None),
+                };
+                let v = relations::vector(relation, s, &targets, &self.steps, &floor)
+                    .ok_or_else(|| not_read(text, text))?;
+                out.push((s, Step::Translate(v)));
+            }
+            return Ok(out);
+        }
         // A relation to another object.
         if let Some(r) = find_relation(c) {
             let subjects = self.subjects(c, Some(r.range.start));
@@ -777,6 +815,14 @@ impl<'a> Reader<'a> {
             };
             self.last_subjects = subjects.clone();
             let mut out = Vec::new();
+            if relation == Relation::On && subjects.len() > 1 {
+                // "put the mug and the bowl on the dresser": side by side on it.
+                for (k, &s) in subjects.iter().enumerate() {
+                    let v = relations::side_by_side(&subjects, k, targets[0], &self.steps);
+                    out.push((s, Step::Translate(v)));
+                }
+                return Ok(out);
+            }
             for &s in &subjects {
                 let v = relations::vector(relation, s, &targets, &self.steps, &floor)
                     .ok_or_else(|| not_read(text, text))?;
@@ -860,6 +906,25 @@ impl<'a> Reader<'a> {
             out.push((s, Step::Translate(sum(parts))));
         }
         Ok(out)
+    }
+
+    /// A relation whose object is a pronoun for the objects named before ("next to it",
+    /// "on top of them"): the words' range, and those objects.
+    fn pronoun_relation(&self, c: &Clause) -> Option<(std::ops::Range<usize>, Vec<usize>)> {
+        if self.last_subjects.is_empty() {
+            return None;
+        }
+        for (words, _) in MARKERS {
+            for i in 0..c.len() {
+                if c.words_at(i, words)
+                    && matches!(c.word(i + words.len()), Some("it" | "them"))
+                    && c.free(i + words.len())
+                {
+                    return Some((i..i + words.len() + 1, self.last_subjects.clone()));
+                }
+            }
+        }
+        None
     }
 
     /// The room's centre, corners, walls, the floor, or its front/back ("towards the back of
@@ -1233,6 +1298,9 @@ struct Facing {
 
 fn find_facing(c: &Clause) -> Option<Facing> {
     const FORMS: &[(&[&str], bool)] = &[
+        (&["so", "that", "its", "back", "is", "to"], true),
+        (&["so", "its", "back", "is", "to"], true),
+        (&["with", "its", "back", "facing"], true),
         (&["so", "that", "it", "faces", "away", "from"], true),
         (&["so", "it", "faces", "away", "from"], true),
         (&["to", "face", "away", "from"], true),

@@ -142,6 +142,37 @@ pub(crate) fn vector(
     })
 }
 
+/// Several objects put on one surface, side by side in the order given, centred on it
+/// along its longer horizontal axis with [`GAP`] between them: the translation of the
+/// `k`-th of `subjects`.
+pub(crate) fn side_by_side(subjects: &[usize], k: usize, t: usize, steps: &Steps) -> Expr {
+    let b = |attribute: &str| boxed(t, attribute, steps);
+    let s = subjects[k];
+    let layout = |e: usize| {
+        let width = |j: usize| dot(var(subjects[j], "size"), axis(e));
+        let total = add(
+            sum((0..subjects.len()).map(width)),
+            num(GAP * (subjects.len() as f64 - 1.0)),
+        );
+        let before = sum((0..k).map(|j| add(width(j), num(GAP))));
+        // Where its centre goes along e, minus where it is.
+        let at = add(
+            sub(dot(b("center"), axis(e)), div(total, num(2.0))),
+            add(before, div(width(k), num(2.0))),
+        );
+        scaled_axis(sub(at, dot(var(s, "center"), axis(e))), e)
+    };
+    let centre = |e: usize| along(sub(b("center"), var(s, "center")), e);
+    let up = scaled_axis(sub(dot(b("max"), axis(1)), dot(var(s, "min"), axis(1))), 1);
+    // Along x when the surface is wider than deep, else along z.
+    let q = step(sub(dot(b("size"), axis(0)), dot(b("size"), axis(2))));
+    sum([
+        mul(q.clone(), add(layout(0), centre(2))),
+        mul(sub(num(1.0), q), add(layout(2), centre(0))),
+        up,
+    ])
+}
+
 /// Against the face of the target nearest the object: its x faces when the object lies
 /// more to the side than in front or behind (in the target's own proportions), else its z
 /// faces; on each axis the face on the object's side (ties go to +); 5 cm gap; centred

@@ -46,6 +46,63 @@ fn close(a: DVec3, b: [f64; 3]) -> bool {
 }
 
 #[test]
+fn several_objects_on_one_surface_are_laid_out_side_by_side() {
+    // Two to four objects on the coffee table (1.1 m × 0.6 m): along x, in the order
+    // named, each on its top, none overlapping.
+    for names in [
+        &["vase", "remote control"][..],
+        &["vase", "remote control", "book"],
+        &["vase", "remote control", "book", "magazine"],
+        &["vase", "remote control", "book", "magazine", "table lamp"],
+    ] {
+        let phrases: Vec<String> = names.iter().map(|n| format!("the {n}")).collect();
+        let list = format!(
+            "{} and {}",
+            phrases[..phrases.len() - 1].join(", "),
+            phrases[phrases.len() - 1]
+        );
+        let mut scene = crate::examples::build("living_room").unwrap();
+        let instruction = format!("put {list} on the coffee table");
+        edit(
+            &mut scene,
+            &instruction,
+            &OfflineTranslator::new(),
+            &EditOptions::default(),
+        )
+        .unwrap_or_else(|e| panic!("{instruction}: {e}"));
+        let table = aabb(&scene, "coffee table");
+        let boxes: Vec<Aabb> = names.iter().map(|n| aabb(&scene, n)).collect();
+        for (n, b) in names.iter().zip(&boxes) {
+            assert!(
+                (b.min.y - table.max.y).abs() < 1e-6,
+                "{instruction}: {n} {b:?}"
+            );
+            let c = b.center();
+            assert!(
+                c.x > table.min.x && c.x < table.max.x && c.z > table.min.z && c.z < table.max.z,
+                "{instruction}: {n} is off the table"
+            );
+        }
+        for i in 0..boxes.len() {
+            for j in i + 1..boxes.len() {
+                assert!(
+                    !boxes[i].intersects(&boxes[j], 1e-9),
+                    "{instruction}: {} overlaps {}",
+                    names[i],
+                    names[j]
+                );
+            }
+        }
+        for pair in boxes.windows(2) {
+            assert!(
+                pair[0].center().x < pair[1].center().x,
+                "{instruction}: not in order"
+            );
+        }
+    }
+}
+
+#[test]
 fn plain_moves_turns_scales() {
     let (b, a) = run("living_room", "move the sofa 2 m to the left");
     assert!(close(moved(&b, &a, "sofa"), [-2.0, 0.0, 0.0]));
@@ -348,4 +405,39 @@ fn facing_uses_the_objects_fronts() {
     );
     let d = -aabb(&a, "ottoman").center();
     assert!((heading_of(&a, "ottoman") - DVec3::new(d.x, 0.0, d.z).normalize()).length() < 1e-9);
+}
+
+mod facing_properties {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+
+        /// Whatever way an object is turned, and whatever way its front points locally,
+        /// "turn it to face X" leaves its front pointing at X on the floor plan.
+        #[test]
+        fn facing_works_for_any_current_turn(yaw in -180.0f64..180.0, tx in -2.5f64..2.5, tz in -2.0f64..2.0, minus_z: bool) {
+            let mut scene = Scene::new("t");
+            let mut chair = crate::scene::Object::new_box(
+                "chair",
+                DVec3::new(0.5, 0.9, 0.5),
+                DVec3::ZERO,
+                glam::DQuat::from_rotation_y(yaw.to_radians()),
+                1.0,
+            )
+            .unwrap();
+            if minus_z {
+                chair.front = DVec3::NEG_Z;
+            }
+            scene.objects.push(chair);
+            prop_assume!(tx.hypot(tz) > 0.8);
+            scene.push_box("lamp", [0.3, 1.5, 0.3], [tx, 0.0, tz]);
+            let options = EditOptions { collisions: None, ..EditOptions::default() };
+            edit(&mut scene, "turn the chair to face the lamp", &OfflineTranslator::new(), &options).unwrap();
+            let f = scene.objects[0].world_front();
+            let d = DVec3::new(tx, 0.0, tz).normalize();
+            prop_assert!((f - d).length() < 1e-9, "front {f}, wanted {d}");
+        }
+    }
 }

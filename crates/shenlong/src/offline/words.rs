@@ -188,7 +188,7 @@ pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
         "raise" | "raised" | "lift" | "lifted" | "elevate" | "hoist" => (Move, Some((1, 1.0))),
         "lower" | "lowered" | "drop" | "sink" => (Move, Some((1, -1.0))),
         "rotate" | "rotated" | "turn" | "turned" | "spin" | "twist" | "revolve" | "flip"
-        | "swivel" | "pivot" | "angle" => (Rotate, None),
+        | "swivel" | "pivot" | "angle" | "give" => (Rotate, None),
         "scale" | "scaled" | "resize" | "resized" | "enlarge" | "grow" | "shrink" | "double"
         | "halve" | "triple" | "magnify" | "reduce" | "make" | "shrunk" => (Scale, None),
         "center" | "centre" => (Centre, None),
@@ -233,6 +233,11 @@ pub(crate) fn filler(w: &str) -> bool {
             | "thank"
             | "you"
             | "then"
+            | "hey"
+            | "hi"
+            | "um"
+            | "uh"
+            | "oh"
             | "too"
             | "and"
             | "also"
@@ -341,13 +346,35 @@ const KNOWN: &[&str] = &[
 /// The known word one edit (insertion, deletion, substitution, swap of neighbours) from a
 /// word of four letters or more, when exactly one is.
 pub(crate) fn correct(w: &str) -> Option<&'static str> {
-    if w.chars().count() < 4 || KNOWN.contains(&w) || !w.chars().all(char::is_alphabetic) {
+    let n = w.chars().count();
+    if n < 4 || KNOWN.contains(&w) || COMMON.contains(&w) || !w.chars().all(char::is_alphabetic) {
         return None;
     }
-    let mut near = KNOWN.iter().filter(|k| strsim::osa_distance(w, k) == 1);
+    // On four-letter words only a swap of two neighbours ("moev", "lfet"), which rarely
+    // makes another word; on longer ones any one edit.
+    let close = |k: &&&str| {
+        let k: &str = k;
+        if n == 4 {
+            k.chars().count() == 4
+                && strsim::osa_distance(w, k) == 1
+                && strsim::hamming(w, k) == Ok(2)
+        } else {
+            strsim::osa_distance(w, k) == 1
+        }
+    };
+    let mut near = KNOWN.iter().filter(close);
     let first = near.next()?;
     near.next().is_none().then_some(*first)
 }
+
+/// Real words one edit from a known word, which must never be read as its typo ("light
+/// the candle" is not "right").
+const COMMON: &[&str] = &[
+    "light", "night", "sight", "tight", "fight", "might", "eight", "bright", "flight", "weight",
+    "height", "slice", "glide", "flour", "floors", "lover", "mover", "moved", "fronts", "wallet",
+    "rooms", "roomy", "below", "lowers", "spine", "spins", "twine", "swift", "sweep", "drift",
+    "shrine", "cooler", "closet", "closes", "closed", "clover",
+];
 
 #[cfg(test)]
 mod tests {
@@ -384,5 +411,9 @@ mod tests {
         assert_eq!(correct("lfet"), Some("left"));
         assert_eq!(correct("move"), None);
         assert_eq!(correct("mvoe"), Some("move"));
+        assert_eq!(correct("light"), None);
+        assert_eq!(correct("love"), None);
+        assert_eq!(correct("clockwsie"), Some("clockwise"));
+        assert_eq!(correct("forwrad"), Some("forward"));
     }
 }

@@ -123,6 +123,8 @@ pub struct CollisionReport {
     pub displacement: [f64; 3],
     /// What it collided with.
     pub collided_with: Vec<String>,
+    /// The object it was lifted onto because nothing on its own level was free, if any.
+    pub lifted_onto: Option<String>,
 }
 
 /// Stage timings in milliseconds.
@@ -288,12 +290,28 @@ pub fn edit_with(
                 }
             })?;
         for a in &resolution.adjustments {
+            // Resolution that undoes the whole move leaves a silent no-op: say so instead.
+            let start = before[a.object].bottom_center();
+            let wanted = (a.requested - start).length();
+            if wanted > 0.02 && (a.resolved - start).length() < 0.01 {
+                let blocking: Vec<String> =
+                    a.collided_with.iter().map(|o| o.describe(&names)).collect();
+                return Err(EditError {
+                    message: format!(
+                        "'{}' cannot go there: it collides with {}, and the nearest free place is where it already is",
+                        names[a.object],
+                        blocking.join(", ")
+                    ),
+                    kind: EditErrorKind::Placement,
+                });
+            }
             collisions_resolved.push(CollisionReport {
                 object: names[a.object].clone(),
                 requested: a.requested.to_array(),
                 resolved: a.resolved.to_array(),
                 displacement: a.displacement.to_array(),
                 collided_with: a.collided_with.iter().map(|o| o.describe(&names)).collect(),
+                lifted_onto: a.lifted_onto.map(|j| names[j].clone()),
             });
         }
         for o in &resolution.remaining {

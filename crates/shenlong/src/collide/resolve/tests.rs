@@ -322,14 +322,22 @@ proptest! {
                 let offset = r.adjustments.first().map_or(DVec3::ZERO, |a| a.displacement);
                 let buffer = if offset == DVec3::ZERO { 0.0 } else { options.buffer };
                 prop_assert!(free_by_brute_force(&s, &before, &[0], &after, offset, buffer));
-                // No grid candidate nearer than the chosen one is free.
+                // No spot on the floor nearer than the chosen one is free; and a lift onto
+                // another object only when no floor spot within the radius is.
+                let lifted = offset.y > 1e-9;
                 let lifts: Vec<f64> = std::iter::once(0.0).chain(after.iter().skip(1).map(|b| b.max.y - after[0].min.y)).filter(|l| *l >= 0.0 && *l <= options.radius).collect();
                 for h in horizontal_offsets(options.step, options.radius) {
-                    for &dy in &lifts {
-                        let c = DVec3::new(h.x, dy, h.y);
-                        if c.length() < offset.length() - 1e-9 {
-                            let buffer = if c == DVec3::ZERO { 0.0 } else { options.buffer };
-                            prop_assert!(!free_by_brute_force(&s, &before, &[0], &after, c, buffer), "{c} is free and nearer than {offset}");
+                    let level = DVec3::new(h.x, 0.0, h.y);
+                    if lifted || level.length() < offset.length() - 1e-9 {
+                        let buffer = if level == DVec3::ZERO { 0.0 } else { options.buffer };
+                        prop_assert!(!free_by_brute_force(&s, &before, &[0], &after, level, buffer), "{level} is free on the floor, but {offset} was chosen");
+                    }
+                    if lifted {
+                        for &dy in &lifts {
+                            let c = DVec3::new(h.x, dy, h.y);
+                            if dy > 0.0 && c.length() < offset.length() - 1e-9 {
+                                prop_assert!(!free_by_brute_force(&s, &before, &[0], &after, c, options.buffer), "{c} is free and nearer than {offset}");
+                            }
                         }
                     }
                 }
@@ -337,4 +345,72 @@ proptest! {
             Err(e) => prop_assert!(e.message.starts_with("no collision-free placement"), "{e}"),
         }
     }
+}
+
+#[test]
+fn put_on_an_occupied_surface_it_lands_beside_what_is_there_not_on_it() {
+    let mut s = room();
+    let table = s.push_box("table", [1.2, 0.75, 0.8], [0.0, 0.0, 0.0]);
+    let _bowl = s.push_box("bowl", [0.3, 0.1, 0.3], [0.0, 0.75, 0.0]);
+    let mug = s.push_box("mug", [0.1, 0.1, 0.1], [1.5, 0.0, 1.5]);
+    s.detect_supports();
+    // The edit puts the mug at the table's centre, into the bowl.
+    let r = edit(
+        &mut s,
+        mug,
+        DVec3::new(-1.5, 0.75, -1.5),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    let (m, t) = (s.objects[mug].world_aabb(), s.objects[table].world_aabb());
+    assert!(
+        (m.min.y - 0.75).abs() < 1e-9,
+        "on the table's top, not on the bowl: {m:?}"
+    );
+    assert!(
+        m.min.x >= t.min.x - 1e-9
+            && m.max.x <= t.max.x + 1e-9
+            && m.min.z >= t.min.z - 1e-9
+            && m.max.z <= t.max.z + 1e-9
+    );
+    assert_eq!(r.adjustments[0].lifted_onto, None);
+}
+
+#[test]
+fn a_full_surface_lifts_onto_what_is_there_and_says_so() {
+    let mut s = room();
+    let stool = s.push_box("stool", [0.4, 0.5, 0.4], [0.0, 0.0, 0.0]);
+    let book = s.push_box("book", [0.4, 0.05, 0.4], [0.0, 0.5, 0.0]);
+    let cup = s.push_box("cup", [0.1, 0.1, 0.1], [1.5, 0.0, 1.5]);
+    s.detect_supports();
+    let _ = stool;
+    let r = edit(
+        &mut s,
+        cup,
+        DVec3::new(-1.5, 0.5, -1.5),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(
+        r.adjustments[0].lifted_onto,
+        Some(book),
+        "{:?}",
+        r.adjustments
+    );
+}
+
+#[test]
+fn an_object_moved_on_the_floor_stays_on_the_floor() {
+    // Pushed into a low box, the chair slides beside it rather than onto it.
+    let mut s = room();
+    let _crate_ = s.push_box("crate", [0.6, 0.3, 0.6], [0.0, 0.0, 0.0]);
+    let chair = s.push_box("chair", [0.5, 0.9, 0.5], [1.0, 0.0, 0.0]);
+    edit(
+        &mut s,
+        chair,
+        DVec3::new(-0.9, 0.0, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert!(s.objects[chair].world_aabb().min.y.abs() < 1e-9);
 }
