@@ -34,6 +34,12 @@ pub(crate) struct Entry {
     pub via: String,
 }
 
+/// Words for containers, which people name by their contents.
+const CONTAINERS: &[&str] = &[
+    "bottle", "bottles", "dispenser", "jar", "jug", "carton", "tub", "tube", "packet", "pack",
+    "bag", "sack", "tin", "canister", "decanter", "pot",
+];
+
 /// The index.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct NameIndex {
@@ -89,6 +95,15 @@ impl NameIndex {
                 let c = split_number(&c).0.to_string();
                 index.add(&c, i, Tier::Category, &c);
                 kinds.push((c, true));
+            }
+            // A container is named by what it holds: 'shampoo bottle' is "the shampoo",
+            // 'soap dispenser' "the soap", 'red wine bottle' "the red wine".
+            {
+                let w: Vec<&str> = base.split(' ').collect();
+                if w.len() >= 2 && CONTAINERS.contains(&w[w.len() - 1]) {
+                    let content = w[..w.len() - 1].join(" ");
+                    index.add(&content, i, Tier::Category, &base);
+                }
             }
             // The last words of a name are its kind: 'floor lamp' is a lamp, 'red wine
             // bottle' a wine bottle and a bottle.
