@@ -137,7 +137,8 @@ impl CollisionArgs {
         if self.no_collide {
             return Ok(None);
         }
-        let resolution = shenlong::collide::resolve(scene, &before.world_aabbs(), moved, &options)?;
+        let resolution = shenlong::collide::resolve(scene, &before.world_aabbs(), moved, &options)
+            .map_err(|e| anyhow::anyhow!("{e}; use --allow-collisions to apply the edit anyway"))?;
         let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
         for a in &resolution.adjustments {
             let with: Vec<String> = a.collided_with.iter().map(|o| o.describe(&names)).collect();

@@ -217,11 +217,17 @@ pub fn resolve(
             .copied()
             .filter(|&dy| dy.abs() < 1e-12 || after[root].min.y + dy <= floor + EPSILON)
             .collect();
-        let raised: Vec<f64> = lifts
-            .iter()
-            .copied()
-            .filter(|dy| !level.contains(dy))
-            .collect();
+        // Put on a top face, it stays on that face: never stacked on what stands there
+        // (a stack is asked for by the instruction, which puts it on that object's top).
+        let raised: Vec<f64> = if surface.is_some() {
+            Vec::new()
+        } else {
+            lifts
+                .iter()
+                .copied()
+                .filter(|dy| !level.contains(dy))
+                .collect()
+        };
         let mut candidates = ordered_candidates(&horizontal, &level)
             .chain(ordered_candidates(&horizontal, &raised))
             .filter(|&offset| on_surface(offset))
@@ -316,9 +322,20 @@ pub fn resolve(
                 } else {
                     format!("none within {} m", options.radius)
                 };
+                if let Some(j) = surface {
+                    return Err(ResolveError {
+                        message: format!(
+                            "no free spot for '{}' on top of '{}': it is full where '{}' would go ({} in the way)",
+                            names[root],
+                            names[j],
+                            names[root],
+                            blocking.join(", ")
+                        ),
+                    });
+                }
                 return Err(ResolveError {
                     message: format!(
-                        "no collision-free placement for '{}' ({why}): it collides with {}; use --allow-collisions to apply the edit anyway",
+                        "no collision-free placement for '{}' ({why}): it collides with {}",
                         names[root],
                         blocking.join(", ")
                     ),

@@ -36,8 +36,22 @@ pub(crate) struct Entry {
 
 /// Words for containers, which people name by their contents.
 const CONTAINERS: &[&str] = &[
-    "bottle", "bottles", "dispenser", "jar", "jug", "carton", "tub", "tube", "packet", "pack",
-    "bag", "sack", "tin", "canister", "decanter", "pot",
+    "bottle",
+    "bottles",
+    "dispenser",
+    "jar",
+    "jug",
+    "carton",
+    "tub",
+    "tube",
+    "packet",
+    "pack",
+    "bag",
+    "sack",
+    "tin",
+    "canister",
+    "decanter",
+    "pot",
 ];
 
 /// The index.

@@ -84,9 +84,21 @@ fn synonyms_categories_and_hypernyms() {
 
 #[test]
 fn containers_are_named_by_what_they_hold() {
-    means("bathroom", "move the shampoo 10 cm left", &[&["shampoo bottle"]]);
-    means("bathroom", "move the soap 10 cm left", &[&["soap dispenser"]]);
-    means("wine_cellar", "move the red wine 10 cm left", &[&["red wine bottle"]]);
+    means(
+        "bathroom",
+        "move the shampoo 10 cm left",
+        &[&["shampoo bottle"]],
+    );
+    means(
+        "bathroom",
+        "move the soap 10 cm left",
+        &[&["soap dispenser"]],
+    );
+    means(
+        "wine_cellar",
+        "move the red wine 10 cm left",
+        &[&["red wine bottle"]],
+    );
     // Not every compound: the living room's 'tv stand' is not "the tv" when a tv exists.
     means("living_room", "move the tv 10 cm left", &[&["tv"]]);
 }

@@ -199,7 +199,10 @@ fn no_placement_names_what_blocks_and_changes_nothing_else() {
         ..ResolveOptions::default()
     };
     let e = edit(&mut s, a, DVec3::new(0.0, 0.0, 0.6), &options).unwrap_err();
-    assert_eq!(e.message, "no collision-free placement for 'piano' (none within 0.3 m): it collides with 'bench'; use --allow-collisions to apply the edit anyway");
+    assert_eq!(
+        e.message,
+        "no collision-free placement for 'piano' (none within 0.3 m): it collides with 'bench'"
+    );
     let mut s2 = Scene::new("tight");
     s2.bounds = s.bounds;
     s2.push_box("piano", [1.9, 0.9, 0.9], [0.0, 0.0, -0.5]);
@@ -377,23 +380,48 @@ fn put_on_an_occupied_surface_it_lands_beside_what_is_there_not_on_it() {
 }
 
 #[test]
-fn a_full_surface_lifts_onto_what_is_there_and_says_so() {
+fn a_full_surface_is_refused_saying_so() {
     let mut s = room();
-    let stool = s.push_box("stool", [0.4, 0.5, 0.4], [0.0, 0.0, 0.0]);
-    let book = s.push_box("book", [0.4, 0.05, 0.4], [0.0, 0.5, 0.0]);
+    let _stool = s.push_box("stool", [0.4, 0.5, 0.4], [0.0, 0.0, 0.0]);
+    let _book = s.push_box("book", [0.4, 0.05, 0.4], [0.0, 0.5, 0.0]);
     let cup = s.push_box("cup", [0.1, 0.1, 0.1], [1.5, 0.0, 1.5]);
     s.detect_supports();
-    let _ = stool;
-    let r = edit(
+    let e = edit(
         &mut s,
         cup,
         DVec3::new(-1.5, 0.5, -1.5),
         &ResolveOptions::default(),
     )
+    .unwrap_err();
+    assert!(
+        e.message
+            .contains("no free spot for 'cup' on top of 'stool'"),
+        "{e}"
+    );
+    assert!(e.message.contains("'book'"), "{e}");
+}
+
+#[test]
+fn off_a_surface_a_lift_is_the_last_resort_and_is_reported() {
+    // A closet barely larger than the crate: pushed down into the crate, the box can only
+    // go back on top of it.
+    let mut s = Scene::new("closet");
+    s.bounds = Some(Aabb::new(
+        DVec3::new(-0.4, 0.0, -0.4),
+        DVec3::new(0.4, 2.5, 0.4),
+    ));
+    let crate_ = s.push_box("crate", [0.7, 0.4, 0.7], [0.0, 0.0, 0.0]);
+    let b = s.push_box("box", [0.3, 0.3, 0.3], [0.0, 0.4, 0.0]);
+    let r = edit(
+        &mut s,
+        b,
+        DVec3::new(0.0, -0.4, 0.0),
+        &ResolveOptions::default(),
+    )
     .unwrap();
     assert_eq!(
         r.adjustments[0].lifted_onto,
-        Some(book),
+        Some(crate_),
         "{:?}",
         r.adjustments
     );
