@@ -92,6 +92,15 @@ function place(entry, p) {
   entry.group.scale.setScalar(p.scale);
   entry.mesh.scale.set(w, h, d);
   entry.edges.scale.set(w, h, d);
+  // The front: a tick out of the face the object faces (its `front`, local +Z unless the
+  // scene says otherwise).
+  const f = new THREE.Vector3(...(entry.data.front || [0, 0, 1])).normalize();
+  const reach = new THREE.Vector3(f.x * w, f.y * h, f.z * d).length() / 2;
+  const out = reach + Math.max(0.12, 0.35 * reach);
+  entry.front.geometry.setFromPoints([
+    new THREE.Vector3(f.x * reach, h / 2 + f.y * reach, f.z * reach),
+    new THREE.Vector3(f.x * out, h / 2 + f.y * out, f.z * out),
+  ]);
 }
 
 function build(scene, animate) {
@@ -105,11 +114,12 @@ function build(scene, animate) {
       const geometry = new THREE.BoxGeometry(1, 1, 1).translate(0, 0.5, 0);
       const mesh = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ color: colourOf(data), roughness: 0.8, transparent: true, opacity: 0.92 }));
       const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry), new THREE.LineBasicMaterial({ color: 0x2d3a4d }));
+      const front = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xc0392b }));
       const group = new THREE.Group();
-      group.add(mesh, edges);
+      group.add(mesh, edges, front);
       mesh.userData.name = data.name;
       world.add(group);
-      entry = { group, mesh, edges, data };
+      entry = { group, mesh, edges, front, data };
       objects.set(data.name, entry);
       place(entry, target);
       continue;
