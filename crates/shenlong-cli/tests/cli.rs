@@ -344,3 +344,22 @@ fn apply_resolves_collisions_unless_told_not_to() {
         "--step 0: give a distance in metres > 0",
     );
 }
+
+#[test]
+fn serve_refuses_an_address_others_can_reach_and_a_save_it_cannot_write() {
+    let o = shenlong(&["serve", "example:workshop", "--addr", "0.0.0.0:0"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("--allow-remote"), "{}", stderr(&o));
+    // A glTF save for a JSON scene would fail at every edit: refused at start.
+    let dir = tempfile::tempdir().unwrap();
+    let save = dir.path().join("out.glb");
+    let o = shenlong(&[
+        "serve",
+        "example:workshop",
+        "--save",
+        save.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(stderr(&o).contains("--save"), "{}", stderr(&o));
+    assert!(!save.exists());
+}

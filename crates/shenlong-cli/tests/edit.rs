@@ -155,6 +155,14 @@ fn backend_specs_are_checked() {
             "omniverse",
             "the offline translator answers in CGA only",
         ),
+        // Regression: a duration this long overflowed and panicked.
+        (
+            "--timeout",
+            "1e20",
+            "--timeout 100000000000000000000: give a number of seconds",
+        ),
+        ("--connect-timeout", "0", "give a number of seconds > 0"),
+        ("--retries", "many", "invalid value 'many' for '--retries"),
     ] {
         let o = shenlong(&[
             "edit",
@@ -168,6 +176,11 @@ fn backend_specs_are_checked() {
             "{option} {value}: {}",
             stderr(&o)
         );
+        assert!(
+            matches!(o.status.code(), Some(1 | 2)),
+            "{option} {value}: no panic"
+        );
+        assert_eq!(stderr(&o).lines().count(), 1, "{option} {value}: one line");
     }
 }
 

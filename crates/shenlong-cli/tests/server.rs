@@ -443,3 +443,17 @@ async fn cross_site_requests_are_refused() {
         assert_eq!(status, StatusCode::OK);
     }
 }
+
+#[tokio::test]
+async fn export_query_errors_are_json() {
+    let app = app(None);
+    for path in [
+        "/api/export?format=json&format=glb",
+        "/api/export?fmt=json",
+        "/api/export?format=svg",
+    ] {
+        let (status, value, _) = call(&app, "GET", path, None).await;
+        assert_eq!(status, StatusCode::BAD_REQUEST, "{path}");
+        assert!(value["error"].is_string(), "{path}: {value}");
+    }
+}

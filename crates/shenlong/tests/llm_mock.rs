@@ -370,3 +370,23 @@ fn object_names_never_reach_the_model_in_any_system() {
         }
     }
 }
+
+#[test]
+fn a_query_that_still_names_an_object_is_not_sent() {
+    use shenlong::pipeline::Translator;
+    let server = MockLlm::start(vec![Reply::Content("{\"X1\": \"T(0.1 * e1)\"}".into())]);
+    let scene = workshop();
+    let hammer = scene.find("hammer").unwrap();
+    // As if grounding had missed "tool-table": the name must not go out.
+    let templated = shenlong::pipeline::Templated {
+        instruction: "put the hammer on the tool-table".into(),
+        query: "put X1 on the Tool-Table".into(),
+        objects: vec![hammer],
+        phrases: Vec::new(),
+    };
+    let e = translator(&server, System::Cga)
+        .translate(&templated, &scene)
+        .unwrap_err();
+    assert!(e.message.contains("'tool table' is still written"), "{e}");
+    assert_eq!(server.count(), 0, "nothing was sent");
+}

@@ -202,8 +202,9 @@ impl TranslatorArgs {
             ("--timeout", self.timeout),
             ("--connect-timeout", self.connect_timeout),
         ] {
-            if !(value.is_finite() && value > 0.0) {
-                anyhow::bail!("{flag} {value}: give a number of seconds > 0");
+            // A day at most: longer is a typo, and past ~1.8e19 s a duration overflows.
+            if !(value.is_finite() && value > 0.0 && value <= 86_400.0) {
+                anyhow::bail!("{flag} {value}: give a number of seconds > 0 and at most 86400");
             }
         }
         Ok(shenlong::pipeline::backends::TranslatorSettings {

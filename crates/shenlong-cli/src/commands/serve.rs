@@ -28,6 +28,10 @@ pub struct Args {
     /// Write the scene to this file after every change (atomically).
     #[arg(long, value_name = "FILE")]
     save: Option<PathBuf>,
+    /// Listen on an address other machines can reach. The API has no authentication:
+    /// anyone who can reach the address can edit the scene and spend the model's key.
+    #[arg(long)]
+    allow_remote: bool,
     /// The default prompt system.
     #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
     system: String,
@@ -39,6 +43,9 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<()> {
     let file = super::load_scene(&args.scene)?;
+    if let Some(save) = &args.save {
+        check_save(&file, save)?;
+    }
     let system = System::from_name(&args.system).expect("clap checked the name");
     let settings = ServeSettings {
         llm: args.translator.llm.clone(),
@@ -69,12 +76,51 @@ pub fn run(args: Args) -> Result<()> {
             .await
             .with_context(|| format!("cannot listen on {}", args.addr))?;
         let address = listener.local_addr()?;
+        if !address.ip().is_loopback() {
+            if !args.allow_remote {
+                anyhow::bail!(
+                    "{address} can be reached from other machines and the API has no authentication; listen on 127.0.0.1, or pass --allow-remote"
+                );
+            }
+            eprintln!(
+                "shenlong: warning: listening on {address}: anyone who can reach it can edit the scene{}",
+                if settings.llm == "offline" { "" } else { " and use the model's key" }
+            );
+        }
         eprintln!(
             "shenlong: editing '{}' at http://{address}/ (Ctrl-C to stop)",
             file.scene.name
         );
+        let settings = settings;
         serve(App::new(file, settings), listener)
             .await
             .context("the server stopped")
     })
+}
+
+/// Checks at start-up that `--save` can be written in the scene's format, so that no edit
+/// is applied in memory and then fails to save.
+fn check_save(file: &shenlong::format::SceneFile, save: &std::path::Path) -> Result<()> {
+    let format = shenlong::format::Format::from_path(save)
+        .map_err(|e| anyhow::anyhow!("--save {}: {e}", save.display()))?;
+    file.to_bytes(format)
+        .map_err(|e| anyhow::anyhow!("--save {}: {e}", save.display()))?;
+    let dir = save
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(std::path::Path::new("."));
+    let probe = dir.join(format!(".shenlong-save-check-{}", std::process::id()));
+    std::fs::OpenOptions::new()
+        .write(true)
+        .create_new(true)
+        .open(&probe)
+        .with_context(|| {
+            format!(
+                "--save {}: cannot write in {}",
+                save.display(),
+                dir.display()
+            )
+        })?;
+    let _ = std::fs::remove_file(&probe);
+    Ok(())
 }

@@ -524,16 +524,27 @@ async fn history(State(app): State<Arc<App>>) -> Json<Value> {
     Json(json!({"history": app.lock().history}))
 }
 
-#[derive(Deserialize)]
-struct ExportQuery {
-    format: Option<String>,
-}
-
 async fn export(
     State(app): State<Arc<App>>,
-    Query(query): Query<ExportQuery>,
+    query: Result<Query<Vec<(String, String)>>, axum::extract::rejection::QueryRejection>,
 ) -> Result<Response, ApiError> {
-    let name = query.format.unwrap_or_else(|| "json".into());
+    let Query(pairs) = query.map_err(|e| bad(format!("bad query: {}", e.body_text())))?;
+    let formats: Vec<&String> = pairs
+        .iter()
+        .filter(|(k, _)| k == "format")
+        .map(|(_, v)| v)
+        .collect();
+    if let Some((k, _)) = pairs.iter().find(|(k, _)| k != "format") {
+        return Err(bad(format!(
+            "unknown query parameter '{k}': use format=json|glb|gltf|tdw"
+        )));
+    }
+    if formats.len() > 1 {
+        return Err(bad("give format= once"));
+    }
+    let name = formats
+        .first()
+        .map_or_else(|| "json".to_string(), |f| f.to_string());
     let (format, content_type, extension) = match name.as_str() {
         "json" => (Format::SceneJson, "application/json", "json"),
         "glb" => (Format::Glb, "model/gltf-binary", "glb"),

@@ -20,6 +20,8 @@ pub struct JsonScene {
 
 /// Parses and validates scene JSON. `fallback_name` names a scene without a `"name"`.
 pub fn read(text: &str, fallback_name: &str) -> Result<JsonScene, FormatError> {
+    // A UTF-8 byte-order mark, as some editors write, is not part of the JSON.
+    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     let document: Value = serde_json::from_str(text).map_err(|e| {
         FormatError::new(format!(
             "invalid JSON at line {}, column {}: {}",
@@ -535,5 +537,22 @@ mod tests {
         // NaN cannot be written in JSON; a huge number is out of range.
         let huge = r#"{"objects": [{"name": "a", "size": [1, 1, 1], "position": [1e999, 0, 0]}]}"#;
         assert!(err(huge).contains("number out of range"), "{}", err(huge));
+    }
+}
+
+#[cfg(test)]
+mod bom_tests {
+    #[test]
+    fn a_byte_order_mark_is_not_an_error() {
+        let text = "\u{feff}{\"objects\": [{\"name\": \"a\", \"size\": [1, 1, 1], \"position\": [0, 0, 0], \"front\": [0, 0, -2]}]}";
+        let scene = super::read(text, "t").unwrap().scene;
+        assert_eq!(scene.objects[0].front, glam::DVec3::NEG_Z);
+        let e = super::read("{\"objects\": [{\"name\": \"a\", \"size\": [1, 1, 1], \"position\": [0, 0, 0], \"front\": [0, 0, 0]}]}", "t").unwrap_err();
+        assert!(
+            e.message
+                .contains("objects[0].front must be a non-zero direction"),
+            "{}",
+            e.message
+        );
     }
 }

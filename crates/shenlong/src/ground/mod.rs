@@ -27,7 +27,7 @@ mod error;
 mod index;
 pub mod lexicon;
 mod select;
-pub(crate) mod words;
+pub mod words;
 
 pub use error::GroundError;
 pub use lexicon::Lexicon;

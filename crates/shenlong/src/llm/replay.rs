@@ -85,7 +85,8 @@ impl Backend for Replay {
         Ok(Completion {
             text: record.reply.clone(),
             usage: record.usage,
-            elapsed: Duration::from_secs_f64(record.elapsed_ms / 1000.0),
+            // A hostile record cannot overflow the duration.
+            elapsed: Duration::try_from_secs_f64(record.elapsed_ms / 1000.0).unwrap_or_default(),
         })
     }
 }

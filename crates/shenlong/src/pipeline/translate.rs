@@ -44,6 +44,11 @@ impl Translator for LlmTranslator {
             self.system.version(),
             self.backend.model().to_string(),
         );
+        if let Some(name) = leaked_name(&templated.query, scene) {
+            return Err(TranslateError::not_understood(format!(
+                "'{name}' is still written in the instruction after grounding, so it is not sent to the model; name the object so grounding reads it (quote it: '{name}')"
+            )));
+        }
         let first = self.system.messages(templated, scene);
         let mut exchanges = Vec::new();
         if let Some(cache) = &self.cache {
@@ -131,4 +136,36 @@ impl Translator for LlmTranslator {
             self.retries + 1
         )))
     }
+}
+
+/// The first object name still written in a templated query, word for word (case, spaces
+/// and hyphens aside): object names never reach a model, so such a query is not sent.
+pub fn leaked_name(query: &str, scene: &Scene) -> Option<String> {
+    // Compounds that contain a name's word without naming it.
+    let query = query
+        .to_lowercase()
+        .replace("counter-clockwise", "counterclockwise")
+        .replace("counter clockwise", "counterclockwise");
+    let words: Vec<String> = crate::ground::words::normalize(&query)
+        .split(' ')
+        .filter(|w| !w.is_empty())
+        .map(str::to_string)
+        .collect();
+    let compact: Vec<String> = words.clone();
+    for object in &scene.objects {
+        let name = crate::ground::words::normalize(&object.name);
+        let parts: Vec<&str> = name.split(' ').filter(|w| !w.is_empty()).collect();
+        if parts.is_empty() || (parts.len() == 1 && parts[0].chars().count() < 4) {
+            continue;
+        }
+        let joined = crate::ground::words::compact(&name);
+        let found = words
+            .windows(parts.len())
+            .any(|w| w.iter().map(String::as_str).eq(parts.iter().copied()))
+            || compact.contains(&joined);
+        if found {
+            return Some(object.name.clone());
+        }
+    }
+    None
 }
