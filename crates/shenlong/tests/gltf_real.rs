@@ -338,3 +338,25 @@ fn gltf_to_scene_json_gives_boxes_at_the_bottom_centre() {
         );
     }
 }
+
+#[test]
+fn a_failed_write_leaves_no_copied_resources_behind() {
+    let Some(dir) = data_dir() else { return };
+    let input = dir.join("MixedLightingExample/MixedLightingExample.gltf");
+    let file = SceneFile::load(&input).unwrap();
+    let out = tempfile::tempdir().unwrap();
+    // The output is a folder: nothing may be written, not even the buffers and textures.
+    let output = out.path().join("edited.gltf");
+    std::fs::create_dir(&output).unwrap();
+    let e = file.save(&output).unwrap_err();
+    assert!(e.message.contains("it is a folder"), "{}", e.message);
+    let left: Vec<_> = std::fs::read_dir(out.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name())
+        .collect();
+    assert_eq!(
+        left,
+        vec![std::ffi::OsString::from("edited.gltf")],
+        "{left:?}"
+    );
+}

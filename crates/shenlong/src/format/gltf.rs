@@ -337,7 +337,9 @@ fn load_buffers(
                             ))
                         })?
                 } else {
-                    let file = base_dir.join(percent_decode(uri));
+                    let file = resolve_uri(base_dir, uri).map_err(|e| {
+                        FormatError::new(format!("buffers[{}]: {e}", buffer.index()))
+                    })?;
                     std::fs::read(&file).map_err(|e| {
                         FormatError::new(format!(
                             "buffers[{}]: cannot read {}: {e}",
@@ -361,6 +363,64 @@ fn load_buffers(
         buffers.push(data);
     }
     Ok(buffers)
+}
+
+/// The largest external resource read, in bytes.
+pub const MAX_RESOURCE_BYTES: u64 = 1 << 30;
+
+/// Where a relative URI of a glTF file points: inside the file's folder only — no absolute
+/// paths, no `..`, no link out of the folder — and at a regular file (not a device or a
+/// pipe) of at most [`MAX_RESOURCE_BYTES`]. A hostile file cannot make Shenlong read
+/// elsewhere, hang on a FIFO or run out of memory on `/dev/zero`.
+pub(crate) fn resolve_uri(base_dir: &Path, uri: &str) -> Result<PathBuf, String> {
+    let decoded = percent_decode(uri);
+    let relative = PathBuf::from(&decoded);
+    let escapes = relative.is_absolute()
+        || decoded.contains(':')
+        || decoded.starts_with('\\')
+        || relative.components().any(|c| {
+            !matches!(
+                c,
+                std::path::Component::Normal(_) | std::path::Component::CurDir
+            )
+        });
+    if escapes {
+        return Err(format!(
+            "the URI '{}' points outside the glTF file's folder; only relative paths inside it are read",
+            uri.chars().take(200).collect::<String>()
+        ));
+    }
+    let base = if base_dir.as_os_str().is_empty() {
+        Path::new(".")
+    } else {
+        base_dir
+    };
+    let path = base.join(&relative);
+    let (Ok(real), Ok(real_base)) = (path.canonicalize(), base.canonicalize()) else {
+        return Err(format!(
+            "cannot find '{}' beside the glTF file",
+            relative.display()
+        ));
+    };
+    if !real.starts_with(&real_base) {
+        return Err(format!(
+            "'{}' links outside the glTF file's folder; only files inside it are read",
+            relative.display()
+        ));
+    }
+    let meta = std::fs::metadata(&real)
+        .map_err(|e| format!("cannot read '{}': {e}", relative.display()))?;
+    if !meta.is_file() {
+        return Err(format!("'{}' is not a regular file", relative.display()));
+    }
+    if meta.len() > MAX_RESOURCE_BYTES {
+        return Err(format!(
+            "'{}' is larger than {} MiB",
+            relative.display(),
+            MAX_RESOURCE_BYTES >> 20
+        ));
+    }
+    Ok(path)
 }
 
 /// Decodes `%XX` escapes in a relative URI.
@@ -542,4 +602,73 @@ fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Vec<u8> {
         out.resize(out.len() + (padded - bin.len()), 0);
     }
     out
+}
+
+#[cfg(test)]
+mod uri_tests {
+    use super::*;
+
+    /// A one-triangle glTF whose buffer is at `uri`.
+    fn gltf_with_buffer(uri: &str) -> String {
+        format!(
+            r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
+            "nodes": [{{"name": "tri", "mesh": 0}}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}],
+            "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 0]}}],
+            "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+            "buffers": [{{"byteLength": 36, "uri": "{uri}"}}]}}"#
+        )
+    }
+
+    #[test]
+    fn buffer_uris_stay_inside_the_files_folder() {
+        let dir = tempfile::tempdir().unwrap();
+        let inner = dir.path().join("scene");
+        std::fs::create_dir(&inner).unwrap();
+        std::fs::write(dir.path().join("secret.bin"), [0u8; 36]).unwrap();
+        for uri in [
+            "../secret.bin",
+            "/etc/passwd",
+            "%2E%2E/secret.bin",
+            "file:///etc/passwd",
+            "C:/x.bin",
+        ] {
+            let path = inner.join("t.gltf");
+            std::fs::write(&path, gltf_with_buffer(uri)).unwrap();
+            let e = read(&path).unwrap_err();
+            assert!(
+                e.message.contains("outside the glTF file's folder"),
+                "{uri}: {}",
+                e.message
+            );
+            assert!(
+                !e.message.contains("36"),
+                "{uri}: the message reveals nothing of the file: {}",
+                e.message
+            );
+        }
+        // A device is not a regular file (and is never read whole).
+        #[cfg(unix)]
+        {
+            std::os::unix::fs::symlink("/dev/zero", inner.join("zero.bin")).unwrap();
+            let path = inner.join("t.gltf");
+            std::fs::write(&path, gltf_with_buffer("zero.bin")).unwrap();
+            let e = read(&path).unwrap_err();
+            assert!(
+                e.message.contains("outside") || e.message.contains("not a regular file"),
+                "{}",
+                e.message
+            );
+        }
+        // A buffer beside the file is read.
+        let mut bytes = Vec::new();
+        for v in [0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+            bytes.extend_from_slice(&v.to_le_bytes());
+        }
+        std::fs::write(inner.join("ok.bin"), &bytes).unwrap();
+        let path = inner.join("ok.gltf");
+        std::fs::write(&path, gltf_with_buffer("ok.bin")).unwrap();
+        assert_eq!(read(&path).unwrap().0.objects.len(), 1);
+    }
 }

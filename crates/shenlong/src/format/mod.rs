@@ -246,11 +246,23 @@ impl SceneFile {
     pub fn save(&self, path: &Path) -> Result<(), FormatError> {
         let format = Format::from_path(path)?;
         let bytes = self.to_bytes(format)?;
-        if let (Format::Gltf, Document::Gltf(document)) = (format, &self.document) {
-            copy_external_resources(document, path)?;
+        if path.is_dir() {
+            return Err(FormatError::new(format!(
+                "cannot write {}: it is a folder",
+                path.display()
+            )));
         }
-        crate::io::write_atomic(path, &bytes)
-            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
+        let copied = match (format, &self.document) {
+            (Format::Gltf, Document::Gltf(document)) => copy_external_resources(document, path)?,
+            _ => Vec::new(),
+        };
+        crate::io::write_atomic(path, &bytes).map_err(|e| {
+            // Nothing is left behind: the resources copied for it go too.
+            for c in &copied {
+                let _ = std::fs::remove_file(c);
+            }
+            FormatError::new(format!("cannot write {}: {e}", path.display()))
+        })
     }
 }
 
@@ -259,9 +271,9 @@ impl SceneFile {
 fn copy_external_resources(
     document: &gltf::GltfDocument,
     output: &Path,
-) -> Result<(), FormatError> {
+) -> Result<Vec<PathBuf>, FormatError> {
     let gltf::Container::Gltf { base_dir } = document.container() else {
-        return Ok(());
+        return Ok(Vec::new());
     };
     let out_dir = match output.parent() {
         Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
@@ -277,34 +289,39 @@ fn copy_external_resources(
         base_dir.as_path()
     };
     if same(base, &out_dir) {
-        return Ok(());
+        return Ok(Vec::new());
     }
+    // Everything is checked before anything is copied, so a failure leaves no copies.
+    let mut copies = Vec::new();
     for uri in document.external_uris() {
+        let source = gltf::resolve_uri(base, &uri).map_err(FormatError::new)?;
         let relative = PathBuf::from(gltf::percent_decode(&uri));
-        if relative.is_absolute()
-            || relative
-                .components()
-                .any(|c| matches!(c, std::path::Component::ParentDir))
-        {
-            continue;
-        }
         let target = out_dir.join(&relative);
-        if target.exists() {
-            continue;
+        if !target.exists() {
+            copies.push((source, relative, target));
         }
-        let bytes = std::fs::read(base.join(&relative)).map_err(|e| {
-            FormatError::new(format!(
-                "cannot read {}: {e}",
-                base.join(&relative).display()
-            ))
-        })?;
+    }
+    let mut made: Vec<PathBuf> = Vec::new();
+    let copy = |source: &Path, target: &Path| -> Result<(), FormatError> {
+        let bytes = std::fs::read(source)
+            .map_err(|e| FormatError::new(format!("cannot read {}: {e}", source.display())))?;
         if let Some(parent) = target.parent() {
             std::fs::create_dir_all(parent).map_err(|e| {
                 FormatError::new(format!("cannot create {}: {e}", parent.display()))
             })?;
         }
-        crate::io::write_atomic(&target, &bytes)
-            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", target.display())))?;
+        crate::io::write_atomic(target, &bytes)
+            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", target.display())))
+    };
+    for (source, _, target) in copies {
+        if let Err(e) = copy(&source, &target) {
+            // Nothing is left behind.
+            for m in &made {
+                let _ = std::fs::remove_file(m);
+            }
+            return Err(e);
+        }
+        made.push(target);
     }
-    Ok(())
+    Ok(made)
 }
