@@ -47,6 +47,9 @@ pub fn run(args: Args) -> Result<()> {
     let t = expr::evaluate_transformation(&args.expr, &bindings)
         .with_context(|| format!("--expr {}", args.expr))?;
     let before = file.scene.clone();
+    file.scene
+        .check_motion(index, &t.versor, !args.no_carry)
+        .map_err(anyhow::Error::msg)?;
     file.scene.apply(index, &t.versor, !args.no_carry);
     args.collisions
         .resolve(&before, &mut file.scene, &[index])?;

@@ -465,6 +465,9 @@ async fn apply(
     let t = expr::evaluate_transformation(&request.expr, &bindings)
         .map_err(|e| unprocessable(e.to_string()))?;
     let mut after = before.clone();
+    after
+        .check_motion(index, &t.versor, true)
+        .map_err(unprocessable)?;
     after.apply(index, &t.versor, true);
     if let Some(options) = &app.settings.collisions {
         shenlong::collide::resolve(&mut after, &before.world_aabbs(), &[index], options)

@@ -3,7 +3,7 @@
 
 use super::FormatError;
 use crate::geometry::Aabb;
-use crate::scene::{Labels, Object, Scene};
+use crate::scene::{Labels, Object, Scene, MAX_COORDINATE, MAX_SCALE, MIN_SCALE};
 use cga::Similarity;
 use glam::{DQuat, DVec3};
 use serde_json::{Map, Value};
@@ -172,6 +172,12 @@ fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {
                 at("size")
             )));
         }
+        if size[axis] > MAX_COORDINATE {
+            return Err(FormatError::new(format!(
+                "{}[{axis}] must be at most {MAX_COORDINATE:.0e} m",
+                at("size")
+            )));
+        }
     }
     let position = match o.get("position") {
         None => {
@@ -181,13 +187,24 @@ fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {
         }
         some => vec3(some, &at("position"))?,
     };
+    for axis in 0..3 {
+        if position[axis].abs() > MAX_COORDINATE {
+            return Err(FormatError::new(format!(
+                "{}[{axis}] must be within ±{MAX_COORDINATE:.0e} m",
+                at("position")
+            )));
+        }
+    }
     let rotation = rotation(o.get("rotation"), &at("rotation"))?;
     let scale = match o.get("scale") {
         None | Some(Value::Null) => 1.0,
         Some(v) => {
             let s = number(v, &at("scale"))?;
-            if s <= 0.0 {
-                return Err(FormatError::new(format!("{} must be > 0", at("scale"))));
+            if !(MIN_SCALE..=MAX_SCALE).contains(&s) {
+                return Err(FormatError::new(format!(
+                    "{} must be in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]",
+                    at("scale")
+                )));
             }
             s
         }
@@ -272,6 +289,9 @@ fn rotation(value: Option<&Value>, at: &str) -> Result<DQuat, FormatError> {
     for (k, v) in list.iter().enumerate() {
         q[k] = number(v, &format!("{at}[{k}]"))?;
     }
+    // Scaled down first, so components near f64::MAX do not overflow the length.
+    let big = q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let q = if big > 1.0 { q.map(|x| x / big) } else { q };
     let q = DQuat::from_array(q);
     let length = q.length();
     if length.is_nan() || length <= 1e-9 {
@@ -513,7 +533,7 @@ mod tests {
         );
         assert_eq!(
             with(&["objects", "0", "scale"], serde_json::json!(-2)),
-            "objects[0].scale must be > 0"
+            "objects[0].scale must be in [1e-6, 1e6]"
         );
         assert_eq!(
             with(&["bounds", "min"], serde_json::json!([5, 0, 0])),

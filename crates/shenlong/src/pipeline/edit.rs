@@ -257,6 +257,12 @@ pub fn edit_with(
             let back = w.inverse().expect("world motions are invertible");
             motions.push(edited.apply_world(&[answer.object], &back));
         }
+        edited
+            .check_motion(answer.object, &answer.transformation.versor, options.carry)
+            .map_err(|message| EditError {
+                message,
+                kind: EditErrorKind::NotUnderstood,
+            })?;
         let motion = edited.apply(answer.object, &answer.transformation.versor, options.carry);
         for &(i, w) in &motion.moves {
             if i != answer.object {

@@ -14,6 +14,67 @@ use glam::{DQuat, DVec3};
 
 pub use support::SUPPORT_GAP;
 
+/// The largest coordinate (and box extent) Shenlong keeps exact, in metres: positions and
+/// sizes beyond it are refused on reading, and an edit that would go beyond it is refused.
+pub const MAX_COORDINATE: f64 = 1e6;
+/// The smallest uniform scale accepted.
+pub const MIN_SCALE: f64 = 1e-6;
+/// The largest uniform scale accepted.
+pub const MAX_SCALE: f64 = 1e6;
+
+impl Scene {
+    /// Whether applying `m` about the pivot of object `index` (carrying what rests on it
+    /// with `carry`) keeps every pose it moves within [`MAX_COORDINATE`] and the scale
+    /// limits; `Err` says which object would leave them and how.
+    ///
+    /// # Errors
+    /// The first object the motion would take out of the limits.
+    pub fn check_motion(&self, index: usize, m: &Multivector, carry: bool) -> Result<(), String> {
+        let Ok(step) = Similarity::from_versor(m) else {
+            return Err(
+                "the transformation is not a translation, rotation and uniform scale".into(),
+            );
+        };
+        if !step.translation.is_finite()
+            || step.translation.abs().max_element() > 2.0 * MAX_COORDINATE
+        {
+            return Err(format!(
+                "the move of {:.3e} m is beyond the {MAX_COORDINATE:.0e} m Shenlong keeps exact",
+                step.translation.length()
+            ));
+        }
+        if !(step.scale.is_finite() && step.scale >= MIN_SCALE && step.scale <= MAX_SCALE) {
+            return Err(format!(
+                "the scale {:.3e} is outside [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]",
+                step.scale
+            ));
+        }
+        let world = self.world_motion(index, m);
+        let mut targets = vec![index];
+        if carry {
+            targets.extend(self.carried_by(index));
+        }
+        for i in targets {
+            let o = &self.objects[i];
+            let pose = world * *o.pose();
+            let ok = Similarity::from_versor(&pose).ok().filter(|s| {
+                s.translation.is_finite()
+                    && s.translation.abs().max_element() <= MAX_COORDINATE
+                    && s.scale >= MIN_SCALE
+                    && s.scale <= MAX_SCALE
+            });
+            let Some(s) = ok else {
+                return Err(format!(
+                    "the edit would take '{}' beyond the limits Shenlong keeps exact (|position| ≤ {MAX_COORDINATE:.0e} m, scale in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}])",
+                    o.name
+                ));
+            };
+            let _ = s;
+        }
+        Ok(())
+    }
+}
+
 /// A scene: a name, optional room bounds and the objects.
 #[derive(Clone, Debug)]
 pub struct Scene {

@@ -185,3 +185,29 @@ fn unknown_names_get_suggestions() {
     assert_eq!(s.resolve("xyz").unwrap_err(), "unknown object 'xyz'");
     assert_eq!(s.resolve("CHAIR"), Ok(2));
 }
+
+#[test]
+fn huge_poses_are_refused_not_panicked_on() {
+    let big = |field: &str, value: &str| {
+        let text = format!(
+            r#"{{"objects": [{{"name": "box", "size": [1, 1, 1], "position": [0, 0, 0], {field}: {value}}}]}}"#
+        );
+        crate::format::json::read(&text, "t")
+            .map(|_| ())
+            .unwrap_err()
+            .message
+    };
+    assert!(big("\"position\"", "[3e8, 0, 0]").contains("within ±1e6"));
+    assert!(big("\"scale\"", "1e12").contains("must be in [1e-6, 1e6]"));
+    assert!(big("\"size\"", "[1e308, 1, 1]").contains("at most 1e6"));
+    // Huge quaternion components are only a direction.
+    let text = r#"{"objects": [{"name": "box", "size": [1, 1, 1], "position": [0, 0, 0], "rotation": [0, 1e300, 0, 1e300]}]}"#;
+    let scene = crate::format::json::read(text, "t").unwrap().scene;
+    assert!(scene.objects[0].similarity().rotation.is_normalized());
+    // An edit that would go beyond the limits is refused before anything moves.
+    let m = Multivector::translator(DVec3::new(1e8, 0.0, 0.0));
+    let e = scene.check_motion(0, &m, true).unwrap_err();
+    assert!(e.contains("beyond"), "{e}");
+    let d = Multivector::dilator(1e9).unwrap();
+    assert!(scene.check_motion(0, &d, true).is_err());
+}
