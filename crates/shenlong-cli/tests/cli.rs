@@ -367,7 +367,14 @@ fn serve_refuses_an_address_others_can_reach_and_a_save_it_cannot_write() {
 #[test]
 fn an_edit_beyond_the_exact_range_is_refused_not_panicked_on() {
     for expr in ["T(1e8*e1)", "D(1e300)", "T(1e300*e2)"] {
-        let o = shenlong(&["apply", "example:workshop", "--object", "hammer", "--expr", expr]);
+        let o = shenlong(&[
+            "apply",
+            "example:workshop",
+            "--object",
+            "hammer",
+            "--expr",
+            expr,
+        ]);
         assert_eq!(o.status.code(), Some(1), "{expr}: {}", stderr(&o));
         assert_eq!(stderr(&o).lines().count(), 1, "{expr}: {}", stderr(&o));
     }

@@ -457,3 +457,17 @@ async fn export_query_errors_are_json() {
         assert!(value["error"].is_string(), "{path}: {value}");
     }
 }
+
+#[tokio::test]
+async fn a_change_that_moves_nothing_is_not_recorded() {
+    let app = app(None);
+    // "X1 to X1's own place": nothing moves.
+    let body = json!({"object": "hammer", "expr": "T(0 * e1)"}).to_string();
+    let (status, value, _) = call(&app, "POST", "/api/apply", Some(&body)).await;
+    assert_eq!(status, StatusCode::OK, "{value}");
+    assert!(value["history_id"].is_null(), "{value}");
+    let (_, history, _) = call(&app, "GET", "/api/history", None).await;
+    assert_eq!(history["history"].as_array().unwrap().len(), 0);
+    let (status, _, _) = call(&app, "POST", "/api/undo", Some("{}")).await;
+    assert_eq!(status, StatusCode::CONFLICT);
+}

@@ -22,7 +22,7 @@ use shenlong::expr;
 use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
 use shenlong::pipeline::{edit, EditErrorKind, EditOptions, System};
-use shenlong::scene::Scene;
+use shenlong::scene::{Object, Scene};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
@@ -61,10 +61,53 @@ pub struct HistoryItem {
     pub undone: bool,
 }
 
+/// One change, as the objects it changed: each one's state before and after (its pose and
+/// what it rests on), so a step costs what it changed, not a copy of the scene.
+struct Step {
+    id: u64,
+    changes: Vec<(usize, Object, Object)>,
+}
+
+impl Step {
+    fn bytes(&self) -> usize {
+        self.changes
+            .iter()
+            .map(|(_, a, b)| object_bytes(a) + object_bytes(b))
+            .sum()
+    }
+
+    /// Puts the objects back as they were (`undo`) or as the change left them.
+    fn apply(&self, scene: &mut Scene, undo: bool) {
+        for (i, before, after) in &self.changes {
+            scene.objects[*i] = if undo { before.clone() } else { after.clone() };
+        }
+    }
+}
+
+/// Whether an object's pose changed beyond rounding.
+fn moved(a: &Object, b: &Object) -> bool {
+    let (p, q) = (a.similarity(), b.similarity());
+    (p.translation - q.translation).length() > 1e-12
+        || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-15
+        || (p.scale - q.scale).abs() > 1e-12
+}
+
+fn object_bytes(o: &Object) -> usize {
+    std::mem::size_of::<Object>()
+        + o.name.len()
+        + match &o.shape {
+            shenlong::scene::Shape::Points { points } => points.len() * 24,
+            shenlong::scene::Shape::Box { .. } => 0,
+        }
+}
+
+/// The most memory the undo history keeps; the oldest steps go first past it.
+pub const MAX_HISTORY_BYTES: usize = 64 << 20;
+
 struct Inner {
     file: SceneFile,
-    undo: Vec<(u64, Scene)>,
-    redo: Vec<(u64, Scene)>,
+    undo: Vec<Step>,
+    redo: Vec<Step>,
     history: Vec<HistoryItem>,
     next_id: u64,
 }
@@ -347,19 +390,42 @@ struct EditRequest {
     system: Option<String>,
 }
 
-/// Records a change: the scene before it goes on the undo stack; redo is cleared.
-fn commit(app: &App, before: Scene, after: Scene, kind: &str, text: &str) -> Result<u64, ApiError> {
-    let changed: Vec<String> = before
+/// Records a change: what it changed goes on the undo stack (a change that moved nothing
+/// is not recorded); redo is cleared.
+fn commit(
+    app: &App,
+    before: Scene,
+    after: Scene,
+    kind: &str,
+    text: &str,
+) -> Result<Option<u64>, ApiError> {
+    let changes: Vec<(usize, Object, Object)> = before
         .objects
         .iter()
         .zip(&after.objects)
-        .filter(|(a, b)| a.similarity() != b.similarity())
-        .map(|(_, b)| b.name.clone())
+        .enumerate()
+        .filter(|(_, (a, b))| moved(a, b) || a.support != b.support)
+        .map(|(i, (a, b))| (i, a.clone(), b.clone()))
+        .collect();
+    let changed: Vec<String> = changes
+        .iter()
+        .filter(|(_, a, b)| moved(a, b))
+        .map(|(_, _, b)| b.name.clone())
         .collect();
     let mut inner = app.lock();
     let id = inner.next_id;
+    if changes.is_empty() {
+        return Ok(None);
+    }
     inner.next_id += 1;
-    inner.undo.push((id, before));
+    inner.undo.push(Step { id, changes });
+    // Keep the history within its budget, dropping the oldest steps.
+    let mut total: usize = inner.undo.iter().map(Step::bytes).sum();
+    while total > MAX_HISTORY_BYTES && inner.undo.len() > 1 {
+        let dropped = inner.undo.remove(0);
+        total -= dropped.bytes();
+        inner.history.retain(|h| h.id != dropped.id);
+    }
     inner.redo.clear();
     inner.history.retain(|h| !h.undone);
     inner.history.push(HistoryItem {
@@ -371,7 +437,7 @@ fn commit(app: &App, before: Scene, after: Scene, kind: &str, text: &str) -> Res
     });
     inner.file.scene = after;
     save(app, &inner)?;
-    Ok(id)
+    Ok(Some(id))
 }
 
 fn save(app: &App, inner: &Inner) -> Result<(), ApiError> {
@@ -494,17 +560,18 @@ fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
     } else {
         inner.redo.pop()
     };
-    let Some((id, scene)) = popped else {
+    let Some(step) = popped else {
         return Err(ApiError(
             StatusCode::CONFLICT,
             format!("nothing to {}", if undo { "undo" } else { "redo" }),
         ));
     };
-    let current = std::mem::replace(&mut inner.file.scene, scene);
+    step.apply(&mut inner.file.scene, undo);
+    let id = step.id;
     if undo {
-        inner.redo.push((id, current));
+        inner.redo.push(step);
     } else {
-        inner.undo.push((id, current));
+        inner.undo.push(step);
     }
     if let Some(item) = inner.history.iter_mut().find(|h| h.id == id) {
         item.undone = undo;
