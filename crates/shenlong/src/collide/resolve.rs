@@ -190,23 +190,10 @@ pub fn resolve(
             if offset.y.abs() > 1e-12 {
                 return true;
             }
+            // On the top face: its footprint's centre over it (real furniture overhangs).
             let t = after[j];
-            let b = after[root].translated(offset);
-            let fits_x = b.max.x - b.min.x <= t.max.x - t.min.x;
-            let fits_z = b.max.z - b.min.z <= t.max.z - t.min.z;
-            let c = b.center();
-            // On the top face: within it where it fits, its centre over it where it does not.
-            let x_ok = if fits_x {
-                b.min.x >= t.min.x - 1e-9 && b.max.x <= t.max.x + 1e-9
-            } else {
-                c.x >= t.min.x && c.x <= t.max.x
-            };
-            let z_ok = if fits_z {
-                b.min.z >= t.min.z - 1e-9 && b.max.z <= t.max.z + 1e-9
-            } else {
-                c.z >= t.min.z && c.z <= t.max.z
-            };
-            x_ok && z_ok
+            let c = after[root].translated(offset).center();
+            c.x >= t.min.x && c.x <= t.max.x && c.z >= t.min.z && c.z <= t.max.z
         };
         // Among equally near placements, prefer the one closest to where the object was
         // before the edit: it backs out the way it came.
