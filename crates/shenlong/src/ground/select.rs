@@ -115,17 +115,9 @@ pub(crate) fn at_direction(scene: &Scene, candidates: &[usize], direction: DVec3
 
 /// All the candidates at one side: those within [`POSITION_MARGIN`] of the extreme.
 pub(crate) fn at_side(scene: &Scene, candidates: &[usize], axis: Axis, sign: f64) -> Vec<usize> {
-    let keys: Vec<f64> = boxes(scene, candidates)
-        .iter()
-        .map(|b| -sign * axis.of(b.center()))
-        .collect();
-    let best = keys.iter().copied().fold(f64::INFINITY, f64::min);
-    candidates
-        .iter()
-        .zip(&keys)
-        .filter(|(_, &k)| k - best <= POSITION_MARGIN)
-        .map(|(&c, _)| c)
-        .collect()
+    let mut direction = DVec3::ZERO;
+    direction[axis as usize] = sign;
+    at_direction(scene, candidates, direction)
 }
 
 /// The middle one of an odd number of candidates, along the axis they spread most on.

@@ -536,18 +536,9 @@ impl<'a> Reader<'a> {
                             c.mark(k..k + 1);
                         }
                     }
-                    let subjects = self.subjects(c, Some(i));
-                    if subjects.is_empty() {
-                        return Err(not_read(text, text));
-                    }
-                    self.last_subjects = subjects.clone();
-                    return Ok(subjects
-                        .iter()
-                        .map(|&s| {
-                            let angle = sub(heading(var(v, "front")), heading(var(s, "front")));
-                            (s, Step::Turn(rotor(angle, (2, 0))))
-                        })
-                        .collect());
+                    return self.turn_each(c, i, text, |s| {
+                        sub(heading(var(v, "front")), heading(var(s, "front")))
+                    });
                 }
             }
         }
@@ -594,40 +585,31 @@ impl<'a> Reader<'a> {
                         c.mark(k..k + 1);
                     }
                 }
-                let subjects = self.subjects(c, Some(i));
-                if subjects.is_empty() {
-                    return Err(not_read(text, text));
-                }
-                self.last_subjects = subjects.clone();
-                return Ok(subjects
-                    .iter()
-                    .map(|&s| {
-                        let target = match (wall, side) {
-                            // A named wall: its direction.
-                            (Some(_), Some((_, (e, sign)))) => scaled_axis(num(sign), e),
-                            // The nearest wall: away from the room's centre, along the axis
-                            // it is nearer a wall on.
-                            (Some(_), None) => {
-                                let off = sub(var(s, "center"), room("center"));
-                                let slack = |e: usize| {
-                                    sub(
-                                        div(dot(sub(room("max"), room("min")), axis(e)), num(2.0)),
-                                        call("abs", vec![dot(off.clone(), axis(e))]),
-                                    )
-                                };
-                                let x_nearer = step(sub(slack(2), slack(0)));
-                                add(
-                                    mul(x_nearer.clone(), along(off.clone(), 0)),
-                                    mul(sub(num(1.0), x_nearer), along(off, 2)),
+                return self.turn_each(c, i, text, |s| {
+                    let target = match (wall, side) {
+                        // A named wall: its direction.
+                        (Some(_), Some((_, (e, sign)))) => scaled_axis(num(sign), e),
+                        // The nearest wall: away from the room's centre, along the axis
+                        // it is nearer a wall on.
+                        (Some(_), None) => {
+                            let off = sub(var(s, "center"), room("center"));
+                            let slack = |e: usize| {
+                                sub(
+                                    div(dot(sub(room("max"), room("min")), axis(e)), num(2.0)),
+                                    call("abs", vec![dot(off.clone(), axis(e))]),
                                 )
-                            }
-                            // The room's centre.
-                            _ => sub(room("center"), var(s, "center")),
-                        };
-                        let angle = sub(heading(target), heading(var(s, "front")));
-                        (s, Step::Turn(rotor(angle, (2, 0))))
-                    })
-                    .collect());
+                            };
+                            let x_nearer = step(sub(slack(2), slack(0)));
+                            add(
+                                mul(x_nearer.clone(), along(off.clone(), 0)),
+                                mul(sub(num(1.0), x_nearer), along(off, 2)),
+                            )
+                        }
+                        // The room's centre.
+                        _ => sub(room("center"), var(s, "center")),
+                    };
+                    sub(heading(target), heading(var(s, "front")))
+                });
             }
         }
         // "turn X1's back to X2" (templated "turn X1 back to X2"): facing away.
@@ -696,6 +678,26 @@ impl<'a> Reader<'a> {
         Ok(subjects
             .iter()
             .map(|&s| (s, Step::Turn(rotor(degrees_of(degrees), plane))))
+            .collect())
+    }
+
+    /// Turns each subject (the variables before token `cut`) about the vertical by the
+    /// angle `angle(subject)`.
+    fn turn_each(
+        &mut self,
+        c: &mut Clause,
+        cut: usize,
+        text: &str,
+        angle: impl Fn(usize) -> Expr,
+    ) -> Result<Vec<(usize, Step)>, String> {
+        let subjects = self.subjects(c, Some(cut));
+        if subjects.is_empty() {
+            return Err(not_read(text, text));
+        }
+        self.last_subjects = subjects.clone();
+        Ok(subjects
+            .iter()
+            .map(|&s| (s, Step::Turn(rotor(angle(s), (2, 0)))))
             .collect())
     }
 
