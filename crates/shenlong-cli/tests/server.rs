@@ -471,3 +471,25 @@ async fn a_change_that_moves_nothing_is_not_recorded() {
     let (status, _, _) = call(&app, "POST", "/api/undo", Some("{}")).await;
     assert_eq!(status, StatusCode::CONFLICT);
 }
+
+#[tokio::test]
+async fn after_an_apply_moves_the_bottle_off_the_table_moving_the_table_leaves_it() {
+    // Regression: /api/apply did not re-detect supports, so the table still carried the
+    // bottle it no longer held.
+    let app = app(None);
+    let body =
+        json!({"object": "orange bottle", "expr": "T(-2.5 * e1 + ((-0.9) * e2))"}).to_string();
+    let (status, value, _) = call(&app, "POST", "/api/apply", Some(&body)).await;
+    assert_eq!(status, StatusCode::OK, "{value}");
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    let bottle = position(&scene, "orange bottle");
+    let body = json!({"instruction": "move the 'tool table' 0.5 m back"}).to_string();
+    let (status, value, _) = call(&app, "POST", "/api/edit", Some(&body)).await;
+    assert_eq!(status, StatusCode::OK, "{value}");
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(
+        position(&scene, "orange bottle"),
+        bottle,
+        "the bottle stayed where it was put"
+    );
+}

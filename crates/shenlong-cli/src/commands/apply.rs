@@ -1,7 +1,6 @@
 //! `shenlong apply`: apply one CGA expression to one object, with no translator.
 
-use anyhow::{Context, Result};
-use shenlong::expr;
+use anyhow::Result;
 use std::path::PathBuf;
 
 /// Apply a CGA expression to one object of a scene and write the result.
@@ -39,20 +38,13 @@ pub struct Args {
 
 pub fn run(args: Args) -> Result<()> {
     let mut file = super::load_scene(&args.scene)?;
-    let index = file
-        .scene
-        .resolve(&args.object)
-        .map_err(anyhow::Error::msg)?;
-    let bindings = shenlong::pipeline::bindings(&file.scene, &[index]);
-    let t = expr::evaluate_transformation(&args.expr, &bindings)
-        .with_context(|| format!("--expr {}", args.expr))?;
+    let options = args.collisions.edit_options(!args.no_carry)?;
     let before = file.scene.clone();
-    file.scene
-        .check_motion(index, &t.versor, !args.no_carry)
-        .map_err(anyhow::Error::msg)?;
-    file.scene.apply(index, &t.versor, !args.no_carry);
-    args.collisions
-        .resolve(&before, &mut file.scene, &[index])?;
+    let (placed, _) =
+        shenlong::pipeline::apply_expression(&file.scene, &args.object, &args.expr, &options)
+            .map_err(|e| super::edit_error(e).context(format!("--expr {}", args.expr)))?;
+    super::collision_notes(&placed);
+    file.scene = placed.scene;
     super::write_edit(&file, &before, args.output.as_deref(), args.tdw.as_deref())?;
     Ok(())
 }

@@ -68,14 +68,8 @@ pub fn run(args: Args) -> Result<()> {
         translator.as_ref(),
         &options,
     )
-    .map_err(|e| match e.kind {
-        // The flag is the command line's to name; the library's message does not.
-        shenlong::pipeline::EditErrorKind::Placement => anyhow::anyhow!(
-            "{}; use --allow-collisions to apply the edit anyway",
-            e.message
-        ),
-        _ => anyhow::Error::new(e),
-    })?;
+    // The flag is the command line's to name; the library's message does not.
+    .map_err(super::edit_error)?;
     let report = serde_json::to_string_pretty(&result.report).expect("reports serialise");
 
     super::write_edit(&file, &before, args.output.as_deref(), args.tdw.as_deref())?;

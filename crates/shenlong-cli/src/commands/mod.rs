@@ -125,41 +125,16 @@ impl CollisionArgs {
         })
     }
 
-    /// Resolves the collisions the edit from `before` to `scene` created among `moved`,
-    /// and says on stderr what was adjusted or left overlapping.
-    pub fn resolve(
-        &self,
-        before: &shenlong::scene::Scene,
-        scene: &mut shenlong::scene::Scene,
-        moved: &[usize],
-    ) -> Result<Option<shenlong::collide::Resolution>> {
-        let options = self.options()?;
-        if self.no_collide {
-            return Ok(None);
-        }
-        let resolution = shenlong::collide::resolve(scene, &before.world_aabbs(), moved, &options)
-            .map_err(|e| anyhow::anyhow!("{e}; use --allow-collisions to apply the edit anyway"))?;
-        let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
-        for a in &resolution.adjustments {
-            let with: Vec<String> = a.collided_with.iter().map(|o| o.describe(&names)).collect();
-            let d = a.displacement;
-            eprintln!(
-                "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}",
-                names[a.object],
-                d.x,
-                d.y,
-                d.z,
-                with.join(", ")
-            );
-        }
-        for o in &resolution.remaining {
-            eprintln!(
-                "note: '{}' overlaps {} (--allow-collisions)",
-                names[o.object],
-                o.with.describe(&names)
-            );
-        }
-        Ok(Some(resolution))
+    /// The edit options these flags ask for.
+    pub fn edit_options(&self, carry: bool) -> Result<shenlong::pipeline::EditOptions> {
+        Ok(shenlong::pipeline::EditOptions {
+            carry,
+            collisions: if self.no_collide() {
+                None
+            } else {
+                Some(self.options()?)
+            },
+        })
     }
 }
 
@@ -223,5 +198,39 @@ impl TranslatorArgs {
             },
             record: self.record.clone(),
         })
+    }
+}
+
+/// Says on stderr what collision resolution adjusted or left overlapping.
+pub fn collision_notes(placed: &shenlong::pipeline::Placed) {
+    for c in &placed.collisions_resolved {
+        let d = c.displacement;
+        eprintln!(
+            "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}{}",
+            c.object,
+            d[0],
+            d[1],
+            d[2],
+            c.collided_with.join(", "),
+            c.lifted_onto
+                .as_ref()
+                .map(|o| format!(", onto '{o}'"))
+                .unwrap_or_default()
+        );
+    }
+    for o in &placed.overlaps_remaining {
+        eprintln!("note: {o} (--allow-collisions)");
+    }
+}
+
+/// An edit error as the command line words it: placement errors name the flag that
+/// overrides them.
+pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
+    match e.kind {
+        shenlong::pipeline::EditErrorKind::Placement => anyhow::anyhow!(
+            "{}; use --allow-collisions to apply the edit anyway",
+            e.message
+        ),
+        _ => anyhow::Error::new(e),
     }
 }

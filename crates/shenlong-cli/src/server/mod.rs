@@ -18,7 +18,6 @@ use axum::{Json, Router};
 use serde::Deserialize;
 use serde_json::{json, Value};
 use shenlong::collide::ResolveOptions;
-use shenlong::expr;
 use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
 use shenlong::pipeline::{edit, EditErrorKind, EditOptions, System};
@@ -452,6 +451,18 @@ fn save(app: &App, inner: &Inner) -> Result<(), ApiError> {
     Ok(())
 }
 
+/// The HTTP status of an edit error: 4xx for the request, 502 for a model server.
+fn edit_status(e: shenlong::pipeline::EditError) -> ApiError {
+    let status = match e.kind {
+        EditErrorKind::Instruction | EditErrorKind::NotUnderstood => {
+            StatusCode::UNPROCESSABLE_ENTITY
+        }
+        EditErrorKind::Placement => StatusCode::CONFLICT,
+        EditErrorKind::Model => StatusCode::BAD_GATEWAY,
+    };
+    ApiError(status, e.message)
+}
+
 async fn edit_scene(
     State(app): State<Arc<App>>,
     body: Result<Json<EditRequest>, JsonRejection>,
@@ -496,16 +507,7 @@ async fn edit_scene(
             format!("the edit stopped: {e}"),
         )
     })?;
-    let (after, report) = outcome.map_err(|e| {
-        let status = match e.kind {
-            EditErrorKind::Instruction | EditErrorKind::NotUnderstood => {
-                StatusCode::UNPROCESSABLE_ENTITY
-            }
-            EditErrorKind::Placement => StatusCode::CONFLICT,
-            EditErrorKind::Model => StatusCode::BAD_GATEWAY,
-        };
-        ApiError(status, e.message)
-    })?;
+    let (after, report) = outcome.map_err(edit_status)?;
     let id = commit(&app, before, after, "edit", &request.instruction)?;
     let mut value = serde_json::to_value(&report).expect("reports serialise");
     value["history_id"] = json!(id);
@@ -526,19 +528,15 @@ async fn apply(
     let request = json_body(body)?;
     let _turn = app.edits.lock().await;
     let before = app.lock().file.scene.clone();
-    let index = before.resolve(&request.object).map_err(unprocessable)?;
-    let bindings = shenlong::pipeline::bindings(&before, &[index]);
-    let t = expr::evaluate_transformation(&request.expr, &bindings)
-        .map_err(|e| unprocessable(e.to_string()))?;
-    let mut after = before.clone();
-    after
-        .check_motion(index, &t.versor, true)
-        .map_err(unprocessable)?;
-    after.apply(index, &t.versor, true);
-    if let Some(options) = &app.settings.collisions {
-        shenlong::collide::resolve(&mut after, &before.world_aabbs(), &[index], options)
-            .map_err(|e| ApiError(StatusCode::CONFLICT, e.message))?;
-    }
+    let options = EditOptions {
+        carry: true,
+        collisions: app.settings.collisions.clone(),
+    };
+    // The one library path every edit takes: supports are re-detected after it.
+    let (placed, t) =
+        shenlong::pipeline::apply_expression(&before, &request.object, &request.expr, &options)
+            .map_err(edit_status)?;
+    let after = placed.scene;
     let s = t.similarity;
     let id = commit(
         &app,

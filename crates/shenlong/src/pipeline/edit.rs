@@ -242,94 +242,23 @@ pub fn edit_with(
         })?;
     timings.translate = ms(t0);
 
-    let t0 = Instant::now();
-    let before = scene.world_aabbs();
-    let mut edited = scene.clone();
-    let mut motions = Vec::new();
-    let mut moved = Vec::new();
-    let mut carried = Vec::new();
-    // World motion each object has picked up so far in this edit by being carried.
-    let mut carried_motion: Vec<Option<cga::Multivector>> = vec![None; edited.objects.len()];
-    for answer in &translation.answers {
-        // Every answer is computed against the scene as it was, so an object carried by an
-        // earlier answer first goes back to where it was, then takes its own answer.
-        if let Some(w) = carried_motion[answer.object].take() {
-            let back = w.inverse().expect("world motions are invertible");
-            motions.push(edited.apply_world(&[answer.object], &back));
-        }
-        edited
-            .check_motion(answer.object, &answer.transformation.versor, options.carry)
-            .map_err(|message| EditError {
-                message,
-                kind: EditErrorKind::NotUnderstood,
-            })?;
-        let motion = edited.apply(answer.object, &answer.transformation.versor, options.carry);
-        for &(i, w) in &motion.moves {
-            if i != answer.object {
-                carried_motion[i] = Some(w * carried_motion[i].unwrap_or(cga::Multivector::ONE));
-            }
-        }
-        for i in motion.objects().filter(|&i| i != answer.object) {
-            if !carried.contains(&edited.objects[i].name) {
-                carried.push(edited.objects[i].name.clone());
-            }
-        }
-        moved.push(answer.object);
-        motions.push(motion);
-        // The moved object rests wherever it was put now, not on its old support: a later
-        // answer that moves the old support must not carry it back.
-        edited.objects[answer.object].support_from_file = false;
-        edited.detect_supports();
-    }
-    timings.apply = ms(t0);
-
-    let t0 = Instant::now();
+    let moves: Vec<(usize, cga::Multivector)> = translation
+        .answers
+        .iter()
+        .map(|a| (a.object, a.transformation.versor))
+        .collect();
+    let placed = place(scene, &moves, options)?;
+    timings.apply = placed.apply_ms;
+    timings.collide = placed.collide_ms;
+    let Placed {
+        scene: edited,
+        motions,
+        carried,
+        collisions_resolved,
+        overlaps_remaining,
+        ..
+    } = placed;
     let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
-    let mut collisions_resolved = Vec::new();
-    let mut overlaps_remaining = Vec::new();
-    if let Some(resolve_options) = &options.collisions {
-        let resolution =
-            collide::resolve(&mut edited, &before, &moved, resolve_options).map_err(|e| {
-                EditError {
-                    message: e.message,
-                    kind: EditErrorKind::Placement,
-                }
-            })?;
-        for a in &resolution.adjustments {
-            // Resolution that undoes the whole move leaves a silent no-op: say so instead.
-            let start = before[a.object].bottom_center();
-            let wanted = (a.requested - start).length();
-            if wanted > 0.02 && (a.resolved - start).length() < 0.01 {
-                let blocking: Vec<String> =
-                    a.collided_with.iter().map(|o| o.describe(&names)).collect();
-                return Err(EditError {
-                    message: format!(
-                        "'{}' cannot go there: it collides with {}, and the nearest free place is where it already is",
-                        names[a.object],
-                        blocking.join(", ")
-                    ),
-                    kind: EditErrorKind::Placement,
-                });
-            }
-            collisions_resolved.push(CollisionReport {
-                object: names[a.object].clone(),
-                requested: a.requested.to_array(),
-                resolved: a.resolved.to_array(),
-                displacement: a.displacement.to_array(),
-                collided_with: a.collided_with.iter().map(|o| o.describe(&names)).collect(),
-                lifted_onto: a.lifted_onto.map(|j| names[j].clone()),
-            });
-        }
-        for o in &resolution.remaining {
-            overlaps_remaining.push(format!(
-                "'{}' overlaps {}",
-                names[o.object],
-                o.with.describe(&names)
-            ));
-        }
-        motions.push(resolution.motion);
-    }
-    timings.collide = ms(t0);
 
     *scene = edited;
     timings.total = ms(started);
@@ -406,4 +335,163 @@ pub fn edit_with(
         tokens,
     };
     Ok(Edit { report, motions })
+}
+
+/// What placing an edit's motions gave: the edited scene and what happened to it.
+#[derive(Clone, Debug)]
+pub struct Placed {
+    /// The scene after the motions and collision resolution.
+    pub scene: Scene,
+    /// The motions applied, in order, for undo.
+    pub motions: Vec<AppliedMotion>,
+    /// The objects moved by the motions themselves.
+    pub moved: Vec<usize>,
+    /// Objects carried along with the ones they rest on.
+    pub carried: Vec<String>,
+    /// Objects moved to clear collisions.
+    pub collisions_resolved: Vec<CollisionReport>,
+    /// Overlaps left in place (when collisions are allowed).
+    pub overlaps_remaining: Vec<String>,
+    /// Milliseconds applying the motions.
+    pub apply_ms: f64,
+    /// Milliseconds resolving collisions.
+    pub collide_ms: f64,
+}
+
+/// Applies motions to objects of a copy of `scene` — each about its object's pivot,
+/// carrying what rests on it, supports re-detected after each — then resolves collisions.
+/// The one way every edit is applied: instructions, expressions from the command line and
+/// the server. Every motion is computed against the scene as it was: an object carried by
+/// an earlier motion first goes back, then takes its own.
+///
+/// # Errors
+/// A motion beyond the exact range, or no free placement; `scene` is not changed.
+pub fn place(
+    scene: &Scene,
+    moves: &[(usize, cga::Multivector)],
+    options: &EditOptions,
+) -> Result<Placed, EditError> {
+    let t0 = Instant::now();
+    let before = scene.world_aabbs();
+    let mut edited = scene.clone();
+    let mut motions = Vec::new();
+    let mut moved = Vec::new();
+    let mut carried = Vec::new();
+    // World motion each object has picked up so far in this edit by being carried.
+    let mut carried_motion: Vec<Option<cga::Multivector>> = vec![None; edited.objects.len()];
+    for &(object, ref versor) in moves {
+        // Every motion is computed against the scene as it was, so an object carried by an
+        // earlier motion first goes back to where it was, then takes its own.
+        if let Some(w) = carried_motion[object].take() {
+            let back = w.inverse().expect("world motions are invertible");
+            motions.push(edited.apply_world(&[object], &back));
+        }
+        edited
+            .check_motion(object, versor, options.carry)
+            .map_err(|message| EditError {
+                message,
+                kind: EditErrorKind::NotUnderstood,
+            })?;
+        let motion = edited.apply(object, versor, options.carry);
+        for &(i, w) in &motion.moves {
+            if i != object {
+                carried_motion[i] = Some(w * carried_motion[i].unwrap_or(cga::Multivector::ONE));
+            }
+        }
+        for i in motion.objects().filter(|&i| i != object) {
+            if !carried.contains(&edited.objects[i].name) {
+                carried.push(edited.objects[i].name.clone());
+            }
+        }
+        moved.push(object);
+        motions.push(motion);
+        // The moved object rests wherever it was put now, not on its old support: a later
+        // motion that moves the old support must not carry it back.
+        edited.objects[object].support_from_file = false;
+        edited.detect_supports();
+    }
+    let apply_ms = ms(t0);
+
+    let t0 = Instant::now();
+    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+    let mut collisions_resolved = Vec::new();
+    let mut overlaps_remaining = Vec::new();
+    if let Some(resolve_options) = &options.collisions {
+        let resolution =
+            collide::resolve(&mut edited, &before, &moved, resolve_options).map_err(|e| {
+                EditError {
+                    message: e.message,
+                    kind: EditErrorKind::Placement,
+                }
+            })?;
+        for a in &resolution.adjustments {
+            // Resolution that undoes the whole move leaves a silent no-op: say so instead.
+            let start = before[a.object].bottom_center();
+            let wanted = (a.requested - start).length();
+            if wanted > 0.02 && (a.resolved - start).length() < 0.01 {
+                let blocking: Vec<String> =
+                    a.collided_with.iter().map(|o| o.describe(&names)).collect();
+                return Err(EditError {
+                    message: format!(
+                        "'{}' cannot go there: it collides with {}, and the nearest free place is where it already is",
+                        names[a.object],
+                        blocking.join(", ")
+                    ),
+                    kind: EditErrorKind::Placement,
+                });
+            }
+            collisions_resolved.push(CollisionReport {
+                object: names[a.object].clone(),
+                requested: a.requested.to_array(),
+                resolved: a.resolved.to_array(),
+                displacement: a.displacement.to_array(),
+                collided_with: a.collided_with.iter().map(|o| o.describe(&names)).collect(),
+                lifted_onto: a.lifted_onto.map(|j| names[j].clone()),
+            });
+        }
+        for o in &resolution.remaining {
+            overlaps_remaining.push(format!(
+                "'{}' overlaps {}",
+                names[o.object],
+                o.with.describe(&names)
+            ));
+        }
+        motions.push(resolution.motion);
+    }
+    let collide_ms = ms(t0);
+
+    Ok(Placed {
+        scene: edited,
+        motions,
+        moved,
+        carried,
+        collisions_resolved,
+        overlaps_remaining,
+        apply_ms,
+        collide_ms,
+    })
+}
+
+/// Applies one CGA expression to one object (it is X1; `room` is bound when the scene has
+/// bounds), through [`place`].
+///
+/// # Errors
+/// An unknown object, an expression that is not a transformation, or what [`place`]
+/// refuses.
+pub fn apply_expression(
+    scene: &Scene,
+    object: &str,
+    expression: &str,
+    options: &EditOptions,
+) -> Result<(Placed, crate::expr::Transformation), EditError> {
+    let index = scene.resolve(object).map_err(|message| EditError {
+        message,
+        kind: EditErrorKind::Instruction,
+    })?;
+    let bindings = super::bindings(scene, &[index]);
+    let t = crate::expr::evaluate_transformation(expression, &bindings).map_err(|e| EditError {
+        message: e.to_string(),
+        kind: EditErrorKind::NotUnderstood,
+    })?;
+    Ok((place(scene, &[(index, t.versor)], options)?, t))
 }

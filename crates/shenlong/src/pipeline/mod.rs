@@ -9,7 +9,10 @@ pub mod prompts;
 pub mod template;
 pub mod translate;
 
-pub use edit::{edit, edit_with, Edit, EditError, EditErrorKind, EditOptions, EditReport};
+pub use edit::{
+    apply_expression, edit, edit_with, place, Edit, EditError, EditErrorKind, EditOptions,
+    EditReport, Placed,
+};
 
 pub use crate::translate::bindings;
 
