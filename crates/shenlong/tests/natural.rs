@@ -99,12 +99,6 @@ fn check(name: &str, outcomes: &[Outcome], floor: f64) {
         "{name}: {rate:.3} < {floor}\n{}",
         failed.join("\n")
     );
-    // Refusals are counted as passing only when they were asked for.
-    let refusals = outcomes
-        .iter()
-        .filter(|o| o.query.starts_with("refuse"))
-        .count();
-    assert!(refusals > 0);
 }
 
 #[test]
@@ -202,4 +196,17 @@ fn the_natural_suites_through_a_model_server() {
         assert_eq!(wrong, 0, "{name}: wrong edits through the model path");
     }
     assert!(server.count() > 500);
+}
+
+/// The hard section on fronts and placements: facing with the objects' own fronts (ProcTHOR
+/// furniture already turned), surfaces that already hold things, several objects on one
+/// surface, the floor, staying on a level, stacks, and full surfaces refused.
+#[test]
+fn the_natural_placement_suite() {
+    let Some(suite) = load("natural-placement.suite.json") else {
+        return;
+    };
+    let outcomes = run_offline(&suite);
+    assert!(outcomes.len() >= 100, "{}", outcomes.len());
+    check("natural-placement", &outcomes, 0.95);
 }

@@ -1010,10 +1010,21 @@ impl<'a> Reader<'a> {
         // amount or place, or has a verb that takes none (`move the book on the table 10
         // cm left`, `rotate the tv on the stand`). Otherwise it is where the object goes
         // (`put the book on the side table`) and is left for the translator.
+        // The object of a relation ("on top of the magazine on the ottoman") is where
+        // something goes: a modifier after it can only describe it.
+        let destination = start > 0
+            && self.word(start - 1).is_some_and(|w| {
+                words::is_preposition(w) && !matches!(w, "up" | "than" | "as" | "like" | "for")
+            });
         let describes = post.as_ref().is_some_and(|(_, p_end)| {
-            self.clause_goes_on(*p_end) || self.verb_takes_no_place(start)
+            self.clause_goes_on(*p_end) || self.verb_takes_no_place(start) || destination
         });
         let picks = (objects.len() != wanted && !group) || ordinal.is_some() || head.generic;
+        // A relation after a noun the modifiers before it already pick among ("the left
+        // stool next to the chair") is where it goes, unless it clearly describes.
+        let selectors_first = !sides.is_empty() || !sizes.is_empty() || middle;
+        let post = post
+            .filter(|(p, _)| !(selectors_first && !describes && matches!(p, Post::Relation(..))));
         if let Some((p, p_end)) = post.filter(|_| picks || describes) {
             if !modified {
                 objects = head.literal.clone();
@@ -1362,28 +1373,11 @@ impl<'a> Reader<'a> {
                         | "anticlockwise"
                         | "around"
                         | "degrees"
-                        | "over"
                         | "away"
                         | "closer"
                         | "nearer"
                         | "half"
                         | "twice"
-                        | "onto"
-                        | "into"
-                        | "to"
-                        | "toward"
-                        | "towards"
-                        | "next"
-                        | "beside"
-                        | "under"
-                        | "behind"
-                        | "between"
-                        | "against"
-                        | "off"
-                        | "on"
-                        | "in"
-                        | "by"
-                        | "near"
                 )
         };
         for t in &self.tokens[k.min(self.tokens.len())..] {

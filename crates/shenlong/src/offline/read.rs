@@ -612,6 +612,20 @@ impl<'a> Reader<'a> {
                 });
             }
         }
+        // "turn X1 towards X2": to face it.
+        for w in ["towards", "toward"] {
+            if let Some(i) = c.find(&[w]) {
+                if let Some((t, v)) = c.variable_after(i + 1) {
+                    let f = Facing {
+                        range: i..t,
+                        target: v,
+                        target_at: t,
+                        away: false,
+                    };
+                    return self.rotate(c, Some(f), text);
+                }
+            }
+        }
         // "turn X1's back to X2" (templated "turn X1 back to X2"): facing away.
         if let Some(i) = c.find(&["back", "to"]) {
             if let Some((t, v)) = c.variable_after(i + 2) {
