@@ -88,6 +88,7 @@ fn the_dev_suite_through_a_model_server() {
         backend: Box::new(OpenAiClient::new(options)),
         system: System::Cga,
         retries: 1,
+        deadline: std::time::Duration::from_secs(300),
         cache: None,
         recorder: None,
     };

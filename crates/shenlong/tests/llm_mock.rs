@@ -25,6 +25,7 @@ fn translator(server: &MockLlm, system: System) -> LlmTranslator {
         backend: Box::new(client(server, Some("sk-test-secret"))),
         system,
         retries: 5,
+        deadline: std::time::Duration::from_secs(300),
         cache: None,
         recorder: None,
     }
@@ -146,6 +147,7 @@ fn a_server_that_never_answers_times_out_clearly() {
         backend: Box::new(OpenAiClient::new(options)),
         system: System::Cga,
         retries: 5,
+        deadline: std::time::Duration::from_secs(300),
         cache: None,
         recorder: None,
     };
@@ -204,6 +206,7 @@ fn the_cache_serves_one_reply_to_every_scene() {
         backend: Box::new(client(&server, None)),
         system: System::Cga,
         retries: 0,
+        deadline: std::time::Duration::from_secs(300),
         cache: Some(Cache::new(dir.path())),
         recorder: None,
     };
@@ -243,6 +246,7 @@ fn record_then_replay_gives_the_same_edit() {
         backend: Box::new(client(&server, None)),
         system: System::Cga,
         retries: 2,
+        deadline: std::time::Duration::from_secs(300),
         cache: None,
         recorder: Some(Recorder::open(&log).unwrap()),
     };
@@ -264,6 +268,7 @@ fn record_then_replay_gives_the_same_edit() {
         backend: Box::new(Replay::load(&log).unwrap()),
         system: System::Cga,
         retries: 2,
+        deadline: std::time::Duration::from_secs(300),
         cache: None,
         recorder: None,
     };
@@ -389,4 +394,59 @@ fn a_query_that_still_names_an_object_is_not_sent() {
         .unwrap_err();
     assert!(e.message.contains("'tool table' is still written"), "{e}");
     assert_eq!(server.count(), 0, "nothing was sent");
+}
+
+#[test]
+fn an_oversized_reply_is_refused_and_never_sent_back() {
+    let huge = format!(
+        "{{\"X1\": \"T(0.1 * e1)\", \"pad\": \"{}\"}}",
+        "x".repeat(300 * 1024)
+    );
+    let server = MockLlm::start(vec![
+        Reply::Content(huge),
+        Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
+    ]);
+    let mut scene = workshop();
+    let edit = edit_workshop(&mut scene, &server, System::Cga).unwrap();
+    assert_eq!(edit.report.retries, 1);
+    let first_error = edit.report.exchanges[0].error.clone().unwrap_or_default();
+    assert!(first_error.contains("too large"), "{first_error}");
+    // The retry request does not carry the 300 KiB back.
+    let requests = server.requests.lock().unwrap().clone();
+    let retry = requests[1].body.to_string();
+    assert!(retry.len() < 64 * 1024, "{} bytes", retry.len());
+    assert!(edit.report.exchanges[0].reply.len() <= 257 * 1024);
+}
+
+#[test]
+fn a_long_retry_after_cannot_outlast_the_deadline() {
+    let server = MockLlm::start(vec![
+        Reply::Raw(
+            429,
+            vec![("Retry-After".into(), "3600".into())],
+            "slow down".into(),
+        ),
+        Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
+    ]);
+    let mut options = ClientOptions::new(server.url.clone(), "mock-model", None);
+    options.backoff = Duration::from_millis(10);
+    options.deadline = Duration::from_secs(5);
+    let t = LlmTranslator {
+        backend: Box::new(OpenAiClient::new(options)),
+        system: System::Cga,
+        retries: 1,
+        deadline: Duration::from_secs(5),
+        cache: None,
+        recorder: None,
+    };
+    let started = std::time::Instant::now();
+    let mut scene = workshop();
+    // Retry-After is capped at 30 s, past the 5 s deadline: it gives up at once.
+    let e = edit(&mut scene, INSTRUCTION, &t, &EditOptions::default()).unwrap_err();
+    assert!(e.message.contains("deadline"), "{e}");
+    assert!(
+        started.elapsed() < Duration::from_secs(4),
+        "{:?}",
+        started.elapsed()
+    );
 }

@@ -163,6 +163,7 @@ fn the_natural_suites_through_a_model_server() {
             backend: Box::new(OpenAiClient::new(options)),
             system: System::Cga,
             retries: 0,
+            deadline: std::time::Duration::from_secs(300),
             cache: None,
             recorder: None,
         };

@@ -165,6 +165,10 @@ pub struct TranslatorArgs {
     /// Seconds allowed to connect to the model server.
     #[arg(long, value_name = "S", default_value_t = 10.0)]
     pub connect_timeout: f64,
+    /// Seconds allowed for the whole translation of an instruction: every request, retry
+    /// and wait (a server's Retry-After is honoured up to 30 s).
+    #[arg(long, value_name = "S", default_value_t = 300.0)]
+    pub deadline: f64,
 }
 
 impl TranslatorArgs {
@@ -176,6 +180,7 @@ impl TranslatorArgs {
         for (flag, value) in [
             ("--timeout", self.timeout),
             ("--connect-timeout", self.connect_timeout),
+            ("--deadline", self.deadline),
         ] {
             // A day at most: longer is a typo, and past ~1.8e19 s a duration overflows.
             if !(value.is_finite() && value > 0.0 && value <= 86_400.0) {
@@ -189,6 +194,7 @@ impl TranslatorArgs {
             api_key: None,
             timeout: std::time::Duration::from_secs_f64(self.timeout),
             connect_timeout: std::time::Duration::from_secs_f64(self.connect_timeout),
+            deadline: std::time::Duration::from_secs_f64(self.deadline),
             cache_dir: if self.no_cache {
                 None
             } else {

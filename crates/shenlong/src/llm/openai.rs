@@ -13,6 +13,9 @@ pub const OPENAI_BASE_URL: &str = "https://api.openai.com/v1";
 /// Ollama's OpenAI-compatible endpoint.
 pub const OLLAMA_BASE_URL: &str = "http://localhost:11434/v1";
 
+/// The longest wait a server's `Retry-After` may ask for, in seconds.
+pub const MAX_RETRY_AFTER_SECS: f64 = 30.0;
+
 /// Connection settings.
 #[derive(Clone, Debug)]
 pub struct ClientOptions {
@@ -31,6 +34,8 @@ pub struct ClientOptions {
     /// First wait between attempts; it doubles each time, unless the server says
     /// `Retry-After`.
     pub backoff: Duration,
+    /// Time allowed for one completion, every attempt and wait included.
+    pub deadline: Duration,
 }
 
 impl ClientOptions {
@@ -48,6 +53,7 @@ impl ClientOptions {
             request_timeout: Duration::from_secs(120),
             max_attempts: 4,
             backoff: Duration::from_secs(1),
+            deadline: Duration::from_secs(300),
         }
     }
 }
@@ -131,7 +137,7 @@ impl OpenAiClient {
             .and_then(|v| v.to_str().ok())
             .and_then(|v| v.trim().parse::<f64>().ok())
             .filter(|s| s.is_finite() && *s >= 0.0)
-            .map(|s| Duration::from_secs_f64(s.min(60.0)));
+            .map(|s| Duration::from_secs_f64(s.min(MAX_RETRY_AFTER_SECS)));
         let text = response
             .body_mut()
             .with_config()
@@ -227,7 +233,21 @@ impl Backend for OpenAiClient {
                             message: super::redact(&format!("{}{tries}", error.message), key),
                         });
                     }
-                    std::thread::sleep(retry_after.unwrap_or(wait));
+                    let pause = retry_after.unwrap_or(wait);
+                    if started.elapsed() + pause > self.options.deadline {
+                        return Err(LlmError {
+                            message: super::redact(
+                                &format!(
+                                    "{} (gave up: waiting {:.0} s more would pass the deadline of {:.0} s)",
+                                    error.message,
+                                    pause.as_secs_f64(),
+                                    self.options.deadline.as_secs_f64()
+                                ),
+                                self.options.api_key.as_deref(),
+                            ),
+                        });
+                    }
+                    std::thread::sleep(pause);
                     wait *= 2;
                     last = Some(error);
                 }

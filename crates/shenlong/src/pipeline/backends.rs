@@ -26,6 +26,8 @@ pub struct TranslatorSettings {
     pub timeout: Duration,
     /// Time allowed to connect to the model server.
     pub connect_timeout: Duration,
+    /// Time allowed for a whole translation: every attempt, retry and wait.
+    pub deadline: Duration,
     /// Where replies are cached; `None` disables the cache.
     pub cache_dir: Option<PathBuf>,
     /// Where exchanges are recorded.
@@ -41,6 +43,7 @@ impl Default for TranslatorSettings {
             api_key: None,
             timeout: Duration::from_secs(120),
             connect_timeout: Duration::from_secs(10),
+            deadline: Duration::from_secs(300),
             cache_dir: Cache::default_dir(),
             record: None,
         }
@@ -107,6 +110,7 @@ pub fn translator(
             let mut options = ClientOptions::new(base_url, rest, api_key);
             options.request_timeout = settings.timeout;
             options.connect_timeout = settings.connect_timeout;
+            options.deadline = settings.deadline;
             Box::new(OpenAiClient::new(options))
         }
         "replay" => {
@@ -138,6 +142,7 @@ pub fn translator(
         backend,
         system: settings.system,
         retries: settings.retries,
+        deadline: settings.deadline,
         cache,
         recorder,
     }))

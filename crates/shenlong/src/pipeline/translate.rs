@@ -7,7 +7,11 @@ use crate::llm::{Backend, Message, Usage};
 use crate::scene::Scene;
 pub use crate::translate::{Exchange, TranslateError, Translation, Translator};
 use crate::translate::{System, Templated};
-use std::time::Instant;
+use std::time::{Duration, Instant};
+
+/// The longest reply read from a model, in bytes: a larger one is refused, never echoed
+/// back in a retry, and recorded only in part.
+pub const MAX_REPLY_BYTES: usize = 256 * 1024;
 
 /// A language model prompted with one of the three systems, retrying with the error when a
 /// reply cannot be used.
@@ -18,6 +22,8 @@ pub struct LlmTranslator {
     pub system: System,
     /// Attempts after the first when a reply is invalid.
     pub retries: usize,
+    /// Time allowed for the whole translation.
+    pub deadline: Duration,
     /// Where valid replies are kept, if anywhere.
     pub cache: Option<Cache>,
     /// Where every exchange is recorded, if anywhere.
@@ -74,6 +80,12 @@ impl Translator for LlmTranslator {
         }
         let mut messages = first.clone();
         for attempt in 0..=self.retries {
+            if attempt > 0 && started.elapsed() > self.deadline {
+                return Err(TranslateError::model(format!(
+                    "{model} gave no usable answer within the deadline of {:.0} s ({attempt} attempts)",
+                    self.deadline.as_secs_f64()
+                )));
+            }
             let completion = self
                 .backend
                 .complete(&messages)
@@ -84,7 +96,7 @@ impl Translator for LlmTranslator {
                     prompt_version: version.into(),
                     model: model.clone(),
                     messages: messages.clone(),
-                    reply: completion.text.clone(),
+                    reply: cap(&completion.text),
                     elapsed_ms: completion.elapsed.as_secs_f64() * 1000.0,
                     usage: completion.usage,
                 };
@@ -95,10 +107,19 @@ impl Translator for LlmTranslator {
                     ))
                 })?;
             }
-            let parsed = self.system.parse_reply(&completion.text, templated, scene);
+            let too_large = completion.text.len() > MAX_REPLY_BYTES;
+            let parsed = if too_large {
+                Err(crate::expr::ExprError::whole(format!(
+                    "the reply is too large ({} KiB; at most {} KiB): answer with one short JSON object",
+                    completion.text.len() / 1024,
+                    MAX_REPLY_BYTES / 1024
+                )))
+            } else {
+                self.system.parse_reply(&completion.text, templated, scene)
+            };
             exchanges.push(Exchange {
                 messages: messages.clone(),
-                reply: completion.text.clone(),
+                reply: cap(&completion.text),
                 elapsed_ms: completion.elapsed.as_secs_f64() * 1000.0,
                 usage: completion.usage,
                 error: parsed.as_ref().err().map(ToString::to_string),
@@ -119,7 +140,13 @@ impl Translator for LlmTranslator {
                     });
                 }
                 Err(error) => {
-                    messages.push(Message::new("assistant", completion.text));
+                    // A reply too large is not sent back: the retry says so instead.
+                    let said = if too_large {
+                        format!("[a reply of {} KiB]", completion.text.len() / 1024)
+                    } else {
+                        completion.text
+                    };
+                    messages.push(Message::new("assistant", said));
                     messages.push(Message::new(
                         "user",
                         format!("Your answer could not be used: {error}. Answer again with one JSON object, following the rules."),
@@ -168,4 +195,17 @@ pub fn leaked_name(query: &str, scene: &Scene) -> Option<String> {
         }
     }
     None
+}
+
+/// A reply as reports and records keep it: whole up to [`MAX_REPLY_BYTES`], else its
+/// start and how long it was.
+fn cap(text: &str) -> String {
+    if text.len() <= MAX_REPLY_BYTES {
+        return text.to_string();
+    }
+    let mut end = MAX_REPLY_BYTES;
+    while !text.is_char_boundary(end) {
+        end -= 1;
+    }
+    format!("{}… [{} bytes in all]", &text[..end], text.len())
 }
