@@ -493,3 +493,61 @@ async fn after_an_apply_moves_the_bottle_off_the_table_moving_the_table_leaves_i
         "the bottle stayed where it was put"
     );
 }
+
+#[test]
+fn slow_clients_are_cut_off_and_do_not_starve_others() {
+    use std::io::{Read, Write};
+    let scene = shenlong::examples::build("workshop").unwrap();
+    let file = shenlong::format::SceneFile {
+        scene,
+        document: shenlong::format::Document::None,
+        path: None,
+    };
+    let app = App::new(file, settings(None, false, None));
+    let runtime = tokio::runtime::Runtime::new().unwrap();
+    let listener = runtime
+        .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
+        .unwrap();
+    let address = listener.local_addr().unwrap();
+    runtime.spawn(shenlong_cli::server::serve_with(
+        app,
+        listener,
+        std::time::Duration::from_millis(800),
+        512,
+    ));
+    // 300 clients that never finish their headers.
+    let mut slow: Vec<std::net::TcpStream> = (0..300)
+        .map(|_| {
+            let mut s = std::net::TcpStream::connect(address).unwrap();
+            s.write_all(b"GET /api/scene HTTP/1.1\r\nHost: 127.0.0.1\r\n")
+                .unwrap();
+            s
+        })
+        .collect();
+    // A normal request is still answered at once.
+    let started = std::time::Instant::now();
+    let scene: Value = ureq::get(&format!("http://{address}/api/scene"))
+        .call()
+        .unwrap()
+        .body_mut()
+        .read_json()
+        .unwrap();
+    assert!(scene["scene"]["objects"].is_array());
+    assert!(
+        started.elapsed() < std::time::Duration::from_millis(700),
+        "{:?}",
+        started.elapsed()
+    );
+    // The slow ones are closed once their headers are late.
+    std::thread::sleep(std::time::Duration::from_millis(1500));
+    let mut closed = 0;
+    for s in &mut slow {
+        s.set_read_timeout(Some(std::time::Duration::from_millis(200)))
+            .unwrap();
+        let mut buf = [0u8; 256];
+        if s.read(&mut buf).is_ok() {
+            closed += 1;
+        }
+    }
+    assert_eq!(closed, slow.len(), "every slow connection was closed");
+}

@@ -650,12 +650,54 @@ async fn export(
         .into_response())
 }
 
-/// Serves until Ctrl-C.
+/// How long a client may take to send a request's headers (and, between requests on a
+/// kept-alive connection, the next one's) before the connection is closed.
+pub const HEADER_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(10);
+/// The most connections served at once; more wait to be accepted.
+pub const MAX_CONNECTIONS: usize = 512;
+
+/// Serves until Ctrl-C, with the default limits.
 pub async fn serve(app: Arc<App>, listener: tokio::net::TcpListener) -> std::io::Result<()> {
+    serve_with(app, listener, HEADER_TIMEOUT, MAX_CONNECTIONS).await
+}
+
+/// Serves until Ctrl-C: each connection must send its headers within `header_timeout`, and
+/// at most `max_connections` are served at once, so slow or idle clients cannot starve
+/// the others.
+pub async fn serve_with(
+    app: Arc<App>,
+    listener: tokio::net::TcpListener,
+    header_timeout: std::time::Duration,
+    max_connections: usize,
+) -> std::io::Result<()> {
     *app.bound.lock().unwrap_or_else(|e| e.into_inner()) = Some(listener.local_addr()?.ip());
-    axum::serve(listener, router(app))
-        .with_graceful_shutdown(async {
-            let _ = tokio::signal::ctrl_c().await;
-        })
-        .await
+    let service = router(app);
+    let permits = Arc::new(tokio::sync::Semaphore::new(max_connections.max(1)));
+    let shutdown = tokio::signal::ctrl_c();
+    tokio::pin!(shutdown);
+    loop {
+        let permit = tokio::select! {
+            _ = &mut shutdown => return Ok(()),
+            permit = Arc::clone(&permits).acquire_owned() => permit.expect("the semaphore is never closed"),
+        };
+        let (stream, _) = tokio::select! {
+            _ = &mut shutdown => return Ok(()),
+            accepted = listener.accept() => match accepted {
+                Ok(a) => a,
+                // A failed accept (too many open files, a reset) ends that connection only.
+                Err(_) => continue,
+            },
+        };
+        let service = service.clone();
+        tokio::spawn(async move {
+            let io = hyper_util::rt::TokioIo::new(stream);
+            let hyper_service = hyper_util::service::TowerToHyperService::new(service);
+            let _ = hyper::server::conn::http1::Builder::new()
+                .timer(hyper_util::rt::TokioTimer::new())
+                .header_read_timeout(header_timeout)
+                .serve_connection(io, hyper_service)
+                .await;
+            drop(permit);
+        });
+    }
 }
