@@ -117,6 +117,7 @@ pub fn read_bytes(
             e.column()
         ))
     })?;
+    check_indices(&json)?;
     let gltf = ::gltf::Gltf::from_slice_without_validation(&bytes)
         .map_err(|e| FormatError::new(format!("invalid glTF: {e}")))?;
     let document = &gltf.document;
@@ -185,7 +186,16 @@ pub fn read_bytes(
                 }
             }
         }
-        if points.is_empty() || points.iter().any(|p| !p.is_finite()) {
+        let has_positions = mesh
+            .primitives()
+            .any(|p| p.get(&::gltf::Semantic::Positions).is_some());
+        if points.iter().any(|p| !p.is_finite()) || (points.is_empty() && has_positions) {
+            return Err(FormatError::new(format!(
+                "nodes[{index}]{}: its mesh's vertex positions cannot be read (a missing or short buffer, or numbers that are not finite)",
+                node.name().map(|n| format!(" ('{n}')")).unwrap_or_default()
+            )));
+        }
+        if points.is_empty() {
             continue;
         }
         let base = match node.name() {
@@ -363,6 +373,100 @@ fn load_buffers(
         buffers.push(data);
     }
     Ok(buffers)
+}
+
+/// Checks every index the reader follows (a node's mesh and children, a scene's nodes, a
+/// primitive's accessors and material, an accessor's buffer view, a view's buffer), so
+/// that a file pointing at what does not exist is refused with where, not a panic.
+fn check_indices(json: &Value) -> Result<(), FormatError> {
+    let count = |key: &str| json.get(key).and_then(Value::as_array).map_or(0, Vec::len);
+    let check = |at: String, value: Option<&Value>, key: &str| -> Result<(), FormatError> {
+        let Some(v) = value else { return Ok(()) };
+        let n = count(key);
+        match v.as_u64() {
+            Some(i) if (i as usize) < n => Ok(()),
+            _ => Err(FormatError::new(format!(
+                "{at} is {v}, but the file has {n} {key}"
+            ))),
+        }
+    };
+    let list = |key: &str| {
+        json.get(key)
+            .and_then(Value::as_array)
+            .cloned()
+            .unwrap_or_default()
+    };
+    for (i, node) in list("nodes").iter().enumerate() {
+        check(format!("nodes[{i}].mesh"), node.get("mesh"), "meshes")?;
+        for (k, c) in node
+            .get("children")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .enumerate()
+        {
+            check(format!("nodes[{i}].children[{k}]"), Some(c), "nodes")?;
+        }
+    }
+    for (i, scene) in list("scenes").iter().enumerate() {
+        for (k, n) in scene
+            .get("nodes")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .enumerate()
+        {
+            check(format!("scenes[{i}].nodes[{k}]"), Some(n), "nodes")?;
+        }
+    }
+    check("scene".into(), json.get("scene"), "scenes")?;
+    for (i, mesh) in list("meshes").iter().enumerate() {
+        for (k, p) in mesh
+            .get("primitives")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .enumerate()
+        {
+            for (name, a) in p
+                .get("attributes")
+                .and_then(Value::as_object)
+                .into_iter()
+                .flatten()
+            {
+                check(
+                    format!("meshes[{i}].primitives[{k}].attributes.{name}"),
+                    Some(a),
+                    "accessors",
+                )?;
+            }
+            check(
+                format!("meshes[{i}].primitives[{k}].indices"),
+                p.get("indices"),
+                "accessors",
+            )?;
+            check(
+                format!("meshes[{i}].primitives[{k}].material"),
+                p.get("material"),
+                "materials",
+            )?;
+        }
+    }
+    for (i, a) in list("accessors").iter().enumerate() {
+        check(
+            format!("accessors[{i}].bufferView"),
+            a.get("bufferView"),
+            "bufferViews",
+        )?;
+    }
+    for (i, v) in list("bufferViews").iter().enumerate() {
+        check(
+            format!("bufferViews[{i}].buffer"),
+            v.get("buffer"),
+            "buffers",
+        )?;
+    }
+    Ok(())
 }
 
 /// The largest external resource read, in bytes.
@@ -670,5 +774,43 @@ mod uri_tests {
         let path = inner.join("ok.gltf");
         std::fs::write(&path, gltf_with_buffer("ok.bin")).unwrap();
         assert_eq!(read(&path).unwrap().0.objects.len(), 1);
+    }
+}
+
+#[cfg(test)]
+mod index_tests {
+    use super::*;
+
+    #[test]
+    fn a_node_pointing_at_a_missing_mesh_is_refused_not_panicked_on() {
+        let text = r#"{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+            "nodes": [{"name": "ghost", "mesh": 3}], "meshes": []}"#;
+        let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message
+                .contains("nodes[0].mesh is 3, but the file has 0 meshes"),
+            "{}",
+            e.message
+        );
+        let text = r#"{"asset": {"version": "2.0"}, "scenes": [{"nodes": [5]}], "nodes": []}"#;
+        let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message.contains("scenes[0].nodes[0] is 5"),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn a_mesh_whose_positions_cannot_be_read_is_refused_not_dropped() {
+        // The accessor says 3 vertices; the buffer has 12 bytes, not 36.
+        let text = r#"{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
+            "nodes": [{"name": "tri", "mesh": 0}],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3"}],
+            "bufferViews": [{"buffer": 0, "byteLength": 12}],
+            "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}]}"#;
+        let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
+        assert!(e.message.contains("nodes[0] ('tri')"), "{}", e.message);
     }
 }
