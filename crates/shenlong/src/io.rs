@@ -12,6 +12,7 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
     };
+    remove_stale_temporaries(dir);
     let mut file = tempfile::Builder::new()
         .prefix(".shenlong-")
         .suffix(".tmp")
@@ -25,6 +26,34 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
     file.as_file().sync_all()?;
     file.persist(path).map_err(|e| e.error)?;
     Ok(())
+}
+
+/// Temporary files older than this are left by a process that was killed mid-write.
+pub const STALE_AFTER: std::time::Duration = std::time::Duration::from_secs(600);
+
+/// Removes `.shenlong-*.tmp` files older than [`STALE_AFTER`] from `dir`: what a write
+/// killed before its rename (kill -9, power loss) left behind. Younger ones may belong to a
+/// write in progress and are kept.
+fn remove_stale_temporaries(dir: &Path) {
+    let Ok(entries) = std::fs::read_dir(dir) else {
+        return;
+    };
+    for entry in entries.flatten() {
+        let name = entry.file_name();
+        let name = name.to_string_lossy();
+        if !(name.starts_with(".shenlong-") && name.ends_with(".tmp")) {
+            continue;
+        }
+        let old = entry
+            .metadata()
+            .and_then(|m| m.modified())
+            .ok()
+            .and_then(|t| t.elapsed().ok())
+            .is_some_and(|age| age > STALE_AFTER);
+        if old && entry.file_type().is_ok_and(|t| t.is_file()) {
+            let _ = std::fs::remove_file(entry.path());
+        }
+    }
 }
 
 #[cfg(unix)]
@@ -45,6 +74,28 @@ fn default_permissions() -> std::fs::Permissions {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn stale_temporaries_of_killed_writes_are_removed() {
+        let dir = tempfile::tempdir().unwrap();
+        let stale = dir.path().join(".shenlong-abc123.tmp");
+        let fresh = dir.path().join(".shenlong-def456.tmp");
+        std::fs::write(&stale, b"half").unwrap();
+        std::fs::write(&fresh, b"in progress").unwrap();
+        let hour_ago = std::time::SystemTime::now() - std::time::Duration::from_secs(3600);
+        std::fs::File::options()
+            .write(true)
+            .open(&stale)
+            .unwrap()
+            .set_modified(hour_ago)
+            .unwrap();
+        write_atomic(&dir.path().join("scene.json"), b"x").unwrap();
+        assert!(!stale.exists(), "the stale one is gone");
+        assert!(
+            fresh.exists(),
+            "a recent one may be another write in progress"
+        );
+    }
 
     #[test]
     fn writes_and_replaces() {
