@@ -18,6 +18,23 @@ const WIDTH: f64 = 1000.0;
 const MARGIN: f64 = 40.0;
 /// Height reserved for the title and legend, in pixels.
 const HEADER: f64 = 36.0;
+/// Longest label drawn, in characters; longer names are cut with "…".
+const MAX_LABEL_CHARS: usize = 32;
+/// Longest name kept in an object's hover title.
+const MAX_TITLE_CHARS: usize = 200;
+/// Objects narrower than this on the plan get no label: it could not be read.
+const MIN_LABELLED_PX: f64 = 4.0;
+
+/// `text` cut to `max` characters, with "…" when cut.
+fn short(text: &str, max: usize) -> String {
+    if text.chars().count() <= max {
+        text.to_string()
+    } else {
+        let mut s: String = text.chars().take(max.saturating_sub(1)).collect();
+        s.push('…');
+        s
+    }
+}
 
 /// The footprint of an object: the convex outline of its shape projected on the floor,
 /// as (x, z) points in counter-clockwise order.
@@ -192,7 +209,7 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
             svg,
             r##"<path d="{}" fill="{fill}" fill-opacity="0.85" stroke="{stroke}" stroke-width="1.2"><title>{}</title></path>"##,
             path(&footprints[i]),
-            escape(&object.name)
+            escape(&short(&object.name, MAX_TITLE_CHARS))
         );
         // A tick from the centre toward the front of box objects.
         if let Shape::Box { size } = &object.shape {
@@ -232,25 +249,54 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
     }
     // Labels last, on top of everything, with a white halo; each is nudged up or down
     // until it clears the labels already placed (supports first, then what rests on them).
+    // A label that finds no clear place, or whose object is too small to read on the
+    // plan, is left out; names are cut to a readable length. Placed labels are kept in a
+    // grid, so this is linear in the objects.
+    const CELL: f64 = 64.0;
     let mut placed: Vec<(DVec2, DVec2)> = Vec::new();
+    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> =
+        std::collections::HashMap::new();
+    let cell = |p: DVec2| ((p.x / CELL).floor() as i64, (p.y / CELL).floor() as i64);
     for &i in &order {
+        let footprint_px: Vec<DVec2> = footprints[i].iter().map(|p| to_px(*p)).collect();
+        let extent = footprint_px
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p.x), hi.max(p.x))
+            });
+        if extent.1 - extent.0 < MIN_LABELLED_PX {
+            continue;
+        }
         let centre = footprints[i].iter().fold(DVec2::ZERO, |s, p| s + *p)
             / footprints[i].len().max(1) as f64;
         let c = to_px(centre);
-        let name = &scene.objects[i].name;
+        let name = short(&scene.objects[i].name, MAX_LABEL_CHARS);
         let half = DVec2::new(3.3 * name.chars().count() as f64 + 2.0, 7.0);
-        let clear = |at: DVec2, placed: &[(DVec2, DVec2)]| {
-            placed.iter().all(|(p, h)| {
-                (at.x - p.x).abs() >= half.x + h.x || (at.y - p.y).abs() >= half.y + h.y
-            })
+        let clear = |at: DVec2| {
+            let (cx, cy) = cell(at);
+            let reach = ((half.x + 3.3 * MAX_LABEL_CHARS as f64 + 2.0) / CELL).ceil() as i64;
+            for gx in cx - reach..=cx + reach {
+                for gy in cy - 1..=cy + 1 {
+                    for &k in grid.get(&(gx, gy)).into_iter().flatten() {
+                        let (p, h) = placed[k];
+                        if (at.x - p.x).abs() < half.x + h.x && (at.y - p.y).abs() < half.y + h.y {
+                            return false;
+                        }
+                    }
+                }
+            }
+            true
         };
-        let at = [0.0, 13.0, -13.0, 26.0, -26.0, 39.0, -39.0]
+        let Some(at) = [0.0, 13.0, -13.0, 26.0, -26.0, 39.0, -39.0]
             .iter()
             .map(|dy| DVec2::new(c.x, c.y + dy))
-            .find(|at| clear(*at, &placed))
-            .unwrap_or(c);
+            .find(|at| clear(*at))
+        else {
+            continue;
+        };
+        grid.entry(cell(at)).or_default().push(placed.len());
         placed.push((at, half));
-        let label = escape(name);
+        let label = escape(&name);
         let _ = writeln!(
             svg,
             r##"<text x="{:.1}" y="{:.1}" font-size="11" text-anchor="middle" dominant-baseline="middle" fill="#111" stroke="#fff" stroke-width="3" paint-order="stroke">{label}</text>"##,
@@ -348,5 +394,20 @@ mod tests {
             coloured > 10_000,
             "the plan has coloured shapes: {coloured} pixels"
         );
+    }
+}
+
+#[cfg(test)]
+mod label_tests {
+    use super::*;
+
+    #[test]
+    fn huge_names_are_cut_and_the_plan_stays_small() {
+        let mut scene = Scene::new("t");
+        scene.push_box(&"n".repeat(1_000_000), [1.0, 1.0, 1.0], [0.0, 0.0, 0.0]);
+        scene.push_box("b", [1.0, 1.0, 1.0], [2.0, 0.0, 0.0]);
+        let svg = plan_svg(&scene, None);
+        assert!(svg.len() < 10_000, "{} bytes", svg.len());
+        assert!(svg.contains('…'));
     }
 }
