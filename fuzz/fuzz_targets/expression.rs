@@ -12,8 +12,22 @@ fuzz_target!(|data: &[u8]| {
         return;
     };
     let mut bindings = Bindings::new();
-    bindings.bind("X1", ObjectBox { min: DVec3::new(-0.5, 0.0, -0.5), max: DVec3::new(0.5, 1.0, 0.5) });
-    bindings.bind("X2", ObjectBox { min: DVec3::new(1.0, 0.0, 1.0), max: DVec3::new(2.0, 0.8, 3.0) });
+    bindings.bind(
+        "X1",
+        ObjectBox {
+            min: DVec3::new(-0.5, 0.0, -0.5),
+            max: DVec3::new(0.5, 1.0, 0.5),
+            front: DVec3::Z,
+        },
+    );
+    bindings.bind(
+        "X2",
+        ObjectBox {
+            min: DVec3::new(1.0, 0.0, 1.0),
+            max: DVec3::new(2.0, 0.8, 3.0),
+            front: DVec3::NEG_X,
+        },
+    );
     let _ = expr::evaluate_transformation(text, &bindings);
     if let Ok(tree) = expr::parse(text) {
         let printed = tree.to_string();

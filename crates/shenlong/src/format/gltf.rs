@@ -11,7 +11,7 @@
 //! byte for byte. An unchanged scene is written back as the original bytes.
 
 use super::FormatError;
-use crate::scene::{Labels, Object, Pivot, Scene, Shape};
+use crate::scene::{Labels, Object, Pivot, Scene, Shape, MAX_COORDINATE};
 use base64::Engine;
 use cga::Similarity;
 use glam::{DMat4, DQuat, DVec3};
@@ -104,6 +104,15 @@ pub fn read_bytes(
 ) -> Result<(Scene, GltfDocument), FormatError> {
     let is_glb = bytes.starts_with(b"glTF");
     let (json_bytes, bin) = if is_glb {
+        // The gltf crate subtracts the header size from the declared length unchecked.
+        if let Some(length) = bytes.get(8..12) {
+            let length = u32::from_le_bytes(length.try_into().expect("four bytes"));
+            if length < 12 {
+                return Err(FormatError::new(format!(
+                    "invalid GLB container: the header declares {length} bytes, less than the 12-byte header itself"
+                )));
+            }
+        }
         let glb = ::gltf::Glb::from_slice(&bytes)
             .map_err(|e| FormatError::new(format!("invalid GLB container: {e}")))?;
         (glb.json.into_owned(), glb.bin.map(|b| b.into_owned()))
@@ -123,7 +132,8 @@ pub fn read_bytes(
     let document = &gltf.document;
     let buffers = load_buffers(document, bin.as_deref(), base_dir)?;
 
-    let count = document.nodes().count();
+    let all_nodes: Vec<::gltf::Node<'_>> = document.nodes().collect();
+    let count = all_nodes.len();
     let json_nodes = json.get("nodes").and_then(Value::as_array);
     let mut nodes: Vec<NodeInfo> = (0..count)
         .map(|i| NodeInfo {
@@ -135,7 +145,7 @@ pub fn read_bytes(
             in_scene: false,
         })
         .collect();
-    for node in document.nodes() {
+    for node in &all_nodes {
         for child in node.children() {
             nodes[child.index()].parent = Some(node.index());
         }
@@ -160,7 +170,7 @@ pub fn read_bytes(
         nodes[index].world = world;
         nodes[index].in_scene = true;
         order.push(index);
-        let node = document.nodes().nth(index).expect("index in range");
+        let node = &all_nodes[index];
         for child in node.children().collect::<Vec<_>>().into_iter().rev() {
             stack.push((child.index(), world));
         }
@@ -170,7 +180,7 @@ pub fn read_bytes(
     let mut object_nodes = Vec::new();
     let mut names = HashSet::new();
     for &index in &order {
-        let node = document.nodes().nth(index).expect("index in range");
+        let node = &all_nodes[index];
         let Some(mesh) = node.mesh() else { continue };
         let world = nodes[index].world;
         let mut points = Vec::new();
@@ -189,10 +199,21 @@ pub fn read_bytes(
         let has_positions = mesh
             .primitives()
             .any(|p| p.get(&::gltf::Semantic::Positions).is_some());
+        let label = node.name().map(|n| format!(" ('{n}')")).unwrap_or_default();
         if points.iter().any(|p| !p.is_finite()) || (points.is_empty() && has_positions) {
             return Err(FormatError::new(format!(
-                "nodes[{index}]{}: its mesh's vertex positions cannot be read (a missing or short buffer, or numbers that are not finite)",
-                node.name().map(|n| format!(" ('{n}')")).unwrap_or_default()
+                "nodes[{index}]{label}: its mesh's vertex positions cannot be read (a missing or short buffer, or numbers that are not finite)"
+            )));
+        }
+        // A node transform (or vertex) that puts the mesh beyond the scene limits would
+        // leave every later edit inexact; refuse it here, with the node named.
+        if let Some(far) = points
+            .iter()
+            .map(|p| p.abs().max_element())
+            .find(|&d| d > MAX_COORDINATE)
+        {
+            return Err(FormatError::new(format!(
+                "nodes[{index}]{label}: its mesh lies {far:.3e} m from the origin, beyond the ±{MAX_COORDINATE:.0e} m Shenlong keeps exact (check the node's transform and its parents')"
             )));
         }
         if points.is_empty() {
@@ -216,7 +237,7 @@ pub fn read_bytes(
         )
         .expect("the identity pose is valid");
         let mut object = object;
-        object.labels = labels_of(&node, &mesh);
+        object.labels = labels_of(node, &mesh);
         scene.objects.push(object);
         object_nodes.push(index);
     }
@@ -802,6 +823,17 @@ mod index_tests {
     }
 
     #[test]
+    fn a_glb_header_shorter_than_itself_is_refused() {
+        // Found by the `gltf` fuzz target: a declared length of 0 overflowed in the gltf crate.
+        let mut bytes = b"glTF".to_vec();
+        bytes.extend_from_slice(&2u32.to_le_bytes());
+        bytes.extend_from_slice(&0u32.to_le_bytes());
+        bytes.extend_from_slice(b"\x00\x03E\x00JSON{}");
+        let e = read_bytes(bytes, Path::new("."), "t").unwrap_err();
+        assert!(e.message.contains("declares 0 bytes"), "{}", e.message);
+    }
+
+    #[test]
     fn a_mesh_whose_positions_cannot_be_read_is_refused_not_dropped() {
         // The accessor says 3 vertices; the buffer has 12 bytes, not 36.
         let text = r#"{"asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0]}],
@@ -812,5 +844,46 @@ mod index_tests {
             "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}]}"#;
         let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
         assert!(e.message.contains("nodes[0] ('tri')"), "{}", e.message);
+    }
+
+    /// A triangle mesh under `nodes`, as glTF text with an embedded buffer.
+    fn triangle_under(nodes: &str) -> String {
+        let mut bytes = Vec::new();
+        for v in [0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0] {
+            bytes.extend_from_slice(&v.to_le_bytes());
+        }
+        let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
+        format!(
+            r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
+            "nodes": {nodes},
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}],
+            "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 1, 0]}}],
+            "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+            "buffers": [{{"byteLength": 36, "uri": "data:application/octet-stream;base64,{data}"}}]}}"#
+        )
+    }
+
+    #[test]
+    fn a_node_transform_beyond_the_limits_is_refused_with_the_node_named() {
+        let read_text = |nodes: &str| {
+            read_bytes(triangle_under(nodes).into_bytes(), Path::new("."), "t").map(|r| r.0)
+        };
+        // Within the limits: read.
+        let scene =
+            read_text(r#"[{"name": "tri", "mesh": 0, "translation": [1000, 0, 0]}]"#).unwrap();
+        assert_eq!(scene.objects.len(), 1);
+        // Its own translation is too far.
+        let e =
+            read_text(r#"[{"name": "tri", "mesh": 0, "translation": [2e9, 0, 0]}]"#).unwrap_err();
+        assert!(e.message.contains("nodes[0] ('tri')"), "{}", e.message);
+        assert!(e.message.contains("beyond"), "{}", e.message);
+        // A parent's scale takes the child's vertices too far.
+        let e = read_text(
+            r#"[{"name": "root", "children": [1], "scale": [1e7, 1e7, 1e7]},
+                {"name": "tri", "mesh": 0, "translation": [0.5, 0, 0]}]"#,
+        )
+        .unwrap_err();
+        assert!(e.message.contains("nodes[1] ('tri')"), "{}", e.message);
     }
 }

@@ -57,19 +57,18 @@ impl Scene {
         for i in targets {
             let o = &self.objects[i];
             let pose = world * *o.pose();
-            let ok = Similarity::from_versor(&pose).ok().filter(|s| {
+            let within = Similarity::from_versor(&pose).is_ok_and(|s| {
                 s.translation.is_finite()
                     && s.translation.abs().max_element() <= MAX_COORDINATE
                     && s.scale >= MIN_SCALE
                     && s.scale <= MAX_SCALE
             });
-            let Some(s) = ok else {
+            if !within {
                 return Err(format!(
                     "the edit would take '{}' beyond the limits Shenlong keeps exact (|position| ≤ {MAX_COORDINATE:.0e} m, scale in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}])",
                     o.name
                 ));
-            };
-            let _ = s;
+            }
         }
         Ok(())
     }
