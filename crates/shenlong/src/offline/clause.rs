@@ -79,6 +79,16 @@ impl Clause {
         }
     }
 
+    /// Marks read every token, anywhere in the clause, that is one of `words` (the filler
+    /// of a construct already recognised: "so that it faces", "towards the").
+    pub fn mark_every(&mut self, words: &[&str]) {
+        for k in 0..self.len() {
+            if self.word(k).is_some_and(|w| words.contains(&w)) {
+                self.mark(k..k + 1);
+            }
+        }
+    }
+
     /// Marks a `by` before position `i` read (`by 20 cm`).
     pub fn mark_by(&mut self, i: usize) {
         if i > 0 && self.words_at(i - 1, &["by"]) {

@@ -518,24 +518,9 @@ impl<'a> Reader<'a> {
             if let Some(i) = c.find(words) {
                 if let Some((t, v)) = c.variable_after(i + words.len()) {
                     c.mark(i..t + 1);
-                    for k in 0..c.len() {
-                        if matches!(
-                            c.word(k),
-                            Some(
-                                "to" | "face"
-                                    | "faces"
-                                    | "facing"
-                                    | "point"
-                                    | "in"
-                                    | "so"
-                                    | "that"
-                                    | "it"
-                                    | "is"
-                            )
-                        ) {
-                            c.mark(k..k + 1);
-                        }
-                    }
+                    c.mark_every(&[
+                        "to", "face", "faces", "facing", "point", "in", "so", "that", "it", "is",
+                    ]);
                     return self.turn_each(c, i, text, |s| {
                         sub(heading(var(v, "front")), heading(var(s, "front")))
                     });
@@ -568,23 +553,9 @@ impl<'a> Reader<'a> {
                 if let Some((k, _)) = side {
                     c.mark(k..k + 1);
                 }
-                for k in 0..c.len() {
-                    if matches!(
-                        c.word(k),
-                        Some(
-                            "to" | "of"
-                                | "the"
-                                | "so"
-                                | "that"
-                                | "it"
-                                | "is"
-                                | "towards"
-                                | "toward"
-                        )
-                    ) {
-                        c.mark(k..k + 1);
-                    }
-                }
+                c.mark_every(&[
+                    "to", "of", "the", "so", "that", "it", "is", "towards", "toward",
+                ]);
                 return self.turn_each(c, i, text, |s| {
                     let target = match (wall, side) {
                         // A named wall: its direction.
