@@ -32,51 +32,16 @@ import os
 import re
 import sys
 
+from suite_schema import CATEGORIES, CHECKS, EFFECTS, AXES, SIDES, QUOTED, Report
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 DEFAULT_SUITES = [os.path.join(HERE, "natural.suite.json"),
                   os.path.join(HERE, "natural-procthor.suite.json")]
 
-CATEGORIES = ["simple", "compositional", "fuzzy", "compositional_fuzzy", "hard"]
 CONSTRUCTS = ["name", "syn", "cat", "typo", "pick", "group", "pron", "refuse"]
 
-# check -> (fields that name objects, other fields, required fields)
-CHECKS = {
-    "moved": (["object"], ["delta", "tol"], ["object"]),
-    "direction": (["object"], ["axis", "min"], ["object", "axis"]),
-    "rotated": (["object"], ["axis", "degrees", "either_sign", "tol"], ["object"]),
-    "scaled": (["object"], ["factor", "tol"], ["object", "factor"]),
-    "on_top": (["object", "support"], ["tol"], ["object", "support"]),
-    "next_to": (["object", "other"], ["max_gap"], ["object", "other"]),
-    "side": (["object", "other"], ["side", "max_gap"], ["object", "other", "side"]),
-    "above": (["object", "other"], ["tol"], ["object", "other"]),
-    "below": (["object", "other"], ["tol"], ["object", "other"]),
-    "between": (["object", "a", "b"], ["tol"], ["object", "a", "b"]),
-    "aligned": (["object", "other"], ["axis", "tol"], ["object", "other", "axis"]),
-    "at": (["object"], ["position", "tol"], ["object", "position"]),
-    "faces": (["object", "target"], ["tol"], ["object", "target"]),
-    "distance": (["object", "other"], ["min", "max"], ["object", "other"]),
-    "unchanged": ([], ["objects"], []),
-    "no_collision": ([], [], []),
-    "inside_bounds": ([], [], []),
-    "swapped": (["object", "other"], ["tol"], ["object", "other"]),
-    "refused": ([], ["mentions"], []),
-}
-# Checks that say something about what the edit changed (as opposed to what it kept).
-EFFECTS = {"moved", "direction", "rotated", "scaled", "on_top", "next_to", "side", "above",
-           "below", "between", "aligned", "at", "faces", "distance", "swapped"}
-AXES = {"+x", "-x", "+y", "-y", "+z", "-z", "x", "y", "z"}
-SIDES = {"left", "right", "front", "behind", "back"}
 VAGUE = re.compile(r"\b(a bit|a little|slightly|a few|somewhat|a touch|a tad|some)\b", re.I)
-QUOTED = re.compile(r"(^|[\s(])(['\"])[^'\"]+\2(?=$|[\s,.;:!?)])")
-
-
-class Report:
-    def __init__(self):
-        self.errors = []
-
-    def error(self, where, message):
-        self.errors.append(f"{where}: {message}")
 
 
 def houses_dir(argv):

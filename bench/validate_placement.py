@@ -62,59 +62,19 @@ import os
 import re
 import sys
 
+from suite_schema import SHORT, CHECKS, EFFECTS, NUMBERS, SIDES, QUOTED, Report, is_number
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 DEFAULT_SUITES = [os.path.join(HERE, "natural-placement.suite.json")]
 
 CONSTRUCTS = ["face", "surface", "floor", "level", "stack"]
 MINIMUM = {"face": 20, "surface": 20, "floor": 10, "level": 10, "stack": 5}
-SHORT = {"living_room": "lr", "bedroom": "br", "kitchen": "kt", "wine_cellar": "wc",
-         "operating_room": "or", "workshop": "ws", "office": "of", "classroom": "cl",
-         "dining_room": "dr", "bathroom": "ba"}
 
-# check -> (fields that name objects, other fields, required fields)
-CHECKS = {
-    "moved": (["object"], ["delta", "tol"], ["object"]),
-    "direction": (["object"], ["axis", "min"], ["object", "axis"]),
-    "rotated": (["object"], ["axis", "degrees", "either_sign", "tol"], ["object"]),
-    "scaled": (["object"], ["factor", "tol"], ["object", "factor"]),
-    "on_top": (["object", "support"], ["tol"], ["object", "support"]),
-    "next_to": (["object", "other"], ["max_gap"], ["object", "other"]),
-    "side": (["object", "other"], ["side", "max_gap"], ["object", "other", "side"]),
-    "above": (["object", "other"], ["tol"], ["object", "other"]),
-    "below": (["object", "other"], ["tol"], ["object", "other"]),
-    "between": (["object", "a", "b"], ["tol"], ["object", "a", "b"]),
-    "aligned": (["object", "other"], ["axis", "tol"], ["object", "other", "axis"]),
-    "at": (["object"], ["position", "tol"], ["object", "position"]),
-    "faces": (["object", "target"], ["tol"], ["object", "target"]),
-    "distance": (["object", "other"], ["min", "max"], ["object", "other"]),
-    "unchanged": ([], ["objects"], []),
-    "no_collision": ([], [], []),
-    "inside_bounds": ([], [], []),
-    "swapped": (["object", "other"], ["tol"], ["object", "other"]),
-    "refused": ([], ["mentions"], []),
-}
-EFFECTS = {"moved", "direction", "rotated", "scaled", "on_top", "next_to", "side", "above",
-           "below", "between", "aligned", "at", "faces", "distance", "swapped"}
-NUMBERS = {"tol", "min", "max", "max_gap", "degrees", "factor"}
-SIDES = {"left", "right", "front", "behind", "back"}
-QUOTED = re.compile(r"(^|[\s(])(['\"])[^'\"]+\2(?=$|[\s,.;:!?)])")
 SAME_WAY = re.compile(r"\bsame (way|direction)\b", re.I)
 OFF = re.compile(r"\boff\b", re.I)
 GAP = 0.05          # objects put on one surface together are laid out 5 cm apart
 RESTS_TOL = 0.03    # a bottom this close to a top rests on it (the on_top default)
-
-
-class Report:
-    def __init__(self):
-        self.errors = []
-
-    def error(self, where, message):
-        self.errors.append(f"{where}: {message}")
-
-
-def is_number(v):
-    return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
 # ---------------------------------------------------------------- geometry (SPEC section 2)
