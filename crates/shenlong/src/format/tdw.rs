@@ -163,6 +163,40 @@ mod tests {
     }
 
     #[test]
+    fn a_procthor_front_is_unitys_forward_after_export() {
+        // ProcTHOR objects face local −Z here (Unity's +Z forward, mirrored). Whatever the
+        // edit turned them by, the exported rotation turns Unity's forward onto the mirror
+        // of the object's world front: TDW sees it face where Shenlong says it faces.
+        for yaw in [0.0, 37.0, 90.0, 200.0, -135.0] {
+            let mut s = Scene::new("t");
+            let mut o = Object::new_box(
+                "chair",
+                DVec3::ONE,
+                DVec3::ZERO,
+                DQuat::from_rotation_y(f64::to_radians(yaw)),
+                1.0,
+            )
+            .unwrap();
+            o.front = DVec3::NEG_Z;
+            s.objects.push(o);
+            let command = &place_all(&s, &[1])[1];
+            let r = &command["rotation"];
+            let sent = DQuat::from_xyzw(
+                r["x"].as_f64().unwrap(),
+                r["y"].as_f64().unwrap(),
+                r["z"].as_f64().unwrap(),
+                r["w"].as_f64().unwrap(),
+            );
+            let unity_forward = sent * DVec3::Z;
+            let ours = to_unity_position(s.objects[0].world_front());
+            assert!(
+                (unity_forward - ours).length() < 1e-6, // the export rounds to 1e-9
+                "yaw {yaw}: {unity_forward} vs {ours}"
+            );
+        }
+    }
+
+    #[test]
     fn place_all_positions_every_object() {
         let commands = place_all(&scene(), &[1, 2]);
         assert_eq!(commands.len(), 5);
