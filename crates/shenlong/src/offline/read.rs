@@ -179,6 +179,17 @@ impl<'a> Reader<'a> {
 
     /// The subjects: the unread variables before `cut` (all with none), else the pronoun's
     /// objects (`it`, `them`, `both`).
+    /// The clause's subjects (see [`Self::subjects`]), remembered for "it" and "them" in
+    /// later clauses; a clause whose verb needs a subject and has none is not read.
+    fn required_subjects(&mut self, c: &mut Clause, text: &str) -> Result<Vec<usize>, String> {
+        let subjects = self.subjects(c, None);
+        if subjects.is_empty() {
+            return Err(not_read(text, text));
+        }
+        self.last_subjects = subjects.clone();
+        Ok(subjects)
+    }
+
     fn subjects(&mut self, c: &mut Clause, cut: Option<usize>) -> Vec<usize> {
         let vars: Vec<(usize, usize)> = c
             .variables()
@@ -246,11 +257,7 @@ impl<'a> Reader<'a> {
             // "take X1 off X2", "take X1 to X2": a take with a place is a move.
             Action::Take if find_relation(c).is_some() => self.move_(c, Action::Move, None, &text),
             Action::Take => {
-                let subjects = self.subjects(c, None);
-                if subjects.is_empty() {
-                    return Err(not_read(&text, &text));
-                }
-                self.last_subjects = subjects;
+                self.required_subjects(c, &text)?;
                 // The taking itself moves nothing: a later clause says where.
                 Ok(Vec::new())
             }
@@ -609,11 +616,7 @@ impl<'a> Reader<'a> {
                 return self.rotate(c, Some(f), text);
             }
         }
-        let subjects = self.subjects(c, None);
-        if subjects.is_empty() {
-            return Err(not_read(text, text));
-        }
-        self.last_subjects = subjects.clone();
+        let subjects = self.required_subjects(c, text)?;
         let plane = rotation_plane(c);
         let amount = amounts::angle(c);
         let has = |c: &Clause, w: &str| c.find(&[w]);
@@ -687,11 +690,7 @@ impl<'a> Reader<'a> {
     }
 
     fn scale(&mut self, c: &mut Clause, text: &str) -> Result<Vec<(usize, Step)>, String> {
-        let subjects = self.subjects(c, None);
-        if subjects.is_empty() {
-            return Err(not_read(text, text));
-        }
-        self.last_subjects = subjects.clone();
+        let subjects = self.required_subjects(c, text)?;
         let factor = amounts::scale(c).ok_or_else(|| not_read(text, text))?;
         Ok(subjects
             .iter()
@@ -700,11 +699,7 @@ impl<'a> Reader<'a> {
     }
 
     fn straighten(&mut self, c: &mut Clause, text: &str) -> Result<Vec<(usize, Step)>, String> {
-        let subjects = self.subjects(c, None);
-        if subjects.is_empty() {
-            return Err(not_read(text, text));
-        }
-        self.last_subjects = subjects.clone();
+        let subjects = self.required_subjects(c, text)?;
         for i in 0..c.len() {
             if matches!(
                 c.word(i),
@@ -817,11 +812,7 @@ impl<'a> Reader<'a> {
             }
             return Ok(out);
         }
-        let subjects = self.subjects(c, None);
-        if subjects.is_empty() {
-            return Err(not_read(text, text));
-        }
-        self.last_subjects = subjects.clone();
+        let subjects = self.required_subjects(c, text)?;
         // A place in the room.
         if let Some(place) = self.room_place(c, action, text)? {
             return Ok(subjects
