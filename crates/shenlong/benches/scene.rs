@@ -50,7 +50,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("apply one edit (with carrying)", |b| {
         b.iter_batched(
             || loaded.scene.clone(),
-            |mut scene| scene.apply(black_box(2_500), &m, true),
+            |mut scene| scene.apply(black_box(2_500), &m, true).unwrap(),
             criterion::BatchSize::LargeInput,
         )
     });
@@ -60,7 +60,7 @@ fn bench(c: &mut Criterion) {
     group.bench_function("read + apply + write", |b| {
         b.iter(|| {
             let mut l = json::read(black_box(&text), "warehouse").unwrap();
-            l.scene.apply(2_500, &m, true);
+            l.scene.apply(2_500, &m, true).unwrap();
             json::write(&l.scene, Some(&l.document))
         })
     });
@@ -76,7 +76,9 @@ fn collisions(c: &mut Criterion) {
         let before = scene.world_aabbs();
         // Push table 0 (with its item) 1.2 m along +x: into table 1 (2 m away).
         let mut edited = scene.clone();
-        edited.apply(0, &Multivector::translator(DVec3::new(1.2, 0.0, 0.0)), true);
+        edited
+            .apply(0, &Multivector::translator(DVec3::new(1.2, 0.0, 0.0)), true)
+            .unwrap();
         let options = shenlong::collide::ResolveOptions::default();
         let check =
             shenlong::collide::resolve(&mut edited.clone(), &before, &[0], &options).unwrap();

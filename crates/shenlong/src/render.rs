@@ -358,11 +358,13 @@ mod tests {
         let before = crate::examples::build("workshop").unwrap();
         let mut after = before.clone();
         let table = after.find("tool table").unwrap();
-        after.apply(
-            table,
-            &Multivector::translator(DVec3::new(1.0, 0.0, 0.5)),
-            true,
-        );
+        after
+            .apply(
+                table,
+                &Multivector::translator(DVec3::new(1.0, 0.0, 0.5)),
+                true,
+            )
+            .unwrap();
         let svg = plan_svg(&after, Some(&before));
         for o in &after.objects {
             assert!(

@@ -61,7 +61,9 @@ fn cornell_box_edit_changes_only_the_moved_node() {
     let small = file.scene.find("small.box").unwrap();
     let before = file.scene.world_aabbs();
     let t = DVec3::new(50.0, 0.0, -20.0);
-    file.scene.apply(small, &Multivector::translator(t), true);
+    file.scene
+        .apply(small, &Multivector::translator(t), true)
+        .unwrap();
 
     let out_dir = tempfile::tempdir().unwrap();
     let output = out_dir.path().join("edited.glb");
@@ -173,7 +175,9 @@ fn engine_unnamed_nested_matrix_nodes_and_instancing() {
         rotation: DQuat::from_rotation_y(0.5),
         scale: 1.0,
     };
-    file.scene.apply(index, &motion.to_versor().unwrap(), false);
+    file.scene
+        .apply(index, &motion.to_versor().unwrap(), false)
+        .unwrap();
     let expected = file.scene.objects[index].world_aabb();
     assert!(!close(expected.min, before.min, 1.0));
 
@@ -228,7 +232,8 @@ fn objects_resting_on_a_zero_thickness_board() {
     let sphere = resting[0];
     let before = scene.objects[sphere].world_aabb();
     file.scene
-        .apply(board, &Multivector::translator(DVec3::Y), true);
+        .apply(board, &Multivector::translator(DVec3::Y), true)
+        .unwrap();
     assert!(close(
         file.scene.objects[sphere].world_aabb().min,
         before.min + DVec3::Y,
@@ -257,7 +262,7 @@ fn gltf_with_external_buffers_and_textures_written_elsewhere() {
             &Multivector::e1(),
         )
         .unwrap();
-        file.scene.apply(0, &r, false);
+        file.scene.apply(0, &r, false).unwrap();
         let expected = file.scene.objects[0].world_aabb();
         let out = tempfile::tempdir().unwrap();
         let output = out.path().join(name);
@@ -303,7 +308,8 @@ fn mixed_lighting_chair_parts_and_extensions_survive() {
     let original: serde_json::Value =
         serde_json::from_slice(&std::fs::read(&input).unwrap()).unwrap();
     file.scene
-        .apply(0, &Multivector::translator(DVec3::X), false);
+        .apply(0, &Multivector::translator(DVec3::X), false)
+        .unwrap();
     let out = tempfile::tempdir().unwrap();
     let output = out.path().join("m.gltf");
     file.save(&output).unwrap();

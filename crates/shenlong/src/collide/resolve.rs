@@ -6,7 +6,6 @@ use super::detect::{
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
 use crate::scene::{AppliedMotion, Scene};
-use cga::Multivector;
 use glam::{DVec2, DVec3};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -271,7 +270,7 @@ pub fn resolve(
             // An earlier group's move already freed this one.
             Some(offset) if offset == DVec3::ZERO => {}
             Some(offset) => {
-                let w = Multivector::translator(offset);
+                let w = cga::Similarity::translation(offset);
                 let motion = scene.apply_world(group, &w);
                 resolution.motion.moves.extend(motion.moves);
                 for &i in group {

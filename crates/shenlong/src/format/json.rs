@@ -473,7 +473,8 @@ mod tests {
         let mut loaded = read(WORKSHOP, "x").unwrap();
         loaded
             .scene
-            .apply(0, &Multivector::translator(DVec3::new(0.1, 0.0, 0.2)), true);
+            .apply(0, &Multivector::translator(DVec3::new(0.1, 0.0, 0.2)), true)
+            .unwrap();
         let text = write(&loaded.scene, Some(&loaded.document));
         let v: Value = serde_json::from_str(&text).unwrap();
         let table = &v["objects"][0];

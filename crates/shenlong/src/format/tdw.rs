@@ -125,7 +125,7 @@ mod tests {
             )
             .unwrap()
             * Multivector::dilator(1.5).unwrap();
-        after.apply(0, &m, false);
+        after.apply(0, &m, false).unwrap();
         let commands = edit(&before, &after, &[7, 8]);
         assert_eq!(commands.len(), 3, "only object 7 changed: {commands:?}");
         assert_eq!(

@@ -378,24 +378,23 @@ pub fn place(
     let mut moved = Vec::new();
     let mut carried = Vec::new();
     // World motion each object has picked up so far in this edit by being carried.
-    let mut carried_motion: Vec<Option<cga::Multivector>> = vec![None; edited.objects.len()];
+    let mut carried_motion: Vec<Option<cga::Similarity>> = vec![None; edited.objects.len()];
     for &(object, ref versor) in moves {
         // Every motion is computed against the scene as it was, so an object carried by an
         // earlier motion first goes back to where it was, then takes its own.
         if let Some(w) = carried_motion[object].take() {
-            let back = w.inverse().expect("world motions are invertible");
-            motions.push(edited.apply_world(&[object], &back));
+            motions.push(edited.apply_world(&[object], &w.inverse()));
         }
-        edited
-            .check_motion(object, versor, options.carry)
-            .map_err(|message| EditError {
-                message,
+        let motion = edited
+            .apply(object, versor, options.carry)
+            .map_err(|e| EditError {
+                message: e.to_string(),
                 kind: EditErrorKind::NotUnderstood,
             })?;
-        let motion = edited.apply(object, versor, options.carry);
-        for &(i, w) in &motion.moves {
-            if i != object {
-                carried_motion[i] = Some(w * carried_motion[i].unwrap_or(cga::Multivector::ONE));
+        for m in &motion.moves {
+            if m.object != object {
+                let so_far = carried_motion[m.object].unwrap_or(cga::Similarity::IDENTITY);
+                carried_motion[m.object] = Some(m.world * so_far);
             }
         }
         for i in motion.objects().filter(|&i| i != object) {

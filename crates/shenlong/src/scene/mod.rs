@@ -1,10 +1,13 @@
-//! The scene model: named objects with a shape and a pose kept as a CGA versor.
+//! The scene model: named objects with a shape and a pose.
 //!
-//! An object's pose is the versor `V = T·R·D` that maps its local shape into the world
-//! (SPEC §2–§3). A transformation `M` from an instruction acts in the frame centred at the
-//! object's pivot, with the world's axes: `V' = T(p)·M·T(p)⁻¹·V`. Objects resting on the
-//! moved one are carried along with the same world motion. Every applied motion is
-//! recorded in world form, so undoing it is exact.
+//! An object's pose is the similarity `V = T·R·D` that maps its local shape into the world
+//! (SPEC §2–§3), kept as its parts — translation, unit quaternion, scale — so that it stays
+//! exact however many edits it takes. A transformation `M` from an instruction is a CGA
+//! versor; it is decomposed once (refused if it is not `T·R·D`), made to act in the frame
+//! centred at the object's pivot with the world's axes, `W = T(p)·M·T(p)⁻¹`, and composed
+//! with the pose on its parts: `V' = W·V`. Objects resting on the moved one are carried
+//! along with the same world motion. Every applied motion records the poses it replaced,
+//! so undoing it is exact to the bit.
 
 mod support;
 
@@ -22,56 +25,34 @@ pub const MIN_SCALE: f64 = 1e-6;
 /// The largest uniform scale accepted.
 pub const MAX_SCALE: f64 = 1e6;
 
-impl Scene {
-    /// Whether applying `m` about the pivot of object `index` (carrying what rests on it
-    /// with `carry`) keeps every pose it moves within [`MAX_COORDINATE`] and the scale
-    /// limits; `Err` says which object would leave them and how.
-    ///
-    /// # Errors
-    /// The first object the motion would take out of the limits.
-    pub fn check_motion(&self, index: usize, m: &Multivector, carry: bool) -> Result<(), String> {
-        let Ok(step) = Similarity::from_versor(m) else {
-            return Err(
-                "the transformation is not a translation, rotation and uniform scale".into(),
-            );
-        };
-        if !step.translation.is_finite()
-            || step.translation.abs().max_element() > 2.0 * MAX_COORDINATE
-        {
-            return Err(format!(
-                "the move of {:.3e} m is beyond the {MAX_COORDINATE:.0e} m Shenlong keeps exact",
-                step.translation.length()
-            ));
-        }
-        if !(step.scale.is_finite() && step.scale >= MIN_SCALE && step.scale <= MAX_SCALE) {
-            return Err(format!(
-                "the scale {:.3e} is outside [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]",
-                step.scale
-            ));
-        }
-        let world = self.world_motion(index, m);
-        let mut targets = vec![index];
-        if carry {
-            targets.extend(self.carried_by(index));
-        }
-        for i in targets {
-            let o = &self.objects[i];
-            let pose = world * *o.pose();
-            let within = Similarity::from_versor(&pose).is_ok_and(|s| {
-                s.translation.is_finite()
-                    && s.translation.abs().max_element() <= MAX_COORDINATE
-                    && s.scale >= MIN_SCALE
-                    && s.scale <= MAX_SCALE
-            });
-            if !within {
-                return Err(format!(
-                    "the edit would take '{}' beyond the limits Shenlong keeps exact (|position| ≤ {MAX_COORDINATE:.0e} m, scale in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}])",
-                    o.name
-                ));
-            }
-        }
-        Ok(())
-    }
+/// Why a transformation cannot be applied to an object: nothing moved.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum MotionError {
+    /// The versor is not a product of a translation, a rotation and a uniform scale.
+    #[error("the transformation is not a translation, rotation and uniform scale: {0}")]
+    NotSimilarity(#[source] CgaError),
+    /// The transformation's own translation is beyond the exact range.
+    #[error("the move of {distance:.3e} m is beyond the {max:.0e} m Shenlong keeps exact", max = MAX_COORDINATE)]
+    TooFar {
+        /// How far the transformation moves the origin, in metres.
+        distance: f64,
+    },
+    /// The transformation's own scale is outside the accepted range.
+    #[error("the scale {0:.3e} is outside [{min:.0e}, {max:.0e}]", min = MIN_SCALE, max = MAX_SCALE)]
+    Scale(f64),
+    /// The motion would take an object's pose beyond the limits.
+    #[error("the edit would take '{0}' beyond the limits Shenlong keeps exact (|position| ≤ {max:.0e} m, scale in [{min:.0e}, {smax:.0e}])", max = MAX_COORDINATE, min = MIN_SCALE, smax = MAX_SCALE)]
+    LeavesLimits(String),
+}
+
+/// Whether a pose is within the limits Shenlong keeps exact: a finite position within
+/// [`MAX_COORDINATE`] of the origin on every axis and a scale in
+/// [[`MIN_SCALE`], [`MAX_SCALE`]].
+#[must_use]
+pub fn pose_within_limits(pose: &Similarity) -> bool {
+    pose.is_valid()
+        && pose.translation.abs().max_element() <= MAX_COORDINATE
+        && (MIN_SCALE..=MAX_SCALE).contains(&pose.scale)
 }
 
 /// A scene: a name, optional room bounds and the objects.
@@ -131,7 +112,7 @@ pub struct Object {
     /// The local direction the object faces (a unit vector; +Z, glTF's convention, unless
     /// its source says otherwise).
     pub front: DVec3,
-    pose: Multivector,
+    pose: Similarity,
 }
 
 /// What an object is called besides its name, from its source file: the words grounding
@@ -149,16 +130,28 @@ pub struct Labels {
 }
 
 impl Object {
-    /// An object with the given shape and pose.
+    /// An object with the given shape and pose (its rotation is normalised).
     ///
     /// # Errors
-    /// If the pose's scale is not a finite number > 0.
+    /// If the pose's scale is not a finite number > 0, or a component is not finite.
     pub fn new(
         name: impl Into<String>,
         shape: Shape,
         pose: Similarity,
         pivot: Pivot,
     ) -> Result<Self, CgaError> {
+        if !(pose.scale.is_finite() && pose.scale > 0.0) {
+            return Err(CgaError::BadScale(pose.scale));
+        }
+        let rotation = pose.rotation.normalize();
+        if !(pose.translation.is_finite() && rotation.is_finite()) {
+            return Err(CgaError::NotFinite(format!("{pose:?}")));
+        }
+        let rotation = if rotation.w < 0.0 {
+            -rotation
+        } else {
+            rotation
+        };
         Ok(Self {
             name: name.into(),
             shape,
@@ -167,7 +160,7 @@ impl Object {
             support_from_file: false,
             labels: Labels::default(),
             front: DVec3::Z,
-            pose: pose.to_versor()?,
+            pose: Similarity { rotation, ..pose },
         })
     }
 
@@ -187,15 +180,11 @@ impl Object {
         Self::new(name, Shape::Box { size }, pose, Pivot::Origin)
     }
 
-    /// The pose versor `V = T·R·D`.
-    pub fn pose(&self) -> &Multivector {
-        &self.pose
-    }
-
-    /// The pose as translation (the world position of the local origin), rotation and
+    /// The pose: translation (the world position of the local origin), rotation and
     /// scale.
+    #[must_use]
     pub fn similarity(&self) -> Similarity {
-        Similarity::from_versor(&self.pose).expect("poses are always similarities")
+        self.pose
     }
 
     /// The local points whose image bounds the object: the 8 box corners or the mesh
@@ -213,20 +202,24 @@ impl Object {
     }
 
     /// The world axis-aligned bounding box: the box of the transformed local points.
+    #[must_use]
     pub fn world_aabb(&self) -> Aabb {
-        // `PointMap` turns the pose into an affine map once (30–60 ns, against 650 ns for a
-        // full decomposition) and is exact at any distance from the origin; a conformal
-        // sandwich `M up(x) M̃` is not, since up(x) carries ½|x|².
-        let map = cga::PointMap::new(&self.pose).expect("poses are always similarities");
-        let transform = |p: DVec3| {
-            map.transform_point(p)
-                .expect("similarities move every point")
-        };
-        match &self.shape {
-            Shape::Box { .. } => Aabb::from_points(self.local_points().into_iter().map(transform)),
+        // The pose as a matrix once: 9 multiply-adds per point, exact at any distance from
+        // the origin (a conformal sandwich `M up(x) M̃` is not, since up(x) carries ½|x|²).
+        let linear = glam::DMat3::from_quat(self.pose.rotation) * self.pose.scale;
+        let t = self.pose.translation;
+        let transform = |p: DVec3| linear * p + t;
+        let bounds = match &self.shape {
+            Shape::Box { size } => {
+                let half = DVec3::new(size.x * 0.5, 0.0, size.z * 0.5);
+                let corners = Aabb::new(-half, DVec3::new(half.x, size.y, half.z)).corners();
+                Aabb::from_points(corners.into_iter().map(transform))
+            }
             Shape::Points { points } => Aabb::from_points(points.iter().map(|&p| transform(p))),
-        }
-        .expect("shapes have at least one point")
+        };
+        // `Points` is never empty (the readers refuse empty meshes); the pose's origin
+        // stands in for a shape built empty by hand.
+        bounds.unwrap_or_else(|| Aabb::new(t, t))
     }
 
     /// The world direction the object faces: its rotation applied to its local front.
@@ -242,25 +235,36 @@ impl Object {
         }
     }
 
-    /// Replaces the pose by `world · V`, renormalised so rounding cannot build up.
-    fn transform_world(&mut self, world: &Multivector) {
-        let pose = *world * self.pose;
-        let similarity = Similarity::from_versor(&pose).expect("similarities compose");
-        self.pose = similarity.to_versor().expect("scale stays > 0");
+    /// Replaces the pose by `world · V` and returns the pose it replaced.
+    fn transform_world(&mut self, world: &Similarity) -> Similarity {
+        let before = self.pose;
+        self.pose = world.compose(&before);
+        before
     }
+}
+
+/// One object's share of an applied motion.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Move {
+    /// The object's index.
+    pub object: usize,
+    /// The world-frame motion `W` applied to it (`V' = W·V`).
+    pub world: Similarity,
+    /// Its pose before, which undo restores exactly.
+    pub before: Similarity,
 }
 
 /// The world motions an edit applied, per object, so that it can be undone exactly.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct AppliedMotion {
-    /// Object index and the world-frame versor `W` that was applied to it (`V' = W V`).
-    pub moves: Vec<(usize, Multivector)>,
+    /// What was applied to each object, in order.
+    pub moves: Vec<Move>,
 }
 
 impl AppliedMotion {
     /// The indices of the objects moved, in order.
     pub fn objects(&self) -> impl Iterator<Item = usize> + '_ {
-        self.moves.iter().map(|(i, _)| *i)
+        self.moves.iter().map(|m| m.object)
     }
 }
 
@@ -335,40 +339,71 @@ impl Scene {
         out
     }
 
-    /// The world versor `W = T(p)·M·T(p)⁻¹` that applies `m` about the pivot `p` of
-    /// object `index`.
-    pub fn world_motion(&self, index: usize, m: &Multivector) -> Multivector {
-        let p = self.objects[index].pivot_point();
-        Multivector::translator(p) * *m * Multivector::translator(-p)
+    /// The world motion `W = T(p)·M·T(p)⁻¹` that applies the transformation `m` about the
+    /// pivot `p` of object `index`.
+    ///
+    /// # Errors
+    /// If `m` is not a translation, rotation and uniform scale, moves the origin beyond
+    /// twice [`MAX_COORDINATE`] or scales outside [[`MIN_SCALE`], [`MAX_SCALE`]].
+    pub fn world_motion(&self, index: usize, m: &Multivector) -> Result<Similarity, MotionError> {
+        let step = Similarity::from_versor(m).map_err(MotionError::NotSimilarity)?;
+        if !step.translation.is_finite()
+            || step.translation.abs().max_element() > 2.0 * MAX_COORDINATE
+        {
+            return Err(MotionError::TooFar {
+                distance: step.translation.length(),
+            });
+        }
+        if !(step.scale.is_finite() && (MIN_SCALE..=MAX_SCALE).contains(&step.scale)) {
+            return Err(MotionError::Scale(step.scale));
+        }
+        Ok(step.about(self.objects[index].pivot_point()))
     }
 
     /// Applies the transformation `m` to object `index` about its pivot (SPEC §3) and,
     /// with `carry`, the same world motion to every object resting on it.
-    pub fn apply(&mut self, index: usize, m: &Multivector, carry: bool) -> AppliedMotion {
-        let world = self.world_motion(index, m);
+    ///
+    /// # Errors
+    /// See [`Scene::world_motion`]; also if the motion would leave any pose it moves
+    /// beyond the limits ([`pose_within_limits`]). Nothing moves then.
+    pub fn apply(
+        &mut self,
+        index: usize,
+        m: &Multivector,
+        carry: bool,
+    ) -> Result<AppliedMotion, MotionError> {
+        let world = self.world_motion(index, m)?;
         let mut targets = vec![index];
         if carry {
             targets.extend(self.carried_by(index));
         }
-        self.apply_world(&targets, &world)
-    }
-
-    /// Applies the world versor `w` to the given objects: `V' = W V`.
-    pub fn apply_world(&mut self, indices: &[usize], w: &Multivector) -> AppliedMotion {
-        let mut motion = AppliedMotion::default();
-        for &i in indices {
-            self.objects[i].transform_world(w);
-            motion.moves.push((i, *w));
+        for &i in &targets {
+            let o = &self.objects[i];
+            if !pose_within_limits(&world.compose(&o.pose)) {
+                return Err(MotionError::LeavesLimits(o.name.clone()));
+            }
         }
-        motion
+        Ok(self.apply_world(&targets, &world))
     }
 
-    /// Undoes an applied motion exactly: each recorded `W` is reverted with `W⁻¹`, last
+    /// Applies the world motion `w` to the given objects: `V' = W·V`.
+    pub fn apply_world(&mut self, indices: &[usize], w: &Similarity) -> AppliedMotion {
+        let moves = indices
+            .iter()
+            .map(|&object| Move {
+                object,
+                world: *w,
+                before: self.objects[object].transform_world(w),
+            })
+            .collect();
+        AppliedMotion { moves }
+    }
+
+    /// Undoes an applied motion exactly: each object gets back the pose it had, last move
     /// first.
     pub fn undo(&mut self, motion: &AppliedMotion) {
-        for (i, w) in motion.moves.iter().rev() {
-            let inverse = w.inverse().expect("world motions are invertible");
-            self.objects[*i].transform_world(&inverse);
+        for m in motion.moves.iter().rev() {
+            self.objects[m.object].pose = m.before;
         }
     }
 

@@ -52,7 +52,7 @@ fn supports_are_detected_from_geometry() {
 fn translation_moves_the_pivot_and_carries_what_rests_on_it() {
     let mut s = workshop();
     let m = Multivector::translator(DVec3::new(1.0, 0.0, 0.0));
-    let motion = s.apply(0, &m, true);
+    let motion = s.apply(0, &m, true).unwrap();
     assert_eq!(motion.objects().collect::<Vec<_>>(), vec![0, 1]);
     assert!(close(s.objects[0].similarity().translation, DVec3::X));
     assert!(close(
@@ -68,7 +68,8 @@ fn translation_moves_the_pivot_and_carries_what_rests_on_it() {
 #[test]
 fn without_carry_only_the_object_moves() {
     let mut s = workshop();
-    s.apply(0, &Multivector::translator(DVec3::X), false);
+    s.apply(0, &Multivector::translator(DVec3::X), false)
+        .unwrap();
     assert!(close(
         s.objects[1].similarity().translation,
         DVec3::new(0.3, 0.9, 0.1)
@@ -79,7 +80,7 @@ fn without_carry_only_the_object_moves() {
 fn rotation_turns_about_the_pivot_with_world_axes() {
     let mut s = workshop();
     let r = Multivector::rotor(FRAC_PI_2, &Multivector::e3(), &Multivector::e1()).unwrap();
-    s.apply(2, &r, true);
+    s.apply(2, &r, true).unwrap();
     let chair = s.objects[2].similarity();
     // The pivot stays; the rotation is q · rotation.
     assert!(close(chair.translation, DVec3::new(2.0, 0.0, 0.0)));
@@ -87,7 +88,7 @@ fn rotation_turns_about_the_pivot_with_world_axes() {
         .rotation
         .abs_diff_eq(DQuat::from_rotation_y(FRAC_PI_2), 1e-12));
     // The table turns and carries the bottle around the table's pivot: (0.3, _, 0.1) → (0.1, _, -0.3).
-    s.apply(0, &r, true);
+    s.apply(0, &r, true).unwrap();
     assert!(close(
         s.objects[1].similarity().translation,
         DVec3::new(0.1, 0.9, -0.3)
@@ -97,7 +98,8 @@ fn rotation_turns_about_the_pivot_with_world_axes() {
 #[test]
 fn scale_about_the_pivot_keeps_the_bottom_on_the_floor() {
     let mut s = workshop();
-    s.apply(2, &Multivector::dilator(2.0).unwrap(), true);
+    s.apply(2, &Multivector::dilator(2.0).unwrap(), true)
+        .unwrap();
     let b = s.objects[2].world_aabb();
     assert!((b.min.y).abs() < 1e-12);
     assert!((b.max.y - 1.8).abs() < 1e-12);
@@ -116,7 +118,7 @@ fn spec_section_3_composition() {
         rotation: DQuat::from_rotation_y(0.7),
         scale: 0.5,
     };
-    s.apply(0, &step.to_versor().unwrap(), false);
+    s.apply(0, &step.to_versor().unwrap(), false).unwrap();
     let after = s.objects[0].similarity();
     assert!(close(after.translation, DVec3::new(0.0, 2.5, 5.0)));
     assert!(
@@ -137,7 +139,7 @@ fn undo_is_exact() {
     }
     .to_versor()
     .unwrap();
-    let motion = s.apply(0, &m, true);
+    let motion = s.apply(0, &m, true).unwrap();
     s.undo(&motion);
     for (o, b) in s.objects.iter().zip(before) {
         let a = o.similarity();
@@ -161,7 +163,8 @@ fn bottom_centre_pivot_for_points() {
         .unwrap(),
     );
     assert!(close(s.objects[0].pivot_point(), DVec3::new(5.0, 1.0, 1.0)));
-    s.apply(0, &Multivector::dilator(2.0).unwrap(), false);
+    s.apply(0, &Multivector::dilator(2.0).unwrap(), false)
+        .unwrap();
     let b = s.objects[0].world_aabb();
     assert!(close(b.min, DVec3::new(3.0, 1.0, -1.0)));
     assert!(close(b.max, DVec3::new(7.0, 5.0, 3.0)));
@@ -202,12 +205,88 @@ fn huge_poses_are_refused_not_panicked_on() {
     assert!(big("\"size\"", "[1e308, 1, 1]").contains("at most 1e6"));
     // Huge quaternion components are only a direction.
     let text = r#"{"objects": [{"name": "box", "size": [1, 1, 1], "position": [0, 0, 0], "rotation": [0, 1e300, 0, 1e300]}]}"#;
-    let scene = crate::format::json::read(text, "t").unwrap().scene;
+    let mut scene = crate::format::json::read(text, "t").unwrap().scene;
     assert!(scene.objects[0].similarity().rotation.is_normalized());
     // An edit that would go beyond the limits is refused before anything moves.
+    let before = scene.objects[0].similarity();
     let m = Multivector::translator(DVec3::new(1e8, 0.0, 0.0));
-    let e = scene.check_motion(0, &m, true).unwrap_err();
-    assert!(e.contains("beyond"), "{e}");
+    let e = scene.apply(0, &m, true).unwrap_err();
+    assert!(matches!(e, MotionError::TooFar { .. }), "{e}");
+    assert!(e.to_string().contains("beyond"), "{e}");
     let d = Multivector::dilator(1e9).unwrap();
-    assert!(scene.check_motion(0, &d, true).is_err());
+    assert!(matches!(
+        scene.apply(0, &d, true),
+        Err(MotionError::Scale(_))
+    ));
+    // Within the transformation's own limits, but the pose would leave them.
+    let near = Multivector::translator(DVec3::new(1.5e6, 0.0, 0.0));
+    assert!(matches!(
+        scene.apply(0, &near, true),
+        Err(MotionError::LeavesLimits(_))
+    ));
+    // A reflection is not a motion.
+    assert!(matches!(
+        scene.apply(0, &Multivector::e1(), true),
+        Err(MotionError::NotSimilarity(_))
+    ));
+    assert_eq!(scene.objects[0].similarity(), before);
+}
+
+#[test]
+fn poses_stay_exact_through_far_moves_and_back() {
+    // Kept as versors, T(1e8) then T(−1e8) moved a box 4 cm, turned it and scaled it by
+    // 1.000000001; kept as parts, a hundred trips to the edge of the range and back leave
+    // rotation and scale bit for bit and the position within a nanometre.
+    let mut s = Scene::new("far");
+    let rotation = DQuat::from_axis_angle(DVec3::new(0.2, 1.0, -0.4).normalize(), 0.9);
+    s.objects.push(
+        Object::new_box(
+            "box",
+            DVec3::ONE,
+            DVec3::new(0.3, 0.0, -0.7),
+            rotation,
+            1.25,
+        )
+        .unwrap(),
+    );
+    let start = s.objects[0].similarity();
+    let there = Multivector::translator(DVec3::new(9e5, 0.0, -9e5));
+    let back = Multivector::translator(DVec3::new(-9e5, 0.0, 9e5));
+    for _ in 0..100 {
+        s.apply(0, &there, false).unwrap();
+        s.apply(0, &back, false).unwrap();
+    }
+    let end = s.objects[0].similarity();
+    assert_eq!(end.rotation, start.rotation);
+    assert_eq!(end.scale, start.scale);
+    assert!(
+        (end.translation - start.translation).length() < 1e-9,
+        "{end:?}"
+    );
+    // Turning about the pivot a full circle in 360 steps comes back to the same pose.
+    let step =
+        Multivector::rotor(1f64.to_radians(), &Multivector::e3(), &Multivector::e1()).unwrap();
+    for _ in 0..360 {
+        s.apply(0, &step, false).unwrap();
+    }
+    let turned = s.objects[0].similarity();
+    assert!(turned.rotation.dot(start.rotation).abs() > 1.0 - 1e-12);
+    assert!((turned.translation - start.translation).length() < 1e-9);
+    assert_eq!(turned.scale, start.scale);
+}
+
+#[test]
+fn undo_restores_poses_bit_for_bit() {
+    let mut s = workshop();
+    let before: Vec<_> = s.objects.iter().map(Object::similarity).collect();
+    let m = Multivector::rotor(0.37, &Multivector::e3(), &Multivector::e1()).unwrap()
+        * Multivector::dilator(1.7).unwrap();
+    let a = s.apply(0, &m, true).unwrap();
+    let b = s
+        .apply(0, &Multivector::translator(DVec3::new(0.1, 0.0, 0.3)), true)
+        .unwrap();
+    s.undo(&b);
+    s.undo(&a);
+    let after: Vec<_> = s.objects.iter().map(Object::similarity).collect();
+    assert_eq!(after, before);
 }

@@ -25,7 +25,7 @@ fn room() -> Scene {
 fn moved(s: &Scene, name: &str, m: Multivector) -> Scene {
     let mut after = s.clone();
     let i = after.find(name).unwrap();
-    after.apply(i, &m, true);
+    after.apply(i, &m, true).unwrap();
     after
 }
 

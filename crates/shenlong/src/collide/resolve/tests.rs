@@ -1,5 +1,6 @@
 use super::*;
 use crate::collide::{find_collisions, Obstacle, EPSILON};
+use cga::Multivector;
 use proptest::prelude::*;
 
 /// Moves object `i` by `t` (carrying), then resolves.
@@ -10,7 +11,7 @@ fn edit(
     options: &ResolveOptions,
 ) -> Result<Resolution, ResolveError> {
     let before = scene.world_aabbs();
-    scene.apply(i, &Multivector::translator(t), true);
+    scene.apply(i, &Multivector::translator(t), true).unwrap();
     resolve(scene, &before, &[i], options)
 }
 
@@ -144,12 +145,14 @@ fn several_moved_objects_do_not_collide_with_each_other() {
     let b = s.push_box("b", [0.5, 0.5, 0.5], [2.0, 0.0, 0.0]);
     let before = s.world_aabbs();
     // Both sent to the same spot.
-    s.apply(a, &Multivector::translator(DVec3::new(2.0, 0.0, 0.0)), true);
+    s.apply(a, &Multivector::translator(DVec3::new(2.0, 0.0, 0.0)), true)
+        .unwrap();
     s.apply(
         b,
         &Multivector::translator(DVec3::new(-2.0, 0.0, 0.0)),
         true,
-    );
+    )
+    .unwrap();
     let r = resolve(&mut s, &before, &[a, b], &ResolveOptions::default()).unwrap();
     assert_eq!(
         r.adjustments.len(),
@@ -318,7 +321,7 @@ proptest! {
         let before = s.world_aabbs();
         let start = s.objects[0].world_aabb().bottom_center();
         let requested = DVec3::new(target.0, 0.0, target.1) - start;
-        s.apply(0, &Multivector::translator(requested), true);
+        s.apply(0, &Multivector::translator(requested), true).unwrap();
         let after = s.world_aabbs();
         match resolve(&mut s, &before, &[0], &options) {
             Ok(r) => {

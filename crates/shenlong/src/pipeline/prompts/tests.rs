@@ -53,7 +53,8 @@ fn all_three_systems_put_the_bottle_on_the_table() {
             .unwrap_or_else(|e| panic!("{}: {e}", system.name()));
         assert_eq!(answers.len(), 1);
         let mut s = scene.clone();
-        s.apply(answers[0].object, &answers[0].transformation.versor, true);
+        s.apply(answers[0].object, &answers[0].transformation.versor, true)
+            .unwrap();
         let bottle = s.objects[answers[0].object].world_aabb();
         assert!(
             (bottle.min.y - 0.9).abs() < 1e-9,
