@@ -4,7 +4,7 @@
 use super::lexicon::Lexicon;
 use super::words::{compact, normalize, split_number};
 use crate::scene::Scene;
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap, FxHashSet};
 
 /// How a phrase names an object, best first. A phrase means the objects it names at the
 /// best tier present: "the cup" means the 'coffee cup' (a literal word of its name) rather
@@ -23,15 +23,51 @@ pub(crate) enum Tier {
     Hypernym,
 }
 
-/// One way a phrase names an object.
+/// What a posting names: one object (by its own full name) or a group of objects that
+/// share every other phrase.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Target {
+    Object(u32),
+    Group(u32),
+}
+
+/// Which word of the object a phrase came through, for reports (`sofa` for `couch`).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Via {
+    /// The object's own (normalised) name.
+    Name,
+    /// An interned word ([`NameIndex::vias`]).
+    Word(u32),
+}
+
+/// One way a phrase names a target.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Posting {
+    target: Target,
+    tier: Tier,
+    via: Via,
+}
+
+/// The objects a phrase names at its best tier.
 #[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) struct Entry {
-    /// The object.
-    pub object: usize,
-    /// How well.
+pub(crate) struct Hit<'a> {
+    /// How well the phrase names them.
     pub tier: Tier,
-    /// For reports: the word of the object this came through (`sofa` for `couch`).
-    pub via: String,
+    /// The objects, in scene order.
+    pub objects: Vec<usize>,
+    /// For reports: the word of the first object the phrase came through.
+    pub via: &'a str,
+}
+
+/// Objects named alike: the same name without its number, aliases, category and
+/// attributes, so the same phrases (synonyms, hypernyms, kinds) name all of them. A
+/// warehouse of 100,000 'box N' is one group; its phrases are indexed once.
+#[derive(Clone, Debug, Default)]
+struct Group {
+    objects: Vec<u32>,
+    /// The words of the group's names, category, aliases and attributes, for picking by
+    /// a word (`the red chair`, `the teacher's desk`).
+    descriptors: FxHashSet<Box<str>>,
 }
 
 /// Words for containers, which people name by their contents.
@@ -57,124 +93,213 @@ const CONTAINERS: &[&str] = &[
 /// The index.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct NameIndex {
-    /// Normalised phrase → the objects it names.
-    terms: HashMap<String, Vec<Entry>>,
+    /// Normalised phrase → what it names.
+    terms: FxHashMap<Box<str>, Vec<Posting>>,
     /// A name or base name without spaces (`dogbed`) → objects.
-    compact: HashMap<String, Vec<usize>>,
+    compact: FxHashMap<Box<str>, Vec<u32>>,
     /// Per object: its normalised name.
-    pub names: Vec<String>,
-    /// Per object: the words of its name, category, aliases and attributes, for picking by
-    /// a word (`the red chair`, `the teacher's desk`).
-    pub descriptors: Vec<HashSet<String>>,
+    names: Vec<Box<str>>,
+    /// Per object: its group.
+    group_of: Vec<u32>,
+    groups: Vec<Group>,
+    /// The words postings came through.
+    vias: Vec<Box<str>>,
     /// Every word that can describe some object.
-    pub descriptor_words: HashSet<String>,
+    pub descriptor_words: FxHashSet<Box<str>>,
     /// The words of the objects' attributes (colours, materials): a phrase that uses one
     /// must be picking by it.
-    pub attribute_words: HashSet<String>,
+    pub attribute_words: FxHashSet<Box<str>>,
     /// Single words of all terms, by length in characters, for typo correction.
-    vocabulary: Vec<Vec<String>>,
+    vocabulary: Vec<Vec<Box<str>>>,
     /// The longest term, in words.
     pub max_words: usize,
+}
+
+/// Builds the index, interning `via` words as it goes.
+#[derive(Default)]
+struct Builder {
+    index: NameIndex,
+    via_ids: FxHashMap<Box<str>, u32>,
+    group_ids: FxHashMap<String, u32>,
+}
+
+impl Builder {
+    fn via(&mut self, word: &str) -> Via {
+        if let Some(&id) = self.via_ids.get(word) {
+            return Via::Word(id);
+        }
+        let id = self.index.vias.len() as u32;
+        self.index.vias.push(word.into());
+        self.via_ids.insert(word.into(), id);
+        Via::Word(id)
+    }
+
+    /// Adds a phrase for a target; a target keeps its best tier for a phrase (and the
+    /// word it first came through at that tier).
+    fn add(&mut self, phrase: &str, target: Target, tier: Tier, via: Via) {
+        if phrase.is_empty() {
+            return;
+        }
+        let index = &mut self.index;
+        index.max_words = index.max_words.max(phrase.split(' ').count());
+        let list = match index.terms.get_mut(phrase) {
+            Some(list) => list,
+            None => index.terms.entry(phrase.into()).or_default(),
+        };
+        // Targets are indexed one after another, so a target's posting for a phrase, if
+        // any, is the list's last: no scan of a list that may hold thousands.
+        match list.last_mut().filter(|p| p.target == target) {
+            Some(p) if p.tier <= tier => {}
+            Some(p) => {
+                p.tier = tier;
+                p.via = via;
+            }
+            None => list.push(Posting { target, tier, via }),
+        }
+    }
+
+    fn add_compact(&mut self, key: String, object: u32) {
+        let list = self.index.compact.entry(key.into()).or_default();
+        // Objects come in order, so a repeat can only be the last entry.
+        if list.last() != Some(&object) {
+            list.push(object);
+        }
+    }
+
+    /// The group of objects named like this one, made (with all its phrases) the first
+    /// time such an object is seen.
+    fn group(&mut self, object: &crate::scene::Object, base: &str, lexicon: &Lexicon) -> u32 {
+        let aliases: Vec<String> = object.labels.aliases.iter().map(|a| normalize(a)).collect();
+        let category = object.labels.category.as_ref().map(|c| {
+            let c = normalize(c);
+            split_number(&c).0.to_string()
+        });
+        let attributes: Vec<String> = object
+            .labels
+            .attributes
+            .iter()
+            .map(|a| normalize(a))
+            .collect();
+        let mut key = String::with_capacity(base.len() + 16);
+        key.push_str(base);
+        for part in [&aliases[..], category.as_slice(), &attributes[..]] {
+            key.push('\u{1}');
+            key.push_str(&part.join("\u{2}"));
+        }
+        if let Some(&g) = self.group_ids.get(&key) {
+            return g;
+        }
+        let g = self.index.groups.len() as u32;
+        self.index.groups.push(Group::default());
+        self.group_ids.insert(key, g);
+        let target = Target::Group(g);
+
+        self.add(base, target, Tier::Name, Via::Name);
+        let mut descriptors: FxHashSet<Box<str>> = FxHashSet::default();
+        let mut kinds: Vec<(String, bool)> = vec![(base.to_string(), true)];
+        for a in &aliases {
+            let via = self.via(a);
+            self.add(a, target, Tier::Alias, via);
+            kinds.push((split_number(a).0.to_string(), true));
+        }
+        if let Some(c) = &category {
+            let via = self.via(c);
+            self.add(c, target, Tier::Category, via);
+            kinds.push((c.clone(), true));
+        }
+        // A container is named by what it holds: 'shampoo bottle' is "the shampoo",
+        // 'soap dispenser' "the soap", 'red wine bottle' "the red wine".
+        {
+            let w: Vec<&str> = base.split(' ').collect();
+            if w.len() >= 2 && CONTAINERS.contains(&w[w.len() - 1]) {
+                let content = w[..w.len() - 1].join(" ");
+                let via = self.via(base);
+                self.add(&content, target, Tier::Category, via);
+            }
+        }
+        // The last words of a name are its kind: 'floor lamp' is a lamp, 'red wine
+        // bottle' a wine bottle and a bottle.
+        for (kind, _) in kinds.clone() {
+            let w: Vec<&str> = kind.split(' ').collect();
+            let via = self.via(&kind);
+            for k in 1..w.len() {
+                let tail = w[k..].join(" ");
+                self.add(&tail, target, Tier::Category, via);
+                kinds.push((tail, false));
+            }
+            descriptors.extend(w.iter().map(|&s| Box::<str>::from(s)));
+        }
+        for attribute in &attributes {
+            for w in attribute.split(' ') {
+                descriptors.insert(w.into());
+                self.index.attribute_words.insert(w.into());
+            }
+        }
+        // Lexicon: synonyms of what the object is called, and its hypernyms.
+        for (kind, whole) in &kinds {
+            let via = self.via(kind);
+            for &c in lexicon.concepts_of(kind) {
+                let concept = lexicon.concept(c);
+                let tier = if *whole {
+                    Tier::Synonym
+                } else {
+                    Tier::Category
+                };
+                for s in std::iter::once(&concept.term).chain(&concept.synonyms) {
+                    self.add(s, target, tier.max(Tier::Synonym), via);
+                }
+                for &h in &concept.hypernyms {
+                    let hyper = lexicon.concept(h);
+                    for s in std::iter::once(&hyper.term).chain(&hyper.synonyms) {
+                        self.add(s, target, Tier::Hypernym, via);
+                    }
+                }
+            }
+        }
+        descriptors.retain(|d| d.chars().any(char::is_alphabetic));
+        self.index
+            .descriptor_words
+            .extend(descriptors.iter().cloned());
+        self.index.groups[g as usize].descriptors = descriptors;
+        g
+    }
 }
 
 impl NameIndex {
     /// Indexes every object of the scene.
     pub fn new(scene: &Scene, lexicon: &Lexicon) -> Self {
-        let mut index = NameIndex {
-            max_words: 1,
-            ..NameIndex::default()
-        };
-        let mut vocabulary: HashSet<String> = HashSet::new();
+        let mut b = Builder::default();
+        b.index.max_words = 1;
+        b.index.names.reserve(scene.objects.len());
+        b.index.group_of.reserve(scene.objects.len());
         for (i, object) in scene.objects.iter().enumerate() {
+            let i = i as u32;
             let name = normalize(&object.name);
             let (base, _) = split_number(&name);
-            let base = base.to_string();
-            index.add(&name, i, Tier::Name, &name);
-            index.add(&base, i, Tier::Name, &name);
-            for key in [compact(&name), compact(&base)] {
-                let list = index.compact.entry(key).or_default();
-                if !list.contains(&i) {
-                    list.push(i);
-                }
-            }
-            let mut descriptors: HashSet<String> = HashSet::new();
-            let mut kinds: Vec<(String, bool)> = vec![(base.clone(), true)];
-            for alias in &object.labels.aliases {
-                let a = normalize(alias);
-                index.add(&a, i, Tier::Alias, &a);
-                kinds.push((split_number(&a).0.to_string(), true));
-            }
-            if let Some(category) = &object.labels.category {
-                let c = normalize(category);
-                let c = split_number(&c).0.to_string();
-                index.add(&c, i, Tier::Category, &c);
-                kinds.push((c, true));
-            }
-            // A container is named by what it holds: 'shampoo bottle' is "the shampoo",
-            // 'soap dispenser' "the soap", 'red wine bottle' "the red wine".
-            {
-                let w: Vec<&str> = base.split(' ').collect();
-                if w.len() >= 2 && CONTAINERS.contains(&w[w.len() - 1]) {
-                    let content = w[..w.len() - 1].join(" ");
-                    index.add(&content, i, Tier::Category, &base);
-                }
-            }
-            // The last words of a name are its kind: 'floor lamp' is a lamp, 'red wine
-            // bottle' a wine bottle and a bottle.
-            for (kind, _) in kinds.clone() {
-                let w: Vec<&str> = kind.split(' ').collect();
-                for k in 1..w.len() {
-                    let tail = w[k..].join(" ");
-                    index.add(&tail, i, Tier::Category, &kind);
-                    kinds.push((tail, false));
-                }
-                descriptors.extend(w.iter().map(|s| s.to_string()));
-            }
-            for attribute in &object.labels.attributes {
-                for w in normalize(attribute).split(' ') {
-                    descriptors.insert(w.to_string());
-                    index.attribute_words.insert(w.to_string());
-                }
-            }
-            // Lexicon: synonyms of what the object is called, and its hypernyms.
-            for (kind, whole) in &kinds {
-                for &c in lexicon.concepts_of(kind) {
-                    let concept = lexicon.concept(c);
-                    let tier = if *whole {
-                        Tier::Synonym
-                    } else {
-                        Tier::Category
-                    };
-                    for s in std::iter::once(&concept.term).chain(&concept.synonyms) {
-                        index.add(s, i, tier.max(Tier::Synonym), kind);
-                    }
-                    for &h in &concept.hypernyms {
-                        let hyper = lexicon.concept(h);
-                        for s in std::iter::once(&hyper.term).chain(&hyper.synonyms) {
-                            index.add(s, i, Tier::Hypernym, kind);
-                        }
-                    }
-                }
-            }
-            descriptors.retain(|d| d.chars().any(char::is_alphabetic));
-            index.descriptor_words.extend(descriptors.iter().cloned());
-            index.descriptors.push(descriptors);
-            index.names.push(name);
+            b.add(&name, Target::Object(i), Tier::Name, Via::Name);
+            b.add_compact(compact(&name), i);
+            b.add_compact(compact(base), i);
+            let g = b.group(object, base, lexicon);
+            b.index.groups[g as usize].objects.push(i);
+            b.index.group_of.push(g);
+            b.index.names.push(name.into());
         }
+        let mut index = b.index;
+        let mut vocabulary: FxHashSet<&str> = FxHashSet::default();
         for key in index.terms.keys() {
             for w in key.split(' ') {
                 if w.chars().all(char::is_alphabetic) {
-                    vocabulary.insert(w.to_string());
+                    vocabulary.insert(w);
                 }
             }
         }
-        let mut by_length: Vec<Vec<String>> = Vec::new();
+        let mut by_length: Vec<Vec<Box<str>>> = Vec::new();
         for w in vocabulary {
             let n = w.chars().count();
             if by_length.len() <= n {
                 by_length.resize(n + 1, Vec::new());
             }
-            by_length[n].push(w);
+            by_length[n].push(w.into());
         }
         for list in &mut by_length {
             list.sort();
@@ -183,61 +308,78 @@ impl NameIndex {
         index
     }
 
-    fn add(&mut self, phrase: &str, object: usize, tier: Tier, via: &str) {
-        if phrase.is_empty() {
-            return;
-        }
-        self.max_words = self.max_words.max(phrase.split(' ').count());
-        // Objects are indexed one after another, so an object's entry for a phrase, if
-        // any, is the list's last: no scan of a list that may hold thousands.
-        let list = match self.terms.get_mut(phrase) {
-            Some(list) => list,
-            None => self.terms.entry(phrase.to_string()).or_default(),
+    fn objects_of(&self, target: Target) -> impl Iterator<Item = u32> + '_ {
+        let (single, group): (Option<u32>, &[u32]) = match target {
+            Target::Object(i) => (Some(i), &[]),
+            Target::Group(g) => (None, &self.groups[g as usize].objects),
         };
-        match list.last_mut().filter(|e| e.object == object) {
-            Some(e) if e.tier <= tier => {}
-            Some(e) => {
-                e.tier = tier;
-                e.via = via.to_string();
-            }
-            None => list.push(Entry {
-                object,
-                tier,
-                via: via.to_string(),
-            }),
+        single.into_iter().chain(group.iter().copied())
+    }
+
+    fn via_text(&self, via: Via, object: u32) -> &str {
+        match via {
+            Via::Name => &self.names[object as usize],
+            Via::Word(id) => &self.vias[id as usize],
         }
     }
 
     /// The objects a normalised phrase names, at the best tier present.
-    pub fn lookup(&self, phrase: &str) -> Option<(Tier, Vec<&Entry>)> {
+    pub fn lookup(&self, phrase: &str) -> Option<Hit<'_>> {
         let list = self.terms.get(phrase)?;
-        let best = list.iter().map(|e| e.tier).min()?;
-        Some((best, list.iter().filter(|e| e.tier == best).collect()))
+        let tier = list.iter().map(|p| p.tier).min()?;
+        // (object, via) of every posting at that tier, then in scene order; an object
+        // named twice keeps the posting that came first, as it was added first.
+        let mut named: Vec<(u32, Via)> = Vec::new();
+        for p in list.iter().filter(|p| p.tier == tier) {
+            named.extend(self.objects_of(p.target).map(|o| (o, p.via)));
+        }
+        named.sort_by_key(|&(o, _)| o);
+        named.dedup_by_key(|&mut (o, _)| o);
+        let (first, via) = *named.first()?;
+        Some(Hit {
+            tier,
+            via: self.via_text(via, first),
+            objects: named.into_iter().map(|(o, _)| o as usize).collect(),
+        })
     }
 
     /// Every object a normalised phrase names literally — by name, alias or category, the
     /// best tiers — when it names any that way: what modifiers pick among (`the smallest
     /// barrel` compares 'barrel', 'barrel 2' and 'small barrel').
     pub fn lookup_literal(&self, phrase: &str) -> Vec<usize> {
-        self.terms
+        let mut out: Vec<usize> = self
+            .terms
             .get(phrase)
             .into_iter()
             .flatten()
-            .filter(|e| e.tier <= Tier::Category)
-            .map(|e| e.object)
-            .collect()
+            .filter(|p| p.tier <= Tier::Category)
+            .flat_map(|p| self.objects_of(p.target).map(|o| o as usize))
+            .collect();
+        out.sort_unstable();
+        out.dedup();
+        out
     }
 
     /// The objects whose name or base name is this phrase without spaces (`dogbed`).
-    pub fn lookup_compact(&self, phrase: &str) -> Option<&[usize]> {
-        self.compact.get(&compact(phrase)).map(Vec::as_slice)
+    pub fn lookup_compact(&self, phrase: &str) -> Option<Vec<usize>> {
+        self.compact
+            .get(compact(phrase).as_str())
+            .map(|list| list.iter().map(|&o| o as usize).collect())
+    }
+
+    /// Whether `word` (normalised) describes object `object`: a word of its name, category,
+    /// aliases or attributes.
+    pub fn describes(&self, object: usize, word: &str) -> bool {
+        self.groups[self.group_of[object] as usize]
+            .descriptors
+            .contains(word)
     }
 
     /// Whether a word occurs in some term.
     pub fn knows_word(&self, word: &str) -> bool {
         self.vocabulary
             .get(word.chars().count())
-            .is_some_and(|l| l.binary_search_by(|w| w.as_str().cmp(word)).is_ok())
+            .is_some_and(|l| l.binary_search_by(|w| (**w).cmp(word)).is_ok())
     }
 
     /// The words of the index one edit (insertion, deletion, substitution or swap of two
@@ -248,7 +390,7 @@ impl NameIndex {
         for len in n.saturating_sub(1)..=n + 1 {
             for w in self.vocabulary.get(len).into_iter().flatten() {
                 if strsim::osa_distance(word, w) == 1 {
-                    out.push(w.as_str());
+                    out.push(&**w);
                 }
             }
         }

@@ -513,17 +513,13 @@ impl<'a> Reader<'a> {
                 .into_iter()
                 .find_map(|singular| index.lookup(&singular).map(|hit| (singular, hit)));
             match (direct, plural) {
-                (Some((tier, entries)), plural)
-                    if plural.as_ref().is_none_or(|(_, (t, _))| tier < *t) =>
-                {
-                    let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
-                    let via = entries[0].via.clone();
-                    return Some(self.make_head(range, objects, tier, false, phrase, &via, typo));
+                (Some(hit), plural) if plural.as_ref().is_none_or(|(_, p)| hit.tier < p.tier) => {
+                    let via = hit.via.to_string();
+                    return Some(self.make_head(range, hit.objects, hit.tier, false, phrase, &via, typo));
                 }
-                (_, Some((singular, (tier, entries)))) => {
-                    let objects: Vec<usize> = entries.iter().map(|e| e.object).collect();
-                    let via = entries[0].via.clone();
-                    return Some(self.make_head(range, objects, tier, true, singular, &via, typo));
+                (_, Some((singular, hit))) => {
+                    let via = hit.via.to_string();
+                    return Some(self.make_head(range, hit.objects, hit.tier, true, singular, &via, typo));
                 }
                 _ => {}
             }
@@ -531,7 +527,7 @@ impl<'a> Reader<'a> {
                 if let Some(objects) = index.lookup_compact(&phrase) {
                     let head = self.make_head(
                         range,
-                        objects.to_vec(),
+                        objects,
                         Tier::Name,
                         false,
                         phrase.clone(),
@@ -822,7 +818,7 @@ impl<'a> Reader<'a> {
                     || words::count_word(w).is_some()
                     || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
                     || words::is_colour(w)
-                    || self.g.index.descriptor_words.contains(&words::normalize(w))
+                    || self.g.index.descriptor_words.contains(words::normalize(w).as_str())
             }
             _ => false,
         }
@@ -948,12 +944,12 @@ impl<'a> Reader<'a> {
                         let fits: Vec<usize> = objects
                             .iter()
                             .copied()
-                            .filter(|&o| self.g.index.descriptors[o].contains(&d))
+                            .filter(|&o| self.g.index.describes(o, &d))
                             .collect();
                         if fits.is_empty() {
                             // A colour or material must pick; a word of another object's
                             // name ("the dining chair") says nothing about these.
-                            if words::is_colour(w) || self.g.index.attribute_words.contains(&d) {
+                            if words::is_colour(w) || self.g.index.attribute_words.contains(d.as_str()) {
                                 return Err(GroundError::NoPick {
                                     phrase: self.span_text(&(start..head.range.end)),
                                     reason: format!(

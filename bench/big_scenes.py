@@ -1,0 +1,136 @@
+#!/usr/bin/env python3
+"""Whole-process benchmark of `shenlong edit` on big scenes (issue: big scenes).
+
+For each size it writes a scene JSON of unit boxes on a square grid (1.5 m apart, so
+neighbours leave 0.5 m gaps), then runs, in the same loop and alternating so that the
+shared machine's noise falls on both alike:
+
+* `shenlong edit SCENE "move the 'box-K' 1.5 m to the right" -o OUT --json REPORT`: the
+  box lands on its neighbour, so the edit collides once and is resolved;
+* `python3 -c 'import json; json.load(open(SCENE))'`, the baseline the targets are
+  stated against.
+
+It reports, per size, the median wall time of each, their ratio, and the median peak
+resident memory of the edit (from `wait4`'s `ru_maxrss`), and checks that every edit
+succeeded and moved the box. The files go to a temporary folder, removed afterwards.
+
+    python3 bench/big_scenes.py --bin target/release/shenlong --sizes 1000,10000,100000 --runs 5
+"""
+
+from __future__ import annotations
+
+import argparse
+import json
+import math
+import os
+import statistics
+import subprocess
+import sys
+import tempfile
+import time
+
+
+def write_grid(path: str, count: int) -> str:
+    """Writes `count` unit boxes on a grid and returns the name of one in the middle."""
+    side = math.ceil(math.sqrt(count))
+    with open(path, "w", encoding="utf-8") as f:
+        f.write('{"name": "grid", "objects": [\n')
+        for i in range(count):
+            x, z = (i % side) * 1.5, (i // side) * 1.5
+            sep = ",\n" if i else ""
+            f.write(
+                f'{sep}{{"name": "box-{i}", "size": [1, 1, 1], "position": [{x}, 0, {z}]}}'
+            )
+        f.write("\n]}\n")
+    middle = (side // 2) * side + side // 2
+    return f"box-{min(middle, count - 1)}"
+
+
+def run_measured(argv: list[str]) -> tuple[float, int, int, str]:
+    """Runs a command; returns (seconds, peak RSS in KiB, exit code, stderr)."""
+    err = tempfile.TemporaryFile()
+    start = time.perf_counter()
+    pid = os.fork()
+    if pid == 0:
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, 1)
+        os.dup2(err.fileno(), 2)
+        try:
+            os.execvp(argv[0], argv)
+        finally:
+            os._exit(127)
+    _, status, usage = os.wait4(pid, 0)
+    elapsed = time.perf_counter() - start
+    err.seek(0)
+    code = os.waitstatus_to_exitcode(status)
+    return elapsed, usage.ru_maxrss, code, err.read().decode("utf-8", "replace")
+
+
+def main() -> int:
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--bin", default="target/release/shenlong", help="the shenlong binary")
+    parser.add_argument(
+        "--sizes", default="1000,10000,100000", help="object counts, comma-separated"
+    )
+    parser.add_argument("--runs", type=int, default=5, help="runs per size (median quoted)")
+    parser.add_argument("--json", help="also write the figures as JSON to this file")
+    args = parser.parse_args()
+    sizes = [int(s) for s in args.sizes.split(",") if s.strip()]
+    rows = []
+    with tempfile.TemporaryDirectory(prefix="shenlong-big-") as tmp:
+        for n in sizes:
+            scene = os.path.join(tmp, f"grid-{n}.json")
+            name = write_grid(scene, n)
+            out = os.path.join(tmp, f"out-{n}.json")
+            report = os.path.join(tmp, f"report-{n}.json")
+            edit = [
+                args.bin, "edit", scene, f"move the '{name}' 1.5 m to the right",
+                "-o", out, "--json", report,
+            ]
+            python = [sys.executable, "-c", f"import json; json.load(open({scene!r}))"]
+            times, peaks, baselines, phases = [], [], [], []
+            for _ in range(args.runs):
+                t, rss, code, stderr = run_measured(edit)
+                if code != 0:
+                    print(f"{n} objects: the edit failed: {stderr.strip()}", file=sys.stderr)
+                    return 1
+                with open(report, encoding="utf-8") as f:
+                    r = json.load(f)
+                if not r.get("collisions_resolved"):
+                    print(f"{n} objects: the edit resolved no collision", file=sys.stderr)
+                    return 1
+                phases.append(r.get("timings_ms", {}))
+                times.append(t)
+                peaks.append(rss)
+                baselines.append(run_measured(python)[0])
+            size_mb = os.path.getsize(scene) / 1e6
+            row = {
+                "objects": n,
+                "file_mb": round(size_mb, 2),
+                "edit_s": statistics.median(times),
+                "python_json_load_s": statistics.median(baselines),
+                "ratio": statistics.median(times) / statistics.median(baselines),
+                "peak_mib": statistics.median(peaks) / 1024,
+                "bytes_per_object": statistics.median(peaks) * 1024 / n,
+                "phases_ms": {
+                    k: statistics.median(p.get(k, 0.0) for p in phases)
+                    for k in sorted({k for p in phases for k in p})
+                },
+            }
+            rows.append(row)
+            print(
+                f"{n:>9} objects  {size_mb:7.2f} MB  edit {row['edit_s'] * 1000:9.1f} ms  "
+                f"json.load {row['python_json_load_s'] * 1000:8.1f} ms  "
+                f"ratio {row['ratio']:5.2f}  peak {row['peak_mib']:7.1f} MiB "
+                f"({row['bytes_per_object']:.0f} B/object)",
+                flush=True,
+            )
+            print(f"{'':>11}phases (ms): {row['phases_ms']}", flush=True)
+    if args.json:
+        with open(args.json, "w", encoding="utf-8") as f:
+            json.dump(rows, f, indent=2)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
