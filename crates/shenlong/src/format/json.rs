@@ -1,107 +1,267 @@
 //! Shenlong's scene JSON (SPEC §2): read with validation, written back in the input's
 //! shape with every unknown field kept.
+//!
+//! Reading keeps the text, not a parsed tree: `serde_json` checks the whole document and
+//! hands back each object's fields as borrowed slices ([`RawValue`]); the poses are parsed
+//! straight into numbers, and an error message is built only when something is wrong.
+//! Writing copies the text and rewrites only the `position`, `rotation` and `scale` of
+//! the objects that moved, so it costs what changed, and a file under version control
+//! shows only the edit in its diff.
 
 use super::FormatError;
 use crate::geometry::Aabb;
 use crate::scene::{Labels, Object, Scene, MAX_COORDINATE, MAX_SCALE, MIN_SCALE};
 use cga::Similarity;
 use glam::{DQuat, DVec3};
+use rustc_hash::FxHashMap;
+use serde::Deserialize;
+use serde_json::value::RawValue;
 use serde_json::{Map, Value};
-use std::collections::HashMap;
+use std::ops::Range;
 
 /// A scene read from scene JSON, with the document it came from.
 #[derive(Clone, Debug)]
 pub struct JsonScene {
     /// The scene.
     pub scene: Scene,
-    /// The parsed document, kept so that writing preserves every other field.
-    pub document: Value,
+    /// The document, kept so that writing preserves every other field and byte.
+    pub document: JsonDocument,
+}
+
+/// A scene-JSON document as read: its text and where each object's pose is written.
+#[derive(Clone, Debug)]
+pub struct JsonDocument {
+    text: String,
+    objects: Vec<PoseFields>,
+}
+
+/// Where one object's pose is in the text, and the pose as written.
+#[derive(Clone, Debug)]
+struct PoseFields {
+    /// The object's `{…}`.
+    object: Range<usize>,
+    /// The value of `position`.
+    position: Range<usize>,
+    /// The value of `rotation`, if the field is there.
+    rotation: Option<Range<usize>>,
+    /// The value of `scale`, if the field is there.
+    scale: Option<Range<usize>>,
+    /// The pose as the file has it.
+    read: Similarity,
+}
+
+impl JsonDocument {
+    /// The document's text (without a byte-order mark).
+    #[must_use]
+    pub fn text(&self) -> &str {
+        &self.text
+    }
+
+    /// A top-level field of object `index`, parsed (`tdw_id`); `None` when the object or
+    /// the field is missing.
+    #[must_use]
+    pub fn object_field(&self, index: usize, field: &str) -> Option<Value> {
+        let span = self.objects.get(index)?.object.clone();
+        let fields: FxHashMap<&str, &RawValue> = serde_json::from_str(&self.text[span]).ok()?;
+        serde_json::from_str(fields.get(field)?.get()).ok()
+    }
+}
+
+#[derive(Deserialize)]
+struct RawRoot<'a> {
+    #[serde(borrow, default)]
+    name: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    bounds: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    objects: Option<&'a RawValue>,
+}
+
+#[derive(Deserialize)]
+struct RawObject<'a> {
+    #[serde(borrow, default)]
+    name: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    size: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    position: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    rotation: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    scale: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    front: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    on: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    category: Option<&'a RawValue>,
+    #[serde(borrow, default, rename = "objectType")]
+    object_type: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    aliases: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    color: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    colour: Option<&'a RawValue>,
+    #[serde(borrow, default)]
+    material: Option<&'a RawValue>,
 }
 
 /// Parses and validates scene JSON. `fallback_name` names a scene without a `"name"`.
 pub fn read(text: &str, fallback_name: &str) -> Result<JsonScene, FormatError> {
     // A UTF-8 byte-order mark, as some editors write, is not part of the JSON.
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let document: Value = serde_json::from_str(text).map_err(|e| {
-        FormatError::new(format!(
-            "invalid JSON at line {}, column {}: {}",
-            e.line(),
-            e.column(),
-            strip_position(&e.to_string())
-        ))
-    })?;
-    let scene = scene_from_value(&document, fallback_name)?;
-    Ok(JsonScene { scene, document })
+    let (scene, objects) = parse(text, fallback_name)?;
+    Ok(JsonScene {
+        scene,
+        document: JsonDocument {
+            text: text.to_string(),
+            objects,
+        },
+    })
 }
 
-fn strip_position(message: &str) -> String {
-    match message.rfind(" at line ") {
-        Some(i) => message[..i].to_string(),
-        None => message.to_string(),
-    }
+/// Builds a scene from a parsed scene-JSON document (a ProcTHOR import), validating every
+/// field; the document to write it back is its indented text.
+pub fn scene_from_value(
+    document: &Value,
+    fallback_name: &str,
+) -> Result<(Scene, JsonDocument), FormatError> {
+    let loaded = read(&super::pretty::to_string(document), fallback_name)?;
+    Ok((loaded.scene, loaded.document))
 }
 
-/// Builds a scene from a parsed scene-JSON document, validating every field.
-pub fn scene_from_value(document: &Value, fallback_name: &str) -> Result<Scene, FormatError> {
-    let root = document.as_object().ok_or_else(|| {
-        FormatError::new("the scene must be a JSON object with an \"objects\" list")
-    })?;
-    let name = match root.get("name") {
+/// Where `slice` (borrowed from `text`) starts in `text`.
+fn offset(text: &str, slice: &str) -> usize {
+    slice.as_ptr() as usize - text.as_ptr() as usize
+}
+
+fn span(text: &str, raw: &RawValue) -> Range<usize> {
+    let start = offset(text, raw.get());
+    start..start + raw.get().len()
+}
+
+/// A `serde_json` error in `slice` (borrowed from `text`), placed in the whole text.
+fn json_error(text: &str, slice: &str, e: &serde_json::Error) -> FormatError {
+    let start = offset(text, slice);
+    let before = &text[..start];
+    let line0 = before.matches('\n').count() + 1;
+    let col0 = before.len() - before.rfind('\n').map_or(0, |i| i + 1);
+    let (line, column) = if e.line() <= 1 {
+        (line0, col0 + e.column())
+    } else {
+        (line0 + e.line() - 1, e.column())
+    };
+    FormatError::new(format!(
+        "invalid JSON at line {line}, column {column}: {}",
+        strip_position(&e.to_string())
+    ))
+}
+
+/// A field's value as a tree, for the checks that name what is wrong.
+fn value_of(text: &str, raw: &RawValue) -> Result<Value, FormatError> {
+    serde_json::from_str(raw.get()).map_err(|e| json_error(text, raw.get(), &e))
+}
+
+fn starts_with(raw: &str, c: char) -> bool {
+    raw.trim_start().starts_with(c)
+}
+
+fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), FormatError> {
+    let root: Result<RawRoot<'_>, _> = serde_json::from_str(text);
+    let root = match root {
+        Err(e) if e.classify() == serde_json::error::Category::Data && !starts_with(text, '{') => {
+            return Err(FormatError::new(
+                "the scene must be a JSON object with an \"objects\" list",
+            ))
+        }
+        Err(e) => {
+            return Err(FormatError::new(format!(
+                "invalid JSON at line {}, column {}: {}",
+                e.line(),
+                e.column(),
+                strip_position(&e.to_string())
+            )))
+        }
+        Ok(_) if !starts_with(text, '{') => {
+            return Err(FormatError::new(
+                "the scene must be a JSON object with an \"objects\" list",
+            ))
+        }
+        Ok(root) => root,
+    };
+    let name = match root.name.map(|raw| value_of(text, raw)).transpose()? {
         None | Some(Value::Null) => fallback_name.to_string(),
-        Some(Value::String(s)) => s.clone(),
+        Some(Value::String(s)) => s,
         Some(_) => return Err(FormatError::new("name must be a string")),
     };
     let mut scene = Scene::new(name);
-    if let Some(bounds) = root.get("bounds").filter(|b| !b.is_null()) {
-        let b = bounds
-            .as_object()
-            .ok_or_else(|| FormatError::new("bounds must be an object with \"min\" and \"max\""))?;
-        let min = vec3(b.get("min"), "bounds.min")?;
-        let max = vec3(b.get("max"), "bounds.max")?;
-        for axis in 0..3 {
-            if min[axis] >= max[axis] {
-                return Err(FormatError::new(format!(
-                    "bounds.min[{axis}] must be less than bounds.max[{axis}]"
-                )));
+    if let Some(bounds) = root.bounds.map(|raw| value_of(text, raw)).transpose()? {
+        if !bounds.is_null() {
+            let b = bounds.as_object().ok_or_else(|| {
+                FormatError::new("bounds must be an object with \"min\" and \"max\"")
+            })?;
+            let min = vec3(b.get("min"), "bounds.min")?;
+            let max = vec3(b.get("max"), "bounds.max")?;
+            for axis in 0..3 {
+                if min[axis] >= max[axis] {
+                    return Err(FormatError::new(format!(
+                        "bounds.min[{axis}] must be less than bounds.max[{axis}]"
+                    )));
+                }
             }
+            scene.bounds = Some(Aabb::new(min, max));
         }
-        scene.bounds = Some(Aabb::new(min, max));
     }
-    let objects = root
-        .get("objects")
-        .ok_or_else(|| FormatError::new("missing \"objects\": the list of the scene's objects"))?
-        .as_array()
-        .ok_or_else(|| FormatError::new("objects must be a list"))?;
+    let objects = root.objects.ok_or_else(|| {
+        FormatError::new("missing \"objects\": the list of the scene's objects")
+    })?;
+    let objects: Vec<&RawValue> = if starts_with(objects.get(), '[') {
+        serde_json::from_str(objects.get()).map_err(|e| json_error(text, objects.get(), &e))?
+    } else {
+        return Err(FormatError::new("objects must be a list"));
+    };
     // Names compared case-insensitively, through an index: a scan per object would make
     // reading quadratic in the number of objects.
-    let mut by_name: HashMap<String, usize> = HashMap::with_capacity(objects.len());
-    for (i, value) in objects.iter().enumerate() {
-        let object = object_from_value(value, i)?;
-        if let Some(&j) = by_name.get(&object.name.trim().to_lowercase()) {
+    let mut by_name: FxHashMap<String, usize> =
+        FxHashMap::with_capacity_and_hasher(objects.len(), Default::default());
+    let mut fields = Vec::with_capacity(objects.len());
+    let mut on_fields: Vec<(usize, &RawValue)> = Vec::new();
+    scene.objects.reserve(objects.len());
+    for (i, raw) in objects.iter().enumerate() {
+        let (object, pose, on) = object_from_raw(text, raw, i)?;
+        let key = object.name.trim().to_lowercase();
+        if let Some(&j) = by_name.get(&key) {
             return Err(FormatError::new(format!(
                 "objects[{i}].name '{}' duplicates objects[{j}].name '{}' (names are compared case-insensitively)",
                 object.name, scene.objects[j].name
             )));
         }
-        by_name.insert(object.name.trim().to_lowercase(), i);
+        by_name.insert(key, i);
         scene.objects.push(object);
+        fields.push(pose);
+        if let Some(on) = on {
+            on_fields.push((i, on));
+        }
     }
-    resolve_on_fields(objects, &mut scene, &by_name)?;
+    resolve_on_fields(text, &on_fields, &mut scene, &by_name)?;
     scene.detect_supports();
-    Ok(scene)
+    Ok((scene, fields))
 }
 
 /// The optional `"on"` field (a Shenlong extension of SPEC §2) names the object this one
 /// rests on; it is carried along with it.
 fn resolve_on_fields(
-    objects: &[Value],
+    text: &str,
+    on_fields: &[(usize, &RawValue)],
     scene: &mut Scene,
-    by_name: &HashMap<String, usize>,
+    by_name: &FxHashMap<String, usize>,
 ) -> Result<(), FormatError> {
-    for (i, value) in objects.iter().enumerate() {
-        let Some(on) = value.get("on").filter(|v| !v.is_null()) else {
+    for &(i, raw) in on_fields {
+        let on = value_of(text, raw)?;
+        if on.is_null() {
             continue;
-        };
+        }
         let name = on.as_str().ok_or_else(|| {
             FormatError::new(format!(
                 "objects[{i}].on must be the name of another object"
@@ -123,87 +283,155 @@ fn resolve_on_fields(
         scene.objects[i].support = Some(j);
         scene.objects[i].support_from_file = true;
     }
-    // A chain of supports must end on the floor.
-    for start in 0..scene.objects.len() {
-        let mut current = start;
-        for _ in 0..=scene.objects.len() {
-            match scene.objects[current].support {
-                Some(next) => current = next,
-                None => break,
+    // A chain of supports must end on the floor: follow each chain once, marking where
+    // it was seen (linear in the objects however the chains run).
+    let n = scene.objects.len();
+    let mut state = vec![0u8; n]; // 0 unseen, 1 on the current chain, 2 ends on the floor
+    for start in 0..n {
+        let mut chain = Vec::new();
+        let mut current = Some(start);
+        while let Some(c) = current {
+            match state[c] {
+                2 => break,
+                1 => {
+                    return Err(FormatError::new(format!(
+                        "objects[{c}].on: the objects rest on each other in a circle"
+                    )))
+                }
+                _ => {
+                    state[c] = 1;
+                    chain.push(c);
+                    current = scene.objects[c].support;
+                }
             }
-            if current == start {
-                return Err(FormatError::new(format!(
-                    "objects[{start}].on: the objects rest on each other in a circle"
-                )));
-            }
+        }
+        for c in chain {
+            state[c] = 2;
         }
     }
     Ok(())
 }
 
-fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {
-    let o = value
-        .as_object()
-        .ok_or_else(|| FormatError::new(format!("objects[{i}] must be an object")))?;
-    let at = |field: &str| format!("objects[{i}].{field}");
-    let name = match o.get("name") {
-        Some(Value::String(s)) if !s.trim().is_empty() => s.clone(),
-        Some(Value::String(_)) => {
-            return Err(FormatError::new(format!(
-                "{} must not be empty",
-                at("name")
-            )))
+/// A list of finite numbers (`[f64; 3]`, `[f64; 4]`), fast; `None` when the text is
+/// anything else.
+fn numbers_of<T: serde::de::DeserializeOwned + AsRef<[f64]>>(raw: &RawValue) -> Option<T> {
+    let v: T = serde_json::from_str(raw.get()).ok()?;
+    v.as_ref().iter().all(|x| x.is_finite()).then_some(v)
+}
+
+/// A required or optional three-number field: fast when it is one, else the message that
+/// says what is wrong with it.
+fn vec3_field(
+    text: &str,
+    raw: Option<&RawValue>,
+    at: &dyn Fn() -> String,
+) -> Result<Option<DVec3>, FormatError> {
+    let Some(raw) = raw else { return Ok(None) };
+    if let Some(v) = numbers_of::<[f64; 3]>(raw) {
+        return Ok(Some(DVec3::from(v)));
+    }
+    let value = value_of(text, raw)?;
+    if value.is_null() {
+        return Ok(None);
+    }
+    vec3(Some(&value), &at()).map(Some)
+}
+
+fn object_from_raw<'a>(
+    text: &'a str,
+    raw: &'a RawValue,
+    i: usize,
+) -> Result<(Object, PoseFields, Option<&'a RawValue>), FormatError> {
+    if !starts_with(raw.get(), '{') {
+        return Err(FormatError::new(format!("objects[{i}] must be an object")));
+    }
+    let o: RawObject<'a> = serde_json::from_str(raw.get()).map_err(|e| {
+        if e.classify() == serde_json::error::Category::Data {
+            FormatError::new(format!("objects[{i}]: {}", strip_position(&e.to_string())))
+        } else {
+            json_error(text, raw.get(), &e)
         }
-        Some(_) => return Err(FormatError::new(format!("{} must be a string", at("name")))),
+    })?;
+    let field = |name: &str| format!("objects[{i}].{name}");
+    let name = match o.name {
         None => return Err(FormatError::new(format!("objects[{i}]: missing \"name\""))),
+        Some(raw) => match serde_json::from_str::<String>(raw.get()) {
+            Ok(s) if !s.trim().is_empty() => s,
+            Ok(_) => {
+                return Err(FormatError::new(format!(
+                    "{} must not be empty",
+                    field("name")
+                )))
+            }
+            Err(_) => {
+                value_of(text, raw)?;
+                return Err(FormatError::new(format!(
+                    "{} must be a string",
+                    field("name")
+                )));
+            }
+        },
     };
-    let size = match o.get("size") {
-        None => {
-            return Err(FormatError::new(format!(
-                "objects[{i}] ('{name}'): missing \"size\" [w, h, d]"
-            )))
-        }
-        some => vec3(some, &at("size"))?,
-    };
+    let size = vec3_field(text, o.size, &|| field("size"))?.ok_or_else(|| {
+        FormatError::new(format!(
+            "objects[{i}] ('{name}'): missing \"size\" [w, h, d]"
+        ))
+    })?;
     for axis in 0..3 {
         if size[axis] <= 0.0 {
             return Err(FormatError::new(format!(
                 "{}[{axis}] must be > 0",
-                at("size")
+                field("size")
             )));
         }
         if size[axis] > MAX_COORDINATE {
             return Err(FormatError::new(format!(
                 "{}[{axis}] must be at most {MAX_COORDINATE:.0e} m",
-                at("size")
+                field("size")
             )));
         }
     }
-    let position = match o.get("position") {
-        None => {
-            return Err(FormatError::new(format!(
-                "objects[{i}] ('{name}'): missing \"position\" [x, y, z]"
-            )))
-        }
-        some => vec3(some, &at("position"))?,
+    let missing_position = || {
+        FormatError::new(format!(
+            "objects[{i}] ('{name}'): missing \"position\" [x, y, z]"
+        ))
     };
+    let position_raw = o.position.ok_or_else(missing_position)?;
+    let position =
+        vec3_field(text, Some(position_raw), &|| field("position"))?.ok_or_else(missing_position)?;
     for axis in 0..3 {
         if position[axis].abs() > MAX_COORDINATE {
             return Err(FormatError::new(format!(
                 "{}[{axis}] must be within ±{MAX_COORDINATE:.0e} m",
-                at("position")
+                field("position")
             )));
         }
     }
-    let rotation = rotation(o.get("rotation"), &at("rotation"))?;
-    let scale = match o.get("scale") {
-        None | Some(Value::Null) => 1.0,
-        Some(v) => {
-            let s = number(v, &at("scale"))?;
+    let rotation = match o.rotation {
+        None => DQuat::IDENTITY,
+        Some(raw) => match numbers_of::<[f64; 4]>(raw) {
+            Some(q) => quaternion(q, &|| field("rotation"))?,
+            None => rotation(Some(&value_of(text, raw)?), &field("rotation"))?,
+        },
+    };
+    let scale = match o.scale {
+        None => 1.0,
+        Some(raw) => {
+            let s = match serde_json::from_str::<f64>(raw.get()) {
+                Ok(s) if s.is_finite() => s,
+                _ => {
+                    let v = value_of(text, raw)?;
+                    if v.is_null() {
+                        1.0
+                    } else {
+                        number(&v, &field("scale"))?
+                    }
+                }
+            };
             if !(MIN_SCALE..=MAX_SCALE).contains(&s) {
                 return Err(FormatError::new(format!(
                     "{} must be in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]",
-                    at("scale")
+                    field("scale")
                 )));
             }
             s
@@ -211,29 +439,52 @@ fn object_from_value(value: &Value, i: usize) -> Result<Object, FormatError> {
     };
     let mut object = Object::new_box(name, size, position, rotation, scale)
         .map_err(|e| FormatError::new(format!("objects[{i}]: {e}")))?;
-    object.labels = labels(o, i)?;
-    if let Some(front) = o.get("front").filter(|v| !v.is_null()) {
-        let f = vec3(Some(front), &at("front"))?;
+    object.labels = labels(text, &o, i)?;
+    if let Some(f) = vec3_field(text, o.front, &|| field("front"))? {
         if f.length() < 1e-9 {
             return Err(FormatError::new(format!(
                 "{} must be a non-zero direction [x, y, z]",
-                at("front")
+                field("front")
             )));
         }
         object.front = f.normalize();
     }
-    Ok(object)
+    let pose = PoseFields {
+        object: span(text, raw),
+        position: span(text, position_raw),
+        rotation: o.rotation.map(|r| span(text, r)),
+        scale: o.scale.map(|r| span(text, r)),
+        read: Similarity {
+            translation: position,
+            rotation,
+            scale,
+        },
+    };
+    Ok((object, pose, o.on))
+}
+
+fn strip_position(message: &str) -> String {
+    match message.rfind(" at line ") {
+        Some(i) => message[..i].to_string(),
+        None => message.to_string(),
+    }
 }
 
 /// The optional words for an object (a documented extension of SPEC §2): `category` (a
 /// string; else a ProcTHOR `objectType` in plain words), `aliases` (strings), and the
 /// attributes `color` / `colour` / `material` (a string or a list of strings).
-fn labels(o: &Map<String, Value>, i: usize) -> Result<Labels, FormatError> {
-    let strings = |field: &str, list_ok: bool| -> Result<Vec<String>, FormatError> {
-        match o.get(field) {
-            None | Some(Value::Null) => Ok(Vec::new()),
-            Some(Value::String(s)) => Ok(vec![s.trim().to_string()]),
-            Some(Value::Array(items)) if list_ok => items
+fn labels(text: &str, o: &RawObject<'_>, i: usize) -> Result<Labels, FormatError> {
+    let strings = |raw: Option<&RawValue>,
+                   field: &str,
+                   list_ok: bool|
+     -> Result<Vec<String>, FormatError> {
+        let Some(raw) = raw else {
+            return Ok(Vec::new());
+        };
+        match value_of(text, raw)? {
+            Value::Null => Ok(Vec::new()),
+            Value::String(s) => Ok(vec![s.trim().to_string()]),
+            Value::Array(items) if list_ok => items
                 .iter()
                 .enumerate()
                 .map(|(k, v)| {
@@ -242,26 +493,28 @@ fn labels(o: &Map<String, Value>, i: usize) -> Result<Labels, FormatError> {
                     })
                 })
                 .collect(),
-            Some(_) if list_ok => Err(FormatError::new(format!(
+            _ if list_ok => Err(FormatError::new(format!(
                 "objects[{i}].{field} must be a string or a list of strings"
             ))),
-            Some(_) => Err(FormatError::new(format!(
+            _ => Err(FormatError::new(format!(
                 "objects[{i}].{field} must be a string"
             ))),
         }
     };
-    let mut category = strings("category", false)?.pop();
+    let mut category = strings(o.category, "category", false)?.pop();
     if category.is_none() {
-        if let Some(Value::String(t)) = o.get("objectType") {
-            category = Some(super::procthor::human_name(t));
+        if let Some(raw) = o.object_type {
+            if let Ok(t) = serde_json::from_str::<String>(raw.get()) {
+                category = Some(super::procthor::human_name(&t));
+            }
         }
     }
-    let mut attributes = strings("color", true)?;
-    attributes.extend(strings("colour", true)?);
-    attributes.extend(strings("material", true)?);
+    let mut attributes = strings(o.color, "color", true)?;
+    attributes.extend(strings(o.colour, "colour", true)?);
+    attributes.extend(strings(o.material, "material", true)?);
     Ok(Labels {
         category: category.filter(|c| !c.is_empty()),
-        aliases: strings("aliases", true)?
+        aliases: strings(o.aliases, "aliases", true)?
             .into_iter()
             .filter(|a| !a.is_empty())
             .collect(),
@@ -269,12 +522,20 @@ fn labels(o: &Map<String, Value>, i: usize) -> Result<Labels, FormatError> {
     })
 }
 
-/// A pose as written in the file: position, rotation, scale.
-pub(crate) fn pose_of(o: &Map<String, Value>) -> Option<(DVec3, DQuat, f64)> {
-    let position = vec3(o.get("position"), "").ok()?;
-    let rotation = rotation(o.get("rotation"), "").ok()?;
-    let scale = o.get("scale").and_then(Value::as_f64).unwrap_or(1.0);
-    Some((position, rotation, scale))
+/// A quaternion from four finite numbers, normalised safely.
+fn quaternion(q: [f64; 4], at: &dyn Fn() -> String) -> Result<DQuat, FormatError> {
+    // Scaled down first, so components near f64::MAX do not overflow the length.
+    let big = q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
+    let q = if big > 1.0 { q.map(|x| x / big) } else { q };
+    let q = DQuat::from_array(q);
+    let length = q.length();
+    if length.is_nan() || length <= 1e-9 {
+        return Err(FormatError::new(format!(
+            "{} must be a non-zero quaternion [x, y, z, w]",
+            at()
+        )));
+    }
+    Ok(q / length)
 }
 
 fn rotation(value: Option<&Value>, at: &str) -> Result<DQuat, FormatError> {
@@ -289,17 +550,7 @@ fn rotation(value: Option<&Value>, at: &str) -> Result<DQuat, FormatError> {
     for (k, v) in list.iter().enumerate() {
         q[k] = number(v, &format!("{at}[{k}]"))?;
     }
-    // Scaled down first, so components near f64::MAX do not overflow the length.
-    let big = q.iter().fold(0.0f64, |m, x| m.max(x.abs()));
-    let q = if big > 1.0 { q.map(|x| x / big) } else { q };
-    let q = DQuat::from_array(q);
-    let length = q.length();
-    if length.is_nan() || length <= 1e-9 {
-        return Err(FormatError::new(format!(
-            "{at} must be a non-zero quaternion [x, y, z, w]"
-        )));
-    }
-    Ok(q / length)
+    quaternion(q, &|| at.to_string())
 }
 
 fn vec3(value: Option<&Value>, at: &str) -> Result<DVec3, FormatError> {
@@ -325,19 +576,81 @@ fn number(value: &Value, at: &str) -> Result<f64, FormatError> {
     }
 }
 
-/// Writes the scene as scene JSON. With the `original` document, the output has its
-/// shape: every field is kept, and only the poses of objects that moved are rewritten
-/// (`rotation` and `scale` are added only when they differ from their defaults).
-pub fn write(scene: &Scene, original: Option<&Value>) -> String {
-    let mut document = original.cloned().unwrap_or_else(|| fresh_document(scene));
-    if let Some(objects) = document.get_mut("objects").and_then(Value::as_array_mut) {
-        for (object, value) in scene.objects.iter().zip(objects.iter_mut()) {
-            if let Some(map) = value.as_object_mut() {
-                update_pose(object, map);
-            }
+/// Writes the scene as scene JSON. With the `original` document, the output is its text
+/// with only the poses of objects that moved rewritten in place (`rotation` and `scale`
+/// are added only when they differ from their defaults); without it, a fresh indented
+/// document.
+pub fn write(scene: &Scene, original: Option<&JsonDocument>) -> String {
+    match original {
+        Some(document) if document.objects.len() == scene.objects.len() => {
+            patched(scene, document)
+        }
+        _ => super::pretty::to_string(&fresh_document(scene)),
+    }
+}
+
+/// The document's text with the moved objects' pose fields replaced (or added after
+/// `position`): every other byte as it was.
+fn patched(scene: &Scene, document: &JsonDocument) -> String {
+    // (where, order, what): a replacement of `where`, or an insertion when it is empty.
+    let mut edits: Vec<(Range<usize>, u8, String)> = Vec::new();
+    for (object, fields) in scene.objects.iter().zip(&document.objects) {
+        let pose = file_pose(object);
+        let read = fields.read;
+        let moved = (read.translation - pose.translation).abs().max_element() >= 1e-12;
+        let turned = (read.rotation.dot(pose.rotation).abs() - 1.0).abs() >= 1e-12;
+        let scaled = (read.scale - pose.scale).abs() >= 1e-12;
+        if moved {
+            edits.push((
+                fields.position.clone(),
+                0,
+                list_text(&pose.translation.to_array()),
+            ));
+        }
+        let after_position = fields.position.end..fields.position.end;
+        match &fields.rotation {
+            Some(r) if turned => edits.push((r.clone(), 0, list_text(&pose.rotation.to_array()))),
+            None if turned => edits.push((
+                after_position.clone(),
+                1,
+                format!(", \"rotation\": {}", list_text(&pose.rotation.to_array())),
+            )),
+            _ => {}
+        }
+        match &fields.scale {
+            Some(r) if scaled => edits.push((r.clone(), 0, number_text(pose.scale))),
+            None if scaled => edits.push((
+                after_position,
+                2,
+                format!(", \"scale\": {}", number_text(pose.scale)),
+            )),
+            _ => {}
         }
     }
-    super::pretty::to_string(&document)
+    edits.sort_by_key(|(range, order, _)| (range.start, *order));
+    let text = &document.text;
+    let mut out = String::with_capacity(text.len() + edits.len() * 16 + 1);
+    let mut at = 0;
+    for (range, _, replacement) in &edits {
+        out.push_str(&text[at..range.start]);
+        out.push_str(replacement);
+        at = range.end;
+    }
+    out.push_str(&text[at..]);
+    if !out.ends_with('\n') {
+        out.push('\n');
+    }
+    out
+}
+
+/// `[a, b, c]`, each number as [`tidy`] writes it.
+fn list_text(values: &[f64]) -> String {
+    let items: Vec<String> = values.iter().map(|&x| number_text(x)).collect();
+    format!("[{}]", items.join(", "))
+}
+
+fn number_text(x: f64) -> String {
+    tidy(x).to_string()
 }
 
 fn fresh_document(scene: &Scene) -> Value {
@@ -361,8 +674,18 @@ fn fresh_document(scene: &Scene) -> Value {
                     o.world_aabb().size().max(DVec3::splat(MIN_SIZE))
                 }
             };
-            // The pose is filled in by `update_pose`, like any moved object's.
-            let mut v = serde_json::json!({"name": o.name, "size": numbers(size.to_array())});
+            let pose = file_pose(o);
+            let mut v = serde_json::json!({
+                "name": o.name,
+                "size": numbers(size.to_array()),
+                "position": numbers(pose.translation.to_array()),
+            });
+            if !pose.rotation.abs_diff_eq(DQuat::IDENTITY, 1e-12) {
+                v["rotation"] = numbers(pose.rotation.to_array());
+            }
+            if (pose.scale - 1.0).abs() > 1e-12 {
+                v["scale"] = tidy(pose.scale);
+            }
             if (o.front - DVec3::Z).length() > 1e-12 {
                 v["front"] = serde_json::json!(numbers(o.front.to_array()));
             }
@@ -385,25 +708,6 @@ fn file_pose(object: &Object) -> Similarity {
             translation: object.world_aabb().bottom_center(),
             ..Similarity::IDENTITY
         },
-    }
-}
-
-fn update_pose(object: &Object, map: &mut Map<String, Value>) {
-    let pose = file_pose(object);
-    let unchanged = pose_of(map).is_some_and(|(p, q, s)| {
-        (p - pose.translation).abs().max_element() < 1e-12
-            && (q.dot(pose.rotation).abs() - 1.0).abs() < 1e-12
-            && (s - pose.scale).abs() < 1e-12
-    });
-    if unchanged {
-        return;
-    }
-    map.insert("position".into(), numbers(pose.translation.to_array()));
-    if map.contains_key("rotation") || !pose.rotation.abs_diff_eq(DQuat::IDENTITY, 1e-12) {
-        map.insert("rotation".into(), numbers(pose.rotation.to_array()));
-    }
-    if map.contains_key("scale") || (pose.scale - 1.0).abs() > 1e-12 {
-        map.insert("scale".into(), tidy(pose.scale));
     }
 }
 
@@ -456,10 +760,10 @@ mod tests {
     fn round_trip_keeps_everything_and_the_shape() {
         let loaded = read(WORKSHOP, "x").unwrap();
         let text = write(&loaded.scene, Some(&loaded.document));
-        let again: Value = serde_json::from_str(&text).unwrap();
         assert_eq!(
-            again, loaded.document,
-            "unchanged scene, identical document"
+            text,
+            format!("{WORKSHOP}\n"),
+            "unchanged scene, identical text"
         );
         let reread = read(&text, "x").unwrap().scene;
         assert_eq!(
@@ -489,6 +793,44 @@ mod tests {
         assert_eq!(bottle["tags"][1]["fragile"], true);
         assert_eq!(v["camera"]["fov"], 60);
         assert_eq!(v["units"], "metres");
+        // Only the moved poses changed: every other line is as it was.
+        let changed: Vec<(&str, &str)> = WORKSHOP
+            .lines()
+            .zip(text.lines())
+            .filter(|(a, b)| a != b)
+            .collect();
+        assert_eq!(changed.len(), 2, "{changed:?}");
+    }
+
+    #[test]
+    fn fields_a_moved_object_lacked_are_added_after_its_position() {
+        let mut loaded = read(WORKSHOP, "x").unwrap();
+        let turn = Multivector::rotor(0.5, &Multivector::e3(), &Multivector::e1()).unwrap()
+            * Multivector::dilator(2.0).unwrap();
+        loaded.scene.apply(0, &turn, false).unwrap();
+        let text = write(&loaded.scene, Some(&loaded.document));
+        let v: Value = serde_json::from_str(&text).unwrap();
+        let table = &v["objects"][0];
+        assert_eq!(table["scale"], 2);
+        assert!(table["rotation"].as_array().is_some_and(|q| q.len() == 4));
+        assert_eq!(table["material"], "oak");
+        let reread = read(&text, "x").unwrap().scene;
+        let (a, b) = (reread.objects[0].similarity(), loaded.scene.objects[0].similarity());
+        assert!((a.translation - b.translation).length() < 1e-9);
+        assert!(a.rotation.dot(b.rotation).abs() > 1.0 - 1e-12);
+        // Fields written before `position`, and a document on one line.
+        let compact = r#"{"objects":[{"rotation":[0,0,0,1],"name":"a","size":[1,1,1],"position":[0,0,0],"tdw_id":7}]}"#;
+        let mut loaded = read(compact, "x").unwrap();
+        loaded
+            .scene
+            .apply(0, &Multivector::translator(DVec3::X), false)
+            .unwrap();
+        let text = write(&loaded.scene, Some(&loaded.document));
+        assert_eq!(
+            text,
+            "{\"objects\":[{\"rotation\":[0,0,0,1],\"name\":\"a\",\"size\":[1,1,1],\"position\":[1, 0, 0],\"tdw_id\":7}]}\n"
+        );
+        assert_eq!(loaded.document.object_field(0, "tdw_id"), Some(Value::from(7)));
     }
 
     #[test]
@@ -558,6 +900,12 @@ mod tests {
         // NaN cannot be written in JSON; a huge number is out of range.
         let huge = r#"{"objects": [{"name": "a", "size": [1, 1, 1], "position": [1e999, 0, 0]}]}"#;
         assert!(err(huge).contains("number out of range"), "{}", err(huge));
+        // A repeated field is ambiguous: refused, not read as the last one.
+        let twice = r#"{"objects": [{"name": "a", "size": [1, 1, 1], "position": [0, 0, 0], "position": [1, 0, 0]}]}"#;
+        assert_eq!(err(twice), "objects[0]: duplicate field `position`");
+        // Errors inside an object say where in the file.
+        let bad = "{\"objects\": [\n  {\"name\": \"a\", \"size\": [1, 1, 1], \"position\": [1e999, 0, 0]}]}";
+        assert!(err(bad).starts_with("invalid JSON at line 2, column "), "{}", err(bad));
     }
 }
 

@@ -110,7 +110,7 @@ pub enum Document {
     /// Built in memory: written fresh.
     None,
     /// A scene JSON document.
-    SceneJson(serde_json::Value),
+    SceneJson(json::JsonDocument),
     /// A glTF document.
     Gltf(Box<gltf::GltfDocument>),
 }
@@ -178,7 +178,8 @@ impl SceneFile {
     ) -> Result<Self, FormatError> {
         let document = procthor::read_file(path, index, assets)?;
         let name = document["name"].as_str().unwrap_or("house").to_string();
-        let scene = json::scene_from_value(&document, &name).map_err(|e| e.in_file(path))?;
+        let (scene, document) =
+            json::scene_from_value(&document, &name).map_err(|e| e.in_file(path))?;
         Ok(Self {
             scene,
             document: Document::SceneJson(document),
@@ -189,15 +190,14 @@ impl SceneFile {
     /// The ThreeDWorld object id of each object: its `tdw_id` field in a scene-JSON
     /// document, else its position in the scene counting from 1.
     pub fn tdw_ids(&self) -> Vec<i64> {
-        let fields = match &self.document {
-            Document::SceneJson(v) => v.get("objects").and_then(serde_json::Value::as_array),
-            _ => None,
-        };
         (0..self.scene.objects.len())
             .map(|i| {
-                fields
-                    .and_then(|o| o.get(i))
-                    .and_then(|o| o.get("tdw_id"))
+                let field = match &self.document {
+                    Document::SceneJson(document) => document.object_field(i, "tdw_id"),
+                    _ => None,
+                };
+                field
+                    .as_ref()
                     .and_then(serde_json::Value::as_i64)
                     .unwrap_or(i as i64 + 1)
             })

@@ -404,7 +404,7 @@ mod tests {
             doc["bounds"],
             json!({"min": [0.0, 0.0, -5.0], "max": [4.0, 2.5, 0.0]})
         );
-        let scene = super::super::json::scene_from_value(&doc, "h").unwrap();
+        let (scene, _) = super::super::json::scene_from_value(&doc, "h").unwrap();
         assert_eq!(scene.objects[1].support, Some(0));
         assert!(scene.objects[1].support_from_file);
         let unknown = house.to_string().replace("Sofa_1", "Sofa_9");

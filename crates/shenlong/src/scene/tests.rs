@@ -192,8 +192,14 @@ fn unknown_names_get_suggestions() {
 #[test]
 fn huge_poses_are_refused_not_panicked_on() {
     let big = |field: &str, value: &str| {
+        // The field replaces the default of the same name (a repeated key is an error).
+        let fields = [("\"size\"", "[1, 1, 1]"), ("\"position\"", "[0, 0, 0]")]
+            .iter()
+            .filter(|(f, _)| *f != field)
+            .map(|(f, v)| format!("{f}: {v}, "))
+            .collect::<String>();
         let text = format!(
-            r#"{{"objects": [{{"name": "box", "size": [1, 1, 1], "position": [0, 0, 0], {field}: {value}}}]}}"#
+            r#"{{"objects": [{{"name": "box", {fields}{field}: {value}}}]}}"#
         );
         crate::format::json::read(&text, "t")
             .map(|_| ())
