@@ -4,7 +4,9 @@
 use super::lexicon::Lexicon;
 use super::words::{compact, normalize, split_number};
 use crate::scene::Scene;
-use rustc_hash::{FxHashMap, FxHashSet};
+use hashbrown::HashTable;
+use rustc_hash::{FxHashMap, FxHashSet, FxHasher};
+use std::hash::Hasher;
 
 /// How a phrase names an object, best first. A phrase means the objects it names at the
 /// best tier present: "the cup" means the 'coffee cup' (a literal word of its name) rather
@@ -23,12 +25,88 @@ pub(crate) enum Tier {
     Hypernym,
 }
 
-/// What a posting names: one object (by its own full name) or a group of objects that
-/// share every other phrase.
+/// What a posting names: a group of objects that share every phrase but their own names
+/// (which [`Names`] indexes).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-enum Target {
-    Object(u32),
-    Group(u32),
+struct Target(u32);
+
+/// Every object's normalised name, in one buffer, hashed by the name and by the name
+/// without spaces: no allocation per object, so a scene of a million objects is indexed
+/// (and dropped) quickly.
+#[derive(Clone, Debug, Default)]
+struct Names {
+    text: String,
+    /// Where each object's name ends in `text` (it starts where the previous one ends).
+    ends: Vec<usize>,
+    /// Objects by `hash(name)`.
+    by_name: HashTable<u32>,
+    /// Objects by `hash(name without spaces)`.
+    by_compact: HashTable<u32>,
+}
+
+fn hash_str(s: &str) -> u64 {
+    let mut h = FxHasher::default();
+    h.write(s.as_bytes());
+    h.finish()
+}
+
+/// The hash of `s` without its whitespace, computed without building it.
+fn hash_compact(s: &str) -> u64 {
+    let mut h = FxHasher::default();
+    for c in s.chars().filter(|c| !c.is_whitespace()) {
+        let mut buf = [0; 4];
+        h.write(c.encode_utf8(&mut buf).as_bytes());
+    }
+    h.finish()
+}
+
+fn compact_eq(a: &str, b: &str) -> bool {
+    a.chars()
+        .filter(|c| !c.is_whitespace())
+        .eq(b.chars().filter(|c| !c.is_whitespace()))
+}
+
+impl Names {
+    fn get(&self, object: u32) -> &str {
+        let i = object as usize;
+        let start = if i == 0 { 0 } else { self.ends[i - 1] };
+        &self.text[start..self.ends[i]]
+    }
+
+    fn push(&mut self, name: &str) {
+        let object = self.ends.len() as u32;
+        self.text.push_str(name);
+        self.ends.push(self.text.len());
+        let ends = &self.ends;
+        let text = &self.text;
+        let rehash = |by: fn(&str) -> u64| {
+            move |&o: &u32| {
+                let i = o as usize;
+                let start = if i == 0 { 0 } else { ends[i - 1] };
+                by(&text[start..ends[i]])
+            }
+        };
+        self.by_name
+            .insert_unique(hash_str(name), object, rehash(hash_str));
+        self.by_compact
+            .insert_unique(hash_compact(name), object, rehash(hash_compact));
+    }
+
+    /// The objects whose normalised name is `phrase`.
+    fn named<'a>(&'a self, phrase: &'a str) -> impl Iterator<Item = u32> + 'a {
+        self.by_name
+            .iter_hash(hash_str(&phrase))
+            .copied()
+            .filter(move |&o| self.get(o) == phrase)
+    }
+
+    /// The objects whose normalised name without spaces is `phrase` without spaces.
+    fn named_compact<'a>(&'a self, phrase: &'a str) -> impl Iterator<Item = u32> + 'a {
+        self.by_compact
+            .iter_hash(hash_compact(phrase))
+            .copied()
+            .filter(move |&o| compact_eq(self.get(o), phrase))
+    }
 }
 
 /// Which word of the object a phrase came through, for reports (`sofa` for `couch`).
@@ -95,10 +173,10 @@ const CONTAINERS: &[&str] = &[
 pub(crate) struct NameIndex {
     /// Normalised phrase → what it names.
     terms: FxHashMap<Box<str>, Vec<Posting>>,
-    /// A name or base name without spaces (`dogbed`) → objects.
+    /// A base name without spaces (`dogbed`) → the groups of that base name.
     compact: FxHashMap<Box<str>, Vec<u32>>,
-    /// Per object: its normalised name.
-    names: Vec<Box<str>>,
+    /// The objects' own names.
+    names: Names,
     /// Per object: its group.
     group_of: Vec<u32>,
     groups: Vec<Group>,
@@ -158,14 +236,6 @@ impl Builder {
         }
     }
 
-    fn add_compact(&mut self, key: String, object: u32) {
-        let list = self.index.compact.entry(key.into()).or_default();
-        // Objects come in order, so a repeat can only be the last entry.
-        if list.last() != Some(&object) {
-            list.push(object);
-        }
-    }
-
     /// The group of objects named like this one, made (with all its phrases) the first
     /// time such an object is seen.
     fn group(&mut self, object: &crate::scene::Object, base: &str, lexicon: &Lexicon) -> u32 {
@@ -192,9 +262,14 @@ impl Builder {
         let g = self.index.groups.len() as u32;
         self.index.groups.push(Group::default());
         self.group_ids.insert(key, g);
-        let target = Target::Group(g);
+        let target = Target(g);
 
         self.add(base, target, Tier::Name, Via::Name);
+        self.index
+            .compact
+            .entry(compact(base).into())
+            .or_default()
+            .push(g);
         let mut descriptors: FxHashSet<Box<str>> = FxHashSet::default();
         let mut kinds: Vec<(String, bool)> = vec![(base.to_string(), true)];
         for a in &aliases {
@@ -270,22 +345,27 @@ impl NameIndex {
     pub fn new(scene: &Scene, lexicon: &Lexicon) -> Self {
         let mut b = Builder::default();
         b.index.max_words = 1;
-        b.index.names.reserve(scene.objects.len());
+        b.index.names.ends.reserve(scene.objects.len());
         b.index.group_of.reserve(scene.objects.len());
         for (i, object) in scene.objects.iter().enumerate() {
             let i = i as u32;
             let name = normalize(&object.name);
             let (base, _) = split_number(&name);
-            b.add(&name, Target::Object(i), Tier::Name, Via::Name);
-            b.add_compact(compact(&name), i);
-            b.add_compact(compact(base), i);
+            b.index.max_words = b.index.max_words.max(name.split(' ').count());
             let g = b.group(object, base, lexicon);
             b.index.groups[g as usize].objects.push(i);
             b.index.group_of.push(g);
-            b.index.names.push(name.into());
+            b.index.names.push(&name);
         }
         let mut index = b.index;
         let mut vocabulary: FxHashSet<&str> = FxHashSet::default();
+        for o in 0..index.names.ends.len() as u32 {
+            for w in index.names.get(o).split(' ') {
+                if w.chars().all(char::is_alphabetic) {
+                    vocabulary.insert(w);
+                }
+            }
+        }
         for key in index.terms.keys() {
             for w in key.split(' ') {
                 if w.chars().all(char::is_alphabetic) {
@@ -308,30 +388,31 @@ impl NameIndex {
         index
     }
 
-    fn objects_of(&self, target: Target) -> impl Iterator<Item = u32> + '_ {
-        let (single, group): (Option<u32>, &[u32]) = match target {
-            Target::Object(i) => (Some(i), &[]),
-            Target::Group(g) => (None, &self.groups[g as usize].objects),
-        };
-        single.into_iter().chain(group.iter().copied())
+    fn objects_of(&self, target: Target) -> &[u32] {
+        &self.groups[target.0 as usize].objects
     }
 
     fn via_text(&self, via: Via, object: u32) -> &str {
         match via {
-            Via::Name => &self.names[object as usize],
+            Via::Name => self.names.get(object),
             Via::Word(id) => &self.vias[id as usize],
         }
     }
 
     /// The objects a normalised phrase names, at the best tier present.
     pub fn lookup(&self, phrase: &str) -> Option<Hit<'_>> {
-        let list = self.terms.get(phrase)?;
-        let tier = list.iter().map(|p| p.tier).min()?;
+        let list = self.terms.get(phrase).map_or(&[][..], Vec::as_slice);
+        // An object's own name is the best tier there is.
+        let mut named: Vec<(u32, Via)> = self.names.named(phrase).map(|o| (o, Via::Name)).collect();
+        let tier = if named.is_empty() {
+            list.iter().map(|p| p.tier).min()?
+        } else {
+            Tier::Name
+        };
         // (object, via) of every posting at that tier, then in scene order; an object
-        // named twice keeps the posting that came first, as it was added first.
-        let mut named: Vec<(u32, Via)> = Vec::new();
+        // named twice keeps the way that came first (its own name first).
         for p in list.iter().filter(|p| p.tier == tier) {
-            named.extend(self.objects_of(p.target).map(|o| (o, p.via)));
+            named.extend(self.objects_of(p.target).iter().map(|&o| (o, p.via)));
         }
         named.sort_by_key(|&(o, _)| o);
         named.dedup_by_key(|&mut (o, _)| o);
@@ -353,7 +434,8 @@ impl NameIndex {
             .into_iter()
             .flatten()
             .filter(|p| p.tier <= Tier::Category)
-            .flat_map(|p| self.objects_of(p.target).map(|o| o as usize))
+            .flat_map(|p| self.objects_of(p.target).iter().map(|&o| o as usize))
+            .chain(self.names.named(phrase).map(|o| o as usize))
             .collect();
         out.sort_unstable();
         out.dedup();
@@ -362,9 +444,19 @@ impl NameIndex {
 
     /// The objects whose name or base name is this phrase without spaces (`dogbed`).
     pub fn lookup_compact(&self, phrase: &str) -> Option<Vec<usize>> {
-        self.compact
-            .get(compact(phrase).as_str())
-            .map(|list| list.iter().map(|&o| o as usize).collect())
+        let groups = self.compact.get(compact(phrase).as_str());
+        let mut out: Vec<usize> = groups
+            .into_iter()
+            .flatten()
+            .flat_map(|&g| self.objects_of(Target(g)).iter().map(|&o| o as usize))
+            .chain(self.names.named_compact(phrase).map(|o| o as usize))
+            .collect();
+        if out.is_empty() {
+            return None;
+        }
+        out.sort_unstable();
+        out.dedup();
+        Some(out)
     }
 
     /// Whether `word` (normalised) describes object `object`: a word of its name, category,
