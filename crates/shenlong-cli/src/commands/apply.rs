@@ -39,12 +39,17 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     let mut file = super::load_scene(&args.scene)?;
     let options = args.collisions.edit_options(!args.no_carry)?;
-    let before = file.scene.clone();
+    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
+    let before = args.tdw.is_some().then(|| file.scene.clone());
     let (placed, _) =
-        shenlong::pipeline::apply_expression(&file.scene, &args.object, &args.expr, &options)
+        shenlong::pipeline::apply_expression(&mut file.scene, &args.object, &args.expr, &options)
             .map_err(|e| super::edit_error(e).context(format!("--expr {}", args.expr)))?;
     super::collision_notes(&placed);
-    file.scene = placed.scene;
-    super::write_edit(&file, &before, args.output.as_deref(), args.tdw.as_deref())?;
+    super::write_edit(
+        &file,
+        before.as_ref(),
+        args.output.as_deref(),
+        args.tdw.as_deref(),
+    )?;
     Ok(())
 }

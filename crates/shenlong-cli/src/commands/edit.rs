@@ -61,7 +61,8 @@ pub fn run(args: Args) -> Result<()> {
             Some(args.collisions.options()?)
         },
     };
-    let before = file.scene.clone();
+    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
+    let before = args.tdw.is_some().then(|| file.scene.clone());
     let result = edit(
         &mut file.scene,
         &args.instruction,
@@ -72,7 +73,12 @@ pub fn run(args: Args) -> Result<()> {
     .map_err(super::edit_error)?;
     let report = serde_json::to_string_pretty(&result.report).expect("reports serialise");
 
-    super::write_edit(&file, &before, args.output.as_deref(), args.tdw.as_deref())?;
+    super::write_edit(
+        &file,
+        before.as_ref(),
+        args.output.as_deref(),
+        args.tdw.as_deref(),
+    )?;
     match args.json.as_deref() {
         Some("-") => eprintln!("{report}"),
         Some(path) => {

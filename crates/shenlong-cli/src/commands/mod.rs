@@ -29,15 +29,16 @@ pub fn load_scene(spec: &str) -> Result<SceneFile> {
 }
 
 /// Writes an edited scene to `output` (format by extension) or, without one, to stdout in
-/// the input's format; then, with `tdw`, the edit from `before` as ThreeDWorld commands.
-/// The commands are rendered before anything is written.
+/// the input's format; then, with `tdw`, the edit from `before` (the scene as it was,
+/// needed only then) as ThreeDWorld commands. The commands are rendered before anything
+/// is written.
 pub fn write_edit(
     file: &SceneFile,
-    before: &shenlong::scene::Scene,
+    before: Option<&shenlong::scene::Scene>,
     output: Option<&Path>,
     tdw: Option<&Path>,
 ) -> Result<()> {
-    let commands = tdw.map(|path| {
+    let commands = tdw.zip(before).map(|(path, before)| {
         let list = shenlong::format::tdw::edit(before, &file.scene, &file.tdw_ids());
         (
             path,

@@ -20,7 +20,7 @@ use serde_json::{json, Value};
 use shenlong::collide::ResolveOptions;
 use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
-use shenlong::pipeline::{edit, EditErrorKind, EditOptions, System};
+use shenlong::pipeline::{edit_with, EditErrorKind, EditOptions, System};
 use shenlong::scene::{Object, Scene};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
@@ -118,12 +118,16 @@ pub struct App {
     settings: ServeSettings,
     /// The address the server listens on, besides loopback, that a `Host` may name.
     bound: Mutex<Option<std::net::IpAddr>>,
+    /// The scene's name index, built once: edits move objects, never rename them.
+    grounder: Arc<shenlong::ground::Grounder>,
 }
 
 impl App {
     /// A server for this scene.
     pub fn new(file: SceneFile, settings: ServeSettings) -> Arc<Self> {
+        let grounder = Arc::new(shenlong::ground::Grounder::new(&file.scene));
         Arc::new(Self {
+            grounder,
             inner: Mutex::new(Inner {
                 file,
                 undo: Vec::new(),
@@ -497,8 +501,16 @@ async fn edit_scene(
     let before = app.lock().file.scene.clone();
     let instruction = request.instruction.clone();
     let mut working = before.clone();
+    let grounder = Arc::clone(&app.grounder);
     let outcome = tokio::task::spawn_blocking(move || {
-        edit(&mut working, &instruction, translator.as_ref(), &options).map(|e| (working, e.report))
+        edit_with(
+            &mut working,
+            &grounder,
+            &instruction,
+            translator.as_ref(),
+            &options,
+        )
+        .map(|e| (working, e.report))
     })
     .await
     .map_err(|e| {
@@ -533,10 +545,10 @@ async fn apply(
         collisions: app.settings.collisions.clone(),
     };
     // The one library path every edit takes: supports are re-detected after it.
-    let (placed, t) =
-        shenlong::pipeline::apply_expression(&before, &request.object, &request.expr, &options)
+    let mut after = before.clone();
+    let (_, t) =
+        shenlong::pipeline::apply_expression(&mut after, &request.object, &request.expr, &options)
             .map_err(edit_status)?;
-    let after = placed.scene;
     let s = t.similarity;
     let id = commit(
         &app,

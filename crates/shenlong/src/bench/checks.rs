@@ -809,15 +809,11 @@ impl Check {
                     find_collisions(&bb, &ab, &groups, after.floor(), after.bounds.as_ref());
                 match found.first() {
                     None => Ok(()),
-                    Some(c) => {
-                        let names: Vec<String> =
-                            after.objects.iter().map(|o| o.name.clone()).collect();
-                        Err(format!(
-                            "'{}' collides with {}",
-                            names[c.object],
-                            c.with.describe(&names)
-                        ))
-                    }
+                    Some(c) => Err(format!(
+                        "'{}' collides with {}",
+                        after.objects[c.object].name,
+                        c.with.describe(after)
+                    )),
                 }
             }
             Check::Refused { .. } => {

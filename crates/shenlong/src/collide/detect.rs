@@ -24,9 +24,9 @@ pub enum Obstacle {
 
 impl Obstacle {
     /// A name for reports: the object's name, or `the floor`, `the left wall`, ….
-    pub fn describe(&self, names: &[String]) -> String {
+    pub fn describe(&self, scene: &crate::scene::Scene) -> String {
         match self {
-            Obstacle::Object(i) => format!("'{}'", names[*i]),
+            Obstacle::Object(i) => format!("'{}'", scene.objects[*i].name),
             Obstacle::Floor => "the floor".into(),
             Obstacle::Ceiling => "the ceiling".into(),
             Obstacle::Wall {
@@ -122,13 +122,24 @@ pub fn find_collisions(
     floor: f64,
     room: Option<&Aabb>,
 ) -> Vec<Overlap> {
+    find_collisions_in(&FloorGrid::new(after), before, after, groups, floor, room)
+}
+
+/// [`find_collisions`] with a grid over `after` already built.
+pub fn find_collisions_in(
+    grid: &FloorGrid,
+    before: &[Aabb],
+    after: &[Aabb],
+    groups: &[Vec<usize>],
+    floor: f64,
+    room: Option<&Aabb>,
+) -> Vec<Overlap> {
     let mut group_of = vec![usize::MAX; after.len()];
     for (g, members) in groups.iter().enumerate() {
         for &i in members {
             group_of[i] = g;
         }
     }
-    let grid = FloorGrid::new(after);
     let mut out = Vec::new();
     for members in groups {
         for &i in members {

@@ -1,7 +1,7 @@
 //! Resolution: the nearest collision-free placement for the moved groups.
 
 use super::detect::{
-    collides, find_collisions, overlap_volume, room_violations, Obstacle, Overlap,
+    collides, find_collisions_in, overlap_volume, room_violations, Obstacle, Overlap,
 };
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
@@ -69,6 +69,14 @@ pub struct Resolution {
     pub motion: AppliedMotion,
     /// How many candidate placements were tested.
     pub candidates_tested: usize,
+    /// Milliseconds finding the collisions and preparing the search (linear in the scene).
+    pub setup_ms: f64,
+    /// Milliseconds searching for free placements (what the time budget bounds).
+    pub search_ms: f64,
+}
+
+fn ms(since: Instant) -> f64 {
+    since.elapsed().as_secs_f64() * 1000.0
 }
 
 /// Why the edit cannot be placed.
@@ -95,24 +103,68 @@ pub fn resolve(
     moved: &[usize],
     options: &ResolveOptions,
 ) -> Result<Resolution, ResolveError> {
-    let started = Instant::now();
     let mut after = scene.world_aabbs();
+    let mut grid = FloorGrid::new(&after);
+    resolve_with(scene, before, &mut after, &mut grid, moved, options)
+}
+
+/// [`resolve`] with the world boxes after the edit (`after`) and a grid over them, both
+/// kept up to date as groups move. Setup is linear in the scene and always runs; the time
+/// budget covers the search only. On an error the scene, `after` and `grid` are as they
+/// were.
+///
+/// # Errors
+/// As [`resolve`].
+pub fn resolve_with(
+    scene: &mut Scene,
+    before: &[Aabb],
+    after: &mut [Aabb],
+    grid: &mut FloorGrid,
+    moved: &[usize],
+    options: &ResolveOptions,
+) -> Result<Resolution, ResolveError> {
+    let mut resolution = Resolution::default();
+    match search(scene, before, after, grid, moved, options, &mut resolution) {
+        Ok(()) => Ok(resolution),
+        Err(e) => {
+            for m in resolution.motion.moves.iter().rev() {
+                let old = after[m.object];
+                let back = old.translated(-m.world.translation);
+                grid.update(m.object, &old, &back);
+                after[m.object] = back;
+            }
+            scene.undo(&resolution.motion);
+            Err(e)
+        }
+    }
+}
+
+fn search(
+    scene: &mut Scene,
+    before: &[Aabb],
+    after: &mut [Aabb],
+    grid: &mut FloorGrid,
+    moved: &[usize],
+    options: &ResolveOptions,
+    resolution: &mut Resolution,
+) -> Result<(), ResolveError> {
+    let setup = Instant::now();
     let groups = groups(scene, moved);
     let floor = scene.floor();
     let room = scene.bounds;
-    let collisions = find_collisions(before, &after, &groups, floor, room.as_ref());
-    let mut resolution = Resolution::default();
+    let collisions = find_collisions_in(grid, before, after, &groups, floor, room.as_ref());
     if collisions.is_empty() {
-        return Ok(resolution);
+        resolution.setup_ms = ms(setup);
+        return Ok(());
     }
-    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
-    let in_group = |i: usize| groups.iter().position(|g| g.contains(&i));
-    // Fixed objects go in a grid once; moved groups are few and checked directly.
-    let fixed: Vec<usize> = (0..after.len())
-        .filter(|&i| in_group(i).is_none())
-        .collect();
-    let fixed_boxes: Vec<Aabb> = fixed.iter().map(|&i| after[i]).collect();
-    let grid = FloorGrid::new(&fixed_boxes);
+    let mut in_group = vec![false; after.len()];
+    for &i in groups.iter().flatten() {
+        in_group[i] = true;
+    }
+    resolution.setup_ms = ms(setup);
+    // The budget starts here: what came before is proportional to the scene and always
+    // runs, however large it is.
+    let started = Instant::now();
     let horizontal = horizontal_offsets(options.step, options.radius);
 
     for (g, group) in groups.iter().enumerate() {
@@ -149,7 +201,7 @@ pub fn resolve(
         let mut obstacles: Vec<usize> = grid
             .near_box(&region)
             .into_iter()
-            .map(|k| fixed[k])
+            .filter(|&k| !in_group[k])
             .collect();
         obstacles.extend(
             groups
@@ -164,11 +216,11 @@ pub fn resolve(
             group,
             obstacles: &obstacles,
             before,
-            after: &after,
+            after,
             floor,
             room: room.as_ref(),
         };
-        let lifts = lifts(&span, &obstacles, &after, floor, options.radius);
+        let lifts = lifts(&span, &obstacles, after, floor, options.radius);
         let root = group[0];
         let requested = after[root].bottom_center();
         // The level the edit put the object on: the top of an object it stands on there,
@@ -274,7 +326,9 @@ pub fn resolve(
                 let motion = scene.apply_world(group, &w);
                 resolution.motion.moves.extend(motion.moves);
                 for &i in group {
-                    after[i] = after[i].translated(offset);
+                    let old = after[i];
+                    after[i] = old.translated(offset);
+                    grid.update(i, &old, &after[i]);
                 }
                 let bottom = after[root].min.y;
                 let centre = after[root].center();
@@ -302,9 +356,10 @@ pub fn resolve(
                 });
             }
             None if options.allow_collisions => {
-                let left = find_collisions(
+                let left = find_collisions_in(
+                    grid,
                     before,
-                    &after,
+                    after,
                     std::slice::from_ref(group),
                     floor,
                     room.as_ref(),
@@ -312,7 +367,7 @@ pub fn resolve(
                 resolution.remaining.extend(left);
             }
             None => {
-                let blocking: Vec<String> = hits.iter().map(|o| o.describe(&names)).collect();
+                let blocking: Vec<String> = hits.iter().map(|o| o.describe(scene)).collect();
                 let why = if started.elapsed() > options.time_budget {
                     format!(
                         "the search stopped after {} ms",
@@ -325,9 +380,9 @@ pub fn resolve(
                     return Err(ResolveError {
                         message: format!(
                             "no free spot for '{}' on top of '{}': it is full where '{}' would go ({} in the way)",
-                            names[root],
-                            names[j],
-                            names[root],
+                            scene.objects[root].name,
+                            scene.objects[j].name,
+                            scene.objects[root].name,
                             blocking.join(", ")
                         ),
                     });
@@ -335,14 +390,15 @@ pub fn resolve(
                 return Err(ResolveError {
                     message: format!(
                         "no collision-free placement for '{}' ({why}): it collides with {}",
-                        names[root],
+                        scene.objects[root].name,
                         blocking.join(", ")
                     ),
                 });
             }
         }
     }
-    Ok(resolution)
+    resolution.search_ms = ms(started);
+    Ok(())
 }
 
 /// The edited objects with what rests on them; an object carried by an earlier edited

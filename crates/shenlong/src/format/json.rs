@@ -213,9 +213,9 @@ fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), Fo
             scene.bounds = Some(Aabb::new(min, max));
         }
     }
-    let objects = root.objects.ok_or_else(|| {
-        FormatError::new("missing \"objects\": the list of the scene's objects")
-    })?;
+    let objects = root
+        .objects
+        .ok_or_else(|| FormatError::new("missing \"objects\": the list of the scene's objects"))?;
     let objects: Vec<&RawValue> = if starts_with(objects.get(), '[') {
         serde_json::from_str(objects.get()).map_err(|e| json_error(text, objects.get(), &e))?
     } else {
@@ -397,8 +397,8 @@ fn object_from_raw<'a>(
         ))
     };
     let position_raw = o.position.ok_or_else(missing_position)?;
-    let position =
-        vec3_field(text, Some(position_raw), &|| field("position"))?.ok_or_else(missing_position)?;
+    let position = vec3_field(text, Some(position_raw), &|| field("position"))?
+        .ok_or_else(missing_position)?;
     for axis in 0..3 {
         if position[axis].abs() > MAX_COORDINATE {
             return Err(FormatError::new(format!(
@@ -474,33 +474,31 @@ fn strip_position(message: &str) -> String {
 /// string; else a ProcTHOR `objectType` in plain words), `aliases` (strings), and the
 /// attributes `color` / `colour` / `material` (a string or a list of strings).
 fn labels(text: &str, o: &RawObject<'_>, i: usize) -> Result<Labels, FormatError> {
-    let strings = |raw: Option<&RawValue>,
-                   field: &str,
-                   list_ok: bool|
-     -> Result<Vec<String>, FormatError> {
-        let Some(raw) = raw else {
-            return Ok(Vec::new());
-        };
-        match value_of(text, raw)? {
-            Value::Null => Ok(Vec::new()),
-            Value::String(s) => Ok(vec![s.trim().to_string()]),
-            Value::Array(items) if list_ok => items
-                .iter()
-                .enumerate()
-                .map(|(k, v)| {
-                    v.as_str().map(|s| s.trim().to_string()).ok_or_else(|| {
-                        FormatError::new(format!("objects[{i}].{field}[{k}] must be a string"))
+    let strings =
+        |raw: Option<&RawValue>, field: &str, list_ok: bool| -> Result<Vec<String>, FormatError> {
+            let Some(raw) = raw else {
+                return Ok(Vec::new());
+            };
+            match value_of(text, raw)? {
+                Value::Null => Ok(Vec::new()),
+                Value::String(s) => Ok(vec![s.trim().to_string()]),
+                Value::Array(items) if list_ok => items
+                    .iter()
+                    .enumerate()
+                    .map(|(k, v)| {
+                        v.as_str().map(|s| s.trim().to_string()).ok_or_else(|| {
+                            FormatError::new(format!("objects[{i}].{field}[{k}] must be a string"))
+                        })
                     })
-                })
-                .collect(),
-            _ if list_ok => Err(FormatError::new(format!(
-                "objects[{i}].{field} must be a string or a list of strings"
-            ))),
-            _ => Err(FormatError::new(format!(
-                "objects[{i}].{field} must be a string"
-            ))),
-        }
-    };
+                    .collect(),
+                _ if list_ok => Err(FormatError::new(format!(
+                    "objects[{i}].{field} must be a string or a list of strings"
+                ))),
+                _ => Err(FormatError::new(format!(
+                    "objects[{i}].{field} must be a string"
+                ))),
+            }
+        };
     let mut category = strings(o.category, "category", false)?.pop();
     if category.is_none() {
         if let Some(raw) = o.object_type {
@@ -582,9 +580,7 @@ fn number(value: &Value, at: &str) -> Result<f64, FormatError> {
 /// document.
 pub fn write(scene: &Scene, original: Option<&JsonDocument>) -> String {
     match original {
-        Some(document) if document.objects.len() == scene.objects.len() => {
-            patched(scene, document)
-        }
+        Some(document) if document.objects.len() == scene.objects.len() => patched(scene, document),
         _ => super::pretty::to_string(&fresh_document(scene)),
     }
 }
@@ -815,7 +811,10 @@ mod tests {
         assert!(table["rotation"].as_array().is_some_and(|q| q.len() == 4));
         assert_eq!(table["material"], "oak");
         let reread = read(&text, "x").unwrap().scene;
-        let (a, b) = (reread.objects[0].similarity(), loaded.scene.objects[0].similarity());
+        let (a, b) = (
+            reread.objects[0].similarity(),
+            loaded.scene.objects[0].similarity(),
+        );
         assert!((a.translation - b.translation).length() < 1e-9);
         assert!(a.rotation.dot(b.rotation).abs() > 1.0 - 1e-12);
         // Fields written before `position`, and a document on one line.
@@ -830,7 +829,10 @@ mod tests {
             text,
             "{\"objects\":[{\"rotation\":[0,0,0,1],\"name\":\"a\",\"size\":[1,1,1],\"position\":[1, 0, 0],\"tdw_id\":7}]}\n"
         );
-        assert_eq!(loaded.document.object_field(0, "tdw_id"), Some(Value::from(7)));
+        assert_eq!(
+            loaded.document.object_field(0, "tdw_id"),
+            Some(Value::from(7))
+        );
     }
 
     #[test]
@@ -905,7 +907,11 @@ mod tests {
         assert_eq!(err(twice), "objects[0]: duplicate field `position`");
         // Errors inside an object say where in the file.
         let bad = "{\"objects\": [\n  {\"name\": \"a\", \"size\": [1, 1, 1], \"position\": [1e999, 0, 0]}]}";
-        assert!(err(bad).starts_with("invalid JSON at line 2, column "), "{}", err(bad));
+        assert!(
+            err(bad).starts_with("invalid JSON at line 2, column "),
+            "{}",
+            err(bad)
+        );
     }
 }
 

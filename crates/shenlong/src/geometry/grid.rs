@@ -7,7 +7,7 @@
 //! rug) are kept aside and checked with every query, so one of them cannot flood the grid.
 
 use super::Aabb;
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 /// Most cells one box may occupy before it is kept aside as large.
 const MAX_CELLS_PER_BOX: i64 = 64;
@@ -16,7 +16,7 @@ const MAX_CELLS_PER_BOX: i64 = 64;
 #[derive(Clone, Debug)]
 pub struct FloorGrid {
     cell: f64,
-    cells: HashMap<(i64, i64), Vec<usize>>,
+    cells: FxHashMap<(i64, i64), Vec<usize>>,
     large: Vec<usize>,
 }
 
@@ -29,12 +29,17 @@ impl FloorGrid {
             .map(|b| b.size().x.max(b.size().z))
             .filter(|e| e.is_finite() && *e > 0.0)
             .collect();
-        extents.sort_by(f64::total_cmp);
-        let median = extents.get(extents.len() / 2).copied().unwrap_or(1.0);
+        // The median by selection, not a sort: linear in the boxes.
+        let middle = extents.len() / 2;
+        let median = if extents.is_empty() {
+            1.0
+        } else {
+            *extents.select_nth_unstable_by(middle, f64::total_cmp).1
+        };
         let cell = (median * 2.0).max(1e-3);
         let mut grid = Self {
             cell,
-            cells: HashMap::new(),
+            cells: FxHashMap::default(),
             large: Vec::new(),
         };
         for (i, b) in boxes.iter().enumerate() {
@@ -61,6 +66,33 @@ impl FloorGrid {
         for x in x0..=x1 {
             for z in z0..=z1 {
                 self.cells.entry((x, z)).or_default().push(index);
+            }
+        }
+    }
+
+    /// Moves box `index` from where `old` put it to where `new` puts it: one box's cells,
+    /// not a rebuild.
+    pub fn update(&mut self, index: usize, old: &Aabb, new: &Aabb) {
+        self.remove(index, old);
+        self.insert(index, new);
+    }
+
+    fn remove(&mut self, index: usize, b: &Aabb) {
+        let (x0, x1, z0, z1) = self.range(b);
+        let kept_aside =
+            !b.is_finite() || (x1 - x0 + 1).saturating_mul(z1 - z0 + 1) > MAX_CELLS_PER_BOX;
+        if kept_aside {
+            self.large.retain(|&i| i != index);
+            return;
+        }
+        for x in x0..=x1 {
+            for z in z0..=z1 {
+                if let Some(list) = self.cells.get_mut(&(x, z)) {
+                    list.retain(|&i| i != index);
+                    if list.is_empty() {
+                        self.cells.remove(&(x, z));
+                    }
+                }
             }
         }
     }
@@ -135,5 +167,36 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn an_update_moves_one_box_as_a_rebuild_would() {
+        let mut boxes: Vec<Aabb> = (0..50)
+            .map(|i| unit((i % 10) as f64 * 3.0, (i / 10) as f64 * 3.0))
+            .collect();
+        boxes.push(Aabb::new(DVec3::splat(-100.0), DVec3::splat(100.0)));
+        let mut grid = FloorGrid::new(&boxes);
+        for (i, to) in [(3, unit(40.0, 40.0)), (50, unit(-7.0, 2.0)), (7, boxes[50])] {
+            let old = boxes[i];
+            boxes[i] = to;
+            grid.update(i, &old, &to);
+        }
+        for q in [
+            unit(40.2, 40.2),
+            unit(-7.0, 2.0),
+            unit(9.0, 0.0),
+            unit(0.0, 0.0),
+        ] {
+            let got = grid.near_box(&q);
+            for (i, b) in boxes.iter().enumerate() {
+                if b.footprint_overlap(&q) > 0.0 {
+                    assert!(got.contains(&i), "missed {i} for {q:?}");
+                }
+            }
+        }
+        assert!(
+            !grid.near_box(&unit(9.0, 0.0)).contains(&3),
+            "3 left its old cell"
+        );
     }
 }

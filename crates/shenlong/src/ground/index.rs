@@ -95,7 +95,7 @@ impl Names {
     /// The objects whose normalised name is `phrase`.
     fn named<'a>(&'a self, phrase: &'a str) -> impl Iterator<Item = u32> + 'a {
         self.by_name
-            .iter_hash(hash_str(&phrase))
+            .iter_hash(hash_str(phrase))
             .copied()
             .filter(move |&o| self.get(o) == phrase)
     }

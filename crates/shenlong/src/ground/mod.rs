@@ -515,11 +515,27 @@ impl<'a> Reader<'a> {
             match (direct, plural) {
                 (Some(hit), plural) if plural.as_ref().is_none_or(|(_, p)| hit.tier < p.tier) => {
                     let via = hit.via.to_string();
-                    return Some(self.make_head(range, hit.objects, hit.tier, false, phrase, &via, typo));
+                    return Some(self.make_head(
+                        range,
+                        hit.objects,
+                        hit.tier,
+                        false,
+                        phrase,
+                        &via,
+                        typo,
+                    ));
                 }
                 (_, Some((singular, hit))) => {
                     let via = hit.via.to_string();
-                    return Some(self.make_head(range, hit.objects, hit.tier, true, singular, &via, typo));
+                    return Some(self.make_head(
+                        range,
+                        hit.objects,
+                        hit.tier,
+                        true,
+                        singular,
+                        &via,
+                        typo,
+                    ));
                 }
                 _ => {}
             }
@@ -818,7 +834,11 @@ impl<'a> Reader<'a> {
                     || words::count_word(w).is_some()
                     || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
                     || words::is_colour(w)
-                    || self.g.index.descriptor_words.contains(words::normalize(w).as_str())
+                    || self
+                        .g
+                        .index
+                        .descriptor_words
+                        .contains(words::normalize(w).as_str())
             }
             _ => false,
         }
@@ -949,7 +969,9 @@ impl<'a> Reader<'a> {
                         if fits.is_empty() {
                             // A colour or material must pick; a word of another object's
                             // name ("the dining chair") says nothing about these.
-                            if words::is_colour(w) || self.g.index.attribute_words.contains(d.as_str()) {
+                            if words::is_colour(w)
+                                || self.g.index.attribute_words.contains(d.as_str())
+                            {
                                 return Err(GroundError::NoPick {
                                     phrase: self.span_text(&(start..head.range.end)),
                                     reason: format!(

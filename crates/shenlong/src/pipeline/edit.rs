@@ -138,6 +138,10 @@ pub struct Timings {
     pub apply: f64,
     /// Collision detection and resolution.
     pub collide: f64,
+    /// Of which finding the collisions and preparing the search (linear in the scene).
+    pub collide_setup: f64,
+    /// Of which the search for free placements (what the collision budget bounds).
+    pub collide_search: f64,
     /// All of it.
     pub total: f64,
 }
@@ -250,17 +254,17 @@ pub fn edit_with(
     let placed = place(scene, &moves, options)?;
     timings.apply = placed.apply_ms;
     timings.collide = placed.collide_ms;
+    timings.collide_setup = placed.collide_setup_ms;
+    timings.collide_search = placed.collide_search_ms;
     let Placed {
-        scene: edited,
         motions,
         carried,
         collisions_resolved,
         overlaps_remaining,
         ..
     } = placed;
-    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
+    let name = |i: usize| scene.objects[i].name.clone();
 
-    *scene = edited;
     timings.total = ms(started);
     let tokens = translation
         .exchanges
@@ -278,7 +282,7 @@ pub fn edit_with(
             let s = a.transformation.similarity;
             ObjectChange {
                 variable: a.variable.clone(),
-                object: names[a.object].clone(),
+                object: name(a.object),
                 expressions: a.expressions.clone(),
                 translation: s.translation.to_array(),
                 rotation: s.rotation.to_array(),
@@ -303,7 +307,7 @@ pub fn edit_with(
         .map(|p| GroundedPhrase {
             phrase: p.text.clone(),
             span: [p.span.start, p.span.end],
-            objects: p.objects.iter().map(|&o| names[o].clone()).collect(),
+            objects: p.objects.iter().map(|&o| name(o)).collect(),
             variables: p.objects.iter().map(|&o| variable_of(o)).collect(),
             reasons: p.reasons.clone(),
         })
@@ -317,7 +321,7 @@ pub fn edit_with(
             .enumerate()
             .map(|(k, &i)| Binding {
                 variable: Templated::variable(k),
-                object: names[i].clone(),
+                object: name(i),
             })
             .collect(),
         grounding,
@@ -337,12 +341,10 @@ pub fn edit_with(
     Ok(Edit { report, motions })
 }
 
-/// What placing an edit's motions gave: the edited scene and what happened to it.
+/// What placing an edit's motions did to the scene.
 #[derive(Clone, Debug)]
 pub struct Placed {
-    /// The scene after the motions and collision resolution.
-    pub scene: Scene,
-    /// The motions applied, in order, for undo.
+    /// The motions applied, in order, for undo ([`Scene::undo`] them last first).
     pub motions: Vec<AppliedMotion>,
     /// The objects moved by the motions themselves.
     pub moved: Vec<usize>,
@@ -354,38 +356,88 @@ pub struct Placed {
     pub overlaps_remaining: Vec<String>,
     /// Milliseconds applying the motions.
     pub apply_ms: f64,
-    /// Milliseconds resolving collisions.
+    /// Milliseconds resolving collisions (setup and search).
     pub collide_ms: f64,
+    /// Of which finding the collisions and preparing the search, linear in the scene.
+    pub collide_setup_ms: f64,
+    /// Of which searching for free placements (what `--collision-budget` bounds).
+    pub collide_search_ms: f64,
 }
 
-/// Applies motions to objects of a copy of `scene` — each about its object's pivot,
-/// carrying what rests on it, supports re-detected after each — then resolves collisions.
-/// The one way every edit is applied: instructions, expressions from the command line and
+/// Applies motions to objects of `scene` — each about its object's pivot, carrying what
+/// rests on it, supports re-detected around what moved — then resolves collisions. The
+/// one way every edit is applied: instructions, expressions from the command line and
 /// the server. Every motion is computed against the scene as it was: an object carried by
 /// an earlier motion first goes back, then takes its own.
 ///
+/// The world boxes are computed once and the floor grid built once; each motion updates
+/// them for the objects it moved, so an edit costs what it moved plus one pass over the
+/// scene.
+///
 /// # Errors
-/// A motion beyond the exact range, or no free placement; `scene` is not changed.
+/// A motion beyond the exact range, or no free placement; `scene` is then as it was.
 pub fn place(
-    scene: &Scene,
+    scene: &mut Scene,
     moves: &[(usize, cga::Multivector)],
     options: &EditOptions,
 ) -> Result<Placed, EditError> {
+    let supports: Vec<(Option<usize>, bool)> = scene
+        .objects
+        .iter()
+        .map(|o| (o.support, o.support_from_file))
+        .collect();
+    let mut motions = Vec::new();
+    let result = place_into(scene, moves, options, &mut motions);
+    if result.is_err() {
+        for m in motions.iter().rev() {
+            scene.undo(m);
+        }
+        for (o, (support, from_file)) in scene.objects.iter_mut().zip(supports) {
+            o.support = support;
+            o.support_from_file = from_file;
+        }
+    }
+    result.map(|mut placed| {
+        placed.motions = motions;
+        placed
+    })
+}
+
+fn place_into(
+    scene: &mut Scene,
+    moves: &[(usize, cga::Multivector)],
+    options: &EditOptions,
+    motions: &mut Vec<AppliedMotion>,
+) -> Result<Placed, EditError> {
     let t0 = Instant::now();
     let before = scene.world_aabbs();
-    let mut edited = scene.clone();
-    let mut motions = Vec::new();
+    let mut boxes = before.clone();
+    let mut grid = crate::geometry::FloorGrid::new(&boxes);
     let mut moved = Vec::new();
     let mut carried = Vec::new();
     // World motion each object has picked up so far in this edit by being carried.
-    let mut carried_motion: Vec<Option<cga::Similarity>> = vec![None; edited.objects.len()];
+    let mut carried_motion: Vec<Option<cga::Similarity>> = vec![None; scene.objects.len()];
+    let update = |scene: &Scene,
+                  motion: &AppliedMotion,
+                  boxes: &mut [crate::geometry::Aabb],
+                  grid: &mut crate::geometry::FloorGrid| {
+        let changed: Vec<usize> = motion.objects().collect();
+        for &i in &changed {
+            let old = boxes[i];
+            boxes[i] = scene.objects[i].world_aabb();
+            grid.update(i, &old, &boxes[i]);
+        }
+        changed
+    };
     for &(object, ref versor) in moves {
         // Every motion is computed against the scene as it was, so an object carried by an
         // earlier motion first goes back to where it was, then takes its own.
         if let Some(w) = carried_motion[object].take() {
-            motions.push(edited.apply_world(&[object], &w.inverse()));
+            let back = scene.apply_world(&[object], &w.inverse());
+            update(scene, &back, &mut boxes, &mut grid);
+            motions.push(back);
         }
-        let motion = edited
+        let motion = scene
             .apply(object, versor, options.carry)
             .map_err(|e| EditError {
                 message: e.to_string(),
@@ -398,87 +450,100 @@ pub fn place(
             }
         }
         for i in motion.objects().filter(|&i| i != object) {
-            if !carried.contains(&edited.objects[i].name) {
-                carried.push(edited.objects[i].name.clone());
+            if !carried.contains(&scene.objects[i].name) {
+                carried.push(scene.objects[i].name.clone());
             }
         }
         moved.push(object);
+        let changed = update(scene, &motion, &mut boxes, &mut grid);
         motions.push(motion);
         // The moved object rests wherever it was put now, not on its old support: a later
         // motion that moves the old support must not carry it back.
-        edited.objects[object].support_from_file = false;
-        edited.detect_supports();
+        scene.objects[object].support_from_file = false;
+        scene.detect_supports_around(&boxes, &grid, &changed);
     }
     let apply_ms = ms(t0);
 
     let t0 = Instant::now();
-    let names: Vec<String> = scene.objects.iter().map(|o| o.name.clone()).collect();
     let mut collisions_resolved = Vec::new();
     let mut overlaps_remaining = Vec::new();
+    let (mut collide_setup_ms, mut collide_search_ms) = (0.0, 0.0);
     if let Some(resolve_options) = &options.collisions {
-        let resolution =
-            collide::resolve(&mut edited, &before, &moved, resolve_options).map_err(|e| {
-                EditError {
-                    message: e.message,
-                    kind: EditErrorKind::Placement,
-                }
-            })?;
+        let resolution = collide::resolve_with(
+            scene,
+            &before,
+            &mut boxes,
+            &mut grid,
+            &moved,
+            resolve_options,
+        )
+        .map_err(|e| EditError {
+            message: e.message,
+            kind: EditErrorKind::Placement,
+        })?;
+        collide_setup_ms = resolution.setup_ms;
+        collide_search_ms = resolution.search_ms;
+        let changed: Vec<usize> = resolution.motion.objects().collect();
+        motions.push(resolution.motion.clone());
         for a in &resolution.adjustments {
             // Resolution that undoes the whole move leaves a silent no-op: say so instead.
             let start = before[a.object].bottom_center();
             let wanted = (a.requested - start).length();
             if wanted > 0.02 && (a.resolved - start).length() < 0.01 {
                 let blocking: Vec<String> =
-                    a.collided_with.iter().map(|o| o.describe(&names)).collect();
+                    a.collided_with.iter().map(|o| o.describe(scene)).collect();
                 return Err(EditError {
                     message: format!(
                         "'{}' cannot go there: it collides with {}, and the nearest free place is where it already is",
-                        names[a.object],
+                        scene.objects[a.object].name,
                         blocking.join(", ")
                     ),
                     kind: EditErrorKind::Placement,
                 });
             }
             collisions_resolved.push(CollisionReport {
-                object: names[a.object].clone(),
+                object: scene.objects[a.object].name.clone(),
                 requested: a.requested.to_array(),
                 resolved: a.resolved.to_array(),
                 displacement: a.displacement.to_array(),
-                collided_with: a.collided_with.iter().map(|o| o.describe(&names)).collect(),
-                lifted_onto: a.lifted_onto.map(|j| names[j].clone()),
+                collided_with: a.collided_with.iter().map(|o| o.describe(scene)).collect(),
+                lifted_onto: a.lifted_onto.map(|j| scene.objects[j].name.clone()),
             });
         }
         for o in &resolution.remaining {
             overlaps_remaining.push(format!(
                 "'{}' overlaps {}",
-                names[o.object],
-                o.with.describe(&names)
+                scene.objects[o.object].name,
+                o.with.describe(scene)
             ));
         }
-        motions.push(resolution.motion);
+        if !changed.is_empty() {
+            scene.detect_supports_around(&boxes, &grid, &changed);
+        }
     }
     let collide_ms = ms(t0);
 
     Ok(Placed {
-        scene: edited,
-        motions,
+        motions: Vec::new(),
         moved,
         carried,
         collisions_resolved,
         overlaps_remaining,
         apply_ms,
         collide_ms,
+        collide_setup_ms,
+        collide_search_ms,
     })
 }
 
 /// Applies one CGA expression to one object (it is X1; `room` is bound when the scene has
-/// bounds), through [`place`].
+/// bounds), through [`place`]: on an error the scene is as it was.
 ///
 /// # Errors
 /// An unknown object, an expression that is not a transformation, or what [`place`]
 /// refuses.
 pub fn apply_expression(
-    scene: &Scene,
+    scene: &mut Scene,
     object: &str,
     expression: &str,
     options: &EditOptions,
@@ -493,4 +558,75 @@ pub fn apply_expression(
         kind: EditErrorKind::NotUnderstood,
     })?;
     Ok((place(scene, &[(index, t.versor)], options)?, t))
+}
+
+#[cfg(test)]
+mod place_tests {
+    use super::*;
+    use crate::scene::Object;
+    use cga::Multivector;
+    use glam::DVec3;
+
+    fn room() -> Scene {
+        let mut s = Scene::new("t");
+        s.push_box("table", [1.0, 0.8, 1.0], [0.0, 0.0, 0.0]);
+        s.push_box("cup", [0.1, 0.1, 0.1], [0.0, 0.8, 0.0]);
+        s.push_box("wall block", [0.5, 2.0, 20.0], [3.0, 0.0, 0.0]);
+        s.detect_supports();
+        s
+    }
+
+    fn options() -> EditOptions {
+        EditOptions {
+            carry: true,
+            collisions: Some(ResolveOptions {
+                radius: 0.5,
+                ..ResolveOptions::default()
+            }),
+        }
+    }
+
+    #[test]
+    fn a_failed_placement_leaves_the_scene_as_it_was() {
+        let mut scene = room();
+        let poses: Vec<_> = scene.objects.iter().map(Object::similarity).collect();
+        let supports: Vec<_> = scene.objects.iter().map(|o| o.support).collect();
+        assert_eq!(supports[1], Some(0));
+        // Into the middle of the wall block, with no free place within 0.5 m.
+        let m = Multivector::translator(DVec3::new(3.0, 0.0, 0.0));
+        let e = place(&mut scene, &[(0, m)], &options()).unwrap_err();
+        assert_eq!(e.kind, EditErrorKind::Placement, "{e}");
+        let after: Vec<_> = scene.objects.iter().map(Object::similarity).collect();
+        assert_eq!(after, poses);
+        let now: Vec<_> = scene.objects.iter().map(|o| o.support).collect();
+        assert_eq!(now, supports);
+        // A motion beyond the limits is refused the same way.
+        let far = Multivector::translator(DVec3::new(5e6, 0.0, 0.0));
+        assert!(place(&mut scene, &[(1, far)], &options()).is_err());
+        let after: Vec<_> = scene.objects.iter().map(Object::similarity).collect();
+        assert_eq!(after, poses);
+    }
+
+    #[test]
+    fn a_cup_taken_off_the_table_is_not_carried_by_it_later() {
+        let mut scene = room();
+        let off = Multivector::translator(DVec3::new(1.5, -0.8, 0.0));
+        place(&mut scene, &[(1, off)], &options()).unwrap();
+        assert_eq!(
+            scene.objects[1].support, None,
+            "the cup is on the floor now"
+        );
+        let cup = scene.objects[1].world_aabb();
+        place(
+            &mut scene,
+            &[(0, Multivector::translator(DVec3::new(0.0, 0.0, -1.0)))],
+            &options(),
+        )
+        .unwrap();
+        assert_eq!(scene.objects[1].world_aabb(), cup, "the cup stayed");
+        // And one put back on the table is carried again.
+        let back = Multivector::translator(DVec3::new(-1.5, 0.8, -1.0));
+        place(&mut scene, &[(1, back)], &options()).unwrap();
+        assert_eq!(scene.objects[1].support, Some(0));
+    }
 }

@@ -412,6 +412,17 @@ impl Scene {
     pub fn detect_supports(&mut self) {
         support::detect(self);
     }
+
+    /// [`Scene::detect_supports`] for only what moving `changed` can have changed, given
+    /// the world boxes of every object (`boxes`, already updated) and a grid over them.
+    pub fn detect_supports_around(
+        &mut self,
+        boxes: &[Aabb],
+        grid: &crate::geometry::FloorGrid,
+        changed: &[usize],
+    ) {
+        support::detect_around(self, boxes, grid, changed);
+    }
 }
 
 #[cfg(test)]

@@ -1,7 +1,7 @@
 //! Which object rests on which.
 
 use super::Scene;
-use crate::geometry::FloorGrid;
+use crate::geometry::{Aabb, FloorGrid};
 
 /// How far above another object's top an object's bottom may be and still rest on it,
 /// in metres. Objects also count as resting when they sink slightly into their support.
@@ -13,44 +13,69 @@ pub const SUPPORT_GAP: f64 = 0.01;
 /// the highest top wins, then the largest footprint overlap.
 pub fn detect(scene: &mut Scene) {
     let boxes = scene.world_aabbs();
-    let floor = scene.floor();
     let grid = FloorGrid::new(&boxes);
-    for (i, a) in boxes.iter().enumerate() {
-        if scene.objects[i].support_from_file {
-            continue;
+    for i in 0..boxes.len() {
+        if !scene.objects[i].support_from_file {
+            scene.objects[i].support = support_of(scene, &boxes, &grid, i);
         }
-        let mut best: Option<(usize, f64, f64)> = None;
-        if a.min.y <= floor + SUPPORT_GAP {
-            scene.objects[i].support = None;
-            continue;
-        }
-        let centre = a.center();
-        for j in grid.near_point(centre.x, centre.z) {
-            let b = &boxes[j];
-            if i == j {
-                continue;
-            }
-            let gap = a.min.y - b.max.y;
-            let rests = gap.abs() <= SUPPORT_GAP
-                && a.max.y > b.max.y + 1e-3
-                && centre.x >= b.min.x
-                && centre.x <= b.max.x
-                && centre.z >= b.min.z
-                && centre.z <= b.max.z;
-            if !rests {
-                continue;
-            }
-            let overlap = a.footprint_overlap(b);
-            let better = match best {
-                None => true,
-                Some((_, top, area)) => {
-                    b.max.y > top + 1e-9 || (b.max.y >= top - 1e-9 && overlap > area)
-                }
-            };
-            if better {
-                best = Some((j, b.max.y, overlap));
-            }
-        }
-        scene.objects[i].support = best.map(|(j, _, _)| j);
     }
+}
+
+/// [`detect`] for what `changed` (objects whose boxes moved) can have changed: the changed
+/// objects themselves, what rested on them, and what stands over their new footprints.
+/// `boxes` and `grid` must already hold the new boxes. Costs what moved, not the scene.
+pub fn detect_around(scene: &mut Scene, boxes: &[Aabb], grid: &FloorGrid, changed: &[usize]) {
+    let mut candidates: Vec<usize> = changed.to_vec();
+    for (i, o) in scene.objects.iter().enumerate() {
+        if o.support.is_some_and(|s| changed.contains(&s)) {
+            candidates.push(i);
+        }
+    }
+    for &c in changed {
+        candidates.extend(grid.near_box(&boxes[c]));
+    }
+    candidates.sort_unstable();
+    candidates.dedup();
+    for i in candidates {
+        if !scene.objects[i].support_from_file {
+            scene.objects[i].support = support_of(scene, boxes, grid, i);
+        }
+    }
+}
+
+/// What object `i` rests on, by the rule of [`detect`].
+fn support_of(scene: &Scene, boxes: &[Aabb], grid: &FloorGrid, i: usize) -> Option<usize> {
+    let a = &boxes[i];
+    if a.min.y <= scene.floor() + SUPPORT_GAP {
+        return None;
+    }
+    let mut best: Option<(usize, f64, f64)> = None;
+    let centre = a.center();
+    for j in grid.near_point(centre.x, centre.z) {
+        let b = &boxes[j];
+        if i == j {
+            continue;
+        }
+        let gap = a.min.y - b.max.y;
+        let rests = gap.abs() <= SUPPORT_GAP
+            && a.max.y > b.max.y + 1e-3
+            && centre.x >= b.min.x
+            && centre.x <= b.max.x
+            && centre.z >= b.min.z
+            && centre.z <= b.max.z;
+        if !rests {
+            continue;
+        }
+        let overlap = a.footprint_overlap(b);
+        let better = match best {
+            None => true,
+            Some((_, top, area)) => {
+                b.max.y > top + 1e-9 || (b.max.y >= top - 1e-9 && overlap > area)
+            }
+        };
+        if better {
+            best = Some((j, b.max.y, overlap));
+        }
+    }
+    best.map(|(j, _, _)| j)
 }

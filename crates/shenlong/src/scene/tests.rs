@@ -198,9 +198,7 @@ fn huge_poses_are_refused_not_panicked_on() {
             .filter(|(f, _)| *f != field)
             .map(|(f, v)| format!("{f}: {v}, "))
             .collect::<String>();
-        let text = format!(
-            r#"{{"objects": [{{"name": "box", {fields}{field}: {value}}}]}}"#
-        );
+        let text = format!(r#"{{"objects": [{{"name": "box", {fields}{field}: {value}}}]}}"#);
         crate::format::json::read(&text, "t")
             .map(|_| ())
             .unwrap_err()
