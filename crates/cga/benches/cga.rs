@@ -1,4 +1,5 @@
-//! Kernel benchmarks: dense geometric product, a motor applied to a point, decomposition.
+//! Kernel benchmarks: dense geometric product, a motor applied to a point, decomposition,
+//! typed rotors and motors.
 //! Run with `cargo bench -p cga`; figures go to docs/performance.md.
 
 use cga::{Multivector, Similarity};
@@ -67,5 +68,34 @@ fn kernels(c: &mut Criterion) {
     });
 }
 
-criterion_group!(benches, kernels);
+fn typed(c: &mut Criterion) {
+    use cga::{Motor, Rotor};
+    let q1 = DQuat::from_axis_angle(DVec3::new(1.0, 2.0, 3.0).normalize(), 0.7);
+    let q2 = DQuat::from_axis_angle(DVec3::new(-1.0, 0.5, 0.2).normalize(), 1.9);
+    let (r1, r2) = (Rotor::from_quat(q1), Rotor::from_quat(q2));
+    let m1 = Motor::translator(DVec3::new(0.3, -1.2, 2.5)) * Motor::from(r1);
+    let m2 = Motor::translator(DVec3::new(-4.0, 0.1, 0.7)) * Motor::from(r2);
+    let (d1, d2) = (Multivector::from(m1), Multivector::from(m2));
+    c.bench_function("rotor × rotor (typed)", |bench| {
+        bench.iter(|| discard(*black_box(&r1) * *black_box(&r2)))
+    });
+    c.bench_function("motor × motor (typed)", |bench| {
+        bench.iter(|| discard(*black_box(&m1) * *black_box(&m2)))
+    });
+    c.bench_function("motor × motor (even × even kernel)", |bench| {
+        bench.iter(|| discard(black_box(&d1).geometric_even_even(black_box(&d2))))
+    });
+    c.bench_function("motor × motor (dense)", |bench| {
+        bench.iter(|| discard(*black_box(&d1) * *black_box(&d2)))
+    });
+    c.bench_function("glam quaternion product (reference)", |bench| {
+        bench.iter(|| discard(*black_box(&q1) * *black_box(&q2)))
+    });
+    let p = DVec3::new(0.5, 0.25, -1.0);
+    c.bench_function("motor applied to a point (typed)", |bench| {
+        bench.iter(|| discard(black_box(&m1).transform_point(black_box(p))))
+    });
+}
+
+criterion_group!(benches, kernels, typed);
 criterion_main!(benches);

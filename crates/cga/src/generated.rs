@@ -1038,3 +1038,41 @@ pub(crate) fn geometric_even_even(a: &[f64; 32], b: &[f64; 32]) -> [f64; 32] {
     ]
 }
 
+/// Product of two rotors on `[1, e12, e13, e23]`.
+#[inline(always)]
+#[rustfmt::skip]
+pub(crate) fn rotor_product(a: &[f64; 4], b: &[f64; 4]) -> [f64; 4] {
+    [
+        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3], // 1
+        a[0] * b[1] + a[1] * b[0] - a[2] * b[3] + a[3] * b[2], // e12
+        a[0] * b[2] + a[1] * b[3] + a[2] * b[0] - a[3] * b[1], // e13
+        a[0] * b[3] - a[1] * b[2] + a[2] * b[1] + a[3] * b[0], // e23
+    ]
+}
+
+/// Product of two motors on `[1, e12, e13, e23, e1∞, e2∞, e3∞, e123∞]` (∞ = einf = e4 + e5): the motor group is closed, so nothing else is computed.
+#[inline(always)]
+#[rustfmt::skip]
+pub(crate) fn motor_product(a: &[f64; 8], b: &[f64; 8]) -> [f64; 8] {
+    [
+        a[0] * b[0] - a[1] * b[1] - a[2] * b[2] - a[3] * b[3], // 1
+        a[0] * b[1] + a[1] * b[0] - a[2] * b[3] + a[3] * b[2], // e12
+        a[0] * b[2] + a[1] * b[3] + a[2] * b[0] - a[3] * b[1], // e13
+        a[0] * b[3] - a[1] * b[2] + a[2] * b[1] + a[3] * b[0], // e23
+        a[0] * b[4] + a[1] * b[5] + a[2] * b[6] - a[3] * b[7] + a[4] * b[0] - a[5] * b[1] - a[6] * b[2] - a[7] * b[3], // e1∞
+        a[0] * b[5] - a[1] * b[4] + a[2] * b[7] + a[3] * b[6] + a[4] * b[1] + a[5] * b[0] - a[6] * b[3] + a[7] * b[2], // e2∞
+        a[0] * b[6] - a[1] * b[7] - a[2] * b[4] - a[3] * b[5] + a[4] * b[2] + a[5] * b[3] + a[6] * b[0] - a[7] * b[1], // e3∞
+        a[0] * b[7] + a[1] * b[6] - a[2] * b[5] + a[3] * b[4] + a[4] * b[3] - a[5] * b[2] + a[6] * b[1] + a[7] * b[0], // e123∞
+    ]
+}
+
+/// The translation `t` of a motor `T(t)·R` on the basis of [`motor_product`] (`t = −2 D R̃`, with `D` its einf part and `R` its rotor part, `R R̃ = 1`).
+#[inline(always)]
+#[rustfmt::skip]
+pub(crate) fn motor_translation(m: &[f64; 8]) -> [f64; 3] {
+    [
+        -2.0 * m[4] * m[0] - 2.0 * m[5] * m[1] - 2.0 * m[6] * m[2] - 2.0 * m[7] * m[3],
+        2.0 * m[4] * m[1] - 2.0 * m[5] * m[0] - 2.0 * m[6] * m[3] + 2.0 * m[7] * m[2],
+        2.0 * m[4] * m[2] + 2.0 * m[5] * m[3] - 2.0 * m[6] * m[0] - 2.0 * m[7] * m[1],
+    ]
+}

@@ -28,6 +28,7 @@ pub mod blade;
 mod conformal;
 mod dispatch;
 mod error;
+mod even;
 #[allow(clippy::all)]
 #[rustfmt::skip]
 mod generated;
@@ -38,6 +39,7 @@ mod versor;
 
 pub use blade::{BLADE_COUNT, BLADE_NAMES};
 pub use error::CgaError;
+pub use even::{Motor, Rotor};
 pub use multivector::Multivector;
 pub use point_map::PointMap;
 pub use similarity::Similarity;

@@ -377,7 +377,10 @@ impl Multivector {
         out
     }
 
-    pub(crate) fn geometric_even_even(&self, other: &Self) -> Self {
+    /// The geometric product of two even multivectors (versors), reading and writing only
+    /// the even blades: half the work of `*`. For odd inputs the result is wrong; use `*`.
+    #[must_use]
+    pub fn geometric_even_even(&self, other: &Self) -> Self {
         Self::from_coefficients(generated::geometric_even_even(
             &self.coefficients,
             &other.coefficients,

@@ -81,7 +81,166 @@ pub fn generate() -> String {
     for kernel in KERNELS {
         write_kernel(&mut out, kernel);
     }
+    for basis in TYPED {
+        write_typed_product(&mut out, basis);
+    }
+    write_motor_translation(&mut out);
     out
+}
+
+/// A typed versor: coefficients on a few basis elements, each a signed sum of blades.
+struct TypedBasis {
+    name: &'static str,
+    doc: &'static str,
+    elements: &'static [(&'static str, &'static [(f64, &'static str)])],
+}
+
+/// `e_i einf = e_i4 + e_i5` and `e123 einf = e1234 + e1235` (einf = e4 + e5).
+const MOTOR_ELEMENTS: &[(&str, &[(f64, &str)])] = &[
+    ("1", &[(1.0, "1")]),
+    ("e12", &[(1.0, "e12")]),
+    ("e13", &[(1.0, "e13")]),
+    ("e23", &[(1.0, "e23")]),
+    ("e1∞", &[(1.0, "e14"), (1.0, "e15")]),
+    ("e2∞", &[(1.0, "e24"), (1.0, "e25")]),
+    ("e3∞", &[(1.0, "e34"), (1.0, "e35")]),
+    ("e123∞", &[(1.0, "e1234"), (1.0, "e1235")]),
+];
+
+const TYPED: &[TypedBasis] = &[
+    TypedBasis {
+        name: "rotor_product",
+        doc: "Product of two rotors on `[1, e12, e13, e23]`.",
+        elements: MOTOR_ELEMENTS.split_at(4).0,
+    },
+    TypedBasis {
+        name: "motor_product",
+        doc: "Product of two motors on `[1, e12, e13, e23, e1∞, e2∞, e3∞, e123∞]` \
+              (∞ = einf = e4 + e5): the motor group is closed, so nothing else is computed.",
+        elements: MOTOR_ELEMENTS,
+    },
+];
+
+fn blade_index(name: &str) -> usize {
+    BLADE_NAMES
+        .iter()
+        .position(|&n| n == name)
+        .unwrap_or_else(|| panic!("no blade {name}"))
+}
+
+fn expand(element: &[(f64, &str)]) -> [f64; BLADE_COUNT] {
+    let mut v = [0.0; BLADE_COUNT];
+    for &(c, name) in element {
+        v[blade_index(name)] += c;
+    }
+    v
+}
+
+fn dense_product(a: &[f64; BLADE_COUNT], b: &[f64; BLADE_COUNT]) -> [f64; BLADE_COUNT] {
+    let mut out = [0.0; BLADE_COUNT];
+    for i in 0..BLADE_COUNT {
+        for j in 0..BLADE_COUNT {
+            if a[i] != 0.0 && b[j] != 0.0 {
+                let (r, sign) = product(i, j);
+                out[r] += sign * a[i] * b[j];
+            }
+        }
+    }
+    out
+}
+
+/// `v` as coefficients on the basis: each element is read at its first blade, and the
+/// sum must give `v` back exactly (the basis spans the products).
+fn on_basis(v: &[f64; BLADE_COUNT], basis: &[(&str, &[(f64, &str)])]) -> Vec<f64> {
+    let coefficients: Vec<f64> = basis
+        .iter()
+        .map(|(_, element)| {
+            let (c, lead) = element[0];
+            v[blade_index(lead)] / c
+        })
+        .collect();
+    let mut rebuilt = [0.0; BLADE_COUNT];
+    for (k, (_, element)) in basis.iter().enumerate() {
+        for (i, x) in expand(element).iter().enumerate() {
+            rebuilt[i] += coefficients[k] * x;
+        }
+    }
+    assert_eq!(&rebuilt, v, "the basis is not closed under the product");
+    coefficients
+}
+
+fn write_typed_product(out: &mut String, basis: &TypedBasis) {
+    let n = basis.elements.len();
+    let mut terms: Vec<Vec<(f64, usize, usize)>> = vec![Vec::new(); n];
+    for i in 0..n {
+        for j in 0..n {
+            let p = dense_product(&expand(basis.elements[i].1), &expand(basis.elements[j].1));
+            for (k, c) in on_basis(&p, basis.elements).into_iter().enumerate() {
+                if c != 0.0 {
+                    terms[k].push((c, i, j));
+                }
+            }
+        }
+    }
+    let _ = writeln!(out, "/// {}", basis.doc);
+    out.push_str("#[inline(always)]\n#[rustfmt::skip]\n");
+    let _ = writeln!(
+        out,
+        "pub(crate) fn {}(a: &[f64; {n}], b: &[f64; {n}]) -> [f64; {n}] {{\n    [",
+        basis.name
+    );
+    for (k, row) in terms.iter().enumerate() {
+        let line = sum(row.iter().map(|&(c, i, j)| {
+            let factor = if c.abs() == 1.0 {
+                String::new()
+            } else {
+                format!("{:?} * ", c.abs())
+            };
+            (c, format!("{factor}a[{i}] * b[{j}]"))
+        }));
+        let _ = writeln!(out, "        {line}, // {}", basis.elements[k].0);
+    }
+    out.push_str("    ]\n}\n\n");
+}
+
+/// The translation of a motor `M = T(t) R = R − ½ t R einf`: its einf part is `D = −½ t R`,
+/// so `t = −2 D R̃`, the vector part of a product inside Cl(3) (quadratic in M).
+fn write_motor_translation(out: &mut String) {
+    // D's elements (vector and trivector of Cl(3)) at motor indices 4..8, R̃'s at 0..4
+    // with the bivectors negated.
+    let d: [(usize, &str); 4] = [(4, "e1"), (5, "e2"), (6, "e3"), (7, "e123")];
+    let r: [(usize, &str, f64); 4] = [
+        (0, "1", 1.0),
+        (1, "e12", -1.0),
+        (2, "e13", -1.0),
+        (3, "e23", -1.0),
+    ];
+    let mut rows: Vec<Vec<(f64, String)>> = vec![Vec::new(); 3];
+    for &(i, dn) in &d {
+        for &(j, rn, sign) in &r {
+            let (blade, s) = product(blade_index(dn), blade_index(rn));
+            let axis = match BLADE_NAMES[blade] {
+                "e1" => 0,
+                "e2" => 1,
+                "e3" => 2,
+                _ => continue,
+            };
+            rows[axis].push((-2.0 * s * sign, format!("m[{i}] * m[{j}]")));
+        }
+    }
+    out.push_str(
+        "/// The translation `t` of a motor `T(t)·R` on the basis of [`motor_product`] \
+         (`t = −2 D R̃`, with `D` its einf part and `R` its rotor part, `R R̃ = 1`).\n\
+         #[inline(always)]\n#[rustfmt::skip]\n\
+         pub(crate) fn motor_translation(m: &[f64; 8]) -> [f64; 3] {\n    [\n",
+    );
+    for row in rows {
+        let line = sum(row
+            .into_iter()
+            .map(|(c, t)| (c, format!("{:?} * {t}", c.abs()))));
+        let _ = writeln!(out, "        {line},");
+    }
+    out.push_str("    ]\n}\n");
 }
 
 /// Sign of the product of the blades with bit masks `n` and `m`.
