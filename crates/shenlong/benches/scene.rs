@@ -204,5 +204,66 @@ fn grounding(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench, collisions, offline, grounding);
+/// A grid of unit boxes 1.5 m apart, as `bench/big_scenes.py` writes it.
+fn grid_text(count: usize) -> (String, String) {
+    let side = (count as f64).sqrt().ceil() as usize;
+    let mut text = String::from("{\"name\": \"grid\", \"objects\": [\n");
+    for i in 0..count {
+        let (x, z) = ((i % side) as f64 * 1.5, (i / side) as f64 * 1.5);
+        if i > 0 {
+            text.push_str(",\n");
+        }
+        text.push_str(&format!(
+            "{{\"name\": \"box-{i}\", \"size\": [1, 1, 1], \"position\": [{x}, 0, {z}]}}"
+        ));
+    }
+    text.push_str("\n]}\n");
+    let middle = ((side / 2) * side + side / 2).min(count - 1);
+    (text, format!("box-{middle}"))
+}
+
+/// One edit whose object lands on its neighbour and is moved to a free place, at 1,000 to
+/// 100,000 objects, in phases (the whole process, up to a million, is `bench/big_scenes.py`).
+fn big_scenes(c: &mut Criterion) {
+    use shenlong::pipeline::{edit_with, EditOptions};
+    let translator = shenlong::offline::OfflineTranslator::new();
+    let options = EditOptions {
+        carry: true,
+        collisions: Some(shenlong::collide::ResolveOptions::default()),
+    };
+    let mut group = c.benchmark_group("big scenes");
+    group.sample_size(10);
+    for count in [1_000, 10_000, 100_000] {
+        let (text, name) = grid_text(count);
+        let instruction = format!("move the '{name}' 1.5 m to the right");
+        group.bench_function(format!("{count} objects: read"), |b| {
+            b.iter(|| json::read(black_box(&text), "grid").unwrap())
+        });
+        let loaded = json::read(&text, "grid").unwrap();
+        group.bench_function(format!("{count} objects: name index"), |b| {
+            b.iter(|| shenlong::ground::Grounder::new(black_box(&loaded.scene)))
+        });
+        let grounder = shenlong::ground::Grounder::new(&loaded.scene);
+        group.bench_function(format!("{count} objects: edit with a collision"), |b| {
+            b.iter_batched(
+                || loaded.scene.clone(),
+                |mut scene| {
+                    let e = edit_with(&mut scene, &grounder, &instruction, &translator, &options)
+                        .unwrap();
+                    assert_eq!(e.report.collisions_resolved.len(), 1);
+                    scene
+                },
+                criterion::BatchSize::LargeInput,
+            )
+        });
+        let mut edited = loaded.scene.clone();
+        edit_with(&mut edited, &grounder, &instruction, &translator, &options).unwrap();
+        group.bench_function(format!("{count} objects: write"), |b| {
+            b.iter(|| json::write(black_box(&edited), Some(&loaded.document)))
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, collisions, offline, grounding, big_scenes);
 criterion_main!(benches);

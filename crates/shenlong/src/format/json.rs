@@ -109,15 +109,19 @@ struct RawObject<'a> {
 
 /// Parses and validates scene JSON. `fallback_name` names a scene without a `"name"`.
 pub fn read(text: &str, fallback_name: &str) -> Result<JsonScene, FormatError> {
+    read_string(text.to_string(), fallback_name)
+}
+
+/// [`read`], keeping `text` itself as the document (no copy of a large file).
+pub fn read_string(mut text: String, fallback_name: &str) -> Result<JsonScene, FormatError> {
     // A UTF-8 byte-order mark, as some editors write, is not part of the JSON.
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
-    let (scene, objects) = parse(text, fallback_name)?;
+    if text.starts_with('\u{feff}') {
+        text.drain(..'\u{feff}'.len_utf8());
+    }
+    let (scene, objects) = parse(&text, fallback_name)?;
     Ok(JsonScene {
         scene,
-        document: JsonDocument {
-            text: text.to_string(),
-            objects,
-        },
+        document: JsonDocument { text, objects },
     })
 }
 

@@ -136,9 +136,12 @@ impl SceneFile {
                 let text = std::fs::read_to_string(path).map_err(|e| {
                     FormatError::new(format!("cannot read {}: {e}", path.display()))
                 })?;
-                let loaded = json::read(&text, stem).map_err(|e| {
-                    let house = serde_json::from_str::<serde_json::Value>(&text)
-                        .is_ok_and(|v| procthor::looks_like_house(&v));
+                let loaded = json::read_string(text, stem).map_err(|e| {
+                    // (Read again on this error path only: the text went into the document.)
+                    let house = std::fs::read_to_string(path)
+                        .ok()
+                        .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
+                        .is_some_and(|v| procthor::looks_like_house(&v));
                     if house {
                         FormatError::new(format!(
                             "{}: this is a ProcTHOR/Holodeck house, not a scene file: import it with --from procthor --assets asset-database.json",

@@ -105,37 +105,45 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
 /// spaces folded, camelCase split (`SheenChair` → `sheen chair`), a trailing `.001`-style
 /// suffix kept as a number (`chair.001` → `chair 1`).
 pub fn normalize(name: &str) -> String {
-    let mut out = String::with_capacity(name.len() + 4);
+    let mut spaced = String::with_capacity(name.len() + 4);
     let mut prev: Option<char> = None;
-    let chars: Vec<char> = name.trim().chars().collect();
-    for &c in &chars {
+    for c in name.trim().chars() {
         let split_camel = prev.is_some_and(|p| p.is_lowercase()) && c.is_uppercase();
         let split_digit = prev.is_some_and(|p| p.is_alphabetic()) && c.is_ascii_digit()
             || prev.is_some_and(|p| p.is_ascii_digit()) && c.is_alphabetic();
         if split_camel || split_digit {
-            out.push(' ');
+            spaced.push(' ');
         }
         if matches!(c, '-' | '_' | '.' | '#' | '(' | ')' | ',' | '/') || c.is_whitespace() {
-            out.push(' ');
+            spaced.push(' ');
+        } else if c.is_ascii() {
+            spaced.push(c.to_ascii_lowercase());
         } else {
-            out.extend(c.to_lowercase());
+            spaced.extend(c.to_lowercase());
         }
         prev = Some(c);
     }
-    let words: Vec<String> = out
-        .split_whitespace()
-        .map(|w| {
-            // `001` → `1`: numbered copies in glTF files.
-            if w.len() > 1 && w.chars().all(|c| c.is_ascii_digit()) {
-                w.trim_start_matches('0').to_string()
-            } else {
-                w.to_string()
+    // Words joined by single spaces, without allocating each one.
+    let mut out = String::with_capacity(spaced.len());
+    for w in spaced.split_whitespace() {
+        // `001` → `1`: numbered copies in glTF files.
+        let w = if w.len() > 1 && w.bytes().all(|c| c.is_ascii_digit()) {
+            match w.trim_start_matches('0') {
+                "" => "0",
+                digits => digits,
             }
-        })
-        .map(|w| if w.is_empty() { "0".to_string() } else { w })
-        .filter(|w| w != "node")
-        .collect();
-    words.join(" ")
+        } else {
+            w
+        };
+        if w == "node" {
+            continue;
+        }
+        if !out.is_empty() {
+            out.push(' ');
+        }
+        out.push_str(w);
+    }
+    out
 }
 
 /// A name without its spaces: `dog bed` and `dogbed` compare equal.
