@@ -294,3 +294,39 @@ fn undo_restores_poses_bit_for_bit() {
     let after: Vec<_> = s.objects.iter().map(Object::similarity).collect();
     assert_eq!(after, before);
 }
+
+#[test]
+fn supports_found_around_what_moved_match_a_full_detection() {
+    // Stacks of boxes on a grid; move a few (onto others, off, away) and compare the
+    // supports re-detected around them with a detection over the whole scene.
+    let mut s = Scene::new("stacks");
+    for i in 0..60 {
+        let (x, z) = ((i % 6) as f64 * 2.0, (i / 6 % 5) as f64 * 2.0);
+        let level = (i / 30) as f64;
+        s.push_box(&format!("b{i}"), [1.0, 1.0, 1.0], [x, level, z]);
+    }
+    s.detect_supports();
+    let moves = [
+        (3, DVec3::new(2.0, 1.0, 0.0)),   // onto its neighbour
+        (33, DVec3::new(0.0, -1.0, 7.0)), // off its stack, to the floor
+        (10, DVec3::new(0.3, 0.0, 0.0)),  // slid under what rests on it
+        (45, DVec3::new(-2.0, 0.0, 0.0)), // along the top level
+    ];
+    for (i, t) in moves {
+        let mut boxes = s.world_aabbs();
+        let mut grid = crate::geometry::FloorGrid::new(&boxes);
+        let motion = s.apply(i, &Multivector::translator(t), false).unwrap();
+        let changed: Vec<usize> = motion.objects().collect();
+        for &c in &changed {
+            let old = boxes[c];
+            boxes[c] = s.objects[c].world_aabb();
+            grid.update(c, &old, &boxes[c]);
+        }
+        let mut full = s.clone();
+        full.detect_supports();
+        s.detect_supports_around(&boxes, &grid, &changed);
+        let around: Vec<_> = s.objects.iter().map(|o| o.support).collect();
+        let everywhere: Vec<_> = full.objects.iter().map(|o| o.support).collect();
+        assert_eq!(around, everywhere, "after moving b{i}");
+    }
+}
