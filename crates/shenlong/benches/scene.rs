@@ -230,6 +230,7 @@ fn big_scenes(c: &mut Criterion) {
     let options = EditOptions {
         carry: true,
         collisions: Some(shenlong::collide::ResolveOptions::default()),
+        selection: Vec::new(),
     };
     let mut group = c.benchmark_group("big scenes");
     group.sample_size(10);

@@ -18,6 +18,7 @@ use std::path::PathBuf;
   shenlong edit examples/living_room.json \"rotate the 'armchair' 45 degrees clockwise\" --json report.json -o out.json
   shenlong edit room.glb \"move the 'Cube' 2 units up\" --llm openai:gpt-4o -o moved.glb
   shenlong edit room.json \"swap the 'lamp' and the 'plant'\" --llm ollama:llama3.1 --system euclidean
+  shenlong edit room.json \"turn it 90 degrees\" --selected 'armchair' -o out.json
 
 Backends (--llm): offline (built in, no network), openai:MODEL (OPENAI_API_KEY,
 OPENAI_BASE_URL), ollama:MODEL (localhost:11434), replay:FILE (answers recorded with
@@ -39,6 +40,10 @@ pub struct Args {
     /// Do not carry the objects resting on a moved object.
     #[arg(long)]
     no_carry: bool,
+    /// An object the user has selected (repeat for several): "it", "them" or "the
+    /// selection" with nothing named before them mean the selected objects.
+    #[arg(long = "selected", value_name = "NAME")]
+    selected: Vec<String>,
     /// Also write the edit as ThreeDWorld commands to this file.
     #[arg(long, value_name = "FILE")]
     tdw: Option<PathBuf>,
@@ -60,6 +65,15 @@ pub fn run(args: Args) -> Result<()> {
         } else {
             Some(args.collisions.options()?)
         },
+        selection: args
+            .selected
+            .iter()
+            .map(|name| {
+                file.scene
+                    .resolve(name)
+                    .map_err(|e| anyhow::anyhow!("--selected: {e}"))
+            })
+            .collect::<Result<_>>()?,
     };
     // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
     let before = args.tdw.is_some().then(|| file.scene.clone());

@@ -135,6 +135,7 @@ impl CollisionArgs {
             } else {
                 Some(self.options()?)
             },
+            selection: Vec::new(),
         })
     }
 }

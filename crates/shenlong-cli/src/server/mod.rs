@@ -495,6 +495,7 @@ async fn edit_scene(
     let options = EditOptions {
         carry: true,
         collisions: app.settings.collisions.clone(),
+        selection: Vec::new(),
     };
     // One edit at a time; reads go on meanwhile.
     let _turn = app.edits.lock().await;
@@ -543,6 +544,7 @@ async fn apply(
     let options = EditOptions {
         carry: true,
         collisions: app.settings.collisions.clone(),
+        selection: Vec::new(),
     };
     // The one library path every edit takes: supports are re-detected after it.
     let mut after = before.clone();

@@ -82,6 +82,7 @@ pub fn run_one(
     let options = EditOptions {
         carry: true,
         collisions: collide.then(Default::default),
+        selection: Vec::new(),
     };
     let result = edit(&mut after, &instance.instruction, translator, &options);
     // The placeholders, and the objects the checks are about by name: "others" are the

@@ -73,6 +73,9 @@ pub enum ReasonKind {
     Modifier,
     /// A group: several objects.
     Group,
+    /// A pronoun or "the selection" with nothing named before it: the objects the user
+    /// has selected (in an editor such as Blender).
+    Selection,
 }
 
 /// One reason, with the words it concerns.
@@ -204,6 +207,21 @@ impl Grounder {
     /// A phrase that fits no object, several with nothing to pick one, or a different
     /// number than it asks for; an instruction that names no object.
     pub fn ground(&self, instruction: &str, scene: &Scene) -> Result<Grounding, GroundError> {
+        self.ground_with_selection(instruction, scene, &[])
+    }
+
+    /// [`Grounder::ground`] where the user has objects selected: "it", "them", "the
+    /// selection" or "the selected object(s)" with no object named before them mean
+    /// those objects (a pronoun after a named object still refers back to it).
+    ///
+    /// # Errors
+    /// As [`Grounder::ground`].
+    pub fn ground_with_selection(
+        &self,
+        instruction: &str,
+        scene: &Scene,
+        selection: &[usize],
+    ) -> Result<Grounding, GroundError> {
         let text = instruction.trim();
         if text.is_empty() {
             return Err(GroundError::Empty);
@@ -219,7 +237,15 @@ impl Grounder {
             "a Grounder serves the scene it was built for"
         );
         let mut reader = Reader::new(self, scene, text);
-        let phrases = reader.read()?;
+        let mut phrases = match reader.read() {
+            Ok(phrases) => phrases,
+            // An instruction that names nothing but speaks of the selection.
+            Err(GroundError::NoObject { .. }) if !selection.is_empty() => Vec::new(),
+            Err(e) => return Err(e),
+        };
+        if let Some(phrase) = selection_phrase(text, scene, selection, &phrases) {
+            phrases.insert(0, phrase);
+        }
         if phrases.is_empty() {
             return Err(GroundError::NoObject {
                 names: scene
@@ -236,6 +262,65 @@ impl Grounder {
             phrases,
         })
     }
+}
+
+/// The phrase for the selection: the first "it" / "them" / "the selection" / "the selected
+/// object(s)" before any named object, or `None`.
+fn selection_phrase(
+    text: &str,
+    scene: &Scene,
+    selection: &[usize],
+    phrases: &[Phrase],
+) -> Option<Phrase> {
+    if selection.is_empty() {
+        return None;
+    }
+    let before = phrases.first().map_or(text.len(), |p| p.span.start);
+    let tokens = words::tokenize(&text[..before]);
+    let word = |k: usize| match tokens.get(k).map(|t| &t.kind) {
+        Some(Kind::Word(w)) => w.to_lowercase(),
+        _ => String::new(),
+    };
+    for k in 0..tokens.len() {
+        let w = word(k);
+        let range = match w.as_str() {
+            "it" | "them" => k..k + 1,
+            "selection" if word(k.wrapping_sub(1)) == "the" => k - 1..k + 1,
+            "selection" => k..k + 1,
+            "selected" => {
+                let start = if word(k.wrapping_sub(1)) == "the" {
+                    k - 1
+                } else {
+                    k
+                };
+                let end = match word(k + 1).as_str() {
+                    "object" | "objects" | "one" | "ones" | "items" | "item" | "things" => k + 2,
+                    _ => k + 1,
+                };
+                start..end
+            }
+            _ => continue,
+        };
+        let span = tokens[range.start].span.start..tokens[range.end - 1].span.end;
+        let names: Vec<String> = selection
+            .iter()
+            .map(|&i| format!("'{}'", scene.objects[i].name))
+            .collect();
+        return Some(Phrase {
+            text: text[span.clone()].to_string(),
+            span,
+            objects: selection.to_vec(),
+            reasons: vec![Reason {
+                kind: ReasonKind::Selection,
+                detail: format!(
+                    "\"{}\" is the selection: {}",
+                    &text[tokens[range.start].span.start..tokens[range.end - 1].span.end],
+                    error::list(&names)
+                ),
+            }],
+        });
+    }
+    None
 }
 
 fn grammar_word(w: &str) -> bool {

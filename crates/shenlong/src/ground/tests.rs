@@ -430,3 +430,55 @@ fn colours_and_one() {
     // "the left one" with nothing before it is not the leftmost object of the scene.
     assert!(g(&s, "move the left one right").is_err());
 }
+
+#[test]
+fn pronouns_with_nothing_before_them_mean_the_selection() {
+    let s = scene("living_room");
+    let grounder = Grounder::new(&s);
+    let armchairs: Vec<usize> = ["armchair", "ottoman"]
+        .iter()
+        .map(|n| s.find(n).unwrap())
+        .collect();
+    let names = |g: &Grounding| -> Vec<Vec<String>> {
+        g.phrases
+            .iter()
+            .map(|p| {
+                p.objects
+                    .iter()
+                    .map(|&o| s.objects[o].name.clone())
+                    .collect()
+            })
+            .collect()
+    };
+    let one = &armchairs[..1];
+    let g = grounder
+        .ground_with_selection("turn it 90 degrees", &s, one)
+        .unwrap();
+    assert_eq!(names(&g), vec![vec![s.objects[one[0]].name.clone()]]);
+    assert_eq!(g.phrases[0].text, "it");
+    assert_eq!(g.phrases[0].reasons[0].kind, ReasonKind::Selection);
+    let g = grounder
+        .ground_with_selection("move the selected objects 1 m to the left", &s, &armchairs)
+        .unwrap();
+    assert_eq!(g.phrases[0].text, "the selected objects");
+    assert_eq!(g.phrases[0].objects, armchairs);
+    // Something named first: "it" refers back to it, not to the selection.
+    let g = grounder
+        .ground_with_selection("move the sofa left and turn it", &s, one)
+        .unwrap();
+    assert!(g
+        .phrases
+        .iter()
+        .all(|p| p.reasons[0].kind != ReasonKind::Selection));
+    // The selection and a named object.
+    let g = grounder
+        .ground_with_selection("put it next to the sofa", &s, one)
+        .unwrap();
+    assert_eq!(g.phrases.len(), 2);
+    assert_eq!(g.phrases[0].objects, one);
+    // Without a selection, "it" alone still names nothing.
+    assert!(matches!(
+        grounder.ground("turn it 90 degrees", &s),
+        Err(GroundError::NoObject { .. })
+    ));
+}

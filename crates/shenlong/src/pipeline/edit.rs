@@ -2,7 +2,7 @@
 //! with a report of everything that happened. The scene is changed only when every stage
 //! succeeded.
 
-use super::template::{template_with, Templated};
+use super::template::{template_selected, Templated};
 use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
 use crate::ground::{Grounder, Reason};
@@ -17,12 +17,16 @@ pub struct EditOptions {
     pub carry: bool,
     /// Collision resolution; `None` skips it (`--no-collide`).
     pub collisions: Option<ResolveOptions>,
+    /// The objects the user has selected (indices), which "it", "them" or "the
+    /// selection" mean when nothing is named before them; empty for none.
+    pub selection: Vec<usize>,
 }
 
 impl Default for EditOptions {
     fn default() -> Self {
         Self {
             carry: true,
+            selection: Vec::new(),
             collisions: Some(ResolveOptions::default()),
         }
     }
@@ -226,8 +230,8 @@ pub fn edit_with(
     let started = Instant::now();
     let mut timings = Timings::default();
     let t0 = Instant::now();
-    let templated: Templated =
-        template_with(grounder, instruction, scene).map_err(|e| EditError {
+    let templated: Templated = template_selected(grounder, instruction, scene, &options.selection)
+        .map_err(|e| EditError {
             message: e.to_string(),
             kind: EditErrorKind::Instruction,
         })?;
@@ -583,6 +587,7 @@ mod place_tests {
                 radius: 0.5,
                 ..ResolveOptions::default()
             }),
+            selection: Vec::new(),
         }
     }
 

@@ -17,5 +17,5 @@ pub use edit::{
 pub use crate::translate::bindings;
 
 pub use prompts::System;
-pub use template::{template, template_with, Templated};
+pub use template::{template, template_selected, template_with, Templated};
 pub use translate::{LlmTranslator, TranslateError, Translation, Translator};

@@ -33,7 +33,20 @@ pub fn template_with(
     instruction: &str,
     scene: &Scene,
 ) -> Result<Templated, GroundError> {
-    let grounding = grounder.ground(instruction, scene)?;
+    template_selected(grounder, instruction, scene, &[])
+}
+
+/// [`template_with`] where the user has objects selected ([`Grounder::ground_with_selection`]).
+///
+/// # Errors
+/// As [`template`].
+pub fn template_selected(
+    grounder: &Grounder,
+    instruction: &str,
+    scene: &Scene,
+    selection: &[usize],
+) -> Result<Templated, GroundError> {
+    let grounding = grounder.ground_with_selection(instruction, scene, selection)?;
     let text = grounding.instruction.as_str();
     let mut objects: Vec<usize> = Vec::new();
     let mut query = String::with_capacity(text.len());
