@@ -1,0 +1,328 @@
+"""The add-on's work, apart from Blender's user interface: which objects Shenlong sees, the
+frame conversion, running the `shenlong` binary, and applying its motions exactly.
+
+Frame. Blender is right-handed with +Z up and objects facing −Y; Shenlong (like glTF) is
+right-handed with +Y up. The add-on converts exactly as Blender's own glTF exporter does:
+Shenlong `(x, y, z)` = Blender `(x, z, −y)`. So Shenlong's "forward" (−Z in its frame,
+towards the viewer of a front view) is Blender's −Y, "up" is +Z, and a counter-clockwise
+turn seen from above is a positive rotation about Blender's +Z.
+
+Objects. Every visible mesh object of the view layer that is not below another such mesh
+in the parent hierarchy is one Shenlong object (children move with their parent through
+Blender's hierarchy); a selected mesh is always one, wherever it is. Its box is the world
+bounding box of its evaluated mesh (modifiers count), and its pivot the bottom centre of
+that box, as Shenlong's scene JSON defines it.
+
+Nothing here runs a shell or executes anything Shenlong (or a model) says: the binary is
+started with an argument list, and what comes back is numbers.
+"""
+
+from __future__ import annotations
+
+import json
+import os
+import shutil
+import subprocess
+import tempfile
+from dataclasses import dataclass, field
+
+# Only mathutils is needed here (it comes with Blender and with the bpy module).
+from mathutils import Matrix, Quaternion, Vector
+
+#: Blender → Shenlong: (x, y, z) ↦ (x, z, −y).
+TO_SHENLONG = Matrix(((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, -1.0, 0.0)))
+#: Shenlong → Blender, the inverse (and transpose) of [`TO_SHENLONG`].
+TO_BLENDER = TO_SHENLONG.transposed()
+
+#: How long one edit may take, by default, in seconds (a model may be slow).
+DEFAULT_TIMEOUT = 300.0
+
+
+class ShenlongError(Exception):
+    """An edit that was refused or could not run: one line for the user."""
+
+
+def to_shenlong(v) -> Vector:
+    """A Blender vector in Shenlong's frame."""
+    return TO_SHENLONG @ Vector(v)
+
+
+def to_blender(v) -> Vector:
+    """A Shenlong vector in Blender's frame."""
+    return TO_BLENDER @ Vector(v)
+
+
+@dataclass
+class SceneObject:
+    """One Blender object as Shenlong sees it."""
+
+    name: str
+    #: Its world box in Blender's frame (min, max corners).
+    box_min: Vector
+    box_max: Vector
+    #: The direction it faces in Blender's world (its local −Y), unit length.
+    front: Vector
+
+
+@dataclass
+class Motion:
+    """What Shenlong did to one object: the world-frame motion in Blender's coordinates,
+    and the box Shenlong computed for it afterwards."""
+
+    name: str
+    matrix: Matrix
+    box_min: Vector
+    box_max: Vector
+
+
+@dataclass
+class EditResult:
+    """The outcome of one edit."""
+
+    motions: list[Motion]
+    report: dict
+    summary: list[str] = field(default_factory=list)
+
+
+def find_binary(preference: str | None = None) -> str:
+    """The `shenlong` binary: the add-on preference, else `SHENLONG_BIN`, else `PATH`."""
+    for candidate in (preference, os.environ.get("SHENLONG_BIN")):
+        if candidate:
+            path = os.path.expanduser(candidate)
+            if os.path.isfile(path) and os.access(path, os.X_OK):
+                return path
+            raise ShenlongError(f"the Shenlong binary '{candidate}' is not an executable file")
+    found = shutil.which("shenlong")
+    if found:
+        return found
+    raise ShenlongError(
+        "the Shenlong binary was not found: set it in the add-on's preferences, "
+        "or SHENLONG_BIN, or put 'shenlong' on PATH"
+    )
+
+
+def world_box(obj, depsgraph):
+    """The world bounding box (Blender frame) of the object's evaluated mesh, or None
+    when it has no vertices."""
+    evaluated = obj.evaluated_get(depsgraph)
+    mesh = evaluated.to_mesh()
+    try:
+        if len(mesh.vertices) == 0:
+            return None
+        matrix = evaluated.matrix_world
+        points = [matrix @ v.co for v in mesh.vertices]
+    finally:
+        evaluated.to_mesh_clear()
+    lo = Vector((min(p.x for p in points), min(p.y for p in points), min(p.z for p in points)))
+    hi = Vector((max(p.x for p in points), max(p.y for p in points), max(p.z for p in points)))
+    return lo, hi
+
+
+def editable_objects(view_layer, selected=()):
+    """The objects Shenlong edits: every visible mesh not below another visible mesh in
+    the hierarchy, and every selected mesh. Parents come before their children."""
+    meshes = [o for o in view_layer.objects if o.type == "MESH" and o.visible_get()]
+    visible = set(meshes)
+    chosen = set()
+    for o in meshes:
+        parent, below_mesh = o.parent, False
+        while parent is not None:
+            if parent in visible:
+                below_mesh = True
+                break
+            parent = parent.parent
+        if not below_mesh or o in selected:
+            chosen.add(o)
+
+    def depth(o):
+        d = 0
+        while o.parent is not None:
+            d, o = d + 1, o.parent
+        return d
+
+    return sorted(chosen, key=lambda o: (depth(o), o.name))
+
+
+def describe(objects, depsgraph) -> list[SceneObject]:
+    """The Shenlong view of the objects (those without geometry are left out)."""
+    out = []
+    for o in objects:
+        box = world_box(o, depsgraph)
+        if box is None:
+            continue
+        front = o.matrix_world.to_3x3() @ Vector((0.0, -1.0, 0.0))
+        if front.length < 1e-9:
+            front = Vector((0.0, -1.0, 0.0))
+        out.append(SceneObject(o.name, box[0], box[1], front.normalized()))
+    lowered = {}
+    for s in out:
+        other = lowered.setdefault(s.name.lower(), s.name)
+        if other != s.name:
+            raise ShenlongError(
+                f"'{other}' and '{s.name}' differ only in case, which Shenlong does not "
+                "tell apart: rename one"
+            )
+    return out
+
+
+def scene_json(objects: list[SceneObject], name: str = "blender") -> dict:
+    """A Shenlong scene (SPEC §2) of axis-aligned boxes, in Shenlong's frame."""
+    entries = []
+    for s in objects:
+        corners = [to_shenlong(c) for c in box_corners(s.box_min, s.box_max)]
+        lo = Vector((min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners)))
+        hi = Vector((max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners)))
+        size = hi - lo
+        # A flat mesh (a plane) gets a hair of thickness: a box's size must be > 0.
+        size = Vector([max(c, 1e-6) for c in size])
+        bottom = Vector(((lo.x + hi.x) / 2.0, lo.y, (lo.z + hi.z) / 2.0))
+        front = to_shenlong(s.front)
+        entries.append(
+            {
+                "name": s.name,
+                "size": list(size),
+                "position": list(bottom),
+                "front": list(front),
+            }
+        )
+    return {"name": name, "objects": entries}
+
+
+def box_corners(lo, hi):
+    return [Vector((x, y, z)) for x in (lo.x, hi.x) for y in (lo.y, hi.y) for z in (lo.z, hi.z)]
+
+
+def run_edit(
+    binary: str,
+    objects: list[SceneObject],
+    instruction: str,
+    *,
+    llm: str = "offline",
+    system: str = "cga",
+    base_url: str | None = None,
+    selection: tuple[str, ...] = (),
+    timeout: float = DEFAULT_TIMEOUT,
+) -> EditResult:
+    """Runs `shenlong edit` on the objects and returns each moved object's motion.
+
+    Raises ShenlongError with Shenlong's one-line message on a refusal or failure; the
+    Blender scene is never touched here.
+    """
+    if not instruction.strip():
+        raise ShenlongError("type an instruction first")
+    if not objects:
+        raise ShenlongError("there are no visible mesh objects to edit")
+    scene = scene_json(objects)
+    with tempfile.TemporaryDirectory(prefix="shenlong-blender-") as tmp:
+        scene_path = os.path.join(tmp, "scene.json")
+        out_path = os.path.join(tmp, "edited.json")
+        report_path = os.path.join(tmp, "report.json")
+        with open(scene_path, "w", encoding="utf-8") as f:
+            json.dump(scene, f)
+        argv = [
+            binary, "edit", scene_path, instruction,
+            "-o", out_path, "--json", report_path,
+            "--llm", llm, "--system", system,
+        ]
+        if base_url:
+            argv += ["--base-url", base_url]
+        for name in selection:
+            argv += ["--selected", name]
+        try:
+            proc = subprocess.run(
+                argv, capture_output=True, text=True, timeout=timeout, check=False
+            )
+        except subprocess.TimeoutExpired:
+            raise ShenlongError(f"Shenlong did not finish within {timeout:g} s") from None
+        except OSError as e:
+            raise ShenlongError(f"cannot run {binary}: {e.strerror or e}") from None
+        if proc.returncode != 0:
+            lines = [l for l in proc.stderr.strip().splitlines() if l.strip()]
+            message = lines[-1] if lines else f"Shenlong failed (exit code {proc.returncode})"
+            raise ShenlongError(message.removeprefix("shenlong: "))
+        with open(out_path, encoding="utf-8") as f:
+            edited = json.load(f)
+        with open(report_path, encoding="utf-8") as f:
+            report = json.load(f)
+    motions = []
+    for before, after in zip(scene["objects"], edited["objects"]):
+        motion = motion_of(before, after)
+        if motion is not None:
+            motions.append(motion)
+    return EditResult(motions, report, summarise(report))
+
+
+def motion_of(before: dict, after: dict):
+    """The world motion (Blender frame) that takes an object from its pose in `before` to
+    its pose in `after`, or None when it did not move.
+
+    Shenlong's pose maps the box's local frame (pivot at the bottom centre) into the world:
+    `x ↦ s·q(x) + t`. The object started unrotated and unscaled at `p0`, so its world
+    motion is `x ↦ s·q(x − p0) + t`; in Blender's frame that is `C⁻¹ · that · C`.
+    """
+    p0 = Vector(before["position"])
+    t = Vector(after["position"])
+    x, y, z, w = after.get("rotation", [0.0, 0.0, 0.0, 1.0])
+    q = Quaternion((w, x, y, z)).normalized()
+    s = float(after.get("scale", 1.0))
+    if (t - p0).length < 1e-12 and abs(q.angle) < 1e-12 and abs(s - 1.0) < 1e-12:
+        return None
+    linear = TO_BLENDER @ (q.to_matrix() * s) @ TO_SHENLONG
+    matrix = Matrix.Translation(to_blender(t)) @ linear.to_4x4() @ Matrix.Translation(-to_blender(p0))
+    # Shenlong's box afterwards: its rotated, scaled box, in Blender's frame.
+    size = Vector(before["size"])
+    half = Vector((size.x / 2.0, 0.0, size.z / 2.0))
+    local = box_corners(-half, Vector((half.x, size.y, half.z)))
+    corners = [to_blender(q @ (c * s) + t) for c in local]
+    lo = Vector((min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners)))
+    hi = Vector((max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners)))
+    return Motion(after["name"], matrix, lo, hi)
+
+
+def apply_motions(objects_by_name: dict, motions: list[Motion]) -> None:
+    """Sets each moved object's world matrix to `motion · matrix_world`, parents first, all
+    computed from the matrices as they were (a child that Shenlong moved is set after its
+    parent, so Blender's hierarchy cannot move it twice)."""
+    targets = []
+    for m in motions:
+        obj = objects_by_name[m.name]
+        targets.append((obj, m.matrix @ obj.matrix_world))
+
+    def depth(o):
+        d = 0
+        while o.parent is not None:
+            d, o = d + 1, o.parent
+        return d
+
+    for obj, matrix in sorted(targets, key=lambda t: depth(t[0])):
+        obj.matrix_world = matrix
+
+
+def summarise(report: dict) -> list[str]:
+    """The report in a few lines for the panel: what each phrase meant, what moved, what
+    collisions were resolved."""
+    lines = []
+    for g in report.get("grounding", []):
+        lines.append(f"“{g.get('phrase', '')}” → {', '.join(g.get('objects', []))}")
+    for o in report.get("objects", []):
+        t = o.get("translation", [0, 0, 0])
+        moved = to_blender(t)
+        parts = []
+        if moved.length > 1e-9:
+            parts.append("moved " + ", ".join(f"{c:+.3f}" for c in moved) + " m")
+        if abs(o.get("rotation_degrees", 0.0)) > 1e-6:
+            parts.append(f"turned {o['rotation_degrees']:.1f}°")
+        if abs(o.get("scale", 1.0) - 1.0) > 1e-9:
+            parts.append(f"scaled ×{o['scale']:.3g}")
+        lines.append(f"{o.get('object', '?')}: {'; '.join(parts) or 'unchanged'}")
+    for name in report.get("carried", []):
+        lines.append(f"{name}: carried along")
+    for c in report.get("collisions_resolved", []):
+        d = to_blender(c.get("displacement", [0, 0, 0]))
+        lines.append(
+            f"{c.get('object', '?')}: moved {d.length:.3f} m to clear "
+            + ", ".join(c.get("collided_with", []))
+        )
+    for o in report.get("overlaps_remaining", []):
+        lines.append(f"overlap left: {o}")
+    return lines
