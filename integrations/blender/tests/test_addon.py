@@ -132,6 +132,13 @@ class AddonTests(unittest.TestCase):
         self.assertVectorAlmostEqual((lo + hi) / 2, Vector((0.0, 0.0, 0.3)))
         self.assertMatchesShenlong(bench)
 
+    def test_turning_to_face_uses_minus_y_as_the_front(self):
+        chair = cube("Chair", (0.0, 0.0, 0.0), scale=(0.3, 0.3, 0.5))
+        cube("Desk", (3.0, 0.0, 0.0), scale=(0.6, 0.4, 0.4))
+        self.assertEqual(edit("turn the Chair to face the Desk"), {"FINISHED"})
+        front = chair.matrix_world.to_3x3() @ Vector((0.0, -1.0, 0.0))
+        self.assertVectorAlmostEqual(front.normalized(), Vector((1.0, 0.0, 0.0)))
+
     def test_a_scaled_object_grows_from_its_bottom_centre(self):
         vase = cube("Vase", (1.0, 2.0, 0.0), scale=(0.1, 0.1, 0.2))
         self.assertEqual(edit("make the Vase twice as big"), {"FINISHED"})
