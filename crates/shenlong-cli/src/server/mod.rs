@@ -8,6 +8,7 @@
 
 pub mod assets;
 
+use crate::session::{Session, StepError};
 use axum::body::Bytes;
 use axum::extract::rejection::JsonRejection;
 use axum::extract::{DefaultBodyLimit, Query, State};
@@ -21,7 +22,7 @@ use shenlong::collide::ResolveOptions;
 use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
 use shenlong::pipeline::{edit_with, EditErrorKind, EditOptions, System};
-use shenlong::scene::{Object, Scene};
+use shenlong::scene::Scene;
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
@@ -45,70 +46,8 @@ pub struct ServeSettings {
     pub save: Option<PathBuf>,
 }
 
-/// One entry of the history.
-#[derive(Clone, Debug, serde::Serialize)]
-pub struct HistoryItem {
-    /// Running number.
-    pub id: u64,
-    /// `edit` or `apply`.
-    pub kind: String,
-    /// The instruction or expression.
-    pub text: String,
-    /// The objects that changed.
-    pub objects: Vec<String>,
-    /// Whether it is currently undone.
-    pub undone: bool,
-}
-
-/// One change, as the objects it changed: each one's state before and after (its pose and
-/// what it rests on), so a step costs what it changed, not a copy of the scene.
-struct Step {
-    id: u64,
-    changes: Vec<(usize, Object, Object)>,
-}
-
-impl Step {
-    fn bytes(&self) -> usize {
-        self.changes
-            .iter()
-            .map(|(_, a, b)| object_bytes(a) + object_bytes(b))
-            .sum()
-    }
-
-    /// Puts the objects back as they were (`undo`) or as the change left them.
-    fn apply(&self, scene: &mut Scene, undo: bool) {
-        for (i, before, after) in &self.changes {
-            scene.objects[*i] = if undo { before.clone() } else { after.clone() };
-        }
-    }
-}
-
-/// Whether an object's pose changed beyond rounding.
-fn moved(a: &Object, b: &Object) -> bool {
-    let (p, q) = (a.similarity(), b.similarity());
-    (p.translation - q.translation).length() > 1e-12
-        || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-15
-        || (p.scale - q.scale).abs() > 1e-12
-}
-
-fn object_bytes(o: &Object) -> usize {
-    std::mem::size_of::<Object>()
-        + o.name.len()
-        + match &o.shape {
-            shenlong::scene::Shape::Points { points } => points.len() * 24,
-            shenlong::scene::Shape::Box { .. } => 0,
-        }
-}
-
-/// The most memory the undo history keeps; the oldest steps go first past it.
-pub const MAX_HISTORY_BYTES: usize = 64 << 20;
-
 struct Inner {
-    file: SceneFile,
-    undo: Vec<Step>,
-    redo: Vec<Step>,
-    history: Vec<HistoryItem>,
-    next_id: u64,
+    session: Session,
 }
 
 /// The server's state.
@@ -129,11 +68,7 @@ impl App {
         Arc::new(Self {
             grounder,
             inner: Mutex::new(Inner {
-                file,
-                undo: Vec::new(),
-                redo: Vec::new(),
-                history: Vec::new(),
-                next_id: 1,
+                session: Session::new(file, settings.save.clone()),
             }),
             edits: tokio::sync::Mutex::new(()),
             settings,
@@ -299,18 +234,20 @@ async fn asset(uri: Uri) -> Response {
 /// The scene as the page draws it: scene-file JSON (boxes) plus supports.
 fn scene_json(inner: &Inner) -> Value {
     let bytes = inner
+        .session
         .file
         .to_bytes(Format::SceneJson)
         .expect("scene JSON always serialises");
     let mut value: Value = serde_json::from_slice(&bytes).expect("scene JSON parses");
     let supports: Vec<Value> = inner
+        .session
         .file
         .scene
         .objects
         .iter()
         .map(|o| {
             o.support.map_or(Value::Null, |s| {
-                Value::String(inner.file.scene.objects[s].name.clone())
+                Value::String(inner.session.file.scene.objects[s].name.clone())
             })
         })
         .collect();
@@ -323,8 +260,8 @@ fn scene_json(inner: &Inner) -> Value {
     }
     json!({
         "scene": value,
-        "can_undo": !inner.undo.is_empty(),
-        "can_redo": !inner.redo.is_empty(),
+        "can_undo": inner.session.can_undo(),
+        "can_redo": inner.session.can_redo(),
         "model": model_bytes(inner).is_some().then_some("/api/model"),
     })
 }
@@ -332,13 +269,13 @@ fn scene_json(inner: &Inner) -> Value {
 /// The scene's meshes as glTF, when its source is a GLB or a self-contained `.gltf` (a
 /// `.gltf` with buffers in other files is drawn as boxes).
 fn model_bytes(inner: &Inner) -> Option<Vec<u8>> {
-    let Document::Gltf(document) = &inner.file.document else {
+    let Document::Gltf(document) = &inner.session.file.document else {
         return None;
     };
     match document.container() {
-        shenlong::format::gltf::Container::Glb => inner.file.to_bytes(Format::Glb).ok(),
+        shenlong::format::gltf::Container::Glb => inner.session.file.to_bytes(Format::Glb).ok(),
         shenlong::format::gltf::Container::Gltf { .. } if document.external_uris().is_empty() => {
-            inner.file.to_bytes(Format::Gltf).ok()
+            inner.session.file.to_bytes(Format::Gltf).ok()
         }
         _ => None,
     }
@@ -393,66 +330,12 @@ struct EditRequest {
     system: Option<String>,
 }
 
-/// Records a change: what it changed goes on the undo stack (a change that moved nothing
-/// is not recorded); redo is cleared.
-fn commit(
-    app: &App,
-    before: Scene,
-    after: Scene,
-    kind: &str,
-    text: &str,
-) -> Result<Option<u64>, ApiError> {
-    let changes: Vec<(usize, Object, Object)> = before
-        .objects
-        .iter()
-        .zip(&after.objects)
-        .enumerate()
-        .filter(|(_, (a, b))| moved(a, b) || a.support != b.support)
-        .map(|(i, (a, b))| (i, a.clone(), b.clone()))
-        .collect();
-    let changed: Vec<String> = changes
-        .iter()
-        .filter(|(_, a, b)| moved(a, b))
-        .map(|(_, _, b)| b.name.clone())
-        .collect();
-    let mut inner = app.lock();
-    let id = inner.next_id;
-    if changes.is_empty() {
-        return Ok(None);
-    }
-    inner.next_id += 1;
-    inner.undo.push(Step { id, changes });
-    // Keep the history within its budget, dropping the oldest steps.
-    let mut total: usize = inner.undo.iter().map(Step::bytes).sum();
-    while total > MAX_HISTORY_BYTES && inner.undo.len() > 1 {
-        let dropped = inner.undo.remove(0);
-        total -= dropped.bytes();
-        inner.history.retain(|h| h.id != dropped.id);
-    }
-    inner.redo.clear();
-    inner.history.retain(|h| !h.undone);
-    inner.history.push(HistoryItem {
-        id,
-        kind: kind.into(),
-        text: text.into(),
-        objects: changed,
-        undone: false,
-    });
-    inner.file.scene = after;
-    save(app, &inner)?;
-    Ok(Some(id))
-}
-
-fn save(app: &App, inner: &Inner) -> Result<(), ApiError> {
-    if let Some(path) = &app.settings.save {
-        inner.file.save(path).map_err(|e| {
-            ApiError(
-                StatusCode::INTERNAL_SERVER_ERROR,
-                format!("the edit was made but could not be saved: {e}"),
-            )
-        })?;
-    }
-    Ok(())
+/// Records a change through the session (see [`Session::commit`]).
+fn commit(app: &App, after: Scene, kind: &str, text: &str) -> Result<Option<u64>, ApiError> {
+    app.lock()
+        .session
+        .commit(after, kind, text)
+        .map_err(|m| ApiError(StatusCode::INTERNAL_SERVER_ERROR, m))
 }
 
 /// The HTTP status of an edit error: 4xx for the request, 502 for a model server.
@@ -499,9 +382,8 @@ async fn edit_scene(
     };
     // One edit at a time; reads go on meanwhile.
     let _turn = app.edits.lock().await;
-    let before = app.lock().file.scene.clone();
+    let mut working = app.lock().session.file.scene.clone();
     let instruction = request.instruction.clone();
-    let mut working = before.clone();
     let grounder = Arc::clone(&app.grounder);
     let outcome = tokio::task::spawn_blocking(move || {
         edit_with(
@@ -521,7 +403,7 @@ async fn edit_scene(
         )
     })?;
     let (after, report) = outcome.map_err(edit_status)?;
-    let id = commit(&app, before, after, "edit", &request.instruction)?;
+    let id = commit(&app, after, "edit", &request.instruction)?;
     let mut value = serde_json::to_value(&report).expect("reports serialise");
     value["history_id"] = json!(id);
     Ok(Json(value))
@@ -540,21 +422,19 @@ async fn apply(
 ) -> Result<Json<Value>, ApiError> {
     let request = json_body(body)?;
     let _turn = app.edits.lock().await;
-    let before = app.lock().file.scene.clone();
+    let mut after = app.lock().session.file.scene.clone();
     let options = EditOptions {
         carry: true,
         collisions: app.settings.collisions.clone(),
         selection: Vec::new(),
     };
     // The one library path every edit takes: supports are re-detected after it.
-    let mut after = before.clone();
     let (_, t) =
         shenlong::pipeline::apply_expression(&mut after, &request.object, &request.expr, &options)
             .map_err(edit_status)?;
     let s = t.similarity;
     let id = commit(
         &app,
-        before,
         after,
         "apply",
         &format!("{}: {}", request.object, request.expr),
@@ -567,29 +447,17 @@ async fn apply(
 
 fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
     let mut inner = app.lock();
-    let popped = if undo {
-        inner.undo.pop()
-    } else {
-        inner.redo.pop()
-    };
-    let Some(step) = popped else {
-        return Err(ApiError(
+    match inner
+        .session
+        .step(undo)
+        .map_err(|m| ApiError(StatusCode::INTERNAL_SERVER_ERROR, m))?
+    {
+        Ok(_) => Ok(Json(scene_json(&inner))),
+        Err(StepError::Nothing) => Err(ApiError(
             StatusCode::CONFLICT,
             format!("nothing to {}", if undo { "undo" } else { "redo" }),
-        ));
-    };
-    step.apply(&mut inner.file.scene, undo);
-    let id = step.id;
-    if undo {
-        inner.redo.push(step);
-    } else {
-        inner.undo.push(step);
+        )),
     }
-    if let Some(item) = inner.history.iter_mut().find(|h| h.id == id) {
-        item.undone = undo;
-    }
-    save(app, &inner)?;
-    Ok(Json(scene_json(&inner)))
 }
 
 async fn undo(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
@@ -603,7 +471,7 @@ async fn redo(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
 }
 
 async fn history(State(app): State<Arc<App>>) -> Json<Value> {
-    Json(json!({"history": app.lock().history}))
+    Json(json!({"history": app.lock().session.history()}))
 }
 
 async fn export(
@@ -640,12 +508,14 @@ async fn export(
     };
     let inner = app.lock();
     let bytes = inner
+        .session
         .file
         .to_bytes(format)
         .map_err(|e| unprocessable(e.message))?;
     let filename = format!(
         "{}.{extension}",
         inner
+            .session
             .file
             .scene
             .name
