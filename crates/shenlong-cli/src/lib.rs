@@ -1,5 +1,6 @@
 //! The parts of the `shenlong` command that are worth testing from outside: the web
-//! editor's server, and the editing session it shares with the MCP server.
+//! editor's server, the MCP server, and the editing session they share.
 
+pub mod mcp;
 pub mod server;
 pub mod session;

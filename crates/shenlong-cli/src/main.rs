@@ -27,6 +27,7 @@ enum Command {
     Examples(commands::examples::Args),
     Render(commands::render::Args),
     Serve(commands::serve::Args),
+    Mcp(commands::mcp::Args),
 }
 
 fn main() -> ExitCode {
@@ -70,6 +71,7 @@ fn main() -> ExitCode {
         Command::Examples(args) => commands::examples::run(args),
         Command::Render(args) => commands::render::run(args),
         Command::Serve(args) => commands::serve::run(args),
+        Command::Mcp(args) => commands::mcp::run(args),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -1,6 +1,6 @@
 //! One scene being edited over time, as the editor's server and the MCP server keep it:
 //! the scene file, undo and redo as the poses each change replaced, a history, and saving
-//! after each change to the one file given at start-up.
+//! to the one file given at start-up (after each change, or when asked).
 
 use shenlong::format::SceneFile;
 use shenlong::scene::{Object, Scene};
@@ -80,6 +80,7 @@ pub struct Session {
     history: Vec<HistoryItem>,
     next_id: u64,
     save: Option<PathBuf>,
+    autosave: bool,
 }
 
 impl Session {
@@ -92,6 +93,15 @@ impl Session {
             history: Vec::new(),
             next_id: 1,
             save,
+            autosave: true,
+        }
+    }
+
+    /// A session on `file` that saves to `save` only when [`Session::save`] is called.
+    pub fn saving_on_request(file: SceneFile, save: Option<PathBuf>) -> Self {
+        Self {
+            autosave: false,
+            ..Self::new(file, save)
         }
     }
 
@@ -154,7 +164,9 @@ impl Session {
             undone: false,
         });
         self.file.scene = after;
-        self.save()?;
+        if self.autosave {
+            self.save()?;
+        }
         Ok(Some(id))
     }
 
@@ -182,7 +194,9 @@ impl Session {
         if let Some(item) = self.history.iter_mut().find(|h| h.id == id) {
             item.undone = undo;
         }
-        self.save()?;
+        if self.autosave {
+            self.save()?;
+        }
         Ok(Ok(id))
     }
 

@@ -6,6 +6,7 @@ pub mod convert;
 pub mod edit;
 pub mod eval;
 pub mod examples;
+pub mod mcp;
 pub mod render;
 pub mod serve;
 

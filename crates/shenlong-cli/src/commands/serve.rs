@@ -100,7 +100,7 @@ pub fn run(args: Args) -> Result<()> {
 
 /// Checks at start-up that `--save` can be written in the scene's format, so that no edit
 /// is applied in memory and then fails to save.
-fn check_save(file: &shenlong::format::SceneFile, save: &std::path::Path) -> Result<()> {
+pub(super) fn check_save(file: &shenlong::format::SceneFile, save: &std::path::Path) -> Result<()> {
     let format = shenlong::format::Format::from_path(save)
         .map_err(|e| anyhow::anyhow!("--save {}: {e}", save.display()))?;
     file.to_bytes(format)

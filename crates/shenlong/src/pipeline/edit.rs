@@ -552,16 +552,45 @@ pub fn apply_expression(
     expression: &str,
     options: &EditOptions,
 ) -> Result<(Placed, crate::expr::Transformation), EditError> {
-    let index = scene.resolve(object).map_err(|message| EditError {
+    apply_expression_bound(scene, &[object], expression, options)
+}
+
+/// [`apply_expression`] with more objects bound: `objects[0]` is X1, the object moved;
+/// `objects[1]` is X2, and so on, whose boxes the expression may use
+/// (`T(((X2.max | e2) - (X1.min | e2)) * e2)` puts X1 on X2).
+///
+/// # Errors
+/// As [`apply_expression`]; also no object, or one named twice.
+pub fn apply_expression_bound(
+    scene: &mut Scene,
+    objects: &[&str],
+    expression: &str,
+    options: &EditOptions,
+) -> Result<(Placed, crate::expr::Transformation), EditError> {
+    let instruction = |message: String| EditError {
         message,
         kind: EditErrorKind::Instruction,
-    })?;
-    let bindings = super::bindings(scene, &[index]);
+    };
+    if objects.is_empty() {
+        return Err(instruction("name the object to move (X1)".into()));
+    }
+    let mut indices = Vec::with_capacity(objects.len());
+    for name in objects {
+        let index = scene.resolve(name).map_err(instruction)?;
+        if indices.contains(&index) {
+            return Err(instruction(format!(
+                "'{}' is bound twice: each variable names a different object",
+                scene.objects[index].name
+            )));
+        }
+        indices.push(index);
+    }
+    let bindings = super::bindings(scene, &indices);
     let t = crate::expr::evaluate_transformation(expression, &bindings).map_err(|e| EditError {
         message: e.to_string(),
         kind: EditErrorKind::NotUnderstood,
     })?;
-    Ok((place(scene, &[(index, t.versor)], options)?, t))
+    Ok((place(scene, &[(indices[0], t.versor)], options)?, t))
 }
 
 #[cfg(test)]

@@ -10,8 +10,8 @@ pub mod template;
 pub mod translate;
 
 pub use edit::{
-    apply_expression, edit, edit_with, place, Edit, EditError, EditErrorKind, EditOptions,
-    EditReport, Placed,
+    apply_expression, apply_expression_bound, edit, edit_with, place, Edit, EditError,
+    EditErrorKind, EditOptions, EditReport, Placed,
 };
 
 pub use crate::translate::bindings;

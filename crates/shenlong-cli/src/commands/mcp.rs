@@ -1,0 +1,65 @@
+//! `shenlong mcp`: the scene as a Model Context Protocol server for AI assistants.
+
+use anyhow::{Context, Result};
+use shenlong::pipeline::System;
+use shenlong_cli::mcp::{serve_stdio, McpSettings};
+use std::path::PathBuf;
+
+/// Serve a scene to an AI assistant over the Model Context Protocol (stdio).
+///
+/// Tools: list_objects, edit {instruction}, apply {object, expression, bind}, undo, redo,
+/// history, render {before}, save, export {format}; the scene is the resource
+/// scene://current. The assistant never chooses a file: `save` writes the --save file.
+/// Logs go to stderr; stdout carries the protocol.
+#[derive(clap::Args)]
+#[command(after_help = "Examples:
+  shenlong mcp examples/living_room.json --save edited.json
+  shenlong mcp room.glb --save room-edited.glb --llm openai:gpt-4o
+
+Claude Desktop (claude_desktop_config.json):
+  {\"mcpServers\": {\"shenlong\": {\"command\": \"shenlong\",
+    \"args\": [\"mcp\", \"/path/to/scene.json\", \"--save\", \"/path/to/edited.json\"]}}}
+
+See docs/mcp.md.")]
+pub struct Args {
+    /// The scene (a file or example:NAME).
+    scene: String,
+    /// The file the `save` tool writes (atomically); checked at start-up.
+    #[arg(long, value_name = "FILE")]
+    save: Option<PathBuf>,
+    /// The prompt system for a model translator.
+    #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
+    system: String,
+    #[command(flatten)]
+    translator: super::TranslatorArgs,
+    #[command(flatten)]
+    collisions: super::CollisionArgs,
+}
+
+pub fn run(args: Args) -> Result<()> {
+    let file = super::load_scene(&args.scene)?;
+    if let Some(save) = &args.save {
+        super::serve::check_save(&file, save)?;
+    }
+    let system = System::from_name(&args.system).expect("clap checked the name");
+    let settings = McpSettings {
+        llm: args.translator.llm.clone(),
+        translator: args.translator.settings(system)?,
+        collisions: if args.collisions.no_collide() {
+            None
+        } else {
+            Some(args.collisions.options()?)
+        },
+        save: args.save.clone(),
+    };
+    // Fail on a bad backend now rather than at the first edit.
+    shenlong::pipeline::backends::translator(&settings.llm, &settings.translator)
+        .map_err(anyhow::Error::msg)?;
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .worker_threads(2)
+        .enable_all()
+        .build()
+        .context("cannot start the MCP server's runtime")?;
+    eprintln!("shenlong: serving '{}' over MCP on stdio", file.scene.name);
+    runtime.block_on(serve_stdio(file, settings))
+}

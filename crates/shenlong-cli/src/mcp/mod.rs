@@ -1,0 +1,601 @@
+//! `shenlong mcp`: the scene as a Model Context Protocol server over stdio, for AI
+//! assistants. One scene is kept in memory ([`Session`]: undo, redo, history); the tools
+//! list it, edit it by instruction (the whole pipeline: grounding, the server's translator,
+//! evaluation, collisions), apply CGA expressions, undo and redo, render the plan, save to
+//! the one file given at start-up and export it. The scene is also a resource,
+//! `scene://current`, whose subscribers are told after each change.
+//!
+//! Nothing a client sends chooses a file to read or write, and nothing a client or a model
+//! says is executed: instructions and expressions are read by Shenlong's grammar and
+//! expression language. Every failure is a tool error (`isError: true`) with one line.
+
+use crate::session::{Session, StepError};
+use base64::Engine as _;
+use rmcp::handler::server::router::tool::ToolRouter;
+use rmcp::handler::server::wrapper::Parameters;
+use rmcp::model::{
+    CallToolResult, ContentBlock, ListResourcesResult, PaginatedRequestParams,
+    ReadResourceRequestParams, ReadResourceResponse, ReadResourceResult, Resource,
+    ResourceContents, ResourceUpdatedNotificationParam, ServerCapabilities, ServerConfig,
+    SubscribeRequestParams, UnsubscribeRequestParams,
+};
+use rmcp::service::RequestContext;
+use rmcp::{schemars, tool, tool_handler, tool_router, ErrorData, Json, Peer, RoleServer};
+use serde::{Deserialize, Serialize};
+use shenlong::collide::ResolveOptions;
+use shenlong::format::{Format, SceneFile};
+use shenlong::ground::Grounder;
+use shenlong::pipeline::backends::{translator, TranslatorSettings};
+use shenlong::pipeline::{edit_with, EditOptions};
+use shenlong::scene::Scene;
+use std::collections::BTreeMap;
+use std::path::PathBuf;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::{Arc, Mutex};
+
+/// The URI of the scene resource.
+pub const SCENE_URI: &str = "scene://current";
+
+/// How the server edits: chosen on the command line, never by a client.
+#[derive(Clone, Debug)]
+pub struct McpSettings {
+    /// The translator (`offline`, `openai:MODEL`, …).
+    pub llm: String,
+    /// Its settings (prompt system, retries, timeouts, base URL); the API key stays here.
+    pub translator: TranslatorSettings,
+    /// Collision resolution; `None` skips it.
+    pub collisions: Option<ResolveOptions>,
+    /// The file `save` writes.
+    pub save: Option<PathBuf>,
+}
+
+struct State {
+    session: Mutex<Session>,
+    /// One change at a time.
+    edits: tokio::sync::Mutex<()>,
+    grounder: Grounder,
+    settings: McpSettings,
+    /// The scene before the last change, for `render {before: true}`.
+    previous: Mutex<Option<Scene>>,
+    subscribed: AtomicBool,
+}
+
+/// The MCP server.
+#[derive(Clone)]
+pub struct ShenlongMcp {
+    state: Arc<State>,
+    tool_router: ToolRouter<Self>,
+}
+
+/// `edit`'s input.
+#[derive(Debug, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct EditRequest {
+    /// What to do, in words: "put the 'orange bottle' on top of the 'tool table'", "move
+    /// the couch a bit to the left", "turn the chair nearest the desk to face the TV".
+    pub instruction: String,
+}
+
+/// `apply`'s input.
+#[derive(Debug, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ApplyRequest {
+    /// The object to move; it is X1 in the expression.
+    pub object: String,
+    /// A CGA expression for X1's transformation, e.g. `T(0.5*e1)`.
+    pub expression: String,
+    /// Other objects the expression uses, by variable: `{"X2": "tool table"}` (X2, X3, …
+    /// in order, with no gaps).
+    #[serde(default)]
+    pub bind: BTreeMap<String, String>,
+}
+
+/// `render`'s input.
+#[derive(Debug, Default, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RenderRequest {
+    /// Also draw where things were before the last change, with what moved highlighted.
+    #[serde(default)]
+    pub before: bool,
+}
+
+/// `export`'s input.
+#[derive(Debug, Deserialize, schemars::JsonSchema)]
+#[serde(deny_unknown_fields)]
+pub struct ExportRequest {
+    /// `json` (Shenlong scene JSON), `gltf`, `glb` (only for a scene read from glTF) or
+    /// `tdw` (ThreeDWorld commands).
+    pub format: ExportFormat,
+}
+
+/// The formats `export` writes.
+#[derive(Clone, Copy, Debug, Deserialize, schemars::JsonSchema)]
+#[serde(rename_all = "lowercase")]
+pub enum ExportFormat {
+    /// Shenlong scene JSON.
+    Json,
+    /// glTF JSON (the source must be glTF).
+    Gltf,
+    /// Binary glTF (the source must be GLB).
+    Glb,
+    /// ThreeDWorld commands placing every object.
+    Tdw,
+}
+
+/// The scene, for `list_objects`.
+#[derive(Debug, Serialize, schemars::JsonSchema)]
+pub struct SceneListing {
+    /// The scene's name.
+    pub scene: String,
+    /// The room (floor at `min[1]`, walls at the x and z limits), if it has one.
+    pub bounds: Option<Bounds>,
+    /// The objects, in file order.
+    pub objects: Vec<ObjectListing>,
+}
+
+/// An axis-aligned box, in metres (+Y up, +X right, +Z towards the viewer).
+#[derive(Debug, Serialize, schemars::JsonSchema)]
+pub struct Bounds {
+    /// The low corner.
+    pub min: [f64; 3],
+    /// The high corner.
+    pub max: [f64; 3],
+}
+
+/// One object.
+#[derive(Debug, Serialize, schemars::JsonSchema)]
+pub struct ObjectListing {
+    /// Its name (unique, compared without case).
+    pub name: String,
+    /// Its pose's position: the bottom centre of its box (for a mesh, its origin).
+    pub position: [f64; 3],
+    /// Its box's size along its own axes (for a mesh, its world box's).
+    pub size: [f64; 3],
+    /// Its rotation as a unit quaternion `[x, y, z, w]`.
+    pub rotation: [f64; 4],
+    /// Its uniform scale.
+    pub scale: f64,
+    /// Its world bounding box.
+    pub world_box: Bounds,
+    /// The direction it faces, in the world.
+    pub front: [f64; 3],
+    /// The object it rests on, if any (it is carried when that one moves).
+    pub rests_on: Option<String>,
+}
+
+const APPLY_DESCRIPTION: &str = "Apply a CGA (conformal geometric algebra) expression to one object, for an assistant that writes the transformation itself. Nothing is executed: the expression is parsed and evaluated by Shenlong's expression language, checked to be a translation·rotation·uniform scale, applied about the object's pivot (the bottom centre of its box), carrying what rests on it, then collisions are resolved.\n\nFrame: metres, right-handed, +Y up, +X right, +Z towards the viewer (front). The object is X1; bind others as X2, X3… with `bind`.\nVersors: T(v) translates by vector v (T(0.5*e1) moves 0.5 m right; e1, e2, e3 are x, y, z); R(angle, u, v) rotates in the plane from u to v (R(pi/2, e3, e1) turns a quarter turn counter-clockwise seen from above); D(s) scales uniformly (D(2) doubles). Compose with *: T(e2) * R(pi/4, e3, e1).\nBoxes: X1.min, X1.max, X1.center, X1.size are points/vectors; X1.front is the direction it faces; `| e2` takes the y component.\nExample: put X1 on top of X2: T(((X2.max | e2) - (X1.min | e2)) * e2 + ((X2.center - X1.center) | e1) * e1 + ((X2.center - X1.center) | e3) * e3).";
+
+impl ShenlongMcp {
+    /// A server for this scene.
+    pub fn new(file: SceneFile, settings: McpSettings) -> Self {
+        let grounder = Grounder::new(&file.scene);
+        let session = Session::saving_on_request(file, settings.save.clone());
+        Self {
+            state: Arc::new(State {
+                session: Mutex::new(session),
+                edits: tokio::sync::Mutex::new(()),
+                grounder,
+                settings,
+                previous: Mutex::new(None),
+                subscribed: AtomicBool::new(false),
+            }),
+            tool_router: Self::tool_router(),
+        }
+    }
+
+    fn session(&self) -> std::sync::MutexGuard<'_, Session> {
+        self.state
+            .session
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+
+    fn options(&self) -> EditOptions {
+        EditOptions {
+            carry: true,
+            collisions: self.state.settings.collisions.clone(),
+            selection: Vec::new(),
+        }
+    }
+
+    /// Records a change and tells subscribers.
+    async fn commit(
+        &self,
+        before: Scene,
+        after: Scene,
+        kind: &str,
+        text: &str,
+        peer: &Peer<RoleServer>,
+    ) -> Result<Option<u64>, String> {
+        let id = self.session().commit(after, kind, text)?;
+        if id.is_some() {
+            *self
+                .state
+                .previous
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(before);
+            self.notify(peer).await;
+        }
+        Ok(id)
+    }
+
+    async fn notify(&self, peer: &Peer<RoleServer>) {
+        if self.state.subscribed.load(Ordering::Relaxed) {
+            // A client that went away is not an error of the change.
+            let _ = peer
+                .notify_resource_updated(ResourceUpdatedNotificationParam::new(SCENE_URI))
+                .await;
+        }
+    }
+
+    fn scene_text(&self) -> String {
+        let session = self.session();
+        let original = match &session.file.document {
+            shenlong::format::Document::SceneJson(d) => Some(d),
+            _ => None,
+        };
+        shenlong::format::json::write(&session.file.scene, original)
+    }
+}
+
+fn listing(scene: &Scene) -> SceneListing {
+    let r = |v: glam::DVec3| v.to_array().map(shenlong::format::tidy);
+    SceneListing {
+        scene: scene.name.clone(),
+        bounds: scene.bounds.map(|b| Bounds {
+            min: r(b.min),
+            max: r(b.max),
+        }),
+        objects: scene
+            .objects
+            .iter()
+            .map(|o| {
+                let pose = o.similarity();
+                let world = o.world_aabb();
+                let size = match &o.shape {
+                    shenlong::scene::Shape::Box { size } => *size,
+                    shenlong::scene::Shape::Points { .. } => world.size(),
+                };
+                ObjectListing {
+                    name: o.name.clone(),
+                    position: r(pose.translation),
+                    size: r(size),
+                    rotation: pose.rotation.to_array().map(shenlong::format::tidy),
+                    scale: shenlong::format::tidy(pose.scale),
+                    world_box: Bounds {
+                        min: r(world.min),
+                        max: r(world.max),
+                    },
+                    front: r(o.world_front()),
+                    rests_on: o.support.map(|s| scene.objects[s].name.clone()),
+                }
+            })
+            .collect(),
+    }
+}
+
+#[tool_router]
+impl ShenlongMcp {
+    /// The scene's objects.
+    #[tool(
+        description = "List the scene's objects: for each its name, position (bottom centre), size, rotation (quaternion [x, y, z, w]), scale, world box, the direction it faces, and what it rests on. Metres; +Y up, +X right, +Z towards the viewer.",
+        annotations(read_only_hint = true)
+    )]
+    async fn list_objects(&self) -> Result<Json<SceneListing>, String> {
+        Ok(Json(listing(&self.session().file.scene)))
+    }
+
+    /// An edit by instruction.
+    #[tool(
+        description = "Edit the scene by an instruction in words, as a person would say it: \"put the orange bottle on top of the tool table\", \"move the couch a bit to the left\", \"turn the chair nearest the desk to face the TV\", \"put the mug and the bowl on the dresser\". Shenlong finds the objects meant (or refuses, naming the candidates — it never guesses), translates the instruction into exact CGA transformations, applies them, resolves collisions, and returns the edit report: how each phrase was grounded, the expressions, the motions and the collisions resolved. Undo with `undo`."
+    )]
+    async fn edit(
+        &self,
+        Parameters(request): Parameters<EditRequest>,
+        peer: Peer<RoleServer>,
+    ) -> Result<CallToolResult, String> {
+        let _turn = self.state.edits.lock().await;
+        let translator = translator(&self.state.settings.llm, &self.state.settings.translator)?;
+        let before = self.session().file.scene.clone();
+        let mut working = before.clone();
+        let state = Arc::clone(&self.state);
+        let options = self.options();
+        let instruction = request.instruction.clone();
+        let outcome = tokio::task::spawn_blocking(move || {
+            edit_with(
+                &mut working,
+                &state.grounder,
+                &instruction,
+                translator.as_ref(),
+                &options,
+            )
+            .map(|e| (working, e.report))
+        })
+        .await
+        .map_err(|e| format!("the edit stopped: {e}"))?;
+        let (after, report) = outcome.map_err(|e| e.message)?;
+        let id = self
+            .commit(before, after, "edit", &request.instruction, &peer)
+            .await?;
+        let mut value = serde_json::to_value(&report).map_err(|e| e.to_string())?;
+        value["history_id"] = serde_json::json!(id);
+        Ok(CallToolResult::structured(value))
+    }
+
+    /// An expression applied to one object.
+    #[tool(description = APPLY_DESCRIPTION)]
+    async fn apply(
+        &self,
+        Parameters(request): Parameters<ApplyRequest>,
+        peer: Peer<RoleServer>,
+    ) -> Result<CallToolResult, String> {
+        let _turn = self.state.edits.lock().await;
+        let mut names = vec![request.object.as_str()];
+        for k in 0..request.bind.len() {
+            let variable = format!("X{}", k + 2);
+            let name = request.bind.get(&variable).ok_or_else(|| {
+                format!(
+                    "bind X2, X3, … in order: {variable} is missing (got {})",
+                    request.bind.keys().cloned().collect::<Vec<_>>().join(", ")
+                )
+            })?;
+            names.push(name);
+        }
+        let before = self.session().file.scene.clone();
+        let mut after = before.clone();
+        let (placed, t) = shenlong::pipeline::apply_expression_bound(
+            &mut after,
+            &names,
+            &request.expression,
+            &self.options(),
+        )
+        .map_err(|e| e.message)?;
+        let text = format!("{}: {}", request.object, request.expression);
+        let id = self.commit(before, after, "apply", &text, &peer).await?;
+        let s = t.similarity;
+        Ok(CallToolResult::structured(serde_json::json!({
+            "object": request.object,
+            "expression": request.expression,
+            "history_id": id,
+            "translation": s.translation.to_array(),
+            "rotation": s.rotation.to_array(),
+            "scale": s.scale,
+            "carried": placed.carried,
+            "collisions_resolved": placed.collisions_resolved,
+        })))
+    }
+
+    /// Undo the last change.
+    #[tool(
+        description = "Undo the last change (edit or apply). Returns the id of the change undone."
+    )]
+    async fn undo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, String> {
+        self.step(true, &peer).await
+    }
+
+    /// Redo the last undone change.
+    #[tool(description = "Redo the last undone change. Returns the id of the change redone.")]
+    async fn redo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, String> {
+        self.step(false, &peer).await
+    }
+
+    /// The history of changes.
+    #[tool(
+        description = "The changes made so far, oldest first: id, kind (edit or apply), the instruction or expression, the objects that moved, and whether it is undone.",
+        annotations(read_only_hint = true)
+    )]
+    async fn history(&self) -> Result<CallToolResult, String> {
+        let session = self.session();
+        Ok(CallToolResult::structured(serde_json::json!({
+            "history": session.history(),
+            "can_undo": session.can_undo(),
+            "can_redo": session.can_redo(),
+        })))
+    }
+
+    /// The top-down plan as a picture.
+    #[tool(
+        description = "The scene seen from above as a PNG picture (a plan: +X right, +Z down the page). With before: true, also where things were before the last change, with what moved highlighted.",
+        annotations(read_only_hint = true)
+    )]
+    async fn render(
+        &self,
+        Parameters(request): Parameters<RenderRequest>,
+    ) -> Result<CallToolResult, String> {
+        let scene = self.session().file.scene.clone();
+        let previous = if request.before {
+            self.state
+                .previous
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner)
+                .clone()
+        } else {
+            None
+        };
+        let svg = shenlong::render::plan_svg(&scene, previous.as_ref());
+        let png = tokio::task::spawn_blocking(move || shenlong::render::svg_to_png(&svg))
+            .await
+            .map_err(|e| format!("the render stopped: {e}"))??;
+        let data = base64::engine::general_purpose::STANDARD.encode(png);
+        Ok(CallToolResult::success(vec![ContentBlock::image(
+            data,
+            "image/png",
+        )]))
+    }
+
+    /// Save to the `--save` file.
+    #[tool(
+        description = "Save the scene to the file the server was started with (--save), atomically. The file cannot be chosen here."
+    )]
+    async fn save(&self) -> Result<CallToolResult, String> {
+        let session = self.session();
+        let Some(path) = session.save_path().map(std::path::Path::to_path_buf) else {
+            return Err(
+                "this server was started without --save, so it has no file to save to".into(),
+            );
+        };
+        session.save()?;
+        Ok(CallToolResult::structured(
+            serde_json::json!({"saved": path.display().to_string()}),
+        ))
+    }
+
+    /// The scene in a format, as content.
+    #[tool(
+        description = "The scene as a file's content: json (Shenlong scene JSON), gltf or glb (for a scene read from glTF/GLB: the original with the moved nodes rewritten), or tdw (ThreeDWorld commands). Text formats come as text, glb as a base64 resource.",
+        annotations(read_only_hint = true)
+    )]
+    async fn export(
+        &self,
+        Parameters(request): Parameters<ExportRequest>,
+    ) -> Result<CallToolResult, String> {
+        let (format, mime, extension) = match request.format {
+            ExportFormat::Json => (Format::SceneJson, "application/json", "json"),
+            ExportFormat::Gltf => (Format::Gltf, "model/gltf+json", "gltf"),
+            ExportFormat::Glb => (Format::Glb, "model/gltf-binary", "glb"),
+            ExportFormat::Tdw => (Format::TdwCommands, "application/json", "tdw.json"),
+        };
+        let bytes = self
+            .session()
+            .file
+            .to_bytes(format)
+            .map_err(|e| e.to_string())?;
+        let uri = format!("scene://current.{extension}");
+        let contents = match String::from_utf8(bytes) {
+            Ok(text) if !matches!(format, Format::Glb) => ResourceContents::TextResourceContents {
+                uri,
+                mime_type: Some(mime.into()),
+                text,
+                meta: None,
+            },
+            Ok(text) => blob(uri, mime, text.into_bytes()),
+            Err(e) => blob(uri, mime, e.into_bytes()),
+        };
+        Ok(CallToolResult::success(vec![ContentBlock::resource(
+            contents,
+        )]))
+    }
+}
+
+fn blob(uri: String, mime: &str, bytes: Vec<u8>) -> ResourceContents {
+    ResourceContents::BlobResourceContents {
+        uri,
+        mime_type: Some(mime.into()),
+        blob: base64::engine::general_purpose::STANDARD.encode(bytes),
+        meta: None,
+    }
+}
+
+impl ShenlongMcp {
+    async fn step(&self, undo: bool, peer: &Peer<RoleServer>) -> Result<CallToolResult, String> {
+        let _turn = self.state.edits.lock().await;
+        let before = self.session().file.scene.clone();
+        let id = match self.session().step(undo)? {
+            Ok(id) => id,
+            Err(StepError::Nothing) => {
+                return Err(format!("nothing to {}", if undo { "undo" } else { "redo" }))
+            }
+        };
+        *self
+            .state
+            .previous
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(before);
+        self.notify(peer).await;
+        Ok(CallToolResult::structured(serde_json::json!({
+            if undo { "undone" } else { "redone" }: id
+        })))
+    }
+}
+
+#[tool_handler(router = self.tool_router)]
+impl rmcp::ServerHandler for ShenlongMcp {
+    fn get_info(&self) -> ServerConfig {
+        ServerConfig::new(
+            ServerCapabilities::builder()
+                .enable_tools()
+                .enable_resources()
+                .enable_resources_subscribe()
+                .build(),
+        )
+        .with_instructions(
+            "Shenlong edits one 3D scene of separate objects, exactly and safely. Call list_objects to see it; edit with an instruction in words (edit) or a CGA expression (apply); undo/redo; render shows the plan; save writes the server's own file. The scene is also the resource scene://current.",
+        )
+    }
+
+    async fn list_resources(
+        &self,
+        _request: Option<PaginatedRequestParams>,
+        _context: RequestContext<RoleServer>,
+    ) -> Result<ListResourcesResult, ErrorData> {
+        let name = self.session().file.scene.name.clone();
+        Ok(ListResourcesResult::with_all_items(vec![Resource::new(
+            SCENE_URI, name,
+        )
+        .with_description("The scene being edited, as Shenlong scene JSON")
+        .with_mime_type("application/json")]))
+    }
+
+    async fn read_resource(
+        &self,
+        request: ReadResourceRequestParams,
+        _context: RequestContext<RoleServer>,
+    ) -> Result<ReadResourceResponse, ErrorData> {
+        if request.uri != SCENE_URI {
+            return Err(ErrorData::resource_not_found(
+                format!("no resource {}: the scene is {SCENE_URI}", request.uri),
+                None,
+            ));
+        }
+        Ok(
+            ReadResourceResult::new(vec![ResourceContents::TextResourceContents {
+                uri: SCENE_URI.into(),
+                mime_type: Some("application/json".into()),
+                text: self.scene_text(),
+                meta: None,
+            }])
+            .into(),
+        )
+    }
+
+    async fn subscribe(
+        &self,
+        request: SubscribeRequestParams,
+        _context: RequestContext<RoleServer>,
+    ) -> Result<(), ErrorData> {
+        if request.uri != SCENE_URI {
+            return Err(ErrorData::resource_not_found(
+                format!("no resource {}", request.uri),
+                None,
+            ));
+        }
+        self.state.subscribed.store(true, Ordering::Relaxed);
+        Ok(())
+    }
+
+    async fn unsubscribe(
+        &self,
+        _request: UnsubscribeRequestParams,
+        _context: RequestContext<RoleServer>,
+    ) -> Result<(), ErrorData> {
+        self.state.subscribed.store(false, Ordering::Relaxed);
+        Ok(())
+    }
+}
+
+/// Serves `file` over stdin/stdout until the client closes it.
+///
+/// # Errors
+/// The transport failed to start or broke.
+pub async fn serve_stdio(file: SceneFile, settings: McpSettings) -> anyhow::Result<()> {
+    use rmcp::ServiceExt;
+    let server = ShenlongMcp::new(file, settings)
+        .serve(rmcp::transport::stdio())
+        .await
+        .map_err(|e| anyhow::anyhow!("cannot start the MCP server: {e}"))?;
+    server
+        .waiting()
+        .await
+        .map_err(|e| anyhow::anyhow!("the MCP server stopped: {e}"))?;
+    Ok(())
+}
