@@ -238,7 +238,7 @@ function showReport(r) {
     <dt>Query</dt><dd><code>${escape(r.query)}</code></dd>
     <dt>Objects</dt>${objectsHtml}
     <dt>Collisions resolved</dt>${collisions}
-    <dt>Model</dt><dd>${escape(r.model)} · ${escape(r.system)} (${escape(r.prompt_version)}) · ${r.retries} retries${r.cache_hit ? ' · cached' : ''}</dd>
+    <dt>Model</dt><dd>${escape(r.model)} · answered by ${escape(r.answered_by || r.model)} · ${escape(r.system)} (${escape(r.prompt_version)}) · ${r.retries} retries${r.cache_hit ? ' · cached' : ''}${r.offline_refusal ? `<br><span class="why">offline: ${escape(r.offline_refusal)}</span>` : ''}</dd>
     <dt>Timings</dt><dd>translate ${r.timings_ms.translate.toFixed(2)} ms · total ${r.timings_ms.total.toFixed(2)} ms</dd>
   </dl>`;
 }

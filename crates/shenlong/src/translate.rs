@@ -136,6 +136,10 @@ pub struct Translation {
     pub cache_hit: bool,
     /// Response time, retries included (the paper's measure).
     pub elapsed: Duration,
+    /// Which translator answered: `offline`, or the model's name.
+    pub answered_by: String,
+    /// For a cascade that went to the model: why the offline translator did not answer.
+    pub offline_refusal: Option<String>,
 }
 
 /// Why an instruction could not be translated.

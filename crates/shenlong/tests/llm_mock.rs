@@ -450,3 +450,88 @@ fn a_long_retry_after_cannot_outlast_the_deadline() {
         started.elapsed()
     );
 }
+
+mod cascade {
+    use super::*;
+    use shenlong::pipeline::cascade::Cascade;
+    use shenlong::pipeline::EditErrorKind;
+
+    fn cascade(server: &MockLlm) -> Cascade {
+        Cascade::new(Box::new(translator(server, System::Cga))).unwrap()
+    }
+
+    #[test]
+    fn what_the_offline_translator_reads_sends_no_request() {
+        let server = MockLlm::start(vec![]);
+        let mut scene = workshop();
+        let result = edit(&mut scene, INSTRUCTION, &cascade(&server), &EditOptions::default())
+            .unwrap();
+        assert!(bottle_on_table(&scene));
+        assert!(server.captured().is_empty(), "no request was sent");
+        assert_eq!(result.report.answered_by, "offline");
+        assert_eq!(result.report.model, "offline+mock-model");
+        assert!(result.report.offline_refusal.is_none());
+    }
+
+    #[test]
+    fn what_it_cannot_read_goes_to_the_model_once() {
+        let server = MockLlm::start(vec![Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}"))]);
+        let mut scene = workshop();
+        let instruction = "have the 'orange bottle' perform a graceful hop onto the 'tool table'";
+        let result =
+            edit(&mut scene, instruction, &cascade(&server), &EditOptions::default()).unwrap();
+        assert!(bottle_on_table(&scene), "the model's answer was applied");
+        assert_eq!(server.captured().len(), 1);
+        assert_eq!(result.report.answered_by, "mock-model");
+        let refusal = result.report.offline_refusal.as_deref().unwrap();
+        assert!(refusal.contains("could not read"), "{refusal}");
+        // The model saw variables, not names.
+        let body = server.captured()[0].body.to_string();
+        assert!(!body.contains("orange bottle") && !body.contains("tool table"), "{body}");
+    }
+
+    #[test]
+    fn a_grounding_refusal_is_final() {
+        let server = MockLlm::start(vec![Reply::Content("{\"X1\": \"T(e1)\"}".into())]);
+        let mut scene = shenlong::examples::build("living_room").unwrap();
+        let before: Vec<_> = scene.objects.iter().map(|o| o.similarity()).collect();
+        for instruction in [
+            "have the lamp perform a graceful hop",
+            "have the piano perform a graceful hop",
+        ] {
+            let e = edit(&mut scene, instruction, &cascade(&server), &EditOptions::default())
+                .unwrap_err();
+            assert_eq!(e.kind, EditErrorKind::Instruction, "{instruction}: {e}");
+        }
+        assert!(server.captured().is_empty(), "no request for an ambiguous or unknown object");
+        let after: Vec<_> = scene.objects.iter().map(|o| o.similarity()).collect();
+        assert_eq!(after, before);
+    }
+
+    #[test]
+    fn the_spec_builds_a_cascade() {
+        let server = MockLlm::start(vec![]);
+        let settings = shenlong::pipeline::backends::TranslatorSettings {
+            base_url: Some(server.url.clone()),
+            api_key: Some("sk-x".into()),
+            cache_dir: None,
+            ..Default::default()
+        };
+        let t = shenlong::pipeline::backends::translator("offline+openai:m1", &settings).unwrap();
+        assert_eq!(t.name(), "offline+m1");
+        for bad in ["offline+", "offline+offline", "offline+nothing:x"] {
+            assert!(
+                shenlong::pipeline::backends::translator(bad, &settings).is_err(),
+                "{bad}"
+            );
+        }
+        let euclidean = shenlong::pipeline::backends::TranslatorSettings {
+            system: System::Euclidean,
+            ..settings
+        };
+        let e = shenlong::pipeline::backends::translator("offline+openai:m1", &euclidean)
+            .err()
+            .unwrap();
+        assert!(e.contains("CGA"), "{e}");
+    }
+}

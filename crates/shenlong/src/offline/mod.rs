@@ -214,6 +214,8 @@ impl Translator for OfflineTranslator {
             retries: 0,
             cache_hit: false,
             elapsed: started.elapsed(),
+            answered_by: "offline".into(),
+            offline_refusal: None,
         })
     }
 }

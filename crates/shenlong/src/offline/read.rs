@@ -35,12 +35,12 @@ pub(crate) struct Reader<'a> {
 pub(crate) fn not_read(unread: &str, clause: &str) -> String {
     if unread == clause || unread.is_empty() {
         format!(
-            "the offline translator could not read \"{}\"; rephrase it, or use a language model with --llm openai:MODEL or --llm ollama:MODEL",
+            "the offline translator could not read \"{}\"; rephrase it, or use a language model (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
             clause.trim()
         )
     } else {
         format!(
-            "the offline translator could not read \"{unread}\" in \"{}\"; rephrase it, or use a language model with --llm openai:MODEL or --llm ollama:MODEL",
+            "the offline translator could not read \"{unread}\" in \"{}\"; rephrase it, or use a language model (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
             clause.trim()
         )
     }

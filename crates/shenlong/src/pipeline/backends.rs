@@ -1,5 +1,6 @@
 //! Choosing a translator from a `--llm` spec: `offline`, `openai:MODEL`, `ollama:MODEL`,
-//! `replay:FILE`.
+//! `replay:FILE`, or a cascade `offline+SPEC` (the offline translator first, the model for
+//! what it does not read).
 
 use super::prompts::System;
 use super::translate::{LlmTranslator, Translator};
@@ -56,6 +57,15 @@ pub fn translator(
     settings: &TranslatorSettings,
 ) -> Result<Box<dyn Translator>, String> {
     let spec = spec.trim();
+    if let Some(model) = spec.strip_prefix("offline+") {
+        if model.trim().is_empty() || model.trim().starts_with("offline") {
+            return Err(format!(
+                "--llm {spec}: a cascade is offline+MODEL, e.g. offline+openai:gpt-4o"
+            ));
+        }
+        let model = translator(model, settings)?;
+        return Ok(Box::new(super::cascade::Cascade::new(model)?));
+    }
     let (kind, rest) = spec.split_once(':').unwrap_or((spec, ""));
     let backend: Box<dyn Backend> = match kind {
         "offline" => {
@@ -121,7 +131,7 @@ pub fn translator(
         }
         other => {
             return Err(format!(
-                "unknown --llm '{other}': use offline, openai:MODEL, ollama:MODEL or replay:FILE"
+                "unknown --llm '{other}': use offline, openai:MODEL, ollama:MODEL, replay:FILE, or offline+ one of those"
             ))
         }
     };

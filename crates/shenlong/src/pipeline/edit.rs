@@ -47,8 +47,14 @@ pub struct EditReport {
     pub system: String,
     /// The prompt's version.
     pub prompt_version: String,
-    /// The translator: `offline`, or the model.
+    /// The translator: `offline`, the model, or a cascade `offline+MODEL`.
     pub model: String,
+    /// Which translator answered: `offline`, or the model's name (for a cascade, the part
+    /// that answered).
+    pub answered_by: String,
+    /// For a cascade that went to the model: why the offline translator did not answer.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub offline_refusal: Option<String>,
     /// Every request and reply.
     pub exchanges: Vec<Exchange>,
     /// Attempts after the first.
@@ -332,6 +338,8 @@ pub fn edit_with(
         system: system.name().into(),
         prompt_version: system.version().into(),
         model: translator.name(),
+        answered_by: translation.answered_by,
+        offline_refusal: translation.offline_refusal,
         exchanges: translation.exchanges,
         retries: translation.retries,
         cache_hit: translation.cache_hit,

@@ -4,6 +4,7 @@
 //! → collisions (`crate::collide`) → [`edit`] (the orchestration and its report).
 
 pub mod backends;
+pub mod cascade;
 pub mod edit;
 pub mod prompts;
 pub mod template;

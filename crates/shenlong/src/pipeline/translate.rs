@@ -74,6 +74,8 @@ impl Translator for LlmTranslator {
                         retries: 0,
                         cache_hit: true,
                         elapsed: started.elapsed(),
+                        answered_by: self.name(),
+                        offline_refusal: None,
                     });
                 }
             }
@@ -137,6 +139,8 @@ impl Translator for LlmTranslator {
                         retries: attempt,
                         cache_hit: false,
                         elapsed: started.elapsed(),
+                        answered_by: self.name(),
+                        offline_refusal: None,
                     });
                 }
                 Err(error) => {
