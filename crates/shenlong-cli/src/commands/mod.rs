@@ -240,6 +240,14 @@ pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
             "{}; use --allow-collisions to apply the edit anyway",
             e.message
         ),
+        shenlong::pipeline::EditErrorKind::NotUnderstood
+            if e.message.starts_with("the offline translator could not read") =>
+        {
+            anyhow::anyhow!(
+                "{} — with --llm offline+openai:MODEL a model answers only what the offline translator cannot read",
+                e.message
+            )
+        }
         _ => anyhow::Error::new(e),
     }
 }
