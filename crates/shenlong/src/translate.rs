@@ -140,6 +140,22 @@ pub struct Translation {
     pub answered_by: String,
     /// For a cascade that went to the model: why the offline translator did not answer.
     pub offline_refusal: Option<String>,
+    /// What became of the model's replies.
+    pub replies: ReplyCounts,
+}
+
+/// What became of a model's replies to one instruction, retries included: how many came
+/// back, how many parse (the answer could be found and its expressions are well formed),
+/// and how many evaluate to a valid `T·R·D` for every variable. The offline translator
+/// sends no request and counts none.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, serde::Deserialize)]
+pub struct ReplyCounts {
+    /// Replies received.
+    pub received: usize,
+    /// Of which parse.
+    pub parsed: usize,
+    /// Of which evaluate to a transformation `T·R·D`.
+    pub valid: usize,
 }
 
 /// Why an instruction could not be translated.
@@ -150,6 +166,8 @@ pub struct TranslateError {
     /// Whether the instruction itself was not understood (as opposed to a model or its
     /// server failing).
     pub not_understood: bool,
+    /// The replies received before giving up.
+    pub replies: ReplyCounts,
 }
 
 impl TranslateError {
@@ -158,6 +176,7 @@ impl TranslateError {
         Self {
             message: message.into(),
             not_understood: false,
+            replies: ReplyCounts::default(),
         }
     }
 
@@ -166,7 +185,14 @@ impl TranslateError {
         Self {
             message: message.into(),
             not_understood: true,
+            replies: ReplyCounts::default(),
         }
+    }
+
+    /// The same error, with the replies received.
+    #[must_use]
+    pub fn with_replies(self, replies: ReplyCounts) -> Self {
+        Self { replies, ..self }
     }
 }
 

@@ -31,6 +31,7 @@ fn run_all(translator: Box<dyn Translator>, jobs: usize) -> report::Report {
         jobs,
         limit: None,
         collide: false,
+        shard: None,
     };
     let outcomes = run(
         &suite,
@@ -142,6 +143,7 @@ fn an_interrupted_run_resumes_where_it_stopped() {
         jobs: 1,
         limit: Some(100),
         collide: false,
+        shard: None,
     };
     run(
         &suite,

@@ -464,8 +464,13 @@ mod cascade {
     fn what_the_offline_translator_reads_sends_no_request() {
         let server = MockLlm::start(vec![]);
         let mut scene = workshop();
-        let result = edit(&mut scene, INSTRUCTION, &cascade(&server), &EditOptions::default())
-            .unwrap();
+        let result = edit(
+            &mut scene,
+            INSTRUCTION,
+            &cascade(&server),
+            &EditOptions::default(),
+        )
+        .unwrap();
         assert!(bottle_on_table(&scene));
         assert!(server.captured().is_empty(), "no request was sent");
         assert_eq!(result.report.answered_by, "offline");
@@ -478,8 +483,13 @@ mod cascade {
         let server = MockLlm::start(vec![Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}"))]);
         let mut scene = workshop();
         let instruction = "have the 'orange bottle' perform a graceful hop onto the 'tool table'";
-        let result =
-            edit(&mut scene, instruction, &cascade(&server), &EditOptions::default()).unwrap();
+        let result = edit(
+            &mut scene,
+            instruction,
+            &cascade(&server),
+            &EditOptions::default(),
+        )
+        .unwrap();
         assert!(bottle_on_table(&scene), "the model's answer was applied");
         assert_eq!(server.captured().len(), 1);
         assert_eq!(result.report.answered_by, "mock-model");
@@ -487,7 +497,10 @@ mod cascade {
         assert!(refusal.contains("could not read"), "{refusal}");
         // The model saw variables, not names.
         let body = server.captured()[0].body.to_string();
-        assert!(!body.contains("orange bottle") && !body.contains("tool table"), "{body}");
+        assert!(
+            !body.contains("orange bottle") && !body.contains("tool table"),
+            "{body}"
+        );
     }
 
     #[test]
@@ -499,11 +512,19 @@ mod cascade {
             "have the lamp perform a graceful hop",
             "have the piano perform a graceful hop",
         ] {
-            let e = edit(&mut scene, instruction, &cascade(&server), &EditOptions::default())
-                .unwrap_err();
+            let e = edit(
+                &mut scene,
+                instruction,
+                &cascade(&server),
+                &EditOptions::default(),
+            )
+            .unwrap_err();
             assert_eq!(e.kind, EditErrorKind::Instruction, "{instruction}: {e}");
         }
-        assert!(server.captured().is_empty(), "no request for an ambiguous or unknown object");
+        assert!(
+            server.captured().is_empty(),
+            "no request for an ambiguous or unknown object"
+        );
         let after: Vec<_> = scene.objects.iter().map(|o| o.similarity()).collect();
         assert_eq!(after, before);
     }
@@ -534,4 +555,37 @@ mod cascade {
             .unwrap();
         assert!(e.contains("CGA"), "{e}");
     }
+}
+
+#[test]
+fn a_rate_limit_holds_every_request_of_the_pool() {
+    use shenlong::llm::{Backend, Message};
+    let server = MockLlm::start(vec![
+        Reply::Raw(
+            429,
+            vec![("Retry-After".into(), "1".into())],
+            "{\"error\": {\"message\": \"slow down\"}}".into(),
+        ),
+        Reply::Content("{\"X1\": \"T(e1)\"}".into()),
+        Reply::Content("{\"X1\": \"T(e1)\"}".into()),
+    ]);
+    let client = client(&server, Some("sk-x"));
+    let messages = vec![Message::new("user", "Instruction: move X1 right")];
+    let (a, b) = std::thread::scope(|scope| {
+        let first = scope.spawn(|| client.complete(&messages).map(|_| ()));
+        // The second job starts after the first was told to wait.
+        while server.count() < 1 {
+            std::thread::sleep(Duration::from_millis(5));
+        }
+        let started = std::time::Instant::now();
+        let second = client.complete(&messages).map(|_| started.elapsed());
+        (first.join().unwrap(), second)
+    });
+    a.unwrap();
+    let waited = b.unwrap();
+    assert!(
+        waited >= Duration::from_millis(700),
+        "the second request waited {waited:?} for the server's Retry-After"
+    );
+    assert_eq!(server.count(), 3);
 }

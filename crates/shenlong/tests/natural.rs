@@ -55,6 +55,7 @@ fn run_with(suite: &Suite, translator: Box<dyn Translator>) -> Vec<Outcome> {
         jobs: 2,
         limit: None,
         collide: true,
+        shard: None,
     };
     run(
         suite,

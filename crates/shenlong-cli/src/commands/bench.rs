@@ -16,16 +16,32 @@ use std::sync::Arc;
 /// Every instantiated query is run through the pipeline and checked; results go to
 /// OUT/results.jsonl as they come, so an interrupted run (Ctrl-C) resumes where it
 /// stopped when run again with the same --out. The report is OUT/report.json,
-/// OUT/report.md and charts (success.svg, response.svg, and .png).
+/// OUT/report.md and charts (success, response time, replies that parse and that evaluate
+/// to a valid T·R·D; SVG and PNG).
+///
+/// A large comparison can be split across machines with --shard K/N (for instance as an
+/// array job on a cluster scheduler), each shard writing its own OUT; `--merge DIR…`
+/// then builds one report from them, the same as an unsharded run's.
 #[derive(clap::Args)]
 #[command(after_help = "Examples:
   shenlong bench bench/dev.suite.json
   shenlong bench bench/dev.suite.json --llm openai:gpt-4o --system cga,euclidean,omniverse --jobs 8 --out results/gpt-4o
+  shenlong bench bench/natural.suite.json --llm offline+openai:gpt-4o --collide --out results/cascade
+  shenlong bench bench/dev.suite.json --llm openai:gpt-4o --shard 3/8 --out results/shard-3   # e.g. SLURM_ARRAY_TASK_ID=3
+  shenlong bench --merge results/shard-* --out results/merged
 
 See docs/benchmark.md for the suite format and the checks.")]
 pub struct Args {
     /// The suite file (*.suite.json).
-    suite: PathBuf,
+    #[arg(required_unless_present = "merge")]
+    suite: Option<PathBuf>,
+    /// Run only shard K of N (1-based) of the instances, e.g. 3/8.
+    #[arg(long, value_name = "K/N", value_parser = parse_shard, conflicts_with = "merge")]
+    shard: Option<(usize, usize)>,
+    /// Build one report from the results of several runs (the shards of one comparison)
+    /// into --out, instead of running anything.
+    #[arg(long, value_name = "DIR", num_args = 1.., conflicts_with = "suite")]
+    merge: Vec<PathBuf>,
     /// The prompt systems to compare, separated by commas.
     #[arg(long, value_name = "SYSTEMS", default_value = "cga")]
     system: String,
@@ -45,8 +61,43 @@ pub struct Args {
     translator: super::TranslatorArgs,
 }
 
+/// `K/N` with 1 ≤ K ≤ N.
+fn parse_shard(text: &str) -> Result<(usize, usize), String> {
+    let (k, n) = text
+        .split_once('/')
+        .ok_or_else(|| format!("'{text}' is not K/N, e.g. 3/8"))?;
+    let (k, n): (usize, usize) = (
+        k.trim()
+            .parse()
+            .map_err(|_| format!("'{k}' is not a shard number"))?,
+        n.trim()
+            .parse()
+            .map_err(|_| format!("'{n}' is not a number of shards"))?,
+    );
+    if n == 0 || k == 0 || k > n {
+        return Err(format!("shard {k}/{n}: K must be between 1 and N"));
+    }
+    Ok((k, n))
+}
+
+/// What a run was, kept beside its results (`run.json`) so that shards can be merged.
+#[derive(serde::Serialize, serde::Deserialize, PartialEq, Debug)]
+struct RunInfo {
+    suite: String,
+    model: String,
+    systems: Vec<String>,
+    shard: Option<(usize, usize)>,
+}
+
 pub fn run_bench(args: Args) -> Result<()> {
-    let suite = Suite::load(&args.suite)?;
+    if !args.merge.is_empty() {
+        return merge(&args.merge, args.out.as_deref());
+    }
+    let suite_path = args
+        .suite
+        .as_ref()
+        .expect("clap requires the suite without --merge");
+    let suite = Suite::load(suite_path)?;
     let mut systems = Vec::new();
     for name in args
         .system
@@ -103,6 +154,7 @@ pub fn run_bench(args: Args) -> Result<()> {
         jobs: args.jobs,
         limit: args.limit,
         collide: args.collide,
+        shard: args.shard,
     };
     let progress = |done: usize, total: usize| {
         bar.set_length(total as u64);
@@ -130,38 +182,135 @@ pub fn run_bench(args: Args) -> Result<()> {
     let model = translators
         .first()
         .map_or_else(String::new, |(_, t)| t.name());
+    let info = RunInfo {
+        suite: suite.name.clone(),
+        model: model.clone(),
+        systems: names.iter().map(|s| s.to_string()).collect(),
+        shard: args.shard,
+    };
+    shenlong::io::write_atomic(
+        &out.join("run.json"),
+        serde_json::to_string_pretty(&info)
+            .expect("run info serialises")
+            .as_bytes(),
+    )
+    .with_context(|| format!("cannot write {}", out.join("run.json").display()))?;
     let rep = report::build(&suite.name, &model, &outcomes);
+    write_report(&out, &rep)?;
+    if stop.load(Ordering::Relaxed) {
+        bail!("interrupted: the report covers the {} instances done; run the same command again to resume", outcomes.len());
+    }
+    Ok(())
+}
+
+/// Writes report.json, report.md and the charts to `out`, and prints the summary.
+fn write_report(out: &std::path::Path, rep: &report::Report) -> Result<()> {
     let write = |name: &str, bytes: &[u8]| -> Result<()> {
         shenlong::io::write_atomic(&out.join(name), bytes)
             .with_context(|| format!("cannot write {}", out.join(name).display()))
     };
     write(
         "report.json",
-        serde_json::to_string_pretty(&rep)
+        serde_json::to_string_pretty(rep)
             .expect("reports serialise")
             .as_bytes(),
     )?;
-    write("report.md", report::markdown(&rep).as_bytes())?;
-    let success = report::chart(&rep, "Success rate per category", |f| f.success_rate, "%");
-    let response = report::chart(
-        &rep,
-        "Mean response time per category",
-        |f| f.response_ms_mean,
-        "ms",
-    );
-    write("success.svg", success.as_bytes())?;
-    write("response.svg", response.as_bytes())?;
-    #[cfg(feature = "png")]
-    for (name, svg) in [("success.png", &success), ("response.png", &response)] {
+    write("report.md", report::markdown(rep).as_bytes())?;
+    let charts = [
+        (
+            "success",
+            report::chart(rep, "Success rate per category", |f| f.success_rate, "%"),
+        ),
+        (
+            "response",
+            report::chart(
+                rep,
+                "Mean response time per category",
+                |f| f.response_ms_mean,
+                "ms",
+            ),
+        ),
+        (
+            "parse",
+            report::chart(
+                rep,
+                "Model replies that parse, per category",
+                |f| f.parse_rate,
+                "%",
+            ),
+        ),
+        (
+            "valid",
+            report::chart(
+                rep,
+                "Model replies that evaluate to a valid T·R·D, per category",
+                |f| f.valid_rate,
+                "%",
+            ),
+        ),
+    ];
+    for (name, svg) in &charts {
+        write(&format!("{name}.svg"), svg.as_bytes())?;
+        #[cfg(feature = "png")]
         write(
-            name,
+            &format!("{name}.png"),
             &shenlong::render::svg_to_png(svg).map_err(anyhow::Error::msg)?,
         )?;
     }
-    super::write_stdout(report::summary(&rep).as_bytes())?;
+    super::write_stdout(report::summary(rep).as_bytes())?;
     eprintln!("report: {}", out.join("report.md").display());
-    if stop.load(Ordering::Relaxed) {
-        bail!("interrupted: the report covers the {} instances done; run the same command again to resume", outcomes.len());
-    }
     Ok(())
+}
+
+/// One report from the results of several runs of the same suite and translator.
+fn merge(dirs: &[PathBuf], out: Option<&std::path::Path>) -> Result<()> {
+    let out = out.context("--merge needs --out DIR for the merged report")?;
+    let mut info: Option<RunInfo> = None;
+    let mut seen = std::collections::HashSet::new();
+    let mut outcomes = Vec::new();
+    for dir in dirs {
+        let meta = dir.join("run.json");
+        let text = std::fs::read_to_string(&meta).with_context(|| {
+            format!(
+                "cannot read {} (is {} a bench --out?)",
+                meta.display(),
+                dir.display()
+            )
+        })?;
+        let this: RunInfo = serde_json::from_str(&text)
+            .with_context(|| format!("{} is not a run's description", meta.display()))?;
+        if let Some(first) = &info {
+            if (&first.suite, &first.model) != (&this.suite, &this.model) {
+                bail!(
+                    "{} ran '{}' with {}, but the first ran '{}' with {}: only runs of one comparison merge",
+                    dir.display(),
+                    this.suite,
+                    this.model,
+                    first.suite,
+                    first.model
+                );
+            }
+        }
+        let results = dir.join("results.jsonl");
+        let text = std::fs::read_to_string(&results)
+            .with_context(|| format!("cannot read {}", results.display()))?;
+        for (n, line) in text
+            .lines()
+            .enumerate()
+            .filter(|(_, l)| !l.trim().is_empty())
+        {
+            let outcome: shenlong::bench::run::Outcome = serde_json::from_str(line)
+                .with_context(|| format!("{}:{}: not an outcome", results.display(), n + 1))?;
+            if seen.insert((outcome.system.clone(), outcome.instance.clone())) {
+                outcomes.push(outcome);
+            }
+        }
+        if info.is_none() {
+            info = Some(this);
+        }
+    }
+    let info = info.context("--merge names no folder")?;
+    std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
+    let rep = report::build(&info.suite, &info.model, &outcomes);
+    write_report(out, &rep)
 }

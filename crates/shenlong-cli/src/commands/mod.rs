@@ -241,7 +241,8 @@ pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
             e.message
         ),
         shenlong::pipeline::EditErrorKind::NotUnderstood
-            if e.message.starts_with("the offline translator could not read") =>
+            if e.message
+                .starts_with("the offline translator could not read") =>
         {
             anyhow::anyhow!(
                 "{} — with --llm offline+openai:MODEL a model answers only what the offline translator cannot read",

@@ -36,6 +36,24 @@ pub struct Figures {
     pub cache_hits: usize,
     /// Edits that failed outright (no usable answer).
     pub errors: usize,
+    /// Model replies received, retries included (the offline translator sends none).
+    pub replies: usize,
+    /// Share of the replies that parse (the answer was found; its expressions are well
+    /// formed), scored apart from geometry.
+    pub parse_rate: f64,
+    /// Share of the replies that evaluate to a valid `T·R·D` for every variable.
+    pub valid_rate: f64,
+    /// Retries spent, in all.
+    pub retries_total: usize,
+    /// Instances the offline translator answered (for a cascade, its share is
+    /// `answered_offline / n`).
+    pub answered_offline: usize,
+    /// Instances a model answered.
+    pub answered_by_model: usize,
+    /// Share of the offline-answered instances that passed.
+    pub offline_success_rate: f64,
+    /// Share of the model-answered instances that passed.
+    pub model_success_rate: f64,
 }
 
 impl Figures {
@@ -44,6 +62,15 @@ impl Figures {
         let times: Vec<f64> = list.iter().map(|o| o.response_ms).collect();
         let (mean, std) = mean_std(&times);
         let n = list.len();
+        let received: usize = list.iter().map(|o| o.replies.received).sum();
+        let offline: Vec<&&Outcome> = list
+            .iter()
+            .filter(|o| o.answered_by.as_deref() == Some("offline"))
+            .collect();
+        let model: Vec<&&Outcome> = list
+            .iter()
+            .filter(|o| o.answered_by.as_deref().is_some_and(|a| a != "offline"))
+            .collect();
         Self {
             n,
             success_rate: if n == 0 {
@@ -62,7 +89,27 @@ impl Figures {
             completion_tokens: list.iter().map(|o| o.completion_tokens).sum(),
             cache_hits: list.iter().filter(|o| o.cache_hit).count(),
             errors: list.iter().filter(|o| o.error.is_some()).count(),
+            replies: received,
+            parse_rate: share(list.iter().map(|o| o.replies.parsed).sum(), received),
+            valid_rate: share(list.iter().map(|o| o.replies.valid).sum(), received),
+            retries_total: list.iter().map(|o| o.retries).sum(),
+            answered_offline: offline.len(),
+            answered_by_model: model.len(),
+            offline_success_rate: share(
+                offline.iter().filter(|o| o.success).count(),
+                offline.len(),
+            ),
+            model_success_rate: share(model.iter().filter(|o| o.success).count(), model.len()),
         }
+    }
+}
+
+/// `part / whole`, or NaN for none.
+fn share(part: usize, whole: usize) -> f64 {
+    if whole == 0 {
+        f64::NAN
+    } else {
+        part as f64 / whole as f64
     }
 }
 
@@ -109,8 +156,12 @@ pub struct Report {
     pub failures: Vec<Outcome>,
 }
 
-/// Builds the report from outcomes.
+/// Builds the report from outcomes, in any order: they are sorted by system and instance
+/// first, so a run split into shards and merged gives the same figures as one run.
 pub fn build(suite: &str, model: &str, outcomes: &[Outcome]) -> Report {
+    let mut sorted: Vec<Outcome> = outcomes.to_vec();
+    sorted.sort_by(|a, b| (&a.system, &a.instance).cmp(&(&b.system, &b.instance)));
+    let outcomes = sorted.as_slice();
     let mut systems = BTreeMap::new();
     let names: Vec<String> = {
         let mut n: Vec<String> = outcomes.iter().map(|o| o.system.clone()).collect();
@@ -256,6 +307,27 @@ pub fn markdown(report: &Report) -> String {
             );
         }
     }
+    let _ = writeln!(md, "\n## What went wrong, by kind\n\nReplies are scored apart from geometry: the share of the model's replies (retries included) that parse, and that evaluate to a valid T·R·D; then the share of instances that pass the checks. A cascade's instances are split by the part that answered.\n\n| system | category | replies | parse | valid T·R·D | pass | retries | answered offline | pass (offline) | pass (model) |\n|---|---|---|---|---|---|---|---|---|---|");
+    for (system, r) in &report.systems {
+        for (category, f) in r
+            .categories
+            .iter()
+            .chain(std::iter::once((&"**overall**".to_string(), &r.overall)))
+        {
+            let _ = writeln!(
+                md,
+                "| {system} | {category} | {} | {} | {} | {} | {} | {} | {} | {} |",
+                f.replies,
+                pct(f.parse_rate),
+                pct(f.valid_rate),
+                pct(f.success_rate),
+                f.retries_total,
+                pct(share(f.answered_offline, f.n)),
+                pct(f.offline_success_rate),
+                pct(f.model_success_rate)
+            );
+        }
+    }
     let _ = writeln!(md, "\n## Beside the paper\n\nThe paper (gpt-4-1106-preview, 10 Holodeck scenes × 5 categories × 10 queries × 5 variations, judged by people):\n\n| system | paper: success | paper: response | here: success | here: response |\n|---|---|---|---|---|");
     for (system, success, seconds) in PAPER {
         let here = report.systems.get(system);
@@ -279,7 +351,7 @@ pub fn markdown(report: &Report) -> String {
     }
     let _ = writeln!(
         md,
-        "\n## Charts\n\n![success rate](success.svg)\n\n![response time](response.svg)\n"
+        "\n## Charts\n\n![success rate](success.svg)\n\n![response time](response.svg)\n\n![replies that parse](parse.svg)\n\n![replies that evaluate to a valid T·R·D](valid.svg)\n"
     );
     let _ = writeln!(md, "## Failures ({})\n", report.failures.len());
     for o in report.failures.iter().take(200) {

@@ -43,6 +43,13 @@ pub struct Outcome {
     pub completion_tokens: u64,
     /// Whether the answer came from the cache.
     pub cache_hit: bool,
+    /// Which translator answered (`offline` or the model; for a cascade, the part that
+    /// answered), when one did.
+    #[serde(default)]
+    pub answered_by: Option<String>,
+    /// What became of the model's replies: received, parsed, valid `T·R·D`.
+    #[serde(default)]
+    pub replies: crate::translate::ReplyCounts,
 }
 
 /// How a run goes.
@@ -56,6 +63,10 @@ pub struct RunOptions {
     pub limit: Option<usize>,
     /// Resolve collisions as `edit` does (off: the run measures the translator alone).
     pub collide: bool,
+    /// Run only shard `K` of `N` (1-based): the instances whose position in the suite's
+    /// fixed order is `K − 1` modulo `N`, so `N` machines split a run between them and
+    /// their results merge into the same report as one run.
+    pub shard: Option<(usize, usize)>,
 }
 
 /// Every instance of a suite on its scenes, in a fixed order.
@@ -112,6 +123,8 @@ pub fn run_one(
         prompt_tokens: 0,
         completion_tokens: 0,
         cache_hit: false,
+        answered_by: None,
+        replies: Default::default(),
     };
     let expects_refusal = query
         .expect
@@ -119,6 +132,7 @@ pub fn run_one(
         .any(|c| matches!(c, super::checks::Check::Refused { .. }));
     match result {
         Err(e) if expects_refusal => {
+            outcome.replies = e.replies;
             for check in &query.expect {
                 if let Err(reason) = check.evaluate_refusal(&e.message, scene, &bound) {
                     outcome.failures.push(reason);
@@ -127,7 +141,10 @@ pub fn run_one(
             outcome.success = outcome.failures.is_empty();
             outcome.error = Some(e.message);
         }
-        Err(e) => outcome.error = Some(e.message),
+        Err(e) => {
+            outcome.replies = e.replies;
+            outcome.error = Some(e.message);
+        }
         Ok(edit) => {
             let r = &edit.report;
             outcome.response_ms = r.timings_ms.translate;
@@ -135,6 +152,8 @@ pub fn run_one(
             outcome.prompt_tokens = r.tokens.prompt;
             outcome.completion_tokens = r.tokens.completion;
             outcome.cache_hit = r.cache_hit;
+            outcome.answered_by = Some(r.answered_by.clone());
+            outcome.replies = r.replies;
             for check in &query.expect {
                 if let Err(reason) = check.evaluate(scene, &after, &bound) {
                     outcome.failures.push(reason);
@@ -175,7 +194,12 @@ pub fn run(
     let mut work: Vec<(usize, &Instance)> = Vec::new();
     for (t, (system, _)) in translators.iter().enumerate() {
         let limit = options.limit.unwrap_or(usize::MAX);
-        for instance in all.iter().take(limit) {
+        for (position, instance) in all.iter().take(limit).enumerate() {
+            if let Some((k, n)) = options.shard {
+                if position % n != k - 1 {
+                    continue;
+                }
+            }
             if !finished.contains(&(system.name().to_string(), instance.id.clone())) {
                 work.push((t, instance));
             }

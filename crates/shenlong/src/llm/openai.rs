@@ -82,6 +82,9 @@ impl AttemptError {
 pub struct OpenAiClient {
     options: ClientOptions,
     agent: ureq::Agent,
+    /// When a 429 asked every request to wait: shared by every thread using this client,
+    /// so a pool of concurrent jobs backs off together instead of hammering the server.
+    not_before: std::sync::Mutex<Option<Instant>>,
 }
 
 impl OpenAiClient {
@@ -93,7 +96,30 @@ impl OpenAiClient {
             .http_status_as_error(false)
             .build()
             .into();
-        Self { options, agent }
+        Self {
+            options,
+            agent,
+            not_before: std::sync::Mutex::new(None),
+        }
+    }
+
+    /// Waits until the pool's back-off (if any) has passed; `false` when that would pass
+    /// the deadline of a completion started at `started`.
+    fn wait_for_pool(&self, started: Instant) -> bool {
+        let until = *self
+            .not_before
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if let Some(until) = until {
+            let now = Instant::now();
+            if until > now {
+                if started.elapsed() + (until - now) > self.options.deadline {
+                    return false;
+                }
+                std::thread::sleep(until - now);
+            }
+        }
+        true
     }
 
     fn url(&self) -> String {
@@ -207,6 +233,14 @@ impl Backend for OpenAiClient {
         let mut wait = self.options.backoff;
         let mut last = None;
         for attempt in 1..=self.options.max_attempts.max(1) {
+            if !self.wait_for_pool(started) {
+                return Err(LlmError {
+                    message: format!(
+                        "the server asked every request to wait past the deadline of {:.0} s",
+                        self.options.deadline.as_secs_f64()
+                    ),
+                });
+            }
             match self.attempt(&body) {
                 Ok((text, usage)) => {
                     let text = super::redact(&text, self.options.api_key.as_deref());
@@ -234,6 +268,17 @@ impl Backend for OpenAiClient {
                         });
                     }
                     let pause = retry_after.unwrap_or(wait);
+                    if retry_after.is_some() {
+                        // The server's wait holds for every request on this client.
+                        let until = Instant::now() + pause;
+                        let mut shared = self
+                            .not_before
+                            .lock()
+                            .unwrap_or_else(std::sync::PoisonError::into_inner);
+                        if shared.is_none_or(|t| t < until) {
+                            *shared = Some(until);
+                        }
+                    }
                     if started.elapsed() + pause > self.options.deadline {
                         return Err(LlmError {
                             message: super::redact(

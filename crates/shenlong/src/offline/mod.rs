@@ -216,6 +216,7 @@ impl Translator for OfflineTranslator {
             elapsed: started.elapsed(),
             answered_by: "offline".into(),
             offline_refusal: None,
+            replies: Default::default(),
         })
     }
 }

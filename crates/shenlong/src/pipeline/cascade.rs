@@ -62,6 +62,7 @@ impl Translator for Cascade {
             Err(e) => Err(TranslateError {
                 message: format!("{} (the offline translator: {refusal})", e.message),
                 not_understood: e.not_understood,
+                replies: e.replies,
             }),
         }
     }

@@ -7,6 +7,7 @@ use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
 use crate::ground::{Grounder, Reason};
 use crate::scene::{AppliedMotion, Scene};
+use crate::translate::ReplyCounts;
 use serde::Serialize;
 use std::time::Instant;
 
@@ -55,6 +56,8 @@ pub struct EditReport {
     /// For a cascade that went to the model: why the offline translator did not answer.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub offline_refusal: Option<String>,
+    /// What became of the model's replies (received, parsed, valid); zero for offline.
+    pub replies: ReplyCounts,
     /// Every request and reply.
     pub exchanges: Vec<Exchange>,
     /// Attempts after the first.
@@ -174,6 +177,8 @@ pub struct EditError {
     pub message: String,
     /// Which kind of failure.
     pub kind: EditErrorKind,
+    /// The model's replies received before the translation failed (none otherwise).
+    pub replies: ReplyCounts,
 }
 
 /// The kinds of edit failure, for callers that answer differently (the HTTP API: 4xx for
@@ -240,6 +245,7 @@ pub fn edit_with(
         .map_err(|e| EditError {
             message: e.to_string(),
             kind: EditErrorKind::Instruction,
+            replies: ReplyCounts::default(),
         })?;
     timings.template = ms(t0);
 
@@ -253,6 +259,7 @@ pub fn edit_with(
                 EditErrorKind::Model
             },
             message: e.message,
+            replies: e.replies,
         })?;
     timings.translate = ms(t0);
 
@@ -340,6 +347,7 @@ pub fn edit_with(
         model: translator.name(),
         answered_by: translation.answered_by,
         offline_refusal: translation.offline_refusal,
+        replies: translation.replies,
         exchanges: translation.exchanges,
         retries: translation.retries,
         cache_hit: translation.cache_hit,
@@ -454,6 +462,7 @@ fn place_into(
             .map_err(|e| EditError {
                 message: e.to_string(),
                 kind: EditErrorKind::NotUnderstood,
+                replies: ReplyCounts::default(),
             })?;
         for m in &motion.moves {
             if m.object != object {
@@ -492,6 +501,7 @@ fn place_into(
         .map_err(|e| EditError {
             message: e.message,
             kind: EditErrorKind::Placement,
+            replies: ReplyCounts::default(),
         })?;
         collide_setup_ms = resolution.setup_ms;
         collide_search_ms = resolution.search_ms;
@@ -511,7 +521,8 @@ fn place_into(
                         blocking.join(", ")
                     ),
                     kind: EditErrorKind::Placement,
-                });
+ replies: ReplyCounts::default(),
+});
             }
             collisions_resolved.push(CollisionReport {
                 object: scene.objects[a.object].name.clone(),
@@ -578,6 +589,7 @@ pub fn apply_expression_bound(
     let instruction = |message: String| EditError {
         message,
         kind: EditErrorKind::Instruction,
+        replies: ReplyCounts::default(),
     };
     if objects.is_empty() {
         return Err(instruction("name the object to move (X1)".into()));
@@ -597,6 +609,7 @@ pub fn apply_expression_bound(
     let t = crate::expr::evaluate_transformation(expression, &bindings).map_err(|e| EditError {
         message: e.to_string(),
         kind: EditErrorKind::NotUnderstood,
+        replies: ReplyCounts::default(),
     })?;
     Ok((place(scene, &[(indices[0], t.versor)], options)?, t))
 }

@@ -88,6 +88,27 @@ impl System {
         ]
     }
 
+    /// Whether a reply parses in this system: its answer can be found and every
+    /// expression in it is well formed (for Omniverse, a JSON object naming the variables)
+    /// — whether or not it then evaluates to a transformation.
+    #[must_use]
+    pub fn reply_parses(self, text: &str) -> bool {
+        match self {
+            System::Cga | System::Euclidean => {
+                reply::extract_cga_reply(text).is_ok_and(|entries| {
+                    !entries.is_empty()
+                        && entries
+                            .iter()
+                            .flat_map(|e| e.expressions.iter())
+                            .all(|source| expr::parse(source).is_ok())
+                })
+            }
+            System::Omniverse => reply::parse_relaxed_objects(text)
+                .iter()
+                .any(|(_, m)| m.keys().any(|k| k.trim().starts_with(['X', 'x']))),
+        }
+    }
+
     /// Reads a reply into one transformation per variable. Errors are written for the
     /// model to correct in a retry.
     pub fn parse_reply(

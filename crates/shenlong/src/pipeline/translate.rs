@@ -6,7 +6,7 @@ use crate::llm::record::{Record, Recorder};
 use crate::llm::{Backend, Message, Usage};
 use crate::scene::Scene;
 pub use crate::translate::{Exchange, TranslateError, Translation, Translator};
-use crate::translate::{System, Templated};
+use crate::translate::{ReplyCounts, System, Templated};
 use std::time::{Duration, Instant};
 
 /// The longest reply read from a model, in bytes: a larger one is refused, never echoed
@@ -76,22 +76,28 @@ impl Translator for LlmTranslator {
                         elapsed: started.elapsed(),
                         answered_by: self.name(),
                         offline_refusal: None,
+                        replies: ReplyCounts {
+                            received: 1,
+                            parsed: 1,
+                            valid: 1,
+                        },
                     });
                 }
             }
         }
+        let mut replies = ReplyCounts::default();
         let mut messages = first.clone();
         for attempt in 0..=self.retries {
             if attempt > 0 && started.elapsed() > self.deadline {
                 return Err(TranslateError::model(format!(
                     "{model} gave no usable answer within the deadline of {:.0} s ({attempt} attempts)",
                     self.deadline.as_secs_f64()
-                )));
+                ))
+                .with_replies(replies));
             }
-            let completion = self
-                .backend
-                .complete(&messages)
-                .map_err(|e| TranslateError::model(format!("{model}: {}", e.message)))?;
+            let completion = self.backend.complete(&messages).map_err(|e| {
+                TranslateError::model(format!("{model}: {}", e.message)).with_replies(replies)
+            })?;
             if let Some(recorder) = &self.recorder {
                 let record = Record {
                     system: name.into(),
@@ -119,6 +125,13 @@ impl Translator for LlmTranslator {
             } else {
                 self.system.parse_reply(&completion.text, templated, scene)
             };
+            replies.received += 1;
+            if !too_large && self.system.reply_parses(&completion.text) {
+                replies.parsed += 1;
+            }
+            if parsed.is_ok() {
+                replies.valid += 1;
+            }
             exchanges.push(Exchange {
                 messages: messages.clone(),
                 reply: cap(&completion.text),
@@ -141,6 +154,7 @@ impl Translator for LlmTranslator {
                         elapsed: started.elapsed(),
                         answered_by: self.name(),
                         offline_refusal: None,
+                        replies,
                     });
                 }
                 Err(error) => {
@@ -165,7 +179,8 @@ impl Translator for LlmTranslator {
         Err(TranslateError::model(format!(
             "{model} gave no usable answer after {} attempts; the last error: {last}",
             self.retries + 1
-        )))
+        ))
+        .with_replies(replies))
     }
 }
 
