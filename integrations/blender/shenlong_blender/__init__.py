@@ -36,6 +36,9 @@ SYSTEMS = [
 ]
 BACKENDS = [
     ("offline", "Offline", "Shenlong's built-in translator: no network, no model"),
+    ("offline+openai", "Offline, then OpenAI-compatible",
+     "The offline translator first; a model only for what it cannot read (recommended with a model)"),
+    ("offline+ollama", "Offline, then Ollama", "The offline translator first; Ollama for the rest"),
     ("openai", "OpenAI-compatible", "openai:MODEL (OPENAI_API_KEY; base URL below)"),
     ("ollama", "Ollama", "ollama:MODEL on localhost:11434"),
 ]
@@ -88,7 +91,7 @@ def llm_spec(settings) -> str:
         return "offline"
     model = settings.model.strip()
     if not model:
-        raise core.ShenlongError(f"name the {settings.backend} model to use")
+        raise core.ShenlongError(f"name the {settings.backend.split('+')[-1]} model to use")
     return f"{settings.backend}:{model}"
 
 
@@ -172,7 +175,7 @@ def draw_panel(layout, settings):
     box.prop(settings, "backend")
     if settings.backend != "offline":
         box.prop(settings, "model")
-    if settings.backend == "openai":
+    if settings.backend.endswith("openai"):
         box.prop(settings, "base_url")
     box.prop(settings, "system")
     if settings.last_error:

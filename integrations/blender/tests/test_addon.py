@@ -226,6 +226,79 @@ class AddonTests(unittest.TestCase):
                 f.write(layout.svg(bpy.context.scene.shenlong))
 
 
+class MockModel:
+    """An OpenAI-compatible server on 127.0.0.1 that answers every request with `reply`."""
+
+    def __init__(self, reply):
+        import http.server
+        import threading
+
+        self.requests = []
+        outer = self
+
+        class Handler(http.server.BaseHTTPRequestHandler):
+            def do_POST(self):
+                length = int(self.headers.get("Content-Length", 0))
+                outer.requests.append(json.loads(self.rfile.read(length)))
+                body = json.dumps(
+                    {
+                        "choices": [{"message": {"role": "assistant", "content": reply}}],
+                        "usage": {"prompt_tokens": 10, "completion_tokens": 5},
+                    }
+                ).encode()
+                self.send_response(200)
+                self.send_header("Content-Type", "application/json")
+                self.send_header("Content-Length", str(len(body)))
+                self.end_headers()
+                self.wfile.write(body)
+
+            def log_message(self, *args):
+                pass
+
+        self.server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), Handler)
+        self.url = f"http://127.0.0.1:{self.server.server_address[1]}/v1"
+        threading.Thread(target=self.server.serve_forever, daemon=True).start()
+
+    def close(self):
+        self.server.shutdown()
+
+
+class CascadeTests(unittest.TestCase):
+    def setUp(self):
+        bpy.ops.wm.read_factory_settings(use_empty=True)
+        self.model = MockModel('{"X1": "T(1*e1)"}')
+        os.environ["OPENAI_API_KEY"] = "sk-blender-test"
+        # A reply cache of its own, so that an earlier run's answer is not reused.
+        import tempfile
+
+        self.cache = tempfile.TemporaryDirectory()
+        self.old_cache = os.environ.get("XDG_CACHE_HOME")
+        os.environ["XDG_CACHE_HOME"] = self.cache.name
+
+    def tearDown(self):
+        self.model.close()
+        if self.old_cache is None:
+            os.environ.pop("XDG_CACHE_HOME", None)
+        else:
+            os.environ["XDG_CACHE_HOME"] = self.old_cache
+        self.cache.cleanup()
+
+    def test_the_cascade_asks_the_model_only_for_what_offline_cannot_read(self):
+        crate = cube("Crate", (0.0, 0.0, 0.0), scale=(0.3, 0.3, 0.3))
+        settings = dict(backend="offline+openai", model="mock", base_url=self.model.url)
+        before = box(crate)[0].copy()
+        self.assertEqual(edit("move the Crate 1 m up", **settings), {"FINISHED"})
+        self.assertEqual(self.model.requests, [], "the offline translator answered")
+        self.assertEqual(last()["report"]["answered_by"], "offline")
+        self.assertEqual(edit("give the Crate a little shimmy", **settings), {"FINISHED"})
+        self.assertEqual(len(self.model.requests), 1)
+        self.assertNotIn("Crate", json.dumps(self.model.requests[0]), "names never reach it")
+        self.assertEqual(last()["report"]["answered_by"], "mock")
+        self.assertVectorAlmostEqual(box(crate)[0], before + Vector((1.0, 0.0, 1.0)))
+
+    assertVectorAlmostEqual = AddonTests.assertVectorAlmostEqual
+
+
 def edit_error(instruction):
     edit(instruction)
     return bpy.context.scene.shenlong.last_error
