@@ -569,7 +569,8 @@ fn a_rate_limit_holds_every_request_of_the_pool() {
         Reply::Content("{\"X1\": \"T(e1)\"}".into()),
         Reply::Content("{\"X1\": \"T(e1)\"}".into()),
     ]);
-    let client = client(&server, Some("sk-x"));
+    // Two clients of one server (as a benchmark makes one per prompt system).
+    let (client, other) = (client(&server, Some("sk-x")), client(&server, Some("sk-x")));
     let messages = vec![Message::new("user", "Instruction: move X1 right")];
     let (a, b) = std::thread::scope(|scope| {
         let first = scope.spawn(|| client.complete(&messages).map(|_| ()));
@@ -578,7 +579,7 @@ fn a_rate_limit_holds_every_request_of_the_pool() {
             std::thread::sleep(Duration::from_millis(5));
         }
         let started = std::time::Instant::now();
-        let second = client.complete(&messages).map(|_| started.elapsed());
+        let second = other.complete(&messages).map(|_| started.elapsed());
         (first.join().unwrap(), second)
     });
     a.unwrap();

@@ -267,6 +267,7 @@ fn merge(dirs: &[PathBuf], out: Option<&std::path::Path>) -> Result<()> {
     let out = out.context("--merge needs --out DIR for the merged report")?;
     let mut info: Option<RunInfo> = None;
     let mut seen = std::collections::HashSet::new();
+    let mut shards: Vec<(Option<(usize, usize)>, usize)> = Vec::new();
     let mut outcomes = Vec::new();
     for dir in dirs {
         let meta = dir.join("run.json");
@@ -294,22 +295,50 @@ fn merge(dirs: &[PathBuf], out: Option<&std::path::Path>) -> Result<()> {
         let results = dir.join("results.jsonl");
         let text = std::fs::read_to_string(&results)
             .with_context(|| format!("cannot read {}", results.display()))?;
-        for (n, line) in text
-            .lines()
-            .enumerate()
-            .filter(|(_, l)| !l.trim().is_empty())
-        {
-            let outcome: shenlong::bench::run::Outcome = serde_json::from_str(line)
-                .with_context(|| format!("{}:{}: not an outcome", results.display(), n + 1))?;
+        let mut unreadable = 0;
+        for line in text.lines().filter(|l| !l.trim().is_empty()) {
+            // As a resumed run does, a line cut short (a run killed mid-write) is skipped.
+            let Ok(outcome) = serde_json::from_str::<shenlong::bench::run::Outcome>(line) else {
+                unreadable += 1;
+                continue;
+            };
             if seen.insert((outcome.system.clone(), outcome.instance.clone())) {
                 outcomes.push(outcome);
             }
+        }
+        if unreadable > 0 {
+            eprintln!(
+                "shenlong: warning: {}: {unreadable} unreadable line(s) skipped (run that shard again to redo them)",
+                results.display()
+            );
+        }
+        if let Some((_, n)) = this.shard {
+            shards.push((this.shard, n));
         }
         if info.is_none() {
             info = Some(this);
         }
     }
     let info = info.context("--merge names no folder")?;
+    if let Some(&(_, n)) = shards.first() {
+        let mut have: Vec<usize> = shards
+            .iter()
+            .filter(|(_, m)| *m == n)
+            .filter_map(|(s, _)| s.map(|(k, _)| k))
+            .collect();
+        have.sort_unstable();
+        have.dedup();
+        let missing: Vec<String> = (1..=n)
+            .filter(|k| !have.contains(k))
+            .map(|k| format!("{k}/{n}"))
+            .collect();
+        if !missing.is_empty() {
+            eprintln!(
+                "shenlong: warning: shard(s) {} are not among the folders: the report covers part of the run",
+                missing.join(", ")
+            );
+        }
+    }
     std::fs::create_dir_all(out).with_context(|| format!("cannot create {}", out.display()))?;
     let rep = report::build(&info.suite, &info.model, &outcomes);
     write_report(out, &rep)

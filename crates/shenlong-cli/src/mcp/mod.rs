@@ -343,12 +343,17 @@ impl ShenlongMcp {
         }
         let before = self.session().file.scene.clone();
         let mut after = before.clone();
-        let (placed, t) = shenlong::pipeline::apply_expression_bound(
-            &mut after,
-            &names,
-            &request.expression,
-            &self.options(),
-        )
+        let names: Vec<String> = names.into_iter().map(str::to_string).collect();
+        let expression = request.expression.clone();
+        let options = self.options();
+        // Collision search can take its budget: off the async workers.
+        let (after, (placed, t)) = tokio::task::spawn_blocking(move || {
+            let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+            shenlong::pipeline::apply_expression_bound(&mut after, &refs, &expression, &options)
+                .map(|r| (after, r))
+        })
+        .await
+        .map_err(|e| format!("the edit stopped: {e}"))?
         .map_err(|e| e.message)?;
         let text = format!("{}: {}", request.object, request.expression);
         let id = self.commit(before, after, "apply", &text, &peer).await?;

@@ -124,14 +124,24 @@ pub fn resolve_with(
     options: &ResolveOptions,
 ) -> Result<Resolution, ResolveError> {
     let mut resolution = Resolution::default();
-    match search(scene, before, after, grid, moved, options, &mut resolution) {
+    // The boxes as they were, of every object the search moves, to put back exactly.
+    let mut saved: Vec<(usize, Aabb)> = Vec::new();
+    match search(
+        scene,
+        before,
+        after,
+        grid,
+        moved,
+        options,
+        &mut resolution,
+        &mut saved,
+    ) {
         Ok(()) => Ok(resolution),
         Err(e) => {
-            for m in resolution.motion.moves.iter().rev() {
-                let old = after[m.object];
-                let back = old.translated(-m.world.translation);
-                grid.update(m.object, &old, &back);
-                after[m.object] = back;
+            for &(i, old) in saved.iter().rev() {
+                let now = after[i];
+                grid.update(i, &now, &old);
+                after[i] = old;
             }
             scene.undo(&resolution.motion);
             Err(e)
@@ -139,6 +149,7 @@ pub fn resolve_with(
     }
 }
 
+#[allow(clippy::too_many_arguments)]
 fn search(
     scene: &mut Scene,
     before: &[Aabb],
@@ -147,6 +158,7 @@ fn search(
     moved: &[usize],
     options: &ResolveOptions,
     resolution: &mut Resolution,
+    saved: &mut Vec<(usize, Aabb)>,
 ) -> Result<(), ResolveError> {
     let setup = Instant::now();
     let groups = groups(scene, moved);
@@ -327,6 +339,7 @@ fn search(
                 resolution.motion.moves.extend(motion.moves);
                 for &i in group {
                     let old = after[i];
+                    saved.push((i, old));
                     after[i] = old.translated(offset);
                     grid.update(i, &old, &after[i]);
                 }

@@ -62,48 +62,55 @@ impl JsonDocument {
     #[must_use]
     pub fn object_field(&self, index: usize, field: &str) -> Option<Value> {
         let span = self.objects.get(index)?.object.clone();
-        let fields: FxHashMap<&str, &RawValue> = serde_json::from_str(&self.text[span]).ok()?;
+        // (Owned keys: a key written with escapes cannot be borrowed from the text.)
+        let fields: FxHashMap<String, &RawValue> = serde_json::from_str(&self.text[span]).ok()?;
         serde_json::from_str(fields.get(field)?.get()).ok()
     }
 }
 
+/// A field that is present, `null` included (serde would read a `null` as absent, and the
+/// writer must know the key is there to rewrite it rather than add a second one).
+fn present<'de, D: serde::Deserializer<'de>>(d: D) -> Result<Option<&'de RawValue>, D::Error> {
+    <&'de RawValue>::deserialize(d).map(Some)
+}
+
 #[derive(Deserialize)]
 struct RawRoot<'a> {
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     name: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     bounds: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     objects: Option<&'a RawValue>,
 }
 
 #[derive(Deserialize)]
 struct RawObject<'a> {
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     name: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     size: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     position: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     rotation: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     scale: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     front: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     on: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     category: Option<&'a RawValue>,
-    #[serde(borrow, default, rename = "objectType")]
+    #[serde(borrow, default, rename = "objectType", deserialize_with = "present")]
     object_type: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     aliases: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     color: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     colour: Option<&'a RawValue>,
-    #[serde(borrow, default)]
+    #[serde(borrow, default, deserialize_with = "present")]
     material: Option<&'a RawValue>,
 }
 

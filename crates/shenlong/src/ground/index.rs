@@ -193,12 +193,15 @@ pub(crate) struct NameIndex {
     pub max_words: usize,
 }
 
+/// What makes objects named alike: base name, aliases, category, attributes (normalised).
+type GroupKey = (String, Vec<String>, Option<String>, Vec<String>);
+
 /// Builds the index, interning `via` words as it goes.
 #[derive(Default)]
 struct Builder {
     index: NameIndex,
     via_ids: FxHashMap<Box<str>, u32>,
-    group_ids: FxHashMap<String, u32>,
+    group_ids: FxHashMap<GroupKey, u32>,
 }
 
 impl Builder {
@@ -250,12 +253,12 @@ impl Builder {
             .iter()
             .map(|a| normalize(a))
             .collect();
-        let mut key = String::with_capacity(base.len() + 16);
-        key.push_str(base);
-        for part in [&aliases[..], category.as_slice(), &attributes[..]] {
-            key.push('\u{1}');
-            key.push_str(&part.join("\u{2}"));
-        }
+        let key: GroupKey = (
+            base.to_string(),
+            aliases.clone(),
+            category.clone(),
+            attributes.clone(),
+        );
         if let Some(&g) = self.group_ids.get(&key) {
             return g;
         }

@@ -82,9 +82,26 @@ impl AttemptError {
 pub struct OpenAiClient {
     options: ClientOptions,
     agent: ureq::Agent,
-    /// When a 429 asked every request to wait: shared by every thread using this client,
-    /// so a pool of concurrent jobs backs off together instead of hammering the server.
-    not_before: std::sync::Mutex<Option<Instant>>,
+    /// When a 429 asked every request to wait: shared by every client of the same server
+    /// in the process (every thread and every prompt system of a benchmark), so a pool of
+    /// concurrent jobs backs off together instead of hammering the server.
+    not_before: std::sync::Arc<std::sync::Mutex<Option<Instant>>>,
+}
+
+/// The back-off shared by the clients of one server (by base URL).
+fn server_gate(base_url: &str) -> std::sync::Arc<std::sync::Mutex<Option<Instant>>> {
+    type Gates =
+        std::collections::HashMap<String, std::sync::Arc<std::sync::Mutex<Option<Instant>>>>;
+    static GATES: std::sync::OnceLock<std::sync::Mutex<Gates>> = std::sync::OnceLock::new();
+    let mut gates = GATES
+        .get_or_init(Default::default)
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner);
+    std::sync::Arc::clone(
+        gates
+            .entry(base_url.trim_end_matches('/').to_string())
+            .or_default(),
+    )
 }
 
 impl OpenAiClient {
@@ -96,10 +113,11 @@ impl OpenAiClient {
             .http_status_as_error(false)
             .build()
             .into();
+        let not_before = server_gate(&options.base_url);
         Self {
             options,
             agent,
-            not_before: std::sync::Mutex::new(None),
+            not_before,
         }
     }
 
