@@ -232,6 +232,23 @@ fn the_cache_serves_one_reply_to_every_scene() {
     assert_eq!(server.count(), 1);
     let plant = office.objects[office.find("plant").unwrap()].similarity();
     assert!((plant.translation.x - (-3.1 + 0.5)).abs() < 1e-9);
+    // Another server serving a model of the same name is asked, not answered from the
+    // first one's cache.
+    let other = MockLlm::start(vec![Reply::Content("{\"X1\": \"T(0.5*e1)\"}".into())]);
+    let elsewhere = LlmTranslator {
+        backend: Box::new(client(&other, None)),
+        ..make()
+    };
+    let mut kitchen = shenlong::examples::build("kitchen").unwrap();
+    let third = edit(
+        &mut kitchen,
+        "move the 'trash can' to the right",
+        &elsewhere,
+        &EditOptions::default(),
+    )
+    .unwrap();
+    assert!(!third.report.cache_hit);
+    assert_eq!(other.count(), 1);
 }
 
 #[test]

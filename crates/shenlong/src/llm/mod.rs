@@ -70,8 +70,13 @@ impl std::error::Error for LlmError {}
 
 /// A language model that answers chat messages.
 pub trait Backend: Send + Sync {
-    /// The model's name, for reports and cache keys.
+    /// The model's name, for reports.
     fn model(&self) -> &str;
+    /// What the reply cache keys this backend's answers by: the model, and for a server
+    /// the server too (two servers may serve different models under one name).
+    fn cache_scope(&self) -> String {
+        self.model().to_string()
+    }
     /// The model's reply to `messages`.
     fn complete(&self, messages: &[Message]) -> Result<Completion, LlmError>;
 }

@@ -245,6 +245,14 @@ impl Backend for OpenAiClient {
         &self.options.model
     }
 
+    fn cache_scope(&self) -> String {
+        format!(
+            "{} @ {}",
+            self.options.model,
+            self.options.base_url.trim_end_matches('/')
+        )
+    }
+
     fn complete(&self, messages: &[Message]) -> Result<Completion, LlmError> {
         let started = Instant::now();
         let body = json!({"model": self.options.model, "messages": messages, "temperature": 0});

@@ -50,6 +50,7 @@ impl Translator for LlmTranslator {
             self.system.version(),
             self.backend.model().to_string(),
         );
+        let scope = self.backend.cache_scope();
         if let Some(name) = leaked_name(&templated.query, scene) {
             return Err(TranslateError::not_understood(format!(
                 "'{name}' is still written in the instruction after grounding, so it is not sent to the model; name the object so grounding reads it (quote it: '{name}')"
@@ -58,7 +59,7 @@ impl Translator for LlmTranslator {
         let first = self.system.messages(templated, scene);
         let mut exchanges = Vec::new();
         if let Some(cache) = &self.cache {
-            if let Some(reply) = cache.get(name, version, &model, &first) {
+            if let Some(reply) = cache.get(name, version, &scope, &first) {
                 if let Ok(answers) = self.system.parse_reply(&reply, templated, scene) {
                     exchanges.push(Exchange {
                         messages: first,
@@ -144,7 +145,7 @@ impl Translator for LlmTranslator {
                 Ok(answers) => {
                     if let Some(cache) = &self.cache {
                         // A cache that cannot be written only costs a later request.
-                        let _ = cache.put(name, version, &model, &first, &completion.text);
+                        let _ = cache.put(name, version, &scope, &first, &completion.text);
                     }
                     return Ok(Translation {
                         answers,
