@@ -71,6 +71,15 @@ pub enum StepError {
     Nothing,
 }
 
+/// What [`Session::commit`] or [`Session::step`] did.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Change {
+    /// The change's id (`None` when it moved nothing and was not recorded).
+    pub id: Option<u64>,
+    /// The change was made and kept, but the `--save` file could not be written: why.
+    pub save_error: Option<String>,
+}
+
 /// A scene being edited, with its history.
 pub struct Session {
     /// The scene and the document it came from.
@@ -81,6 +90,7 @@ pub struct Session {
     next_id: u64,
     save: Option<PathBuf>,
     autosave: bool,
+    history_budget: usize,
 }
 
 impl Session {
@@ -94,7 +104,13 @@ impl Session {
             next_id: 1,
             save,
             autosave: true,
+            history_budget: MAX_HISTORY_BYTES,
         }
+    }
+
+    /// Sets the most memory the undo history keeps (default [`MAX_HISTORY_BYTES`]).
+    pub fn set_history_budget(&mut self, bytes: usize) {
+        self.history_budget = bytes;
     }
 
     /// A session on `file` that saves to `save` only when [`Session::save`] is called.
@@ -121,12 +137,10 @@ impl Session {
     }
 
     /// Makes `after` (the current scene, edited) the scene: what it changed goes on the
-    /// undo stack (a change that moved nothing is not recorded, and gives `None`); redo is
-    /// cleared; the scene is saved.
-    ///
-    /// # Errors
-    /// The edit was made but the `--save` file could not be written (the message says so).
-    pub fn commit(&mut self, after: Scene, kind: &str, text: &str) -> Result<Option<u64>, String> {
+    /// undo stack (a change that moved nothing is not recorded, and has no id); redo is
+    /// cleared; the scene is saved. A failed save loses nothing: the change stays, in
+    /// memory and in the history, and the failure is reported with it.
+    pub fn commit(&mut self, after: Scene, kind: &str, text: &str) -> Change {
         let before = &self.file.scene;
         let changes: Vec<(usize, Object, Object)> = before
             .objects
@@ -137,7 +151,10 @@ impl Session {
             .map(|(i, (a, b))| (i, a.clone(), b.clone()))
             .collect();
         if changes.is_empty() {
-            return Ok(None);
+            return Change {
+                id: None,
+                save_error: None,
+            };
         }
         let changed: Vec<String> = changes
             .iter()
@@ -149,7 +166,7 @@ impl Session {
         self.undo.push(Step { id, changes });
         // Keep the history within its budget, dropping the oldest steps.
         let mut total: usize = self.undo.iter().map(Step::bytes).sum();
-        while total > MAX_HISTORY_BYTES && self.undo.len() > 1 {
+        while total > self.history_budget && self.undo.len() > 1 {
             let dropped = self.undo.remove(0);
             total -= dropped.bytes();
             self.history.retain(|h| h.id != dropped.id);
@@ -164,25 +181,24 @@ impl Session {
             undone: false,
         });
         self.file.scene = after;
-        if self.autosave {
-            self.save()?;
+        Change {
+            id: Some(id),
+            save_error: self.autosave.then(|| self.save().err()).flatten(),
         }
-        Ok(Some(id))
     }
 
-    /// Undoes (`undo`) or redoes the last step and saves; the step's id.
+    /// Undoes (`undo`) or redoes the last step and saves.
     ///
     /// # Errors
-    /// `Ok(Err(StepError::Nothing))` when there is nothing to do; `Err` when the step was
-    /// made but the save failed.
-    pub fn step(&mut self, undo: bool) -> Result<Result<u64, StepError>, String> {
+    /// [`StepError::Nothing`] when there is nothing to do.
+    pub fn step(&mut self, undo: bool) -> Result<Change, StepError> {
         let popped = if undo {
             self.undo.pop()
         } else {
             self.redo.pop()
         };
         let Some(step) = popped else {
-            return Ok(Err(StepError::Nothing));
+            return Err(StepError::Nothing);
         };
         step.apply(&mut self.file.scene, undo);
         let id = step.id;
@@ -194,10 +210,10 @@ impl Session {
         if let Some(item) = self.history.iter_mut().find(|h| h.id == id) {
             item.undone = undo;
         }
-        if self.autosave {
-            self.save()?;
-        }
-        Ok(Ok(id))
+        Ok(Change {
+            id: Some(id),
+            save_error: self.autosave.then(|| self.save().err()).flatten(),
+        })
     }
 
     /// Writes the scene to the `--save` file, if there is one (atomically).

@@ -149,7 +149,7 @@ fn a_model_that_never_answers_right_leaves_the_output_alone() {
 fn backend_specs_are_checked() {
     for (option, value, message) in [
         ("--llm", "openai:gpt-4o", "needs OPENAI_API_KEY"),
-        ("--llm", "claude", "unknown --llm 'claude'"),
+        ("--llm", "claude", "--llm: unknown translator 'claude'"),
         (
             "--system",
             "omniverse",

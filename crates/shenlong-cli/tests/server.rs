@@ -551,3 +551,90 @@ fn slow_clients_are_cut_off_and_do_not_starve_others() {
     }
     assert_eq!(closed, slow.len(), "every slow connection was closed");
 }
+
+#[tokio::test]
+async fn a_save_that_fails_later_keeps_the_edit_and_says_so() {
+    let dir = tempfile::tempdir().unwrap();
+    let folder = dir.path().join("out");
+    std::fs::create_dir(&folder).unwrap();
+    let save = folder.join("edited.json");
+    let app = app(Some(save.clone()));
+    // The folder goes away after start-up (a disk unmounted, a folder deleted).
+    std::fs::remove_dir(&folder).unwrap();
+    let (status, report, _) = call(
+        &app,
+        "POST",
+        "/api/edit",
+        Some(r#"{"instruction": "put the 'orange bottle' on top of the 'tool table'"}"#),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{report}");
+    let warning = report["warning"].as_str().unwrap();
+    assert!(warning.contains("could not be saved"), "{warning}");
+    assert!(report["history_id"].is_u64(), "the edit is in the history");
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(
+        position(&scene, "orange bottle")[1],
+        0.9,
+        "and in the scene"
+    );
+    // Once the folder is back, the next change saves everything.
+    std::fs::create_dir(&folder).unwrap();
+    let (status, undone, _) = call(&app, "POST", "/api/undo", Some("{}")).await;
+    assert_eq!(status, StatusCode::OK);
+    assert!(undone.get("warning").is_none(), "{undone}");
+    assert!(save.exists());
+}
+
+#[test]
+fn the_history_keeps_within_its_byte_budget() {
+    use shenlong_cli::session::Session;
+    // Each change moves every object of a scene of 2,000, so each step costs about
+    // 2 × 2,000 objects; a budget of 3 such steps keeps the last 3.
+    let mut scene = shenlong::scene::Scene::new("many");
+    for i in 0..2_000 {
+        scene.objects.push(
+            shenlong::scene::Object::new_box(
+                format!("box {i}"),
+                glam::DVec3::ONE,
+                glam::DVec3::new(i as f64 * 2.0, 0.0, 0.0),
+                glam::DQuat::IDENTITY,
+                1.0,
+            )
+            .unwrap(),
+        );
+    }
+    let file = shenlong::format::SceneFile {
+        scene,
+        document: shenlong::format::Document::None,
+        path: None,
+    };
+    let mut session = Session::new(file, None);
+    let one_step = 2 * 2_000 * (std::mem::size_of::<shenlong::scene::Object>() + 8);
+    session.set_history_budget(3 * one_step + one_step / 2);
+    for k in 1..=10 {
+        let mut after = session.file.scene.clone();
+        for i in 0..after.objects.len() {
+            after
+                .apply(
+                    i,
+                    &cga::Multivector::translator(glam::DVec3::Z * 0.1),
+                    false,
+                )
+                .unwrap();
+        }
+        assert_eq!(
+            session.commit(after, "apply", &format!("step {k}")).id,
+            Some(k)
+        );
+    }
+    let kept: Vec<u64> = session.history().iter().map(|h| h.id).collect();
+    assert_eq!(kept, vec![8, 9, 10], "the oldest steps went first");
+    for _ in 0..3 {
+        assert!(session.step(true).is_ok());
+    }
+    assert!(session.step(true).is_err(), "nothing older to undo");
+    // A change that moves nothing is not recorded.
+    let same = session.file.scene.clone();
+    assert_eq!(session.commit(same, "apply", "nothing").id, None);
+}

@@ -292,7 +292,8 @@ $('form').addEventListener('submit', async (event) => {
     window.shenlong.lastReport = report;
     await load(true);
     await refreshHistory();
-    say(`Done: ${report.objects.map((o) => o.object).join(', ')}`);
+    if (report.warning) say(`Done, but ${report.warning}`, 'error');
+    else say(`Done: ${report.objects.map((o) => o.object).join(', ')}`);
   } catch (error) {
     say(error.message, 'error');
   } finally {

@@ -607,3 +607,29 @@ fn a_rate_limit_holds_every_request_of_the_pool() {
     );
     assert_eq!(server.count(), 3);
 }
+
+#[test]
+fn replies_are_scored_by_kind() {
+    // A reply with no answer, one that parses but is not a transformation, then a good one.
+    let server = MockLlm::start(vec![
+        Reply::Content("I would move it somewhere nice.".into()),
+        Reply::Content("{\"X1\": \"X1.max\"}".into()),
+        Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}")),
+    ]);
+    let mut scene = workshop();
+    let result = edit_workshop(&mut scene, &server, System::Cga).unwrap();
+    let r = result.report.replies;
+    assert_eq!((r.received, r.parsed, r.valid), (3, 2, 1), "{r:?}");
+    // A model that never gets there: the counts come with the failure.
+    let server = MockLlm::start(vec![Reply::Content("{\"X1\": \"T(\"}".into()); 6]);
+    let e = edit_workshop(&mut workshop(), &server, System::Cga).unwrap_err();
+    assert_eq!(
+        (e.replies.received, e.replies.parsed, e.replies.valid),
+        (6, 0, 0)
+    );
+    // The baselines are scored in their own terms.
+    assert!(System::Omniverse.reply_parses("{\"X1\": {\"position\": [0, 1, 0]}}"));
+    assert!(!System::Omniverse.reply_parses("no object here"));
+    assert!(System::Euclidean.reply_parses("{\"X1\": \"translation(1, 0, 0)\"}"));
+    assert!(!System::Cga.reply_parses("{\"X1\": \"T(1 *\"}"));
+}

@@ -115,7 +115,7 @@ fn a_known_house_in_detail() {
     let e = SceneFile::load_house(&dir.join("houses.jsonl"), 30, &assets).unwrap_err();
     assert!(
         e.message
-            .contains("holds 30 houses; --house 30 is out of range"),
+            .contains("holds 30 houses; house 30 is out of range"),
         "{e}"
     );
 }

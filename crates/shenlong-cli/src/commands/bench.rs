@@ -124,7 +124,7 @@ pub fn run_bench(args: Args) -> Result<()> {
         let settings = args.translator.settings(system)?;
         translators.push((
             system,
-            translator(&args.translator.llm, &settings).map_err(anyhow::Error::msg)?,
+            translator(&args.translator.llm, &settings).map_err(super::llm_error)?,
         ));
     }
     let out = args

@@ -57,7 +57,7 @@ pub fn run(args: Args) -> Result<()> {
     let system = System::from_name(&args.system).expect("clap checked the name");
     let settings = args.translator.settings(system)?;
     let mut file = super::load_scene(&args.scene)?;
-    let translator = translator(&args.translator.llm, &settings).map_err(anyhow::Error::msg)?;
+    let translator = translator(&args.translator.llm, &settings).map_err(super::llm_error)?;
     let options = EditOptions {
         carry: !args.no_carry,
         collisions: if args.collisions.no_collide() {

@@ -54,7 +54,7 @@ pub fn run(args: Args) -> Result<()> {
     };
     // Fail on a bad backend now rather than at the first edit.
     shenlong::pipeline::backends::translator(&settings.llm, &settings.translator)
-        .map_err(anyhow::Error::msg)?;
+        .map_err(super::llm_error)?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()

@@ -234,6 +234,14 @@ pub fn collision_notes(placed: &shenlong::pipeline::Placed) {
 
 /// An edit error as the command line words it: placement errors name the flag that
 /// overrides them.
+/// A translator that cannot be made, in the command line's terms.
+pub fn llm_error(message: String) -> anyhow::Error {
+    let message = message
+        .replace("choose the cga prompt system", "use --system cga")
+        .replace("the base URL of a local", "--base-url for a local");
+    anyhow::anyhow!("--llm: {message}")
+}
+
 pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
     match e.kind {
         shenlong::pipeline::EditErrorKind::Placement => anyhow::anyhow!(

@@ -66,7 +66,7 @@ pub fn run(args: Args) -> Result<()> {
             ..settings.translator.clone()
         },
     )
-    .map_err(anyhow::Error::msg)?;
+    .map_err(super::llm_error)?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .enable_all()
         .build()

@@ -207,7 +207,8 @@ impl ShenlongMcp {
         text: &str,
         peer: &Peer<RoleServer>,
     ) -> Result<Option<u64>, String> {
-        let id = self.session().commit(after, kind, text)?;
+        // (This server saves only when asked, so a commit has no save to fail.)
+        let id = self.session().commit(after, kind, text).id;
         if id.is_some() {
             *self
                 .state
@@ -495,8 +496,8 @@ impl ShenlongMcp {
     async fn step(&self, undo: bool, peer: &Peer<RoleServer>) -> Result<CallToolResult, String> {
         let _turn = self.state.edits.lock().await;
         let before = self.session().file.scene.clone();
-        let id = match self.session().step(undo)? {
-            Ok(id) => id,
+        let id = match self.session().step(undo) {
+            Ok(change) => change.id.unwrap_or_default(),
             Err(StepError::Nothing) => {
                 return Err(format!("nothing to {}", if undo { "undo" } else { "redo" }))
             }

@@ -330,12 +330,11 @@ struct EditRequest {
     system: Option<String>,
 }
 
-/// Records a change through the session (see [`Session::commit`]).
-fn commit(app: &App, after: Scene, kind: &str, text: &str) -> Result<Option<u64>, ApiError> {
-    app.lock()
-        .session
-        .commit(after, kind, text)
-        .map_err(|m| ApiError(StatusCode::INTERNAL_SERVER_ERROR, m))
+/// Records a change through the session (see [`Session::commit`]). A save that failed
+/// does not fail the request: the edit was made and kept, and the answer says so in its
+/// `warning`.
+fn commit(app: &App, after: Scene, kind: &str, text: &str) -> crate::session::Change {
+    app.lock().session.commit(after, kind, text)
 }
 
 /// The HTTP status of an edit error: 4xx for the request, 502 for a model server.
@@ -403,9 +402,12 @@ async fn edit_scene(
         )
     })?;
     let (after, report) = outcome.map_err(edit_status)?;
-    let id = commit(&app, after, "edit", &request.instruction)?;
+    let change = commit(&app, after, "edit", &request.instruction);
     let mut value = serde_json::to_value(&report).expect("reports serialise");
-    value["history_id"] = json!(id);
+    value["history_id"] = json!(change.id);
+    if let Some(warning) = change.save_error {
+        value["warning"] = json!(warning);
+    }
     Ok(Json(value))
 }
 
@@ -433,26 +435,32 @@ async fn apply(
         shenlong::pipeline::apply_expression(&mut after, &request.object, &request.expr, &options)
             .map_err(edit_status)?;
     let s = t.similarity;
-    let id = commit(
+    let change = commit(
         &app,
         after,
         "apply",
         &format!("{}: {}", request.object, request.expr),
-    )?;
-    Ok(Json(json!({
-        "object": request.object, "expr": request.expr, "history_id": id,
+    );
+    let mut value = json!({
+        "object": request.object, "expr": request.expr, "history_id": change.id,
         "translation": s.translation.to_array(), "rotation": s.rotation.to_array(), "scale": s.scale,
-    })))
+    });
+    if let Some(warning) = change.save_error {
+        value["warning"] = json!(warning);
+    }
+    Ok(Json(value))
 }
 
 fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
     let mut inner = app.lock();
-    match inner
-        .session
-        .step(undo)
-        .map_err(|m| ApiError(StatusCode::INTERNAL_SERVER_ERROR, m))?
-    {
-        Ok(_) => Ok(Json(scene_json(&inner))),
+    match inner.session.step(undo) {
+        Ok(change) => {
+            let mut value = scene_json(&inner);
+            if let Some(warning) = change.save_error {
+                value["warning"] = json!(warning);
+            }
+            Ok(Json(value))
+        }
         Err(StepError::Nothing) => Err(ApiError(
             StatusCode::CONFLICT,
             format!("nothing to {}", if undo { "undo" } else { "redo" }),

@@ -473,3 +473,74 @@ pub fn chart(report: &Report, title: &str, value: fn(&Figures) -> f64, unit: &st
     svg.push_str("</svg>\n");
     svg
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::translate::ReplyCounts;
+
+    fn outcome(
+        system: &str,
+        id: &str,
+        success: bool,
+        by: Option<&str>,
+        r: (usize, usize, usize),
+    ) -> Outcome {
+        Outcome {
+            instance: id.into(),
+            query: id.split('@').next().unwrap_or(id).into(),
+            category: "simple".into(),
+            scene: "s".into(),
+            system: system.into(),
+            instruction: "move X1".into(),
+            success,
+            failures: Vec::new(),
+            error: None,
+            response_ms: 1.0,
+            retries: r.0.saturating_sub(1),
+            prompt_tokens: 10,
+            completion_tokens: 2,
+            cache_hit: false,
+            answered_by: by.map(str::to_string),
+            replies: ReplyCounts {
+                received: r.0,
+                parsed: r.1,
+                valid: r.2,
+            },
+        }
+    }
+
+    #[test]
+    fn figures_score_replies_and_the_cascade_parts() {
+        let outcomes = vec![
+            outcome("cga", "a@s#0", true, Some("offline"), (0, 0, 0)),
+            outcome("cga", "b@s#0", true, Some("offline"), (0, 0, 0)),
+            outcome("cga", "c@s#0", false, Some("gpt"), (3, 2, 1)),
+            outcome("cga", "d@s#0", true, Some("gpt"), (1, 1, 1)),
+            outcome("euclidean", "a@s#0", false, None, (6, 3, 0)),
+        ];
+        let r = build("suite", "offline+gpt", &outcomes);
+        let cga = &r.systems["cga"].overall;
+        assert_eq!(cga.replies, 4);
+        assert_eq!(cga.parse_rate, 0.75);
+        assert_eq!(cga.valid_rate, 0.5);
+        assert_eq!(cga.success_rate, 0.75);
+        assert_eq!(cga.retries_total, 2);
+        assert_eq!((cga.answered_offline, cga.answered_by_model), (2, 2));
+        assert_eq!(cga.offline_success_rate, 1.0);
+        assert_eq!(cga.model_success_rate, 0.5);
+        let e = &r.systems["euclidean"].overall;
+        assert_eq!((e.parse_rate, e.valid_rate), (0.5, 0.0));
+        assert!(e.offline_success_rate.is_nan(), "no part answered offline");
+        // The same outcomes in another order give the same report.
+        let mut shuffled = outcomes.clone();
+        shuffled.reverse();
+        let again = build("suite", "offline+gpt", &shuffled);
+        assert_eq!(
+            serde_json::to_string(&again).unwrap(),
+            serde_json::to_string(&r).unwrap()
+        );
+        let md = markdown(&r);
+        assert!(md.contains("| cga | **overall** | 4 | 75.0 % | 50.0 % | 75.0 % | 2 | 50.0 % | 100.0 % | 50.0 % |"), "{md}");
+    }
+}

@@ -91,7 +91,7 @@ impl Format {
             "json" if name_ends_with(path, ".tdw.json") => Ok(Format::TdwCommands),
             "json" => Ok(Format::SceneJson),
             "jsonl" => Err(FormatError::new(format!(
-                "{}: unknown scene format '.jsonl': a file of ProcTHOR/Holodeck houses is imported with --from procthor --assets asset-database.json",
+                "{}: unknown scene format '.jsonl': a file of ProcTHOR/Holodeck houses is imported as houses, with their asset database",
                 path.display()
             ))),
             "gltf" => Ok(Format::Gltf),
@@ -144,7 +144,7 @@ impl SceneFile {
                         .is_some_and(|v| procthor::looks_like_house(&v));
                     if house {
                         FormatError::new(format!(
-                            "{}: this is a ProcTHOR/Holodeck house, not a scene file: import it with --from procthor --assets asset-database.json",
+                            "{}: this is a ProcTHOR/Holodeck house, not a scene file: import it as a house, with its asset database",
                             path.display()
                         ))
                     } else {

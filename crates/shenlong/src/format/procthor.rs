@@ -111,7 +111,7 @@ pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Va
     {
         let text = lines.get(index).ok_or_else(|| {
             FormatError::new(format!(
-                "{} holds {} houses; --house {index} is out of range",
+                "{} holds {} houses; house {index} is out of range (they are counted from 0)",
                 path.display(),
                 lines.len()
             ))
@@ -120,7 +120,7 @@ pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Va
     } else {
         if index > 0 {
             return Err(FormatError::new(format!(
-                "{} holds one house; --house {index} is out of range",
+                "{} holds one house; house {index} is out of range (it is house 0)",
                 path.display()
             )));
         }

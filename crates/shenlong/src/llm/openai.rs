@@ -205,7 +205,7 @@ impl OpenAiClient {
                 .unwrap_or_else(|| text.chars().take(200).collect());
             let hint = match status {
                 401 | 403 => " (check OPENAI_API_KEY)",
-                404 => " (check the model name and --base-url)",
+                404 => " (check the model name and the base URL)",
                 _ => "",
             };
             let retry = status == 429 || status >= 500;

@@ -60,7 +60,7 @@ pub fn translator(
     if let Some(model) = spec.strip_prefix("offline+") {
         if model.trim().is_empty() || model.trim().starts_with("offline") {
             return Err(format!(
-                "--llm {spec}: a cascade is offline+MODEL, e.g. offline+openai:gpt-4o"
+                "translator '{spec}': a cascade is offline+MODEL, e.g. offline+openai:gpt-4o"
             ));
         }
         let model = translator(model, settings)?;
@@ -71,7 +71,7 @@ pub fn translator(
         "offline" => {
             if settings.system != System::Cga {
                 return Err(format!(
-                    "the offline translator answers in CGA only; use --system cga, or a model with --llm openai:MODEL for '{}'",
+                    "the offline translator answers in CGA only: choose the cga prompt system, or a model (openai:MODEL) for '{}'",
                     settings.system.name()
                 ));
             }
@@ -80,7 +80,7 @@ pub fn translator(
         "openai" | "ollama" => {
             if rest.is_empty() {
                 return Err(format!(
-                    "--llm {kind}:MODEL needs a model name, e.g. {kind}:{}",
+                    "the translator {kind}:MODEL needs a model name, e.g. {kind}:{}",
                     if kind == "openai" {
                         "gpt-4o"
                     } else {
@@ -115,7 +115,7 @@ pub fn translator(
                 }
             });
             if kind == "openai" && api_key.is_none() && base_url == OPENAI_BASE_URL {
-                return Err("--llm openai:MODEL needs OPENAI_API_KEY (or --base-url for a local OpenAI-compatible server)".into());
+                return Err("the translator openai:MODEL needs OPENAI_API_KEY (or the base URL of a local OpenAI-compatible server)".into());
             }
             let mut options = ClientOptions::new(base_url, rest, api_key);
             options.request_timeout = settings.timeout;
@@ -125,13 +125,13 @@ pub fn translator(
         }
         "replay" => {
             if rest.is_empty() {
-                return Err("--llm replay:FILE needs the file written by --record".into());
+                return Err("the translator replay:FILE needs the file of recorded exchanges".into());
             }
             Box::new(Replay::load(std::path::Path::new(rest)).map_err(|e| e.message)?)
         }
         other => {
             return Err(format!(
-                "unknown --llm '{other}': use offline, openai:MODEL, ollama:MODEL, replay:FILE, or offline+ one of those"
+                "unknown translator '{other}': use offline, openai:MODEL, ollama:MODEL, replay:FILE, or offline+ one of those"
             ))
         }
     };

@@ -24,7 +24,7 @@ impl Cascade {
     pub fn new(model: Box<dyn Translator>) -> Result<Self, String> {
         if model.system() != System::Cga {
             return Err(format!(
-                "a cascade answers in CGA (its offline part cannot answer in '{}'): use --system cga",
+                "a cascade answers in CGA (its offline part cannot answer in '{}'): choose the cga prompt system",
                 model.system().name()
             ));
         }
