@@ -223,7 +223,7 @@ fn grid_text(count: usize) -> (String, String) {
 }
 
 /// One edit whose object lands on its neighbour and is moved to a free place, at 1,000 to
-/// 100,000 objects, in phases (the whole process, up to a million, is `bench/big_scenes.py`).
+/// 1,000,000 objects, in phases (the whole process is `bench/big_scenes.py`).
 fn big_scenes(c: &mut Criterion) {
     use shenlong::pipeline::{edit_with, EditOptions};
     let translator = shenlong::offline::OfflineTranslator::new();
@@ -234,7 +234,7 @@ fn big_scenes(c: &mut Criterion) {
     };
     let mut group = c.benchmark_group("big scenes");
     group.sample_size(10);
-    for count in [1_000, 10_000, 100_000] {
+    for count in [1_000, 10_000, 100_000, 1_000_000] {
         let (text, name) = grid_text(count);
         let instruction = format!("move the '{name}' 1.5 m to the right");
         group.bench_function(format!("{count} objects: read"), |b| {
