@@ -60,11 +60,7 @@ pub fn run(args: Args) -> Result<()> {
     let translator = translator(&args.translator.llm, &settings).map_err(super::llm_error)?;
     let options = EditOptions {
         carry: !args.no_carry,
-        collisions: if args.collisions.no_collide() {
-            None
-        } else {
-            Some(args.collisions.options()?)
-        },
+        collisions: args.collisions.resolve_options()?,
         selection: args
             .selected
             .iter()

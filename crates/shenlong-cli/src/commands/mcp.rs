@@ -45,11 +45,7 @@ pub fn run(args: Args) -> Result<()> {
     let settings = McpSettings {
         llm: args.translator.llm.clone(),
         translator: args.translator.settings(system)?,
-        collisions: if args.collisions.no_collide() {
-            None
-        } else {
-            Some(args.collisions.options()?)
-        },
+        collisions: args.collisions.resolve_options()?,
         save: args.save.clone(),
     };
     // Fail on a bad backend now rather than at the first edit.

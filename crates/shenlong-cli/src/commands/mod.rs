@@ -98,6 +98,15 @@ impl CollisionArgs {
         self.no_collide
     }
 
+    /// The resolver's options, checked; `None` with `--no-collide`.
+    pub fn resolve_options(&self) -> Result<Option<shenlong::collide::ResolveOptions>> {
+        if self.no_collide() {
+            Ok(None)
+        } else {
+            self.options().map(Some)
+        }
+    }
+
     /// The resolver's options, checked.
     pub fn options(&self) -> Result<shenlong::collide::ResolveOptions> {
         for (name, value) in [
@@ -131,11 +140,7 @@ impl CollisionArgs {
     pub fn edit_options(&self, carry: bool) -> Result<shenlong::pipeline::EditOptions> {
         Ok(shenlong::pipeline::EditOptions {
             carry,
-            collisions: if self.no_collide() {
-                None
-            } else {
-                Some(self.options()?)
-            },
+            collisions: self.resolve_options()?,
             selection: Vec::new(),
         })
     }
@@ -232,8 +237,6 @@ pub fn collision_notes(placed: &shenlong::pipeline::Placed) {
     }
 }
 
-/// An edit error as the command line words it: placement errors name the flag that
-/// overrides them.
 /// A translator that cannot be made, in the command line's terms.
 pub fn llm_error(message: String) -> anyhow::Error {
     let message = message
@@ -242,6 +245,8 @@ pub fn llm_error(message: String) -> anyhow::Error {
     anyhow::anyhow!("--llm: {message}")
 }
 
+/// An edit error as the command line words it: placement errors name the flag that
+/// overrides them.
 pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
     match e.kind {
         shenlong::pipeline::EditErrorKind::Placement => anyhow::anyhow!(

@@ -51,11 +51,7 @@ pub fn run(args: Args) -> Result<()> {
         llm: args.translator.llm.clone(),
         system,
         translator: args.translator.settings(system)?,
-        collisions: if args.collisions.no_collide() {
-            None
-        } else {
-            Some(args.collisions.options()?)
-        },
+        collisions: args.collisions.resolve_options()?,
         save: args.save.clone(),
     };
     // Fail on a bad default backend now rather than at the first edit.
