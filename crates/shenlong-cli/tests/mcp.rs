@@ -84,6 +84,20 @@ impl Client {
     }
 }
 
+impl Client {
+    /// One object of `list_objects`, by name.
+    fn object(&mut self, name: &str) -> Value {
+        let listing = self.call("list_objects", json!({}));
+        listing["structuredContent"]["objects"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .find(|o| o["name"] == name)
+            .unwrap_or_else(|| panic!("no {name} in {listing}"))
+            .clone()
+    }
+}
+
 fn text(result: &Value) -> String {
     result["content"][0]["text"]
         .as_str()
@@ -126,11 +140,8 @@ fn an_assistant_edits_a_scene_over_mcp() {
         .unwrap();
     assert!(list_tool["outputSchema"]["properties"]["objects"].is_object());
 
-    let listing = c.call("list_objects", json!({}));
-    let objects = listing["structuredContent"]["objects"].as_array().unwrap();
-    let vise = objects.iter().find(|o| o["name"] == "vise").unwrap();
-    assert_eq!(vise["rests_on"], "workbench");
-    let table = objects.iter().find(|o| o["name"] == "tool table").unwrap();
+    assert_eq!(c.object("vise")["rests_on"], "workbench");
+    let table = c.object("tool table");
     let table_top = table["world_box"]["max"][1].as_f64().unwrap();
 
     // Subscribe to the scene, then edit by instruction.
@@ -150,12 +161,7 @@ fn an_assistant_edits_a_scene_over_mcp() {
         .iter()
         .any(|n| n["method"] == "notifications/resources/updated"
             && n["params"]["uri"] == "scene://current"));
-    let after = c.call("list_objects", json!({}));
-    let objects = after["structuredContent"]["objects"].as_array().unwrap();
-    let bottle = objects
-        .iter()
-        .find(|o| o["name"] == "orange bottle")
-        .unwrap();
+    let bottle = c.object("orange bottle");
     assert_eq!(bottle["rests_on"], "tool table");
     let bottom = bottle["world_box"]["min"][1].as_f64().unwrap();
     assert!(
@@ -184,14 +190,7 @@ fn an_assistant_edits_a_scene_over_mcp() {
         json!({"object": "tool table", "expression": "T(1*e1)"}),
     );
     assert_ne!(applied["isError"], true, "{applied}");
-    let moved = c.call("list_objects", json!({}));
-    let table = moved["structuredContent"]["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == "tool table")
-        .unwrap()
-        .clone();
+    let table = c.object("tool table");
     assert!(
         (table["position"][0].as_f64().unwrap() - 1.0).abs() < 1e-9,
         "{table}"
@@ -201,15 +200,7 @@ fn an_assistant_edits_a_scene_over_mcp() {
     // Undo the apply, then redo and undo it again; the history says so.
     let undone = c.call("undo", json!({}));
     assert_ne!(undone["isError"], true, "{undone}");
-    let back = c.call("list_objects", json!({}));
-    let table = back["structuredContent"]["objects"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .find(|o| o["name"] == "tool table")
-        .unwrap()
-        .clone();
-    assert_eq!(table["position"][0], 0.0);
+    assert_eq!(c.object("tool table")["position"][0], 0.0);
     assert_ne!(c.call("redo", json!({}))["isError"], true);
     assert_ne!(c.call("undo", json!({}))["isError"], true);
     let history = c.call("history", json!({}));

@@ -43,14 +43,15 @@ pub fn run(args: Args) -> Result<()> {
     }
     let system = System::from_name(&args.system).expect("clap checked the name");
     let settings = McpSettings {
-        llm: args.translator.llm.clone(),
-        translator: args.translator.settings(system)?,
+        // Made once, here: a bad backend fails now rather than at the first edit.
+        translator: shenlong::pipeline::backends::translator(
+            &args.translator.llm,
+            &args.translator.settings(system)?,
+        )
+        .map_err(super::llm_error)?,
         collisions: args.collisions.resolve_options()?,
         save: args.save.clone(),
     };
-    // Fail on a bad backend now rather than at the first edit.
-    shenlong::pipeline::backends::translator(&settings.llm, &settings.translator)
-        .map_err(super::llm_error)?;
     let runtime = tokio::runtime::Builder::new_multi_thread()
         .worker_threads(2)
         .enable_all()

@@ -25,8 +25,7 @@ use serde::{Deserialize, Serialize};
 use shenlong::collide::ResolveOptions;
 use shenlong::format::{Format, SceneFile};
 use shenlong::ground::Grounder;
-use shenlong::pipeline::backends::{translator, TranslatorSettings};
-use shenlong::pipeline::{edit_with, EditOptions};
+use shenlong::pipeline::{edit_with, EditOptions, Translator};
 use shenlong::scene::Scene;
 use std::collections::BTreeMap;
 use std::path::PathBuf;
@@ -37,12 +36,10 @@ use std::sync::{Arc, Mutex};
 pub const SCENE_URI: &str = "scene://current";
 
 /// How the server edits: chosen on the command line, never by a client.
-#[derive(Clone, Debug)]
 pub struct McpSettings {
-    /// The translator (`offline`, `openai:MODEL`, …).
-    pub llm: String,
-    /// Its settings (prompt system, retries, timeouts, base URL); the API key stays here.
-    pub translator: TranslatorSettings,
+    /// The translator, made once at start-up (`offline`, `openai:MODEL`, a cascade …);
+    /// the API key stays in it.
+    pub translator: Box<dyn Translator>,
     /// Collision resolution; `None` skips it.
     pub collisions: Option<ResolveOptions>,
     /// The file `save` writes.
@@ -198,7 +195,7 @@ impl ShenlongMcp {
         }
     }
 
-    /// Records a change and tells subscribers.
+    /// Records a change and tells subscribers; its id (`None` when nothing moved).
     async fn commit(
         &self,
         before: Scene,
@@ -206,18 +203,27 @@ impl ShenlongMcp {
         kind: &str,
         text: &str,
         peer: &Peer<RoleServer>,
-    ) -> Result<Option<u64>, String> {
+    ) -> Option<u64> {
         // (This server saves only when asked, so a commit has no save to fail.)
         let id = self.session().commit(after, kind, text).id;
         if id.is_some() {
-            *self
-                .state
-                .previous
-                .lock()
-                .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(before);
-            self.notify(peer).await;
+            self.changed(before, peer).await;
         }
-        Ok(id)
+        id
+    }
+
+    fn previous(&self) -> std::sync::MutexGuard<'_, Option<Scene>> {
+        self.state
+            .previous
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+
+    /// After any change (a commit, an undo, a redo): keeps the scene as it was, for
+    /// `render {before: true}`, and tells subscribers.
+    async fn changed(&self, before: Scene, peer: &Peer<RoleServer>) {
+        *self.previous() = Some(before);
+        self.notify(peer).await;
     }
 
     async fn notify(&self, peer: &Peer<RoleServer>) {
@@ -229,13 +235,13 @@ impl ShenlongMcp {
         }
     }
 
-    fn scene_text(&self) -> String {
-        let session = self.session();
-        let original = match &session.file.document {
-            shenlong::format::Document::SceneJson(d) => Some(d),
-            _ => None,
-        };
-        shenlong::format::json::write(&session.file.scene, original)
+    fn scene_text(&self) -> Result<String, String> {
+        let bytes = self
+            .session()
+            .file
+            .to_bytes(Format::SceneJson)
+            .map_err(|e| e.to_string())?;
+        String::from_utf8(bytes).map_err(|e| e.to_string())
     }
 }
 
@@ -296,7 +302,6 @@ impl ShenlongMcp {
         peer: Peer<RoleServer>,
     ) -> Result<CallToolResult, String> {
         let _turn = self.state.edits.lock().await;
-        let translator = translator(&self.state.settings.llm, &self.state.settings.translator)?;
         let before = self.session().file.scene.clone();
         let mut working = before.clone();
         let state = Arc::clone(&self.state);
@@ -307,7 +312,7 @@ impl ShenlongMcp {
                 &mut working,
                 &state.grounder,
                 &instruction,
-                translator.as_ref(),
+                state.settings.translator.as_ref(),
                 &options,
             )
             .map(|e| (working, e.report))
@@ -317,7 +322,7 @@ impl ShenlongMcp {
         let (after, report) = outcome.map_err(|e| e.message)?;
         let id = self
             .commit(before, after, "edit", &request.instruction, &peer)
-            .await?;
+            .await;
         let mut value = serde_json::to_value(&report).map_err(|e| e.to_string())?;
         value["history_id"] = serde_json::json!(id);
         Ok(CallToolResult::structured(value))
@@ -357,7 +362,7 @@ impl ShenlongMcp {
         .map_err(|e| format!("the edit stopped: {e}"))?
         .map_err(|e| e.message)?;
         let text = format!("{}: {}", request.object, request.expression);
-        let id = self.commit(before, after, "apply", &text, &peer).await?;
+        let id = self.commit(before, after, "apply", &text, &peer).await;
         let s = t.similarity;
         Ok(CallToolResult::structured(serde_json::json!({
             "object": request.object,
@@ -410,11 +415,7 @@ impl ShenlongMcp {
     ) -> Result<CallToolResult, String> {
         let scene = self.session().file.scene.clone();
         let previous = if request.before {
-            self.state
-                .previous
-                .lock()
-                .unwrap_or_else(std::sync::PoisonError::into_inner)
-                .clone()
+            self.previous().clone()
         } else {
             None
         };
@@ -502,12 +503,7 @@ impl ShenlongMcp {
                 return Err(format!("nothing to {}", if undo { "undo" } else { "redo" }))
             }
         };
-        *self
-            .state
-            .previous
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner) = Some(before);
-        self.notify(peer).await;
+        self.changed(before, peer).await;
         Ok(CallToolResult::structured(serde_json::json!({
             if undo { "undone" } else { "redone" }: id
         })))
@@ -557,7 +553,9 @@ impl rmcp::ServerHandler for ShenlongMcp {
             ReadResourceResult::new(vec![ResourceContents::TextResourceContents {
                 uri: SCENE_URI.into(),
                 mime_type: Some("application/json".into()),
-                text: self.scene_text(),
+                text: self
+                    .scene_text()
+                    .map_err(|m| ErrorData::internal_error(m, None))?,
                 meta: None,
             }])
             .into(),
