@@ -250,6 +250,21 @@ fn secs(ms: f64) -> String {
     }
 }
 
+/// Every (system, category, figures) row of the tables, each system's categories then its
+/// overall figures under the label `overall`.
+fn rows<'a>(
+    report: &'a Report,
+    overall: &'a str,
+) -> impl Iterator<Item = (&'a str, &'a str, &'a Figures)> {
+    report.systems.iter().flat_map(move |(system, r)| {
+        r.categories
+            .iter()
+            .map(|(c, f)| (c.as_str(), f))
+            .chain(std::iter::once((overall, &r.overall)))
+            .map(move |(c, f)| (system.as_str(), c, f))
+    })
+}
+
 /// The summary table printed at the end of a run.
 pub fn summary(report: &Report) -> String {
     let mut out = String::new();
@@ -258,21 +273,15 @@ pub fn summary(report: &Report) -> String {
         "{:<11} {:<20} {:>6} {:>9} {:>12} {:>8}",
         "system", "category", "n", "success", "response", "retries"
     );
-    for (system, r) in &report.systems {
-        for (category, f) in r
-            .categories
-            .iter()
-            .chain(std::iter::once((&"overall".to_string(), &r.overall)))
-        {
-            let _ = writeln!(
-                out,
-                "{system:<11} {category:<20} {:>6} {:>9} {:>12} {:>8.2}",
-                f.n,
-                pct(f.success_rate),
-                secs(f.response_ms_mean),
-                f.retries_mean
-            );
-        }
+    for (system, category, f) in rows(report, "overall") {
+        let _ = writeln!(
+            out,
+            "{system:<11} {category:<20} {:>6} {:>9} {:>12} {:>8.2}",
+            f.n,
+            pct(f.success_rate),
+            secs(f.response_ms_mean),
+            f.retries_mean
+        );
     }
     out
 }
@@ -287,46 +296,34 @@ pub fn markdown(report: &Report) -> String {
     );
     let _ = writeln!(md, "## Success rate and response time\n");
     let _ = writeln!(md, "| system | category | n | success | response (mean ± sd) | retries | tokens in / out | cache hits |\n|---|---|---|---|---|---|---|---|");
-    for (system, r) in &report.systems {
-        for (category, f) in r
-            .categories
-            .iter()
-            .chain(std::iter::once((&"**overall**".to_string(), &r.overall)))
-        {
-            let _ = writeln!(
-                md,
-                "| {system} | {category} | {} | {} | {} ± {} | {:.2} | {} / {} | {} |",
-                f.n,
-                pct(f.success_rate),
-                secs(f.response_ms_mean),
-                secs(f.response_ms_std),
-                f.retries_mean,
-                f.prompt_tokens,
-                f.completion_tokens,
-                f.cache_hits
-            );
-        }
+    for (system, category, f) in rows(report, "**overall**") {
+        let _ = writeln!(
+            md,
+            "| {system} | {category} | {} | {} | {} ± {} | {:.2} | {} / {} | {} |",
+            f.n,
+            pct(f.success_rate),
+            secs(f.response_ms_mean),
+            secs(f.response_ms_std),
+            f.retries_mean,
+            f.prompt_tokens,
+            f.completion_tokens,
+            f.cache_hits
+        );
     }
     let _ = writeln!(md, "\n## What went wrong, by kind\n\nReplies are scored apart from geometry: the share of the model's replies (retries included) that parse, and that evaluate to a valid T·R·D; then the share of instances that pass the checks. A cascade's instances are split by the part that answered.\n\n| system | category | replies | parse | valid T·R·D | pass | retries | answered offline | pass (offline) | pass (model) |\n|---|---|---|---|---|---|---|---|---|---|");
-    for (system, r) in &report.systems {
-        for (category, f) in r
-            .categories
-            .iter()
-            .chain(std::iter::once((&"**overall**".to_string(), &r.overall)))
-        {
-            let _ = writeln!(
-                md,
-                "| {system} | {category} | {} | {} | {} | {} | {} | {} | {} | {} |",
-                f.replies,
-                pct(f.parse_rate),
-                pct(f.valid_rate),
-                pct(f.success_rate),
-                f.retries_total,
-                pct(share(f.answered_offline, f.n)),
-                pct(f.offline_success_rate),
-                pct(f.model_success_rate)
-            );
-        }
+    for (system, category, f) in rows(report, "**overall**") {
+        let _ = writeln!(
+            md,
+            "| {system} | {category} | {} | {} | {} | {} | {} | {} | {} | {} |",
+            f.replies,
+            pct(f.parse_rate),
+            pct(f.valid_rate),
+            pct(f.success_rate),
+            f.retries_total,
+            pct(share(f.answered_offline, f.n)),
+            pct(f.offline_success_rate),
+            pct(f.model_success_rate)
+        );
     }
     let _ = writeln!(md, "\n## Beside the paper\n\nThe paper (gpt-4-1106-preview, 10 Holodeck scenes × 5 categories × 10 queries × 5 variations, judged by people):\n\n| system | paper: success | paper: response | here: success | here: response |\n|---|---|---|---|---|");
     for (system, success, seconds) in PAPER {
