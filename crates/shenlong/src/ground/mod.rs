@@ -597,32 +597,26 @@ impl<'a> Reader<'a> {
                 .singulars(&phrase)
                 .into_iter()
                 .find_map(|singular| index.lookup(&singular).map(|hit| (singular, hit)));
-            match (direct, plural) {
+            // (the hit, whether it is read as a plural, and the singular it was read as)
+            let chosen = match (direct, plural) {
                 (Some(hit), plural) if plural.as_ref().is_none_or(|(_, p)| hit.tier < p.tier) => {
-                    let via = hit.via.to_string();
-                    return Some(self.make_head(
-                        range,
-                        hit.objects,
-                        hit.tier,
-                        false,
-                        phrase,
-                        &via,
-                        typo,
-                    ));
+                    Some((hit, false, None))
                 }
-                (_, Some((singular, hit))) => {
-                    let via = hit.via.to_string();
-                    return Some(self.make_head(
-                        range,
-                        hit.objects,
-                        hit.tier,
-                        true,
-                        singular,
-                        &via,
-                        typo,
-                    ));
-                }
-                _ => {}
+                (_, Some((singular, hit))) => Some((hit, true, Some(singular))),
+                _ => None,
+            };
+            if let Some((hit, plural, singular)) = chosen {
+                let via = hit.via.to_string();
+                let text = singular.unwrap_or(phrase);
+                return Some(self.make_head(
+                    range,
+                    hit.objects,
+                    hit.tier,
+                    plural,
+                    text,
+                    &via,
+                    typo,
+                ));
             }
             if phrase.contains(' ') || phrase.chars().count() >= 4 {
                 if let Some(objects) = index.lookup_compact(&phrase) {
