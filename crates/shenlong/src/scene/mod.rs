@@ -191,12 +191,7 @@ impl Object {
     /// points.
     pub fn local_points(&self) -> Vec<DVec3> {
         match &self.shape {
-            Shape::Box { size } => {
-                let half = DVec3::new(size.x * 0.5, 0.0, size.z * 0.5);
-                Aabb::new(-half, DVec3::new(half.x, size.y, half.z))
-                    .corners()
-                    .to_vec()
-            }
+            Shape::Box { size } => box_corners(*size).to_vec(),
             Shape::Points { points } => points.clone(),
         }
     }
@@ -210,11 +205,7 @@ impl Object {
         let t = self.pose.translation;
         let transform = |p: DVec3| linear * p + t;
         let bounds = match &self.shape {
-            Shape::Box { size } => {
-                let half = DVec3::new(size.x * 0.5, 0.0, size.z * 0.5);
-                let corners = Aabb::new(-half, DVec3::new(half.x, size.y, half.z)).corners();
-                Aabb::from_points(corners.into_iter().map(transform))
-            }
+            Shape::Box { size } => Aabb::from_points(box_corners(*size).into_iter().map(transform)),
             Shape::Points { points } => Aabb::from_points(points.iter().map(|&p| transform(p))),
         };
         // `Points` is never empty (the readers refuse empty meshes); the pose's origin
@@ -241,6 +232,12 @@ impl Object {
         self.pose = world.compose(&before);
         before
     }
+}
+
+/// The 8 corners of a box shape of this size, pivot at its bottom centre.
+fn box_corners(size: DVec3) -> [DVec3; 8] {
+    let half = DVec3::new(size.x * 0.5, 0.0, size.z * 0.5);
+    Aabb::new(-half, DVec3::new(half.x, size.y, half.z)).corners()
 }
 
 /// One object's share of an applied motion.
