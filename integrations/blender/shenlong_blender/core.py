@@ -113,9 +113,7 @@ def world_box(obj, depsgraph):
         points = [matrix @ v.co for v in mesh.vertices]
     finally:
         evaluated.to_mesh_clear()
-    lo = Vector((min(p.x for p in points), min(p.y for p in points), min(p.z for p in points)))
-    hi = Vector((max(p.x for p in points), max(p.y for p in points), max(p.z for p in points)))
-    return lo, hi
+    return bounds(points)
 
 
 def editable_objects(view_layer, selected=()):
@@ -133,12 +131,6 @@ def editable_objects(view_layer, selected=()):
             parent = parent.parent
         if not below_mesh or o in selected:
             chosen.add(o)
-
-    def depth(o):
-        d = 0
-        while o.parent is not None:
-            d, o = d + 1, o.parent
-        return d
 
     return sorted(chosen, key=lambda o: (depth(o), o.name))
 
@@ -169,9 +161,7 @@ def scene_json(objects: list[SceneObject], name: str = "blender") -> dict:
     """A Shenlong scene (SPEC §2) of axis-aligned boxes, in Shenlong's frame."""
     entries = []
     for s in objects:
-        corners = [to_shenlong(c) for c in box_corners(s.box_min, s.box_max)]
-        lo = Vector((min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners)))
-        hi = Vector((max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners)))
+        lo, hi = bounds(to_shenlong(c) for c in box_corners(s.box_min, s.box_max))
         size = hi - lo
         # A flat mesh (a plane) gets a hair of thickness: a box's size must be > 0.
         size = Vector([max(c, 1e-6) for c in size])
@@ -186,6 +176,22 @@ def scene_json(objects: list[SceneObject], name: str = "blender") -> dict:
             }
         )
     return {"name": name, "objects": entries}
+
+
+def bounds(points):
+    """The low and high corners of the axis-aligned box around the points."""
+    points = list(points)
+    lo = Vector((min(p.x for p in points), min(p.y for p in points), min(p.z for p in points)))
+    hi = Vector((max(p.x for p in points), max(p.y for p in points), max(p.z for p in points)))
+    return lo, hi
+
+
+def depth(obj) -> int:
+    """How many parents the object has."""
+    d = 0
+    while obj.parent is not None:
+        d, obj = d + 1, obj.parent
+    return d
 
 
 def box_corners(lo, hi):
@@ -273,9 +279,7 @@ def motion_of(before: dict, after: dict):
     size = Vector(before["size"])
     half = Vector((size.x / 2.0, 0.0, size.z / 2.0))
     local = box_corners(-half, Vector((half.x, size.y, half.z)))
-    corners = [to_blender(q @ (c * s) + t) for c in local]
-    lo = Vector((min(c.x for c in corners), min(c.y for c in corners), min(c.z for c in corners)))
-    hi = Vector((max(c.x for c in corners), max(c.y for c in corners), max(c.z for c in corners)))
+    lo, hi = bounds(to_blender(q @ (c * s) + t) for c in local)
     return Motion(after["name"], matrix, lo, hi)
 
 
@@ -287,12 +291,6 @@ def apply_motions(objects_by_name: dict, motions: list[Motion]) -> None:
     for m in motions:
         obj = objects_by_name[m.name]
         targets.append((obj, m.matrix @ obj.matrix_world))
-
-    def depth(o):
-        d = 0
-        while o.parent is not None:
-            d, o = d + 1, o.parent
-        return d
 
     for obj, matrix in sorted(targets, key=lambda t: depth(t[0])):
         obj.matrix_world = matrix
