@@ -53,16 +53,20 @@ impl FloorGrid {
         (f(b.min.x), f(b.max.x), f(b.min.z), f(b.max.z))
     }
 
-    fn insert(&mut self, index: usize, b: &Aabb) {
+    /// The cells a box occupies, or `None` when it is kept aside as large (or not finite).
+    fn cells_of(&self, b: &Aabb) -> Option<(i64, i64, i64, i64)> {
         if !b.is_finite() {
-            self.large.push(index);
-            return;
+            return None;
         }
         let (x0, x1, z0, z1) = self.range(b);
-        if (x1 - x0 + 1).saturating_mul(z1 - z0 + 1) > MAX_CELLS_PER_BOX {
+        ((x1 - x0 + 1).saturating_mul(z1 - z0 + 1) <= MAX_CELLS_PER_BOX).then_some((x0, x1, z0, z1))
+    }
+
+    fn insert(&mut self, index: usize, b: &Aabb) {
+        let Some((x0, x1, z0, z1)) = self.cells_of(b) else {
             self.large.push(index);
             return;
-        }
+        };
         for x in x0..=x1 {
             for z in z0..=z1 {
                 self.cells.entry((x, z)).or_default().push(index);
@@ -78,13 +82,10 @@ impl FloorGrid {
     }
 
     fn remove(&mut self, index: usize, b: &Aabb) {
-        let (x0, x1, z0, z1) = self.range(b);
-        let kept_aside =
-            !b.is_finite() || (x1 - x0 + 1).saturating_mul(z1 - z0 + 1) > MAX_CELLS_PER_BOX;
-        if kept_aside {
+        let Some((x0, x1, z0, z1)) = self.cells_of(b) else {
             self.large.retain(|&i| i != index);
             return;
-        }
+        };
         for x in x0..=x1 {
             for z in z0..=z1 {
                 if let Some(list) = self.cells.get_mut(&(x, z)) {
