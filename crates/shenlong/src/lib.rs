@@ -12,6 +12,7 @@
 
 pub mod bench;
 pub mod collide;
+pub mod discourse;
 pub mod examples;
 pub mod expr;
 pub mod format;

@@ -1,6 +1,7 @@
 //! The name index of a scene: every phrase a person may use for each object, built once
 //! per scene, with how well it names the object.
 
+use super::ident::{self, Identifier, NameSide};
 use super::lexicon::Lexicon;
 use super::words::{compact, normalize, split_number};
 use crate::scene::Scene;
@@ -193,8 +194,18 @@ pub(crate) struct NameIndex {
     pub max_words: usize,
 }
 
-/// What makes objects named alike: base name, aliases, category, attributes (normalised).
-type GroupKey = (String, Vec<String>, Option<String>, Vec<String>);
+/// What makes objects named alike: the name without its number (as written, and as read:
+/// kind, other reading, side), aliases, category, attributes (normalised).
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+struct GroupKey {
+    written: String,
+    kind: String,
+    other: Option<String>,
+    side: Option<NameSide>,
+    aliases: Vec<String>,
+    category: Option<String>,
+    attributes: Vec<String>,
+}
 
 /// Builds the index, interning `via` words as it goes.
 #[derive(Default)]
@@ -241,7 +252,13 @@ impl Builder {
 
     /// The group of objects named like this one, made (with all its phrases) the first
     /// time such an object is seen.
-    fn group(&mut self, object: &crate::scene::Object, base: &str, lexicon: &Lexicon) -> u32 {
+    fn group(
+        &mut self,
+        object: &crate::scene::Object,
+        written: &str,
+        id: &Identifier,
+        lexicon: &Lexicon,
+    ) -> u32 {
         let aliases: Vec<String> = object.labels.aliases.iter().map(|a| normalize(a)).collect();
         let category = object.labels.category.as_ref().map(|c| {
             let c = normalize(c);
@@ -253,12 +270,15 @@ impl Builder {
             .iter()
             .map(|a| normalize(a))
             .collect();
-        let key: GroupKey = (
-            base.to_string(),
-            aliases.clone(),
-            category.clone(),
-            attributes.clone(),
-        );
+        let key = GroupKey {
+            written: written.to_string(),
+            kind: id.base.clone(),
+            other: id.other.clone(),
+            side: id.side,
+            aliases: aliases.clone(),
+            category: category.clone(),
+            attributes: attributes.clone(),
+        };
         if let Some(&g) = self.group_ids.get(&key) {
             return g;
         }
@@ -267,14 +287,29 @@ impl Builder {
         self.group_ids.insert(key, g);
         let target = Target(g);
 
+        let base = id.base.as_str();
+        self.add(written, target, Tier::Name, Via::Name);
         self.add(base, target, Tier::Name, Via::Name);
-        self.index
-            .compact
-            .entry(compact(base).into())
-            .or_default()
-            .push(g);
+        for b in [written, base] {
+            let list = self.index.compact.entry(compact(b).into()).or_default();
+            if list.last() != Some(&g) {
+                list.push(g);
+            }
+        }
         let mut descriptors: FxHashSet<Box<str>> = FxHashSet::default();
+        if let Some(side) = id.side {
+            // `SideTable_L` is "the left side table" by its name.
+            let via = self.via(base);
+            self.add(&format!("{} {base}", side.word()), target, Tier::Name, via);
+            descriptors.insert(side.word().into());
+        }
         let mut kinds: Vec<(String, bool)> = vec![(base.to_string(), true)];
+        if let Some(other) = &id.other {
+            // Both orders of the name are objects (`Lamp_Table`): it answers to both.
+            let via = self.via(base);
+            self.add(other, target, Tier::Category, via);
+            kinds.push((other.clone(), true));
+        }
         for a in &aliases {
             let via = self.via(a);
             self.add(a, target, Tier::Alias, via);
@@ -353,9 +388,10 @@ impl NameIndex {
         for (i, object) in scene.objects.iter().enumerate() {
             let i = i as u32;
             let name = normalize(&object.name);
-            let (base, _) = split_number(&name);
+            let (written, _) = split_number(&name);
+            let id = ident::read(&object.name, lexicon);
             b.index.max_words = b.index.max_words.max(name.split(' ').count());
-            let g = b.group(object, base, lexicon);
+            let g = b.group(object, written, &id, lexicon);
             b.index.groups[g as usize].objects.push(i);
             b.index.group_of.push(g);
             b.index.names.push(&name);

@@ -24,6 +24,7 @@
 //! that still fits several objects, or none, is refused ([`GroundError`]).
 
 mod error;
+pub mod ident;
 mod index;
 pub mod lexicon;
 mod select;
@@ -324,7 +325,8 @@ fn selection_phrase(
 }
 
 fn grammar_word(w: &str) -> bool {
-    words::is_verb(w)
+    crate::discourse::is_discourse_word(w)
+        || words::is_verb(w)
         || words::is_preposition(w)
         || words::is_determiner(w)
         || words::side_word(w).is_some()

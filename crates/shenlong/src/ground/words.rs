@@ -65,12 +65,16 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
             let mut j = k;
             while j < chars.len() {
                 let d = chars[j].1;
-                let joins = matches!(d, '-' | '\'' | '’' | '.')
+                let joins = matches!(d, '-' | '\'' | '’' | '.' | '_')
                     && j + 1 < chars.len()
                     && chars[j + 1].1.is_alphanumeric()
                     && j > k
-                    // A period joins digits (1.5) only.
-                    && (d != '.' || (chars[j - 1].1.is_ascii_digit() && chars[j + 1].1.is_ascii_digit()));
+                    // A period joins digits (1.5), and an exported name's number
+                    // (`Chair.001`, `Lamp_Table.003`) or parts (`Chair_Wood.Left`).
+                    && (d != '.'
+                        || chars[j + 1].1.is_ascii_digit()
+                            && (chars[j - 1].1.is_ascii_digit() || chars[j - 1].1.is_alphabetic())
+                        || chars[k..j].iter().any(|&(_, c)| c == '_'));
                 if d.is_alphanumeric() || joins {
                     j += 1;
                 } else {
@@ -138,12 +142,36 @@ pub fn normalize(name: &str) -> String {
         if w == "node" {
             continue;
         }
+        let w = spelling(w);
         if !out.is_empty() {
             out.push(' ');
         }
         out.push_str(w);
     }
     out
+}
+
+/// One spelling for words people spell two ways, and the noun for a material adjective,
+/// so that names and instructions compare equal whichever was typed: `gray` → `grey`,
+/// `color` → `colour`, `wooden` → `wood`, `woollen` → `wool`, `metallic` → `metal`.
+#[must_use]
+pub fn spelling(word: &str) -> &str {
+    match word {
+        "gray" => "grey",
+        "grayish" | "greyish" => "grey",
+        "color" => "colour",
+        "colors" => "colours",
+        "colored" => "coloured",
+        "wooden" => "wood",
+        "woolen" | "woollen" | "wooly" | "woolly" => "wool",
+        "metallic" | "metal's" => "metal",
+        "leathery" => "leather",
+        "glassy" => "glass",
+        "marble's" => "marble",
+        "aluminum" => "aluminium",
+        "favorite" => "favourite",
+        other => other,
+    }
 }
 
 /// A name without its spaces: `dog bed` and `dogbed` compare equal.

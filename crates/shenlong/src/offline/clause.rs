@@ -89,6 +89,36 @@ impl Clause {
         }
     }
 
+    /// Marks read the discourse around the clause's instruction ([`crate::discourse`]):
+    /// greetings, request frames and leading hedges at its start (after any articles are
+    /// left for the noun phrase), thanks and sign-offs at its end, and `as well` anywhere.
+    pub fn mark_discourse(&mut self) {
+        let words: Vec<&str> = self
+            .tokens
+            .iter()
+            .map(|t| match t {
+                Token::Word(w) => w.as_str(),
+                _ => "",
+            })
+            .collect();
+        let core = crate::discourse::core(&words);
+        let mut end = self.len();
+        // Separators at the end do not hide a sign-off before them.
+        while end > 0 && matches!(self.tokens[end - 1], Token::Separator) {
+            end -= 1;
+        }
+        let tail = if end < words.len() {
+            crate::discourse::core(&words[..end]).end
+        } else {
+            core.end
+        };
+        self.mark(0..core.start);
+        self.mark(tail.max(core.start)..end);
+        if let Some(i) = self.find(&["as", "well"]) {
+            self.mark(i..i + 2);
+        }
+    }
+
     /// Marks a `by` before position `i` read (`by 20 cm`).
     pub fn mark_by(&mut self, i: usize) {
         if i > 0 && self.words_at(i - 1, &["by"]) {
@@ -132,7 +162,7 @@ impl Clause {
         (0..self.len())
             .filter(|&i| self.free(i))
             .filter_map(|i| match &self.tokens[i] {
-                Token::Word(w) if words::filler(w) => None,
+                Token::Word(w) if crate::discourse::filler(w) => None,
                 Token::Word(w) => Some(w.clone()),
                 Token::Number(n) => Some(format!("{n}")),
                 Token::Variable(v) => Some(format!("X{}", v + 1)),
@@ -219,7 +249,7 @@ pub(crate) fn split(tokens: &[Token]) -> Vec<Clause> {
                 Token::Variable(_) | Token::Separator => true,
                 Token::Word(w) => {
                     words::verb(w).is_some()
-                        || words::filler(w)
+                        || crate::discourse::filler(w)
                         || matches!(
                             w.as_str(),
                             "both"

@@ -64,36 +64,6 @@ fn verb_of(w: &str) -> Option<(Action, Option<Direction>)> {
     words::correct(w).and_then(words::verb)
 }
 
-const POLITE: &[&[&str]] = &[
-    &["would", "you", "mind"],
-    &["could", "you", "please"],
-    &["can", "you", "please"],
-    &["would", "you", "please"],
-    &["will", "you", "please"],
-    &["could", "you"],
-    &["can", "you"],
-    &["would", "you"],
-    &["will", "you"],
-    &["i'd", "like", "you", "to"],
-    &["i", "would", "like", "you", "to"],
-    &["i", "want", "you", "to"],
-    &["i", "need", "you", "to"],
-    &["i'd", "like", "to"],
-    &["i", "would", "like", "to"],
-    &["i", "want", "to"],
-    &["i'd", "like"],
-    &["i", "would", "like"],
-    &["i", "want"],
-    &["i", "need"],
-    &["let's"],
-    &["lets"],
-    &["let", "us"],
-    &["go", "ahead", "and"],
-    &["try", "to"],
-    &["please"],
-    &["kindly"],
-];
-
 impl<'a> Reader<'a> {
     pub fn new(facts: &'a Facts) -> Self {
         Self {
@@ -107,25 +77,9 @@ impl<'a> Reader<'a> {
 
     /// Reads one clause and records its steps.
     pub fn clause(&mut self, c: &mut Clause) -> Result<(), String> {
-        // Politeness at the start of the clause.
-        let mut i = 0;
-        'polite: while i < c.len() {
-            for words in POLITE {
-                if c.words_at(i, words) {
-                    c.mark(i..i + words.len());
-                    i += words.len();
-                    continue 'polite;
-                }
-            }
-            if c.words_at(i, &["the"]) || c.words_at(i, &["just"]) || c.words_at(i, &["now"]) {
-                i += 1;
-                continue;
-            }
-            break;
-        }
-        if let Some(i) = c.find(&["as", "well"]) {
-            c.mark(i..i + 2);
-        }
+        // Discourse around the instruction: greetings and request frames at the start,
+        // thanks and sign-offs at the end (crate::discourse).
+        c.mark_discourse();
         // A clause of fillers only ("…, thanks"): nothing to do.
         if c.unread().is_empty() {
             return Ok(());

@@ -212,50 +212,6 @@ pub(crate) fn direction(w: &str) -> Option<(usize, f64)> {
     })
 }
 
-/// Words that may stand anywhere and mean nothing for the edit (docs/offline.md lists
-/// them): articles, politeness, and discourse words.
-pub(crate) fn filler(w: &str) -> bool {
-    matches!(
-        w,
-        "the"
-            | "a"
-            | "an"
-            | "please"
-            | "pls"
-            | "plz"
-            | "kindly"
-            | "just"
-            | "now"
-            | "ok"
-            | "okay"
-            | "so"
-            | "thanks"
-            | "thank"
-            | "you"
-            | "then"
-            | "hey"
-            | "hi"
-            | "um"
-            | "uh"
-            | "oh"
-            | "too"
-            | "and"
-            | "also"
-            | "again"
-            | "over"
-            | "its"
-            | "their"
-            | "some"
-            | "gently"
-            | "carefully"
-            | "quickly"
-            | "simply"
-            | "straight"
-            | "directly"
-            | "exactly"
-    )
-}
-
 /// Every word the translator knows, for typo correction.
 const KNOWN: &[&str] = &[
     "move",

@@ -1,0 +1,305 @@
+//! Discourse: the words people type around an instruction that never change the edit —
+//! greetings, thanks, sign-offs, hedges, text-speak and the request frames that carry the
+//! action ("would you be so kind as to move …", "can u turn …").
+//!
+//! This is a closed, documented class ([docs/offline.md](../../docs/offline.md)): a word
+//! that is not in it and that no other part of the reader reads still refuses the
+//! instruction. Nothing here may change what is moved, where or how far: the lists hold
+//! no direction, amount, negation, quantifier or object word. Both the grounder (which
+//! must not take "morning" or "cheers" for a missing object) and the offline translator
+//! (which must read every word) use these lists; they work on lower-case words.
+
+/// Text-speak and spelling variants of the discourse words, as the word they stand for
+/// (`u` → `you`, `pls` → `please`, `thx` → `thanks`). Other words are returned as they are.
+#[must_use]
+pub fn canonical(word: &str) -> &str {
+    match word {
+        "u" | "ya" | "yu" => "you",
+        "ur" => "your",
+        "pls" | "plz" | "plez" | "pleeze" | "pleaze" | "plse" => "please",
+        "thx" | "thnx" | "thanx" | "tx" | "thks" | "tnx" | "ty" | "tysm" | "thankyou" => "thanks",
+        "im" => "i'm",
+        "id" => "i'd",
+        "wanna" => "want",
+        "gonna" => "going",
+        "ok" | "k" | "kk" | "okey" | "okie" => "okay",
+        "mornin" => "morning",
+        "hii" | "hiya" | "heya" => "hi",
+        "heyy" | "heyyy" => "hey",
+        other => other,
+    }
+}
+
+/// Single words that may stand anywhere in an instruction and mean nothing for the edit:
+/// articles, politeness, hedges, impatience and thanks.
+#[must_use]
+pub fn filler(word: &str) -> bool {
+    matches!(
+        canonical(word),
+        "the"
+            | "a"
+            | "an"
+            | "please"
+            | "kindly"
+            | "just"
+            | "now"
+            | "okay"
+            | "alright"
+            | "so"
+            | "thanks"
+            | "thank"
+            | "cheers"
+            | "you"
+            | "then"
+            | "hey"
+            | "hi"
+            | "hello"
+            | "yo"
+            | "um"
+            | "umm"
+            | "uh"
+            | "er"
+            | "erm"
+            | "hmm"
+            | "oh"
+            | "too"
+            | "and"
+            | "also"
+            | "again"
+            | "over"
+            | "its"
+            | "their"
+            | "some"
+            | "gently"
+            | "carefully"
+            | "quickly"
+            | "simply"
+            | "straight"
+            | "directly"
+            | "exactly"
+            | "already"
+            | "maybe"
+            | "perhaps"
+            | "possibly"
+            | "actually"
+            | "basically"
+            | "honestly"
+            | "lol"
+            | "sorry"
+            | "mate"
+            | "buddy"
+            | "pal"
+            | "friend"
+    )
+}
+
+/// Phrases that open an instruction (greetings) or a request (frames that carry the
+/// action of the verb after them), longest first within a family.
+const OPENERS: &[&[&str]] = &[
+    // Greetings.
+    &["good", "morning"],
+    &["good", "afternoon"],
+    &["good", "evening"],
+    &["good", "day"],
+    &["hello", "there"],
+    &["hi", "there"],
+    &["hey", "there"],
+    &["morning"],
+    &["afternoon"],
+    &["evening"],
+    // Request frames: the verb that follows is the action.
+    &["would", "you", "be", "so", "kind", "as", "to"],
+    &["would", "you", "be", "kind", "enough", "to"],
+    &["would", "you", "be", "able", "to"],
+    &["could", "you", "be", "so", "kind", "as", "to"],
+    &["i'd", "appreciate", "it", "if", "you", "could"],
+    &["i", "would", "appreciate", "it", "if", "you", "could"],
+    &["i'd", "love", "it", "if", "you", "could"],
+    &["i'd", "love", "it", "if", "you", "would"],
+    &["is", "it", "possible", "to"],
+    &["would", "it", "be", "possible", "to"],
+    &["are", "you", "able", "to"],
+    &["do", "you", "think", "you", "could"],
+    &["do", "you", "mind"],
+    &["would", "you", "mind"],
+    &["could", "you", "possibly"],
+    &["can", "you", "possibly"],
+    &["could", "you", "please"],
+    &["can", "you", "please"],
+    &["would", "you", "please"],
+    &["will", "you", "please"],
+    &["could", "you", "just"],
+    &["can", "you", "just"],
+    &["could", "you"],
+    &["can", "you"],
+    &["would", "you"],
+    &["will", "you"],
+    &["please", "could", "you"],
+    &["please", "can", "you"],
+    &["could", "i", "get", "you", "to"],
+    &["can", "i", "get", "you", "to"],
+    &["i'd", "like", "you", "to"],
+    &["i", "would", "like", "you", "to"],
+    &["i", "want", "you", "to"],
+    &["i", "need", "you", "to"],
+    &["i'd", "like", "to"],
+    &["i", "would", "like", "to"],
+    &["i", "want", "to"],
+    &["i", "need", "to"],
+    &["i'd", "like"],
+    &["i", "would", "like"],
+    &["i", "want"],
+    &["i", "need"],
+    &["help", "me"],
+    &["let's"],
+    &["lets"],
+    &["let", "us"],
+    &["go", "ahead", "and"],
+    &["try", "to"],
+    &["please"],
+    &["kindly"],
+];
+
+/// Phrases that close an instruction: thanks and sign-offs, and the hedges people add at
+/// the end ("… for me", "… if you can").
+const CLOSERS: &[&[&str]] = &[
+    &["thank", "you", "so", "much"],
+    &["thank", "you", "very", "much"],
+    &["thanks", "so", "much"],
+    &["thanks", "a", "lot"],
+    &["thanks", "a", "bunch"],
+    &["thanks", "in", "advance"],
+    &["many", "thanks"],
+    &["much", "appreciated"],
+    &["thank", "you"],
+    &["if", "you", "don't", "mind"],
+    &["if", "you", "do", "not", "mind"],
+    &["when", "you", "get", "a", "chance"],
+    &["when", "you", "can"],
+    &["if", "you", "can"],
+    &["if", "you", "could"],
+    &["if", "possible"],
+    &["real", "quick"],
+    &["for", "me"],
+    &["appreciated"],
+    &["thanks"],
+    &["cheers"],
+    &["please"],
+];
+
+fn matches_at(words: &[&str], at: usize, phrase: &[&str]) -> bool {
+    phrase.len() <= words.len().saturating_sub(at)
+        && phrase
+            .iter()
+            .zip(&words[at..])
+            .all(|(p, w)| *p == canonical(w))
+}
+
+/// The length, in words, of the longest greeting or request frame that starts at `at`.
+#[must_use]
+pub fn opener_at(words: &[&str], at: usize) -> Option<usize> {
+    OPENERS
+        .iter()
+        .filter(|p| matches_at(words, at, p))
+        .map(|p| p.len())
+        .max()
+}
+
+/// The length, in words, of the longest sign-off that ends exactly at `end` (exclusive).
+#[must_use]
+pub fn closer_before(words: &[&str], end: usize) -> Option<usize> {
+    CLOSERS
+        .iter()
+        .filter(|p| p.len() <= end && matches_at(words, end - p.len(), p))
+        .map(|p| p.len())
+        .max()
+}
+
+/// Whether `word` is a discourse word that could be taken for a noun: the fillers and the
+/// single-word greetings and thanks. The grounder does not take such a word for the name
+/// of a missing object ("good morning", "cheers").
+#[must_use]
+pub fn is_discourse_word(word: &str) -> bool {
+    let w = canonical(word);
+    filler(w) || matches!(w, "morning" | "afternoon" | "evening" | "appreciated")
+}
+
+/// Where an instruction's words start and end once the discourse around them is set
+/// aside: greetings and request frames at the start, sign-offs at the end (repeatedly, so
+/// "hey, good morning, could you …" and "… for me, thanks!" are both read). Returns the
+/// range of the words that carry the instruction.
+#[must_use]
+pub fn core(words: &[&str]) -> std::ops::Range<usize> {
+    let mut start = 0;
+    loop {
+        if let Some(n) = opener_at(words, start) {
+            start += n;
+        } else if start < words.len() && filler(words[start]) && !is_article(words[start]) {
+            start += 1;
+        } else {
+            break;
+        }
+    }
+    let mut end = words.len();
+    while end > start {
+        if let Some(n) = closer_before(words, end).filter(|&n| end - n >= start) {
+            end -= n;
+        } else {
+            break;
+        }
+    }
+    start..end
+}
+
+fn is_article(w: &str) -> bool {
+    matches!(w, "the" | "a" | "an")
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn core_of(s: &str) -> String {
+        let w: Vec<&str> = s.split(' ').collect();
+        w[core(&w)].join(" ")
+    }
+
+    #[test]
+    fn greetings_frames_and_sign_offs_are_set_aside() {
+        assert_eq!(
+            core_of("hey can u move the lamp left thx"),
+            "move the lamp left"
+        );
+        assert_eq!(
+            core_of("good morning would you be so kind as to turn the chair"),
+            "turn the chair"
+        );
+        assert_eq!(
+            core_of("hello there could you possibly move it for me thank you so much"),
+            "move it"
+        );
+        assert_eq!(core_of("pls move the bin if you can"), "move the bin");
+        assert_eq!(core_of("i'd like the lamp moved"), "the lamp moved");
+    }
+
+    #[test]
+    fn words_that_change_the_edit_are_never_discourse() {
+        for w in [
+            "not", "don't", "left", "right", "back", "more", "less", "only", "all", "both",
+            "every", "no", "leave", "keep", "half", "bit",
+        ] {
+            assert!(!is_discourse_word(w), "{w}");
+        }
+        // The articles stay for the noun phrase that follows.
+        assert_eq!(core_of("the lamp left"), "the lamp left");
+    }
+
+    #[test]
+    fn text_speak_is_canonical() {
+        assert_eq!(canonical("u"), "you");
+        assert_eq!(canonical("plz"), "please");
+        assert_eq!(canonical("ty"), "thanks");
+        assert!(filler("thx"));
+        assert!(filler("cheers"));
+    }
+}

@@ -1,0 +1,238 @@
+//! Identifiers → words: how an object's name, as 3D tools export it, reads as the words
+//! a person uses for it. One reader for every format (scene JSON, glTF node and mesh
+//! names, ProcTHOR ids, Blender objects).
+//!
+//! - Parts are split at `_`, `-`, `.`, spaces and the like; inside a part camelCase and
+//!   letter/digit boundaries split words (`SideTable` → `side table`).
+//! - Engine prefixes (`SM_`, `SK_`, `BP_`, `GEO_`, `Mesh_`, `obj_`, `Prop_`) and mesh
+//!   suffixes (`_geo`, `_mesh`, `_LOD0`) are dropped.
+//! - A trailing number (`.001`, `_01`, ` 2`) is an instance number.
+//! - A trailing `L` / `R` / `Left` / `Right` part (Blender's mirror convention) is a side.
+//! - The head noun is found with the lexicon whichever side of an underscore it stands on:
+//!   `Vase_Ceramic` is a ceramic vase (the head first, as Blender and game engines order
+//!   `Category_Variant`), `TV_Stand` a TV stand (the words as written, a compound the
+//!   lexicon knows), `Remote_TV` a TV remote. Where both orders are objects the lexicon
+//!   knows (`Lamp_Table`: a lamp table, and a table lamp), the name answers to both
+//!   equally, so "the lamp" beside another lamp is refused naming both.
+//! - Words separated only by spaces are English as written (`table lamp`).
+
+use super::lexicon::Lexicon;
+use super::words::normalize;
+
+/// Which side a name says an object is on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum NameSide {
+    /// `_L`, `_Left`.
+    Left,
+    /// `_R`, `_Right`.
+    Right,
+}
+
+impl NameSide {
+    /// The word people use: `left` or `right`.
+    #[must_use]
+    pub fn word(self) -> &'static str {
+        match self {
+            Self::Left => "left",
+            Self::Right => "right",
+        }
+    }
+}
+
+/// An object's name read as words.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Identifier {
+    /// What kind of object the name says, in English order, without prefix, instance
+    /// number or side (`ceramic vase` for `Vase_Ceramic.003`).
+    pub base: String,
+    /// The other order's reading, where both orders name objects the lexicon knows
+    /// (`table lamp` for `Lamp_Table`): the name answers to it as well as to `base`.
+    pub other: Option<String>,
+    /// The instance number (`3` for `.003`).
+    pub number: Option<u32>,
+    /// The side the name says (`SideTable_L`).
+    pub side: Option<NameSide>,
+}
+
+/// Prefixes engines and DCC tools put before an object's kind.
+const PREFIXES: &[&str] = &[
+    "sm", "sk", "bp", "geo", "mesh", "obj", "object", "prop", "mdl", "model", "static",
+];
+
+/// Suffixes that say what the node is, not what the object is.
+const SUFFIXES: &[&str] = &[
+    "geo", "mesh", "lod", "lod0", "lod1", "lod2", "low", "high", "grp",
+];
+
+/// The word of a part of one word.
+fn single(part: &[String]) -> Option<&str> {
+    match part {
+        [w] => Some(w.as_str()),
+        _ => None,
+    }
+}
+
+fn is_number(word: &str) -> bool {
+    !word.is_empty() && word.bytes().all(|b| b.is_ascii_digit())
+}
+
+fn side_of(word: &str) -> Option<NameSide> {
+    match word {
+        "l" | "left" | "lft" => Some(NameSide::Left),
+        "r" | "right" | "rgt" => Some(NameSide::Right),
+        _ => None,
+    }
+}
+
+/// The parts of a name, each as its normalised words.
+fn parts(name: &str) -> Vec<Vec<String>> {
+    name.split(|c: char| matches!(c, '_' | '-' | '.' | '#' | '(' | ')' | ',' | '/' | ':' | '|'))
+        .filter(|p| !p.is_empty())
+        .map(|p| {
+            normalize(p)
+                .split(' ')
+                .filter(|w| !w.is_empty())
+                .map(str::to_string)
+                .collect::<Vec<_>>()
+        })
+        .filter(|p: &Vec<String>| !p.is_empty())
+        .collect()
+}
+
+/// Whether the lexicon knows this phrase as an object (or the singular of one).
+fn known(lexicon: &Lexicon, phrase: &str) -> bool {
+    lexicon.knows(phrase) || lexicon.singulars(phrase).iter().any(|s| lexicon.knows(s))
+}
+
+/// Whether the last word of a phrase is an object noun the lexicon knows.
+fn headed(lexicon: &Lexicon, phrase: &str) -> bool {
+    phrase
+        .rsplit(' ')
+        .next()
+        .is_some_and(|last| known(lexicon, last))
+}
+
+/// Reads an object's name.
+#[must_use]
+pub fn read(name: &str, lexicon: &Lexicon) -> Identifier {
+    let mut parts = parts(name);
+    // A part of several words that ends in a number (`chair 2`, `FloorLamp01`): split it.
+    if let Some(last) = parts.last_mut() {
+        if last.len() > 1 && last.last().is_some_and(|w| is_number(w)) {
+            let n = last.pop().unwrap_or_default();
+            parts.push(vec![n]);
+        }
+    }
+    if parts.len() > 1 && single(&parts[0]).is_some_and(|w| PREFIXES.contains(&w)) {
+        parts.remove(0);
+    }
+    let mut number = None;
+    let mut side = None;
+    // Trailing number, side and mesh suffixes, in any order (`SideTable_L.001`).
+    while parts.len() > 1 {
+        let Some(w) = single(&parts[parts.len() - 1]).map(str::to_string) else {
+            break;
+        };
+        if is_number(&w) && number.is_none() {
+            number = w.parse::<u32>().ok();
+        } else if let Some(s) = side_of(&w).filter(|_| side.is_none()) {
+            side = Some(s);
+        } else if SUFFIXES.contains(&w.as_str()) {
+        } else {
+            break;
+        }
+        parts.pop();
+    }
+    let join = |ps: &[Vec<String>]| -> String {
+        ps.iter()
+            .flatten()
+            .map(String::as_str)
+            .collect::<Vec<_>>()
+            .join(" ")
+    };
+    let written = join(&parts);
+    if parts.len() < 2 {
+        return Identifier {
+            base: written,
+            other: None,
+            number,
+            side,
+        };
+    }
+    // The head first (`Vase_Ceramic`): the first part moved to the end.
+    let mut rotated = parts[1..].to_vec();
+    rotated.push(parts[0].clone());
+    let head_first = join(&rotated);
+    let (base, other) = match (known(lexicon, &written), known(lexicon, &head_first)) {
+        (true, false) => (written, None),
+        (false, true) => (head_first, None),
+        (true, true) => (written, Some(head_first)),
+        (false, false) => match (headed(lexicon, &written), headed(lexicon, &head_first)) {
+            (true, false) | (false, false) => (written, None),
+            (false, true) => (head_first, None),
+            (true, true) => (written, Some(head_first)),
+        },
+    };
+    Identifier {
+        base,
+        other,
+        number,
+        side,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn r(name: &str) -> Identifier {
+        read(name, Lexicon::builtin())
+    }
+
+    #[test]
+    fn exported_names_read_as_their_kind() {
+        assert_eq!(r("Chair_Wood").base, "wood chair");
+        assert_eq!(r("Chair_Wood.001").number, Some(1));
+        assert_eq!(r("Vase_Ceramic").base, "ceramic vase");
+        assert_eq!(r("Remote_TV").base, "tv remote");
+        assert_eq!(r("TV_Stand").base, "tv stand");
+        assert_eq!(r("Frame_Picture").base, "picture frame");
+        // A plant pot and a pot plant are both things: the name answers to both.
+        assert_eq!(r("Plant_Pot").other.as_deref(), Some("pot plant"));
+        assert_eq!(r("Table_Round").base, "round table");
+        let floor = r("SM_FloorLamp_01");
+        assert_eq!((floor.base.as_str(), floor.number), ("floor lamp", Some(1)));
+        assert_eq!(r("CoffeeTable").base, "coffee table");
+        assert_eq!(r("sofa").base, "sofa");
+        assert_eq!(r("chair 3").number, Some(3));
+        assert_eq!(r("chair 3").base, "chair");
+    }
+
+    #[test]
+    fn sides_and_suffixes() {
+        let l = r("SideTable_L");
+        assert_eq!(
+            (l.base.as_str(), l.side),
+            ("side table", Some(NameSide::Left))
+        );
+        let rr = r("SideTable_R.001");
+        assert_eq!(
+            (rr.base.as_str(), rr.side, rr.number),
+            ("side table", Some(NameSide::Right), Some(1))
+        );
+        assert_eq!(r("Sofa_geo").base, "sofa");
+        // A name that is only a side word keeps it.
+        assert_eq!(r("Left").base, "left");
+    }
+
+    #[test]
+    fn both_orders_known_answer_to_both() {
+        let lamp = r("Lamp_Table.003");
+        assert_eq!(lamp.base, "lamp table");
+        assert_eq!(lamp.other.as_deref(), Some("table lamp"));
+        // Spaces: English as written.
+        assert_eq!(r("table lamp").other, None);
+        assert_eq!(r("table lamp").base, "table lamp");
+        assert_eq!(lamp.number, Some(3));
+    }
+}
