@@ -9,6 +9,10 @@
 //! Writing: the parsed JSON is edited in place — only the moved nodes' transforms change,
 //! written as TRS or as a matrix as the node had them — and the GLB binary chunk is copied
 //! byte for byte. An unchanged scene is written back as the original bytes.
+//!
+//! Node hierarchies of any depth are walked by loops, never by recursion (a file may nest
+//! 100,000 nodes); they must be forests, as glTF requires, so no walk meets a cycle. The
+//! JSON itself may nest [`super::MAX_JSON_DEPTH`] levels.
 
 use super::FormatError;
 use crate::scene::{Labels, Object, Pivot, Scene, Shape, MAX_COORDINATE};
@@ -42,6 +46,8 @@ pub struct GltfDocument {
     nodes: Vec<NodeInfo>,
     /// Per object (scene order): its node.
     object_nodes: Vec<usize>,
+    /// The nodes of the scene, each after its parent (depth first from the roots).
+    order: Vec<usize>,
     /// Nodes targeted by animations: these must stay TRS.
     animated: HashSet<usize>,
 }
@@ -119,6 +125,7 @@ pub fn read_bytes(
     } else {
         (bytes.clone(), None)
     };
+    super::check_json_depth(&json_bytes)?;
     let json: Value = serde_json::from_slice(&json_bytes).map_err(|e| {
         FormatError::new(format!(
             "invalid glTF JSON at line {}, column {}: {e}",
@@ -145,20 +152,42 @@ pub fn read_bytes(
             in_scene: false,
         })
         .collect();
+    // The hierarchy must be a forest (glTF 2.0 §3.5.3): one parent at most, and a scene
+    // lists roots only. Then no walk from a root meets a cycle, and every walk below is a
+    // loop over the nodes, never a recursion, so any depth is read, edited and written.
     for node in &all_nodes {
         for child in node.children() {
-            nodes[child.index()].parent = Some(node.index());
+            let c = child.index();
+            match nodes[c].parent {
+                Some(p) if p != node.index() => {
+                    return Err(FormatError::new(format!(
+                        "nodes[{c}] is a child of both nodes[{p}] and nodes[{}]; a glTF node has one parent at most",
+                        node.index()
+                    )))
+                }
+                _ => nodes[c].parent = Some(node.index()),
+            }
         }
     }
     let roots: Vec<usize> = match document
         .default_scene()
         .or_else(|| document.scenes().next())
     {
-        Some(scene) => scene.nodes().map(|n| n.index()).collect(),
+        Some(scene) => {
+            let roots: Vec<usize> = scene.nodes().map(|n| n.index()).collect();
+            for (k, &r) in roots.iter().enumerate() {
+                if let Some(p) = nodes[r].parent {
+                    return Err(FormatError::new(format!(
+                        "scenes[{}].nodes[{k}] is nodes[{r}], a child of nodes[{p}]; a scene lists root nodes only",
+                        scene.index()
+                    )));
+                }
+            }
+            roots
+        }
         None => (0..count).filter(|&i| nodes[i].parent.is_none()).collect(),
     };
-    // Depth-first from the roots, computing world matrices; a cycle would be invalid glTF,
-    // so nodes are visited once.
+    // Depth-first from the roots, computing world matrices; each node is visited once.
     let mut order = Vec::new();
     let mut stack: Vec<(usize, DMat4)> =
         roots.iter().rev().map(|&r| (r, DMat4::IDENTITY)).collect();
@@ -241,16 +270,20 @@ pub fn read_bytes(
         scene.objects.push(object);
         object_nodes.push(index);
     }
-    // Mesh nodes nested under a mesh node rest on it.
+    // Mesh nodes nested under a mesh node rest on it: the nearest object above each node,
+    // found parents first in one pass.
+    let mut object_of = vec![None; count];
     for (i, &node) in object_nodes.iter().enumerate() {
-        let mut ancestor = nodes[node].parent;
-        while let Some(a) = ancestor {
-            if let Some(j) = object_nodes.iter().position(|&n| n == a) {
-                scene.objects[i].support = Some(j);
-                scene.objects[i].support_from_file = true;
-                break;
-            }
-            ancestor = nodes[a].parent;
+        object_of[node] = Some(i);
+    }
+    let mut object_above: Vec<Option<usize>> = vec![None; count];
+    for &index in &order {
+        object_above[index] = nodes[index]
+            .parent
+            .and_then(|p| object_of[p].or(object_above[p]));
+        if let (Some(i), Some(j)) = (object_of[index], object_above[index]) {
+            scene.objects[i].support = Some(j);
+            scene.objects[i].support_from_file = true;
         }
     }
     scene.detect_supports();
@@ -279,6 +312,7 @@ pub fn read_bytes(
             original: bytes,
             nodes,
             object_nodes,
+            order,
             animated,
         },
     ))
@@ -553,10 +587,12 @@ pub(crate) fn percent_decode(uri: &str) -> String {
     let bytes = uri.as_bytes();
     let mut out = Vec::with_capacity(bytes.len());
     let mut i = 0;
+    let hex = |b: u8| (b as char).to_digit(16);
     while i < bytes.len() {
+        // (On bytes: a `%` before a character of several bytes is no escape, not a panic.)
         if bytes[i] == b'%' && i + 2 < bytes.len() {
-            if let Ok(b) = u8::from_str_radix(&uri[i + 1..i + 3], 16) {
-                out.push(b);
+            if let (Some(high), Some(low)) = (hex(bytes[i + 1]), hex(bytes[i + 2])) {
+                out.push((high * 16 + low) as u8);
                 i += 3;
                 continue;
             }
@@ -570,6 +606,18 @@ pub(crate) fn percent_decode(uri: &str) -> String {
 /// The bytes of the edited file, in the source's container. An unchanged scene gives the
 /// original bytes.
 pub fn write(scene: &Scene, document: &GltfDocument) -> Result<Vec<u8>, FormatError> {
+    match edited_json(scene, document)? {
+        None => Ok(document.original.clone()),
+        Some(json) => match &document.container {
+            Container::Glb => glb_bytes(&json, document.bin.as_deref()),
+            Container::Gltf { .. } => Ok(super::pretty::to_string(&json).into_bytes()),
+        },
+    }
+}
+
+/// The document's JSON with the moved nodes' new local transforms; `None` when nothing
+/// moved.
+fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, FormatError> {
     if scene.objects.len() != document.object_nodes.len() {
         return Err(FormatError::new(
             "the scene's objects no longer match the glTF nodes",
@@ -592,46 +640,27 @@ pub fn write(scene: &Scene, document: &GltfDocument) -> Result<Vec<u8>, FormatEr
         }
     }
     if deltas.iter().all(Option::is_none) {
-        return Ok(document.original.clone());
+        return Ok(None);
+    }
+    let mut is_object = vec![false; document.nodes.len()];
+    for &node in &document.object_nodes {
+        is_object[node] = true;
+    }
+    // Parents before children, in one loop: no recursion, however deep the hierarchy.
+    let mut new_world = vec![DMat4::IDENTITY; document.nodes.len()];
+    for &index in &document.order {
+        let info = &document.nodes[index];
+        new_world[index] = if is_object[index] {
+            deltas[index].map_or(info.world, |d| d * info.world)
+        } else {
+            info.parent.map_or(DMat4::IDENTITY, |p| new_world[p]) * info.local
+        };
     }
     let mut json = document.json.clone();
-    let new_world = |index: usize, memo: &mut Vec<Option<DMat4>>| -> DMat4 {
-        fn world(
-            index: usize,
-            memo: &mut Vec<Option<DMat4>>,
-            nodes: &[NodeInfo],
-            deltas: &[Option<DMat4>],
-            objects: &[usize],
-        ) -> DMat4 {
-            if let Some(m) = memo[index] {
-                return m;
-            }
-            let m = if objects.contains(&index) {
-                deltas[index].map_or(nodes[index].world, |d| d * nodes[index].world)
-            } else {
-                let parent = nodes[index]
-                    .parent
-                    .map_or(DMat4::IDENTITY, |p| world(p, memo, nodes, deltas, objects));
-                parent * nodes[index].local
-            };
-            memo[index] = Some(m);
-            m
-        }
-        world(
-            index,
-            memo,
-            &document.nodes,
-            &deltas,
-            &document.object_nodes,
-        )
-    };
-    let mut memo = vec![None; document.nodes.len()];
     for &node in &document.object_nodes {
         let info = &document.nodes[node];
-        let world = new_world(node, &mut memo);
-        let parent_world = info
-            .parent
-            .map_or(DMat4::IDENTITY, |p| new_world(p, &mut memo));
+        let world = new_world[node];
+        let parent_world = info.parent.map_or(DMat4::IDENTITY, |p| new_world[p]);
         let local = parent_world.inverse() * world;
         if local.abs_diff_eq(
             info.local,
@@ -654,10 +683,7 @@ pub fn write(scene: &Scene, document: &GltfDocument) -> Result<Vec<u8>, FormatEr
             .ok_or_else(|| FormatError::new(format!("nodes[{node}] is missing")))?;
         write_local(target, node, &local, document.animated.contains(&node))?;
     }
-    match &document.container {
-        Container::Glb => Ok(glb_bytes(&json, document.bin.as_deref())),
-        Container::Gltf { .. } => Ok(super::pretty::to_string(&json).into_bytes()),
-    }
+    Ok(Some(json))
 }
 
 /// Writes a node's new local transform, as a matrix if it had one, else as TRS (falling
@@ -705,13 +731,19 @@ fn json_number(x: f64) -> Value {
 }
 
 /// A GLB container: header, JSON chunk padded with spaces, binary chunk as it was.
-fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Vec<u8> {
-    let mut json_chunk = serde_json::to_vec(json).expect("JSON values serialise");
+fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Result<Vec<u8>, FormatError> {
+    let mut json_chunk = serde_json::to_vec(json)
+        .map_err(|e| FormatError::new(format!("cannot write the glTF JSON: {e}")))?;
     while json_chunk.len() % 4 != 0 {
         json_chunk.push(b' ');
     }
     let bin_len = bin.map_or(0, |b| 8 + b.len().next_multiple_of(4));
     let total = 12 + 8 + json_chunk.len() + bin_len;
+    if u32::try_from(total).is_err() {
+        return Err(FormatError::new(format!(
+            "the edited GLB would be {total} bytes, more than the 4 GiB the format can hold"
+        )));
+    }
     let mut out = Vec::with_capacity(total);
     out.extend_from_slice(b"glTF");
     out.extend_from_slice(&2u32.to_le_bytes());
@@ -726,7 +758,7 @@ fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Vec<u8> {
         out.extend_from_slice(bin);
         out.resize(out.len() + (padded - bin.len()), 0);
     }
-    out
+    Ok(out)
 }
 
 #[cfg(test)]
@@ -885,5 +917,178 @@ mod index_tests {
         )
         .unwrap_err();
         assert!(e.message.contains("nodes[1] ('tri')"), "{}", e.message);
+    }
+}
+
+#[cfg(test)]
+mod depth_tests {
+    use super::*;
+    use cga::Multivector;
+
+    /// A chain of `depth` nodes, each the only child of the one before; the last one (or,
+    /// with `meshes_everywhere`, every one) has a triangle mesh.
+    pub(crate) fn chain(depth: usize, meshes_everywhere: bool) -> String {
+        let mut bytes = Vec::new();
+        for v in [0f32, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0] {
+            bytes.extend_from_slice(&v.to_le_bytes());
+        }
+        let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
+        let mut nodes = String::with_capacity(depth * 64);
+        for i in 0..depth {
+            if i > 0 {
+                nodes.push(',');
+            }
+            nodes.push_str(&format!(
+                r#"{{"name": "n{i}", "translation": [0, 0.001, 0]"#
+            ));
+            if i + 1 < depth {
+                nodes.push_str(&format!(r#", "children": [{}]"#, i + 1));
+            }
+            if meshes_everywhere || i + 1 == depth {
+                nodes.push_str(r#", "mesh": 0"#);
+            }
+            nodes.push('}');
+        }
+        format!(
+            r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
+            "nodes": [{nodes}],
+            "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}],
+            "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                "min": [0, 0, 0], "max": [1, 0, 1]}}],
+            "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+            "buffers": [{{"byteLength": 36, "uri": "data:application/octet-stream;base64,{data}"}}]}}"#
+        )
+    }
+
+    /// Runs `f` on a thread with the stack of the servers' worker threads (2 MiB).
+    fn on_a_worker_stack(f: impl FnOnce() + Send + 'static) {
+        std::thread::Builder::new()
+            .stack_size(2 << 20)
+            .spawn(f)
+            .unwrap()
+            .join()
+            .unwrap();
+    }
+
+    #[test]
+    fn deep_hierarchies_are_read_edited_and_written_without_recursion() {
+        on_a_worker_stack(|| {
+            for (depth, meshes_everywhere) in [(8_000, false), (8_000, true), (100_000, false)] {
+                let text = chain(depth, meshes_everywhere);
+                let (mut scene, document) =
+                    read_bytes(text.into_bytes(), Path::new("."), "chain").unwrap();
+                let objects = if meshes_everywhere { depth } else { 1 };
+                assert_eq!(scene.objects.len(), objects);
+                let leaf = objects - 1;
+                let y = 0.001 * depth as f64;
+                assert!((scene.objects[leaf].world_aabb().min.y - y).abs() < 1e-6);
+                if meshes_everywhere {
+                    assert_eq!(scene.objects[leaf].support, Some(leaf - 1));
+                }
+                scene
+                    .apply(leaf, &Multivector::translator(DVec3::X), true)
+                    .unwrap();
+                let written = write(&scene, &document).unwrap();
+                let (reread, _) = read_bytes(written, Path::new("."), "chain").unwrap();
+                assert_eq!(reread.objects.len(), objects);
+                let moved = reread.objects[leaf].world_aabb();
+                assert!(
+                    (moved.min - DVec3::new(1.0, y, 0.0)).length() < 1e-6,
+                    "{depth}: {moved:?}"
+                );
+                if meshes_everywhere {
+                    let root = reread.objects[0].world_aabb();
+                    assert!((root.min - DVec3::new(0.0, 0.001, 0.0)).length() < 1e-9);
+                }
+            }
+        });
+    }
+
+    #[test]
+    fn a_node_with_two_parents_or_a_scene_root_with_a_parent_is_refused() {
+        let text = index_tests_triangle(
+            r#"[{"name": "a", "children": [2]}, {"name": "b", "children": [2]},
+                {"name": "tri", "mesh": 0}]"#,
+            "[0, 1]",
+        );
+        let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message
+                .contains("nodes[2] is a child of both nodes[0] and nodes[1]"),
+            "{}",
+            e.message
+        );
+        // A cycle: 1 → 2 → 1, below the root 0.
+        let text = index_tests_triangle(
+            r#"[{"name": "root", "children": [1]}, {"name": "a", "children": [2]},
+                {"name": "tri", "mesh": 0, "children": [1]}]"#,
+            "[0]",
+        );
+        let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
+        assert!(e.message.contains("a child of both"), "{}", e.message);
+        // A cycle on its own, reached from a scene: the root has a parent.
+        let text = index_tests_triangle(
+            r#"[{"name": "a", "children": [1]}, {"name": "tri", "mesh": 0, "children": [0]}]"#,
+            "[0]",
+        );
+        let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message
+                .contains("scenes[0].nodes[0] is nodes[0], a child of nodes[1]"),
+            "{}",
+            e.message
+        );
+        // A cycle no scene reaches is not drawn and does no harm.
+        let text = index_tests_triangle(
+            r#"[{"name": "tri", "mesh": 0}, {"name": "a", "children": [2]},
+                {"name": "b", "children": [1]}]"#,
+            "[0]",
+        );
+        let (scene, document) = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap();
+        let mut scene = scene;
+        scene
+            .apply(0, &Multivector::translator(DVec3::X), false)
+            .unwrap();
+        write(&scene, &document).unwrap();
+    }
+
+    /// A triangle mesh under `nodes`, with the default scene's root `roots`.
+    fn index_tests_triangle(nodes: &str, roots: &str) -> String {
+        chain(1, true)
+            .replace(
+                r#""nodes": [{"name": "n0", "translation": [0, 0.001, 0], "mesh": 0}]"#,
+                &format!(r#""nodes": {nodes}"#),
+            )
+            .replace(
+                r#""scenes": [{"nodes": [0]}]"#,
+                &format!(r#""scenes": [{{"nodes": {roots}}}]"#),
+            )
+    }
+
+    #[test]
+    fn json_nested_too_deep_is_refused_with_the_limit_and_where() {
+        let deep = format!("{}{}", "[".repeat(200), "]".repeat(200));
+        let text = chain(1, true).replacen(
+            r#""asset": {"version": "2.0"}"#,
+            &format!(r#""asset": {{"version": "2.0", "extras": {deep}}}"#),
+            1,
+        );
+        let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message
+                .starts_with("nesting deeper than 100 levels at line 1, column "),
+            "{}",
+            e.message
+        );
+    }
+
+    #[test]
+    fn a_uri_with_a_percent_before_a_multibyte_character_is_not_a_panic() {
+        for uri in ["%aé.bin", "%é", "x%", "%4"] {
+            let _ = percent_decode(uri);
+            let text =
+                chain(1, true).replace("data:application/octet-stream;base64,", &format!("{uri}?"));
+            assert!(read_bytes(text.into_bytes(), Path::new("."), "t").is_err());
+        }
     }
 }

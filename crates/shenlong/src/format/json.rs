@@ -125,6 +125,7 @@ pub fn read_string(mut text: String, fallback_name: &str) -> Result<JsonScene, F
     if text.starts_with('\u{feff}') {
         text.drain(..'\u{feff}'.len_utf8());
     }
+    super::check_json_depth(text.as_bytes())?;
     let (scene, objects) = parse(&text, fallback_name)?;
     Ok(JsonScene {
         scene,
@@ -940,5 +941,35 @@ mod bom_tests {
             "{}",
             e.message
         );
+    }
+}
+
+#[cfg(test)]
+mod depth_tests {
+    /// A one-object scene with `depth` levels of brackets in an unknown field.
+    fn nested(depth: usize) -> String {
+        format!(
+            "{{\"objects\": [\n  {{\"name\": \"a\", \"size\": [1, 1, 1], \"position\": [0, 0, 0], \"junk\": {}{}}}]}}",
+            "[".repeat(depth),
+            "]".repeat(depth)
+        )
+    }
+
+    #[test]
+    fn nesting_beyond_the_limit_is_refused_with_where() {
+        // Root, list and object are three levels: 97 more reach the limit.
+        let loaded = super::read(&nested(97), "t").unwrap();
+        // What the servers do with a scene: the text parses as a tree.
+        serde_json::from_str::<serde_json::Value>(loaded.document.text()).unwrap();
+        let e = super::read(&nested(200), "t").unwrap_err();
+        assert_eq!(
+            e.message,
+            "nesting deeper than 100 levels at line 2, column 164"
+        );
+        // Brackets inside strings are text.
+        let text = nested(1).replace("\"a\"", &format!("\"{}\"", "[{".repeat(300)));
+        assert_eq!(super::read(&text, "t").unwrap().scene.objects.len(), 1);
+        let escaped = nested(1).replace("\"a\"", "\"a\\\"[[[[\"");
+        assert_eq!(super::read(&escaped, "t").unwrap().scene.objects.len(), 1);
     }
 }

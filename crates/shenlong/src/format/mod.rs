@@ -31,6 +31,56 @@ pub fn tidy(x: f64) -> f64 {
     }
 }
 
+/// The deepest nesting of lists and objects a JSON file may have (scene JSON, glTF, ProcTHOR
+/// houses and asset databases). Real files nest a dozen levels at most; the limit keeps
+/// every tree built from a file (and every answer that wraps it) well within what
+/// `serde_json` parses (127 levels).
+pub const MAX_JSON_DEPTH: usize = 100;
+
+/// Refuses JSON nested deeper than [`MAX_JSON_DEPTH`], saying where: one pass over the
+/// bytes, brackets inside strings not counted. (Parsing with borrowed raw values, as the
+/// scene-JSON reader does, skips unknown fields without a depth limit; the text is kept
+/// and parsed again as a tree by whoever serves it.)
+pub(crate) fn check_json_depth(text: &[u8]) -> Result<(), FormatError> {
+    let mut depth = 0usize;
+    let mut in_string = false;
+    let mut escaped = false;
+    for (i, &b) in text.iter().enumerate() {
+        if in_string {
+            if escaped {
+                escaped = false;
+            } else if b == b'\\' {
+                escaped = true;
+            } else if b == b'"' {
+                in_string = false;
+            }
+            continue;
+        }
+        match b {
+            b'"' => in_string = true,
+            b'[' | b'{' => {
+                depth += 1;
+                if depth > MAX_JSON_DEPTH {
+                    let before = &text[..i];
+                    let line = before.iter().filter(|&&c| c == b'\n').count() + 1;
+                    let line_start = before
+                        .iter()
+                        .rposition(|&c| c == b'\n')
+                        .map_or(0, |p| p + 1);
+                    // Columns count bytes from 1, as serde_json's do.
+                    let column = i - line_start + 1;
+                    return Err(FormatError::new(format!(
+                        "nesting deeper than {MAX_JSON_DEPTH} levels at line {line}, column {column}"
+                    )));
+                }
+            }
+            b']' | b'}' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
 /// A problem with a scene file: what is wrong and, in the message, where.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct FormatError {

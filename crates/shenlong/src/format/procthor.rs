@@ -33,6 +33,7 @@ impl AssetDatabase {
 
     /// Parses the database.
     pub fn from_json(text: &str) -> Result<Self, FormatError> {
+        super::check_json_depth(text.as_bytes())?;
         let value: Value = serde_json::from_str(text).map_err(|e| {
             FormatError::new(format!(
                 "invalid JSON at line {}, column {}: {e}",
@@ -103,6 +104,7 @@ pub fn looks_like_house(document: &Value) -> bool {
 pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Value, FormatError> {
     let text = std::fs::read_to_string(path)
         .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
+    super::check_json_depth(text.as_bytes()).map_err(|e| e.in_file(path))?;
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("house");
     let lines: Vec<&str> = text.lines().filter(|l| !l.trim().is_empty()).collect();
     let (house_text, line) = if lines.len() > 1
@@ -149,15 +151,30 @@ pub fn convert(house: &Value, assets: &AssetDatabase, name: &str) -> Result<Valu
         .ok_or_else(|| FormatError::new("the house has no \"objects\" list"))?;
     let mut out = Vec::new();
     let mut counts: HashMap<String, usize> = HashMap::new();
-    for (i, object) in objects.iter().enumerate() {
-        convert_object(
+    // Depth first, each object before its children (names are numbered in this order),
+    // on a stack of its own: no recursion, however deep the children nest.
+    let mut stack: Vec<(&Value, String, Option<String>)> = objects
+        .iter()
+        .enumerate()
+        .rev()
+        .map(|(i, object)| (object, format!("objects[{i}]"), None))
+        .collect();
+    while let Some((object, at, parent)) = stack.pop() {
+        let name = convert_object(
             object,
-            &format!("objects[{i}]"),
-            None,
+            &at,
+            parent.as_deref(),
             assets,
             &mut counts,
             &mut out,
         )?;
+        let children = object
+            .get("children")
+            .and_then(Value::as_array)
+            .map_or(&[][..], Vec::as_slice);
+        for (k, child) in children.iter().enumerate().rev() {
+            stack.push((child, format!("{at}.children[{k}]"), Some(name.clone())));
+        }
     }
     let mut root = Map::new();
     root.insert("name".into(), Value::String(name.to_string()));
@@ -169,6 +186,7 @@ pub fn convert(house: &Value, assets: &AssetDatabase, name: &str) -> Result<Valu
     Ok(Value::Object(root))
 }
 
+/// Converts one object (not its children) into `out`; gives the name it got.
 fn convert_object(
     object: &Value,
     at: &str,
@@ -176,7 +194,7 @@ fn convert_object(
     assets: &AssetDatabase,
     counts: &mut HashMap<String, usize>,
     out: &mut Vec<Value>,
-) -> Result<(), FormatError> {
+) -> Result<String, FormatError> {
     let asset_id = object
         .get("assetId")
         .and_then(Value::as_str)
@@ -246,23 +264,7 @@ fn convert_object(
         map.insert("id".into(), id.clone());
     }
     out.push(Value::Object(map));
-    for (k, child) in object
-        .get("children")
-        .and_then(Value::as_array)
-        .into_iter()
-        .flatten()
-        .enumerate()
-    {
-        convert_object(
-            child,
-            &format!("{at}.children[{k}]"),
-            Some(&name),
-            assets,
-            counts,
-            out,
-        )?;
-    }
-    Ok(())
+    Ok(name)
 }
 
 /// Unity Euler angles in degrees (applied z, then x, then y) to a quaternion in
@@ -382,6 +384,45 @@ mod tests {
         let s = glam::DMat3::from_diagonal(DVec3::new(1.0, 1.0, -1.0));
         let ours = glam::DMat3::from_quat(unity_euler_to_quat([20.0, 35.0, -50.0]));
         assert!((s * unity * s).abs_diff_eq(ours, 1e-12));
+    }
+
+    #[test]
+    fn deeply_nested_children_are_refused_with_the_limit_not_a_crash() {
+        let db = AssetDatabase::from_json(
+            r#"{"Box": [{"assetId": "Box_1", "boundingBox": {"x": 1, "y": 1, "z": 1}}]}"#,
+        )
+        .unwrap();
+        let object = r#"{"assetId": "Box_1", "position": {"x": 0, "y": 0.5, "z": 0}"#;
+        let house = |depth: usize| {
+            let mut text = String::new();
+            for _ in 0..depth {
+                text.push_str(object);
+                text.push_str(r#", "children": ["#);
+            }
+            text.push_str(object);
+            text.push('}');
+            for _ in 0..depth {
+                text.push_str("]}");
+            }
+            format!(r#"{{"rooms": [], "objects": [{text}]}}"#)
+        };
+        let dir = tempfile::tempdir().unwrap();
+        let path = dir.path().join("house.json");
+        // 48 levels of children are 99 levels of JSON: read, each on its parent.
+        std::fs::write(&path, house(48)).unwrap();
+        let doc = read_file(&path, 0, &db).unwrap();
+        let objects = doc["objects"].as_array().unwrap();
+        assert_eq!(objects.len(), 49);
+        assert_eq!(objects[48]["on"], objects[47]["name"]);
+        assert_eq!(objects[1]["name"], "box 2");
+        std::fs::write(&path, house(5000)).unwrap();
+        let e = read_file(&path, 0, &db).unwrap_err();
+        assert!(
+            e.message
+                .contains("nesting deeper than 100 levels at line 1, column "),
+            "{}",
+            e.message
+        );
     }
 
     #[test]
