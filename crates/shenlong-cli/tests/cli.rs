@@ -379,3 +379,73 @@ fn an_edit_beyond_the_exact_range_is_refused_not_panicked_on() {
         assert_eq!(stderr(&o).lines().count(), 1, "{expr}: {}", stderr(&o));
     }
 }
+
+#[test]
+fn edits_of_deep_gltf_hierarchies_do_not_crash() {
+    let dir = tempfile::tempdir().unwrap();
+    for depth in [8_000, 100_000] {
+        let input = dir.path().join(format!("chain{depth}.gltf"));
+        std::fs::write(&input, support::deep_chain_gltf(depth)).unwrap();
+        let leaf = format!("n{}", depth - 1);
+        let edited = dir.path().join(format!("edited{depth}.gltf"));
+        let applied = dir.path().join(format!("applied{depth}.gltf"));
+        let instruction = format!("move the '{leaf}' 1 m to the right");
+        for (args, output) in [
+            (
+                vec![
+                    "edit",
+                    input.to_str().unwrap(),
+                    &instruction,
+                    "-o",
+                    edited.to_str().unwrap(),
+                ],
+                &edited,
+            ),
+            (
+                vec![
+                    "apply",
+                    input.to_str().unwrap(),
+                    "--object",
+                    &leaf,
+                    "--expr",
+                    "T(e1)",
+                    "-o",
+                    applied.to_str().unwrap(),
+                ],
+                &applied,
+            ),
+        ] {
+            let o = shenlong(&args);
+            // Not killed by a signal (a stack overflow aborts), and done.
+            assert!(
+                o.status.code().is_some(),
+                "{depth} {}: {:?}",
+                args[0],
+                o.status
+            );
+            assert!(o.status.success(), "{depth} {}: {}", args[0], stderr(&o));
+            let reread = shenlong::format::SceneFile::load(output).unwrap();
+            let min = reread.scene.objects[0].world_aabb().min;
+            let y = 0.001 * depth as f64;
+            assert!(
+                (min - glam::DVec3::new(1.0, y, 0.0)).length() < 1e-6,
+                "{depth} {}: {min:?}",
+                args[0]
+            );
+        }
+    }
+}
+
+#[test]
+fn a_scene_nested_too_deep_is_refused_in_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("deep.json");
+    std::fs::write(&input, support::nested_scene_json(200)).unwrap();
+    let output = dir.path().join("out.json");
+    let o = shenlong(&["convert", input.to_str().unwrap(), output.to_str().unwrap()]);
+    assert_fails_cleanly(
+        &o,
+        "deep.json: nesting deeper than 100 levels at line 2, column 166",
+    );
+    assert!(!output.exists());
+}

@@ -638,3 +638,101 @@ fn the_history_keeps_within_its_byte_budget() {
     let same = session.file.scene.clone();
     assert_eq!(session.commit(same, "apply", "nothing").id, None);
 }
+
+/// `shenlong serve` for `file` on a loopback port, on a multi-threaded runtime (worker
+/// threads with their usual 2 MiB stacks); the runtime stops the server when dropped.
+fn serve_over_loopback(
+    file: shenlong::format::SceneFile,
+) -> (tokio::runtime::Runtime, std::net::SocketAddr) {
+    let app = App::new(file, settings(None, false, None));
+    let runtime = tokio::runtime::Runtime::new().unwrap();
+    let listener = runtime
+        .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
+        .unwrap();
+    let address = listener.local_addr().unwrap();
+    runtime.spawn(serve(app, listener));
+    (runtime, address)
+}
+
+/// A GET over loopback: the status, or the transport error (the server stopped).
+fn get(address: std::net::SocketAddr, path: &str) -> Result<u16, String> {
+    let agent: ureq::Agent = ureq::Agent::config_builder()
+        .http_status_as_error(false)
+        .timeout_global(Some(std::time::Duration::from_secs(60)))
+        .build()
+        .into();
+    agent
+        .get(&format!("http://{address}{path}"))
+        .call()
+        .map(|r| r.status().as_u16())
+        .map_err(|e| e.to_string())
+}
+
+#[test]
+fn a_scene_nested_too_deep_never_stops_the_server() {
+    let dir = tempfile::tempdir().unwrap();
+    // 200 levels of brackets in an unknown field: refused when read, naming the limit,
+    // or (were it read) answered, never a panic that leaves the server mute.
+    let deep = dir.path().join("deep.json");
+    std::fs::write(&deep, support::nested_scene_json(200)).unwrap();
+    match shenlong::format::SceneFile::load(&deep) {
+        Err(e) => assert!(
+            e.message
+                .ends_with("deep.json: nesting deeper than 100 levels at line 2, column 166"),
+            "{}",
+            e.message
+        ),
+        Ok(file) => {
+            let (_runtime, address) = serve_over_loopback(file);
+            let status = get(address, "/api/scene");
+            assert!(status.is_ok(), "the scene is answered: {status:?}");
+            assert_eq!(
+                get(address, "/api/history"),
+                Ok(200),
+                "and the next request"
+            );
+        }
+    }
+    // At the limit: read, served, and the server answers on.
+    let at_limit = dir.path().join("at-limit.json");
+    std::fs::write(&at_limit, support::nested_scene_json(97)).unwrap();
+    let file = shenlong::format::SceneFile::load(&at_limit).unwrap();
+    let (_runtime, address) = serve_over_loopback(file);
+    assert_eq!(get(address, "/api/scene"), Ok(200));
+    assert_eq!(get(address, "/api/scene"), Ok(200));
+    assert_eq!(get(address, "/api/history"), Ok(200));
+}
+
+#[test]
+fn a_deep_gltf_hierarchy_is_applied_and_exported_without_a_crash() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("chain.gltf");
+    std::fs::write(&path, support::deep_chain_gltf(8_000)).unwrap();
+    let file = shenlong::format::SceneFile::load(&path).unwrap();
+    let (_runtime, address) = serve_over_loopback(file);
+    let body = json!({"object": "n7999", "expr": "T(e1)"}).to_string();
+    let mut response = ureq::post(&format!("http://{address}/api/apply"))
+        .header("content-type", "application/json")
+        .send(body)
+        .unwrap();
+    let applied: Value = response.body_mut().read_json().unwrap();
+    assert_eq!(applied["translation"], json!([1.0, 0.0, 0.0]), "{applied}");
+    let exported = ureq::get(&format!("http://{address}/api/export?format=gltf"))
+        .call()
+        .unwrap()
+        .body_mut()
+        .with_config()
+        .limit(64 << 20)
+        .read_to_vec()
+        .unwrap();
+    let edited = dir.path().join("edited.gltf");
+    std::fs::write(&edited, exported).unwrap();
+    let reread = shenlong::format::SceneFile::load(&edited).unwrap();
+    let min = reread.scene.objects[0].world_aabb().min;
+    assert!(
+        (min - glam::DVec3::new(1.0, 8.0, 0.0)).length() < 1e-6,
+        "{min:?}"
+    );
+    assert_eq!(get(address, "/api/model"), Ok(200));
+    assert_eq!(get(address, "/api/scene"), Ok(200));
+}

@@ -81,7 +81,8 @@ pub fn run(args: Args) -> Result<()> {
     )
     // The flag is the command line's to name; the library's message does not.
     .map_err(super::edit_error)?;
-    let report = serde_json::to_string_pretty(&result.report).expect("reports serialise");
+    let report = serde_json::to_string_pretty(&result.report)
+        .map_err(|e| anyhow::anyhow!("cannot write the edit report: {e}"))?;
 
     super::write_edit(
         &file,

@@ -231,14 +231,21 @@ async fn asset(uri: Uri) -> Response {
     }
 }
 
-/// The scene as the page draws it: scene-file JSON (boxes) plus supports.
-fn scene_json(inner: &Inner) -> Value {
+/// The scene as the page draws it: scene-file JSON (boxes) plus supports. Whatever the
+/// file held, a scene that cannot be shown is an error answer, never a panic.
+fn scene_json(inner: &Inner) -> Result<Value, ApiError> {
+    let cannot = |e: String| {
+        ApiError(
+            StatusCode::INTERNAL_SERVER_ERROR,
+            format!("cannot show the scene: {e}"),
+        )
+    };
     let bytes = inner
         .session
         .file
         .to_bytes(Format::SceneJson)
-        .expect("scene JSON always serialises");
-    let mut value: Value = serde_json::from_slice(&bytes).expect("scene JSON parses");
+        .map_err(|e| cannot(e.message))?;
+    let mut value: Value = serde_json::from_slice(&bytes).map_err(|e| cannot(e.to_string()))?;
     let supports: Vec<Value> = inner
         .session
         .file
@@ -258,12 +265,12 @@ fn scene_json(inner: &Inner) -> Value {
             }
         }
     }
-    json!({
+    Ok(json!({
         "scene": value,
         "can_undo": inner.session.can_undo(),
         "can_redo": inner.session.can_redo(),
         "model": model_bytes(inner).is_some().then_some("/api/model"),
-    })
+    }))
 }
 
 /// The scene's meshes as glTF, when its source is a GLB or a self-contained `.gltf` (a
@@ -304,8 +311,8 @@ async fn model(State(app): State<Arc<App>>) -> Result<Response, ApiError> {
         .into_response())
 }
 
-async fn scene(State(app): State<Arc<App>>) -> Json<Value> {
-    Json(scene_json(&app.lock()))
+async fn scene(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
+    scene_json(&app.lock()).map(Json)
 }
 
 /// The translator a request may choose: `offline`, or the one the server was started
@@ -343,7 +350,7 @@ fn edit_status(e: shenlong::pipeline::EditError) -> ApiError {
         EditErrorKind::Instruction | EditErrorKind::NotUnderstood => {
             StatusCode::UNPROCESSABLE_ENTITY
         }
-        EditErrorKind::Placement => StatusCode::CONFLICT,
+        EditErrorKind::Placement | EditErrorKind::Held => StatusCode::CONFLICT,
         EditErrorKind::Model => StatusCode::BAD_GATEWAY,
     };
     ApiError(status, e.message)
@@ -403,7 +410,15 @@ async fn edit_scene(
     })?;
     let (after, report) = outcome.map_err(edit_status)?;
     let change = commit(&app, after, "edit", &request.instruction);
-    let mut value = serde_json::to_value(&report).expect("reports serialise");
+    let mut value = serde_json::to_value(&report).map_err(|e| {
+        ApiError(
+            StatusCode::INTERNAL_SERVER_ERROR,
+            format!(
+                "the edit was made (history {:?}) but its report cannot be written: {e}",
+                change.id
+            ),
+        )
+    })?;
     value["history_id"] = json!(change.id);
     if let Some(warning) = change.save_error {
         value["warning"] = json!(warning);
@@ -455,7 +470,7 @@ fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
     let mut inner = app.lock();
     match inner.session.step(undo) {
         Ok(change) => {
-            let mut value = scene_json(&inner);
+            let mut value = scene_json(&inner)?;
             if let Some(warning) = change.save_error {
                 value["warning"] = json!(warning);
             }

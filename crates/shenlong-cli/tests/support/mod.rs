@@ -55,3 +55,45 @@ pub fn object<'a>(scene: &'a Value, name: &str) -> &'a Value {
         .find(|o| o["name"] == name)
         .unwrap_or_else(|| panic!("no object '{name}'"))
 }
+
+/// A glTF chain of `depth` nodes, `n0` → `n1` → …, each the only child of the one before
+/// and 1 mm above it; the last one has a triangle mesh. Generated, never committed: at
+/// 100,000 nodes it is 7 MB.
+pub fn deep_chain_gltf(depth: usize) -> String {
+    // Three vertices, (0, 0, 0), (1, 0, 0), (0, 0, 1), as little-endian f32 in base64.
+    let data = "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAAAAAAIA/";
+    let mut nodes = String::with_capacity(depth * 64);
+    for i in 0..depth {
+        if i > 0 {
+            nodes.push(',');
+        }
+        nodes.push_str(&format!(
+            r#"{{"name": "n{i}", "translation": [0, 0.001, 0]"#
+        ));
+        if i + 1 < depth {
+            nodes.push_str(&format!(r#", "children": [{}]"#, i + 1));
+        } else {
+            nodes.push_str(r#", "mesh": 0"#);
+        }
+        nodes.push('}');
+    }
+    format!(
+        r#"{{"asset": {{"version": "2.0"}}, "scene": 0, "scenes": [{{"nodes": [0]}}],
+        "nodes": [{nodes}],
+        "meshes": [{{"primitives": [{{"attributes": {{"POSITION": 0}}}}]}}],
+        "accessors": [{{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+            "min": [0, 0, 0], "max": [1, 0, 1]}}],
+        "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
+        "buffers": [{{"byteLength": 36, "uri": "data:application/octet-stream;base64,{data}"}}]}}"#
+    )
+}
+
+/// A scene-JSON file whose one object has `depth` levels of brackets in an unknown field
+/// (the whole file nests `depth + 3` levels).
+pub fn nested_scene_json(depth: usize) -> String {
+    format!(
+        "{{\"objects\": [\n  {{\"name\": \"box\", \"size\": [1, 1, 1], \"position\": [0, 0, 0], \"junk\": {}{}}}]}}\n",
+        "[".repeat(depth),
+        "]".repeat(depth)
+    )
+}
