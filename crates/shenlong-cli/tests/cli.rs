@@ -449,3 +449,81 @@ fn a_scene_nested_too_deep_is_refused_in_one_line() {
     );
     assert!(!output.exists());
 }
+
+#[test]
+fn a_gltf_cannot_choose_where_its_resources_are_written() {
+    let root = tempfile::tempdir().unwrap();
+    let download = root.path().join("download");
+    let home = root.path().join("home");
+    std::fs::create_dir_all(download.join(".ssh")).unwrap();
+    std::fs::create_dir_all(download.join(".config/autostart")).unwrap();
+    std::fs::create_dir_all(&home).unwrap();
+    // The triangle's positions as `.bash_profile`, a key as a second buffer, a desktop
+    // entry as an image.
+    let triangle = base64::Engine::decode(
+        &base64::engine::general_purpose::STANDARD,
+        "AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAAAAAAIA/",
+    )
+    .unwrap();
+    std::fs::write(download.join(".bash_profile"), &triangle).unwrap();
+    std::fs::write(download.join(".ssh/authorized_keys"), [b'k'; 36]).unwrap();
+    std::fs::write(
+        download.join(".config/autostart/evil.desktop"),
+        "[Desktop Entry]\nExec=evil\n",
+    )
+    .unwrap();
+    let scene = support::deep_chain_gltf(1)
+        .replace(
+            r#""buffers": [{"byteLength": 36, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAAAACAPwAAAAAAAAAAAAAAAAAAAAAAAIA/"}]"#,
+            r#""buffers": [{"byteLength": 36, "uri": ".bash_profile"}, {"byteLength": 36, "uri": ".ssh/authorized_keys"}],
+            "images": [{"uri": ".config/autostart/evil.desktop"}]"#,
+        );
+    assert!(scene.contains(".bash_profile"));
+    let input = download.join("scene.gltf");
+    std::fs::write(&input, scene).unwrap();
+    let output = home.join("edited.gltf");
+    for command in [
+        vec!["convert", input.to_str().unwrap(), output.to_str().unwrap()],
+        vec![
+            "apply",
+            input.to_str().unwrap(),
+            "--object",
+            "n0",
+            "--expr",
+            "T(e1)",
+            "-o",
+            output.to_str().unwrap(),
+        ],
+    ] {
+        let o = shenlong(&command);
+        assert!(o.status.success(), "{}: {}", command[0], stderr(&o));
+        let mut written: Vec<String> = std::fs::read_dir(&home)
+            .unwrap()
+            .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+            .collect();
+        written.sort();
+        assert_eq!(
+            written,
+            [
+                "edited.gltf",
+                "edited_0.bin",
+                "edited_1.bin",
+                "edited_2.bin"
+            ],
+            "{}",
+            command[0]
+        );
+        let reread = shenlong::format::SceneFile::load(&output).unwrap();
+        assert_eq!(reread.scene.objects.len(), 1);
+    }
+    let mut beside: Vec<String> = std::fs::read_dir(root.path())
+        .unwrap()
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    beside.sort();
+    assert_eq!(
+        beside,
+        ["download", "home"],
+        "nothing outside the output folder"
+    );
+}

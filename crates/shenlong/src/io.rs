@@ -1,13 +1,46 @@
 //! Writing files safely: all or nothing.
 
 use std::io::Write;
-use std::path::Path;
+use std::path::{Path, PathBuf};
 
 /// Writes `bytes` to `path` atomically: into a temporary file beside it, flushed to disk,
 /// then renamed over the target. On any error the target is left as it was and the
 /// temporary file is removed. A replaced file keeps its permissions; a new one is
 /// readable by all (0644 on Unix), as an ordinary write would make it.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
+    stage(path, |file| file.write_all(bytes))?.commit()
+}
+
+/// A file written in full beside its target but not yet in place: [`Staged::commit`]
+/// renames it over the target; dropped uncommitted, it is removed. Several files staged
+/// first and committed after are written all or nothing, but for a failed rename.
+#[derive(Debug)]
+pub struct Staged {
+    file: tempfile::NamedTempFile,
+    target: PathBuf,
+}
+
+impl Staged {
+    /// Where the file goes.
+    pub fn target(&self) -> &Path {
+        &self.target
+    }
+
+    /// Renames the file over its target. A rename replaces a link at the target by the
+    /// file; it never writes through the link.
+    pub fn commit(self) -> std::io::Result<()> {
+        self.file.persist(&self.target).map_err(|e| e.error)?;
+        Ok(())
+    }
+}
+
+/// Writes a temporary file in `path`'s folder with `fill`, flushed to disk, with the
+/// permissions `path` has (a new file's: 0644 on Unix), for [`Staged::commit`] to rename
+/// over `path`. On any error the temporary file is removed.
+pub fn stage(
+    path: &Path,
+    fill: impl FnOnce(&mut std::fs::File) -> std::io::Result<()>,
+) -> std::io::Result<Staged> {
     let dir = match path.parent() {
         Some(d) if !d.as_os_str().is_empty() => d,
         _ => Path::new("."),
@@ -17,15 +50,17 @@ pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
         .prefix(".shenlong-")
         .suffix(".tmp")
         .tempfile_in(dir)?;
-    file.write_all(bytes)?;
+    fill(file.as_file_mut())?;
     let permissions = match std::fs::metadata(path) {
         Ok(existing) => existing.permissions(),
         Err(_) => default_permissions(),
     };
     file.as_file().set_permissions(permissions)?;
     file.as_file().sync_all()?;
-    file.persist(path).map_err(|e| e.error)?;
-    Ok(())
+    Ok(Staged {
+        file,
+        target: path.to_path_buf(),
+    })
 }
 
 /// Temporary files older than this are left by a process that was killed mid-write.

@@ -282,19 +282,36 @@ fn gltf_with_external_buffers_and_textures_written_elsewhere() {
                 );
             }
         }
-        // The buffers and textures came along, unchanged.
-        let uris: Vec<String> = match &reread.document {
-            Document::Gltf(d) => d.external_uris(),
-            _ => unreachable!(),
+        // The buffers and textures came along, unchanged, flat beside the output under
+        // names Shenlong made from its stem.
+        let uris = |f: &SceneFile| -> Vec<String> {
+            match &f.document {
+                Document::Gltf(d) => d.external_uris(),
+                _ => unreachable!(),
+            }
         };
-        assert!(!uris.is_empty());
-        for uri in uris {
+        let (originals, copies) = (uris(&file), uris(&reread));
+        assert!(!originals.is_empty());
+        assert_eq!(originals.len(), copies.len());
+        let stem = name.trim_end_matches(".gltf");
+        for (original, copy) in originals.iter().zip(&copies) {
+            assert!(
+                copy.starts_with(&format!("{stem}_")) && !copy.contains('/'),
+                "{copy}"
+            );
             assert_eq!(
-                std::fs::read(dir.join(folder).join(&uri)).unwrap(),
-                std::fs::read(out.path().join(&uri)).unwrap(),
-                "{uri}"
+                std::fs::read(dir.join(folder).join(original)).unwrap(),
+                std::fs::read(out.path().join(copy)).unwrap(),
+                "{original} → {copy}"
             );
         }
+        let files = std::fs::read_dir(out.path()).unwrap().count();
+        let distinct: std::collections::HashSet<&String> = copies.iter().collect();
+        assert_eq!(
+            files,
+            1 + distinct.len(),
+            "the glTF and its copies, nothing else"
+        );
     }
 }
 
@@ -320,12 +337,26 @@ fn mixed_lighting_chair_parts_and_extensions_survive() {
         "extensionsUsed",
         "materials",
         "textures",
-        "images",
         "samplers",
         "meshes",
         "accessors",
     ] {
         assert_eq!(original.get(key), written.get(key), "{key} untouched");
+    }
+    // Images and buffers keep everything but their URIs, which name the copies.
+    let without_uris = |v: &serde_json::Value| {
+        let mut v = v.clone();
+        for item in v.as_array_mut().unwrap() {
+            item.as_object_mut().unwrap().remove("uri");
+        }
+        v
+    };
+    for key in ["images", "buffers"] {
+        assert_eq!(
+            without_uris(&original[key]),
+            without_uris(&written[key]),
+            "{key}"
+        );
     }
 }
 

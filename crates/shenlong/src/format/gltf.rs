@@ -615,6 +615,38 @@ pub fn write(scene: &Scene, document: &GltfDocument) -> Result<Vec<u8>, FormatEr
     }
 }
 
+/// The edited `.gltf` with its external buffers' and images' URIs replaced as `uris` says
+/// (from the URI as the file has it to the new one): the file written in another folder,
+/// beside copies of its resources under names Shenlong chose.
+pub(crate) fn write_relocated(
+    scene: &Scene,
+    document: &GltfDocument,
+    uris: &std::collections::HashMap<String, String>,
+) -> Result<Vec<u8>, FormatError> {
+    if document.container == Container::Glb {
+        return Err(FormatError::new(
+            "a binary glTF keeps its resources: it is written as it is",
+        ));
+    }
+    let mut json = edited_json(scene, document)?.unwrap_or_else(|| document.json.clone());
+    for key in ["buffers", "images"] {
+        for item in json
+            .get_mut(key)
+            .and_then(Value::as_array_mut)
+            .into_iter()
+            .flatten()
+        {
+            let Some(uri) = item.get_mut("uri") else {
+                continue;
+            };
+            if let Some(new) = uri.as_str().and_then(|u| uris.get(u)) {
+                *uri = Value::String(new.clone());
+            }
+        }
+    }
+    Ok(super::pretty::to_string(&json).into_bytes())
+}
+
 /// The document's JSON with the moved nodes' new local transforms; `None` when nothing
 /// moved.
 fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, FormatError> {

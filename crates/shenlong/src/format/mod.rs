@@ -14,6 +14,7 @@ pub mod gltf;
 pub mod json;
 pub mod pretty;
 pub mod procthor;
+mod resources;
 pub mod tdw;
 
 use crate::scene::Scene;
@@ -295,86 +296,25 @@ impl SceneFile {
     }
 
     /// Writes the scene to `path` (format by extension) atomically: on any error the
-    /// file is not created or changed.
+    /// file is not created or changed. A `.gltf` written in another folder than its source
+    /// gets copies of its buffers and images beside it, under names Shenlong makes
+    /// (`resources`), all or nothing.
     pub fn save(&self, path: &Path) -> Result<(), FormatError> {
         let format = Format::from_path(path)?;
-        let bytes = self.to_bytes(format)?;
         if path.is_dir() {
             return Err(FormatError::new(format!(
                 "cannot write {}: it is a folder",
                 path.display()
             )));
         }
-        let copied = match (format, &self.document) {
-            (Format::Gltf, Document::Gltf(document)) => copy_external_resources(document, path)?,
-            _ => Vec::new(),
-        };
-        crate::io::write_atomic(path, &bytes).map_err(|e| {
-            // Nothing is left behind: the resources copied for it go too.
-            for c in &copied {
-                let _ = std::fs::remove_file(c);
+        if let (Format::Gltf, Document::Gltf(document)) = (format, &self.document) {
+            if let Some(copies) = resources::plan(document, path)? {
+                let bytes = gltf::write_relocated(&self.scene, document, &copies.uris)?;
+                return resources::write_all(&copies, path, &bytes);
             }
-            FormatError::new(format!("cannot write {}: {e}", path.display()))
-        })
-    }
-}
-
-/// A `.gltf` written to another folder needs its buffers and images beside it: they are
-/// copied (unchanged) where they are not there already.
-fn copy_external_resources(
-    document: &gltf::GltfDocument,
-    output: &Path,
-) -> Result<Vec<PathBuf>, FormatError> {
-    let gltf::Container::Gltf { base_dir } = document.container() else {
-        return Ok(Vec::new());
-    };
-    let out_dir = match output.parent() {
-        Some(d) if !d.as_os_str().is_empty() => d.to_path_buf(),
-        _ => PathBuf::from("."),
-    };
-    let same = |a: &Path, b: &Path| match (a.canonicalize(), b.canonicalize()) {
-        (Ok(a), Ok(b)) => a == b,
-        _ => false,
-    };
-    let base = if base_dir.as_os_str().is_empty() {
-        Path::new(".")
-    } else {
-        base_dir.as_path()
-    };
-    if same(base, &out_dir) {
-        return Ok(Vec::new());
-    }
-    // Everything is checked before anything is copied, so a failure leaves no copies.
-    let mut copies = Vec::new();
-    for uri in document.external_uris() {
-        let source = gltf::resolve_uri(base, &uri).map_err(FormatError::new)?;
-        let relative = PathBuf::from(gltf::percent_decode(&uri));
-        let target = out_dir.join(&relative);
-        if !target.exists() {
-            copies.push((source, relative, target));
         }
+        let bytes = self.to_bytes(format)?;
+        crate::io::write_atomic(path, &bytes)
+            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
     }
-    let mut made: Vec<PathBuf> = Vec::new();
-    let copy = |source: &Path, target: &Path| -> Result<(), FormatError> {
-        let bytes = std::fs::read(source)
-            .map_err(|e| FormatError::new(format!("cannot read {}: {e}", source.display())))?;
-        if let Some(parent) = target.parent() {
-            std::fs::create_dir_all(parent).map_err(|e| {
-                FormatError::new(format!("cannot create {}: {e}", parent.display()))
-            })?;
-        }
-        crate::io::write_atomic(target, &bytes)
-            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", target.display())))
-    };
-    for (source, _, target) in copies {
-        if let Err(e) = copy(&source, &target) {
-            // Nothing is left behind.
-            for m in &made {
-                let _ = std::fs::remove_file(m);
-            }
-            return Err(e);
-        }
-        made.push(target);
-    }
-    Ok(made)
 }
