@@ -21,6 +21,9 @@ pub struct Templated {
     pub objects: Vec<usize>,
     /// The phrases grounded, with the objects they mean and why.
     pub phrases: Vec<Phrase>,
+    /// The objects the instruction says must stay where they are ("… but leave the chair
+    /// where it is"): bound to no variable; placement neither carries nor moves them.
+    pub held: Vec<usize>,
 }
 
 impl Templated {

@@ -405,6 +405,7 @@ fn a_query_that_still_names_an_object_is_not_sent() {
         query: "put X1 on the Tool-Table".into(),
         objects: vec![hammer],
         phrases: Vec::new(),
+        held: Vec::new(),
     };
     let e = translator(&server, System::Cga)
         .translate(&templated, &scene)

@@ -62,6 +62,15 @@ pub enum GroundError {
         /// What went wrong, with the candidates.
         reason: String,
     },
+    /// The instruction names objects only to keep them where they are.
+    #[error(
+        "the instruction only says what must stay where it is ({}); say what to move",
+        list(held)
+    )]
+    OnlyHeld {
+        /// The objects held.
+        held: Vec<String>,
+    },
     /// The instruction names no object of the scene.
     #[error(
         "the instruction names no object of the scene; name one (it has {total}: {}{})",

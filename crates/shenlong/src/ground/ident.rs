@@ -104,12 +104,13 @@ fn known(lexicon: &Lexicon, phrase: &str) -> bool {
     lexicon.knows(phrase) || lexicon.singulars(phrase).iter().any(|s| lexicon.knows(s))
 }
 
-/// Whether the last word of a phrase is an object noun the lexicon knows.
+/// Whether the last word of a phrase is an object noun the lexicon knows (a word for a
+/// part of the room, as `wall` in `Clock_Wall`, is a place, not the object's kind).
 fn headed(lexicon: &Lexicon, phrase: &str) -> bool {
     phrase
         .rsplit(' ')
         .next()
-        .is_some_and(|last| known(lexicon, last))
+        .is_some_and(|last| known(lexicon, last) && !super::words::is_place_noun(last))
 }
 
 /// Reads an object's name.
@@ -203,6 +204,9 @@ mod tests {
         let floor = r("SM_FloorLamp_01");
         assert_eq!((floor.base.as_str(), floor.number), ("floor lamp", Some(1)));
         assert_eq!(r("CoffeeTable").base, "coffee table");
+        // A room word is where the object is, not what it is.
+        let clock = r("Clock_Wall");
+        assert_eq!((clock.base.as_str(), clock.other), ("wall clock", None));
         assert_eq!(r("sofa").base, "sofa");
         assert_eq!(r("chair 3").number, Some(3));
         assert_eq!(r("chair 3").base, "chair");

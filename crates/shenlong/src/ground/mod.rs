@@ -24,10 +24,12 @@
 //! that still fits several objects, or none, is refused ([`GroundError`]).
 
 mod error;
+mod hold;
 pub mod ident;
 mod index;
 pub mod lexicon;
 mod select;
+pub mod verbs;
 pub mod words;
 
 pub use error::GroundError;
@@ -106,8 +108,13 @@ pub struct Phrase {
 pub struct Grounding {
     /// The instruction as given (trimmed).
     pub instruction: String,
-    /// The referring phrases, in order.
+    /// The referring phrases, in order (without the held ones).
     pub phrases: Vec<Phrase>,
+    /// The phrases named only to keep their objects where they are ("… but leave the
+    /// chair where it is"): not bound to variables; placement holds their objects.
+    pub held: Vec<Phrase>,
+    /// The bytes of the instruction that say what is held, cut from the query.
+    pub cuts: Vec<Range<usize>>,
 }
 
 /// Grounds instructions on one scene. Build it once per scene (the name index and the
@@ -258,11 +265,52 @@ impl Grounder {
                 total: scene.objects.len(),
             });
         }
+        let (phrases, held, cuts) = separate_holds(&reader.tokens, phrases);
+        if phrases.is_empty() {
+            return Err(GroundError::OnlyHeld {
+                held: held
+                    .iter()
+                    .flat_map(|p| p.objects.iter().map(|&o| scene.objects[o].name.clone()))
+                    .collect(),
+            });
+        }
         Ok(Grounding {
             instruction: text.to_string(),
             phrases,
+            held,
+            cuts,
         })
     }
+}
+
+/// Splits the phrases held in place ([`hold`]) from the others; a group that takes in a
+/// held object lets it go ("move the chairs but not chair 2").
+fn separate_holds(
+    tokens: &[words::Token],
+    phrases: Vec<Phrase>,
+) -> (Vec<Phrase>, Vec<Phrase>, Vec<Range<usize>>) {
+    let holds = hold::find(tokens, &phrases);
+    if holds.is_empty() {
+        return (phrases, Vec::new(), Vec::new());
+    }
+    let cuts = holds.iter().map(|h| h.cut.clone()).collect();
+    let mut held = Vec::new();
+    let mut kept = Vec::new();
+    for (i, p) in phrases.into_iter().enumerate() {
+        if holds.iter().any(|h| h.phrase == i) {
+            held.push(p);
+        } else {
+            kept.push(p);
+        }
+    }
+    let held_objects: Vec<usize> = held.iter().flat_map(|p| p.objects.clone()).collect();
+    for p in &mut kept {
+        if p.objects.len() > 1 {
+            p.objects.retain(|o| !held_objects.contains(o));
+        }
+    }
+    kept.retain(|p| !p.objects.is_empty());
+    (kept, held, cuts)
 }
 
 /// The phrase for the selection: the first "it" / "them" / "the selection" / "the selected

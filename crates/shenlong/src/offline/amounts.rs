@@ -6,6 +6,8 @@ use super::words::{angle_unit, length_unit, number_word, Token};
 
 /// "a bit", "slightly", "a little", "a touch", "just a bit": a small amount.
 pub const BIT_METRES: f64 = 0.10;
+/// "a smidge", "a hair", "a tiny bit", "a fraction": a tiny amount.
+pub const TINY_METRES: f64 = 0.05;
 /// The small amount for turns.
 pub const BIT_DEGREES: f64 = 15.0;
 /// "a lot", "far", "way over": this far, or to the nearest wall if that is nearer.
@@ -50,6 +52,14 @@ const BIT: &[&[&str]] = &[
     &["somewhat"],
     &["marginally"],
     &["bit"],
+];
+
+/// The small-amount phrases that say "tiny": [`TINY_METRES`] (turns take the small angle).
+const TINY: &[&[&str]] = &[
+    &["a", "tiny", "bit"],
+    &["a", "smidge"],
+    &["a", "hair"],
+    &["a", "fraction"],
 ];
 
 /// The large-amount phrases.
@@ -198,7 +208,8 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
             if c.free(i) && c.words_at(i, words) {
                 c.mark(i..i + words.len());
                 c.mark_by(i);
-                return Some(Length::Metres(BIT_METRES));
+                let tiny = TINY.contains(words);
+                return Some(Length::Metres(if tiny { TINY_METRES } else { BIT_METRES }));
             }
         }
         for words in FAR {

@@ -117,6 +117,42 @@ impl Clause {
         if let Some(i) = self.find(&["as", "well"]) {
             self.mark(i..i + 2);
         }
+        self.mark_approximations();
+    }
+
+    /// Marks read the words that say an amount is approximate — `about`, `roughly`,
+    /// `approximately`, `around`, `some` right before a number, `or so`, `or thereabouts`,
+    /// `give or take` and `-ish` after one: the amount is read as given.
+    fn mark_approximations(&mut self) {
+        let number_at = |c: &Self, i: usize| match c.tokens.get(i) {
+            Some(Token::Number(_)) => true,
+            Some(Token::Word(w)) => {
+                words::number_word(w).is_some() || matches!(w.as_str(), "half" | "a" | "an")
+            }
+            _ => false,
+        };
+        for i in 0..self.len() {
+            let before_number = matches!(
+                self.word(i),
+                Some("about" | "roughly" | "approximately" | "approx" | "around" | "circa" | "maybe")
+            ) && number_at(self, i + 1)
+                // "around a" is a turn ("turn it around a bit"): only before digits or
+                // number words.
+                && !(self.word(i) == Some("around") && !matches!(self.tokens.get(i + 1), Some(Token::Number(_))));
+            if before_number && self.free(i) {
+                self.mark(i..i + 1);
+            }
+        }
+        for words in [
+            &["or", "so"][..],
+            &["or", "thereabouts"],
+            &["give", "or", "take"],
+            &["ish"],
+        ] {
+            while let Some(i) = self.find(words) {
+                self.mark(i..i + words.len());
+            }
+        }
     }
 
     /// Marks a `by` before position `i` read (`by 20 cm`).
@@ -298,6 +334,25 @@ pub(crate) fn split(tokens: &[Token]) -> Vec<Clause> {
         }
         if is_and && word(i + 1) == Some("a") && matches!(word(i + 2), Some("half" | "quarter")) {
             out.last_mut().expect("one clause").push(t.clone());
+            i += 1;
+            continue;
+        }
+        // "a half turn, clockwise as seen from above": a comma before a qualifier of the
+        // turn (or of the amount: "20 cm, roughly") does not start a clause.
+        if matches!(t, Token::Separator)
+            && matches!(
+                word(i + 1),
+                Some(
+                    "clockwise"
+                        | "counterclockwise"
+                        | "anticlockwise"
+                        | "roughly"
+                        | "approximately"
+                        | "more"
+                )
+            )
+            && !matches!(word(i + 2), Some(w) if words::verb(w).is_some())
+        {
             i += 1;
             continue;
         }

@@ -19,6 +19,7 @@
 pub mod amounts;
 mod build;
 mod clause;
+mod idioms;
 mod read;
 mod relations;
 mod room;
@@ -58,7 +59,8 @@ pub struct Entry {
 
 /// Reads an instruction with variables into expression trees, one entry per variable it
 /// changes. `room`: whether the scene has bounds; `yaw`: each variable's current turn about
-/// the vertical in degrees (for "straighten").
+/// the vertical in degrees (for "straighten"); `sizes`: each variable's world box size
+/// (for "to X2": a small thing goes on X2's top), or empty.
 ///
 /// # Errors
 /// The unread part of the instruction, quoted.
@@ -67,11 +69,13 @@ pub fn answer(
     variables: usize,
     room: bool,
     yaw: &[f64],
+    sizes: &[[f64; 3]],
 ) -> Result<Vec<Entry>, String> {
     let facts = Facts {
         variables,
         room,
         yaw: yaw.to_vec(),
+        sizes: sizes.to_vec(),
     };
     let tokens = words::tokenize(query);
     let mut reader = Reader::new(&facts);
@@ -134,7 +138,7 @@ pub fn reply_text(entries: &[Entry]) -> String {
 /// # Errors
 /// As [`answer`].
 pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
-    answer(query, variables, true, &vec![0.0; variables]).map(|e| reply_text(&e))
+    answer(query, variables, true, &vec![0.0; variables], &[]).map(|e| reply_text(&e))
 }
 
 impl Translator for OfflineTranslator {
@@ -161,11 +165,17 @@ impl Translator for OfflineTranslator {
                 (angle * axis.y.signum()).to_degrees()
             })
             .collect();
+        let sizes: Vec<[f64; 3]> = templated
+            .objects
+            .iter()
+            .map(|&i| scene.objects[i].world_aabb().size().to_array())
+            .collect();
         let entries = answer(
             &templated.query,
             templated.objects.len(),
             scene.bounds.is_some(),
             &yaw,
+            &sizes,
         )
         .map_err(TranslateError::not_understood)?;
         let bindings: Bindings = bindings(scene, &templated.objects);

@@ -20,6 +20,22 @@ pub(crate) struct Facts {
     pub room: bool,
     /// Per variable: its turn about the vertical, in degrees.
     pub yaw: Vec<f64>,
+    /// Per variable: the size of its world box (empty when not known).
+    pub sizes: Vec<[f64; 3]>,
+}
+
+impl Facts {
+    /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
+    /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
+    /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the
+    /// table" is not small beside it and goes to its place on the floor.
+    fn small_onto(&self, s: usize, t: usize) -> bool {
+        let (Some(a), Some(b)) = (self.sizes.get(s), self.sizes.get(t)) else {
+            return false;
+        };
+        let volume = |v: &[f64; 3]| v[0] * v[1] * v[2];
+        a[0] <= b[0] && a[2] <= b[2] && volume(a) * 20.0 < volume(b) && b[1] <= 1.3
+    }
 }
 
 /// The state carried from clause to clause.
@@ -80,6 +96,7 @@ impl<'a> Reader<'a> {
         // Discourse around the instruction: greetings and request frames at the start,
         // thanks and sign-offs at the end (crate::discourse).
         c.mark_discourse();
+        super::idioms::rewrite(c);
         // A clause of fillers only ("…, thanks"): nothing to do.
         if c.unread().is_empty() {
             return Ok(());
@@ -604,9 +621,11 @@ impl<'a> Reader<'a> {
         let clockwise = ["clockwise", "cw"].iter().find_map(|w| has(c, w));
         if let Some(i) = counter {
             c.mark(i..i + 1);
+            mark_seen_from_above(c);
             degrees = degrees.abs();
         } else if let Some(i) = clockwise {
             c.mark(i..i + 1);
+            mark_seen_from_above(c);
             degrees = -degrees.abs();
         } else if let Some(i) = has(c, "left") {
             c.mark(i..i + 1);
@@ -748,6 +767,21 @@ impl<'a> Reader<'a> {
                     Relation::Away(length_value(amounts::length(c, true)).unwrap_or(DEFAULT_METRES))
                 }
                 RelKind::Closer => Relation::Closer(length_value(amounts::length(c, true))),
+            };
+            // "bring the bowl to the table": a small thing goes on the table's top.
+            let to_word = c
+                .word(r.range.start)
+                .is_some_and(|w| matches!(w, "to" | "at"));
+            let relation = if relation == Relation::To
+                && to_word
+                && targets.len() == 1
+                && subjects
+                    .iter()
+                    .all(|&s| self.facts.small_onto(s, targets[0]))
+            {
+                Relation::On
+            } else {
+                relation
             };
             self.last_subjects = subjects.clone();
             let mut out = Vec::new();
@@ -1309,4 +1343,46 @@ fn named_axis(c: &mut Clause) -> Option<usize> {
         }
     }
     Some(a)
+}
+
+/// Ways to say "seen from above" after clockwise / counter-clockwise: the default view
+/// (SPEC §1), so they are read and change nothing. Any other view ("from below") is left
+/// unread, and the instruction is refused rather than turned the wrong way.
+const SEEN_FROM_ABOVE: &[&[&str]] = &[
+    &["as", "seen", "from", "above"],
+    &["as", "seen", "from", "the", "top"],
+    &["as", "viewed", "from", "above"],
+    &["as", "viewed", "from", "the", "top"],
+    &["seen", "from", "above"],
+    &["seen", "from", "the", "top"],
+    &["viewed", "from", "above"],
+    &["viewed", "from", "the", "top"],
+    &["looking", "from", "above"],
+    &["looking", "down", "from", "above"],
+    &["looking", "down"],
+    &["when", "looking", "down"],
+    &["from", "above"],
+    &["from", "the", "top"],
+    &["from", "overhead"],
+    &["in", "top", "view"],
+    &["in", "plan", "view"],
+    &["in", "plan"],
+    &["seen", "from", "overhead"],
+    &["if", "you", "look", "from", "above"],
+    &["as", "you", "look", "down", "on", "it"],
+];
+
+/// Marks a "seen from above" qualifier read, wherever it stands in the clause.
+fn mark_seen_from_above(c: &mut Clause) {
+    for i in 0..c.len() {
+        if let Some(n) = SEEN_FROM_ABOVE
+            .iter()
+            .filter(|p| c.words_at(i, p))
+            .map(|p| p.len())
+            .max()
+        {
+            c.mark(i..i + n);
+            return;
+        }
+    }
 }

@@ -193,6 +193,8 @@ pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
         | "halve" | "triple" | "magnify" | "reduce" | "make" | "shrunk" => (Scale, None),
         "center" | "centre" => (Centre, None),
         "straighten" | "square" => (Straighten, None),
+        // Every other verb that moves an object to a place (the WordNet-derived list).
+        w if crate::ground::verbs::motion_verb(w).is_some() => (Move, None),
         _ => return None,
     })
 }

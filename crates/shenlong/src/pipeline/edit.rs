@@ -72,6 +72,10 @@ pub struct EditReport {
     pub overlaps_remaining: Vec<String>,
     /// Objects carried along with the ones they rest on.
     pub carried: Vec<String>,
+    /// Objects the instruction said must stay where they are ("… but leave the chair
+    /// where it is"), held in place.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub held: Vec<String>,
     /// Milliseconds per stage.
     pub timings_ms: Timings,
     /// Tokens sent and received, over all exchanges.
@@ -193,6 +197,8 @@ pub enum EditErrorKind {
     Model,
     /// No collision-free placement was found.
     Placement,
+    /// The edit cannot be done with what the instruction holds in place where it is.
+    Held,
 }
 
 impl std::fmt::Display for EditError {
@@ -268,7 +274,7 @@ pub fn edit_with(
         .iter()
         .map(|a| (a.object, a.transformation.versor))
         .collect();
-    let placed = place(scene, &moves, options)?;
+    let placed = place_holding(scene, &moves, options, &templated.held)?;
     timings.apply = placed.apply_ms;
     timings.collide = placed.collide_ms;
     timings.collide_setup = placed.collide_setup_ms;
@@ -355,6 +361,7 @@ pub fn edit_with(
         collisions_resolved,
         overlaps_remaining,
         carried,
+        held: templated.held.iter().map(|&o| name(o)).collect(),
         timings_ms: timings,
         tokens,
     };
@@ -401,13 +408,29 @@ pub fn place(
     moves: &[(usize, cga::Multivector)],
     options: &EditOptions,
 ) -> Result<Placed, EditError> {
+    place_holding(scene, moves, options, &[])
+}
+
+/// [`place`] with objects held where they are (what an instruction says must not move):
+/// they are not carried, collision resolution does not move them, and the edit is refused
+/// when it would move one or take its support from under it.
+///
+/// # Errors
+/// As [`place`], and a held object that would move or be left in the air.
+pub fn place_holding(
+    scene: &mut Scene,
+    moves: &[(usize, cga::Multivector)],
+    options: &EditOptions,
+    held: &[usize],
+) -> Result<Placed, EditError> {
     let supports: Vec<(Option<usize>, bool)> = scene
         .objects
         .iter()
         .map(|o| (o.support, o.support_from_file))
         .collect();
     let mut motions = Vec::new();
-    let result = place_into(scene, moves, options, &mut motions);
+    let result = place_into(scene, moves, options, held, &mut motions)
+        .and_then(|placed| check_held(scene, held, &supports, &motions).map(|()| placed));
     if result.is_err() {
         for m in motions.iter().rev() {
             scene.undo(m);
@@ -423,13 +446,59 @@ pub fn place(
     })
 }
 
+/// A placement refusal for a held object.
+fn held_error(message: String) -> EditError {
+    EditError {
+        message,
+        kind: EditErrorKind::Held,
+        replies: ReplyCounts::default(),
+    }
+}
+
+/// Refuses a placement that moved a held object or left one in the air (its support
+/// moved from under it).
+fn check_held(
+    scene: &Scene,
+    held: &[usize],
+    supports: &[(Option<usize>, bool)],
+    motions: &[AppliedMotion],
+) -> Result<(), EditError> {
+    for &h in held {
+        let name = &scene.objects[h].name;
+        if motions.iter().any(|m| m.objects().any(|o| o == h)) {
+            return Err(held_error(format!(
+                "'{name}' is to stay where it is, but the edit would move it"
+            )));
+        }
+        let Some(support) = supports[h].0 else {
+            continue;
+        };
+        let floating = scene.objects[h].support.is_none()
+            && scene.objects[h].world_aabb().min.y > scene.floor() + crate::scene::SUPPORT_GAP;
+        if floating {
+            return Err(held_error(format!(
+                "'{name}' is to stay where it is, but '{}' would move from under it",
+                scene.objects[support].name
+            )));
+        }
+    }
+    Ok(())
+}
+
 fn place_into(
     scene: &mut Scene,
     moves: &[(usize, cga::Multivector)],
     options: &EditOptions,
+    held: &[usize],
     motions: &mut Vec<AppliedMotion>,
 ) -> Result<Placed, EditError> {
     let t0 = Instant::now();
+    if let Some(&(object, _)) = moves.iter().find(|(o, _)| held.contains(o)) {
+        return Err(held_error(format!(
+            "'{}' is named both to move and to stay where it is",
+            scene.objects[object].name
+        )));
+    }
     let before = scene.world_aabbs();
     let mut boxes = before.clone();
     let mut grid = crate::geometry::FloorGrid::new(&boxes);
@@ -458,7 +527,7 @@ fn place_into(
             motions.push(back);
         }
         let motion = scene
-            .apply(object, versor, options.carry)
+            .apply_holding(object, versor, options.carry, held)
             .map_err(|e| EditError {
                 message: e.to_string(),
                 kind: EditErrorKind::NotUnderstood,

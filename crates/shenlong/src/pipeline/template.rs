@@ -48,11 +48,34 @@ pub fn template_selected(
 ) -> Result<Templated, GroundError> {
     let grounding = grounder.ground_with_selection(instruction, scene, selection)?;
     let text = grounding.instruction.as_str();
+    // What is held is cut from the query (a cut that would take a bound phrase with it is
+    // not made: the words stay, and the translator reads or refuses them).
+    let cuts: Vec<std::ops::Range<usize>> = grounding
+        .cuts
+        .iter()
+        .filter(|c| {
+            !grounding
+                .phrases
+                .iter()
+                .any(|p| p.span.start < c.end && c.start < p.span.end)
+        })
+        .cloned()
+        .collect();
     let mut objects: Vec<usize> = Vec::new();
     let mut query = String::with_capacity(text.len());
     let mut at = 0;
+    // Copies `text[at..to]` without the cuts in it.
+    let copy = |query: &mut String, from: usize, to: usize| {
+        let mut i = from;
+        for c in cuts.iter().filter(|c| c.start >= from && c.end <= to) {
+            query.push_str(&text[i..c.start]);
+            query.push(' ');
+            i = c.end;
+        }
+        query.push_str(&text[i..to]);
+    };
     for phrase in &grounding.phrases {
-        query.push_str(&text[at..phrase.span.start]);
+        copy(&mut query, at, phrase.span.start);
         let variables: Vec<String> = phrase
             .objects
             .iter()
@@ -67,12 +90,20 @@ pub fn template_selected(
         query.push_str(&list(&variables));
         at = phrase.span.end;
     }
-    query.push_str(&text[at..]);
+    copy(&mut query, at, text.len());
+    let mut held: Vec<usize> = grounding
+        .held
+        .iter()
+        .flat_map(|p| p.objects.iter().copied())
+        .collect();
+    held.sort_unstable();
+    held.dedup();
     Ok(Templated {
         instruction: grounding.instruction.clone(),
         query: query.split_whitespace().collect::<Vec<_>>().join(" "),
         objects,
         phrases: grounding.phrases,
+        held,
     })
 }
 

@@ -323,11 +323,22 @@ impl Scene {
     /// The objects resting on `index`, directly or through others (not `index` itself),
     /// in breadth-first order.
     pub fn carried_by(&self, index: usize) -> Vec<usize> {
+        self.carried_by_except(index, &[])
+    }
+
+    /// [`Scene::carried_by`] that stops at the `held` objects: they, and what rests only
+    /// on them, stay.
+    #[must_use]
+    pub fn carried_by_except(&self, index: usize, held: &[usize]) -> Vec<usize> {
         let mut out = Vec::new();
         let mut frontier = vec![index];
         while let Some(parent) = frontier.pop() {
             for (i, o) in self.objects.iter().enumerate() {
-                if o.support == Some(parent) && i != index && !out.contains(&i) {
+                if o.support == Some(parent)
+                    && i != index
+                    && !held.contains(&i)
+                    && !out.contains(&i)
+                {
                     out.push(i);
                     frontier.push(i);
                 }
@@ -369,10 +380,25 @@ impl Scene {
         m: &Multivector,
         carry: bool,
     ) -> Result<AppliedMotion, MotionError> {
+        self.apply_holding(index, m, carry, &[])
+    }
+
+    /// [`Scene::apply`] that carries none of `held` (objects that must stay where they
+    /// are) and nothing that rests on them.
+    ///
+    /// # Errors
+    /// As [`Scene::apply`].
+    pub fn apply_holding(
+        &mut self,
+        index: usize,
+        m: &Multivector,
+        carry: bool,
+        held: &[usize],
+    ) -> Result<AppliedMotion, MotionError> {
         let world = self.world_motion(index, m)?;
         let mut targets = vec![index];
         if carry {
-            targets.extend(self.carried_by(index));
+            targets.extend(self.carried_by_except(index, held));
         }
         for &i in &targets {
             let o = &self.objects[i];

@@ -1,0 +1,281 @@
+//! What must not move: the phrases an instruction names only to keep them where they are
+//! ("… but leave the chair where it is", "don't touch the rug, just …", "…, not the
+//! dresser itself", "move armchair 1 but not armchair 2", "keep the books where they
+//! are", "without moving the lamp").
+//!
+//! A held phrase is not bound to a variable: its words (the whole hold clause) are cut
+//! from the query the translator reads, and its objects are handed to placement, which
+//! neither carries them nor lets collision resolution move them, and refuses the edit if
+//! it cannot be done with them where they are.
+
+use super::words::{Kind, Token};
+use super::Phrase;
+use std::ops::Range;
+
+/// A phrase held in place, and the words of the instruction that say so.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Hold {
+    /// Which phrase (index into the grounded phrases).
+    pub phrase: usize,
+    /// The bytes of the instruction the hold clause spans, cut from the query.
+    pub cut: Range<usize>,
+}
+
+/// Words before a phrase that hold it (the last word stands right before the phrase), and
+/// what must follow the phrase: one of [`AFTER`] (`keep the books where they are`, not
+/// `keep the chair 1 m from the desk`), or for most also the end of its clause.
+const BEFORE: &[(&[&str], Need)] = &[
+    (&["don't", "touch"], Need::EndOrAfter),
+    (&["dont", "touch"], Need::EndOrAfter),
+    (&["do", "not", "touch"], Need::EndOrAfter),
+    (&["don't", "move"], Need::EndOrAfter),
+    (&["dont", "move"], Need::EndOrAfter),
+    (&["do", "not", "move"], Need::EndOrAfter),
+    (&["never", "move"], Need::EndOrAfter),
+    (&["don't", "disturb"], Need::EndOrAfter),
+    (&["don't", "shift"], Need::EndOrAfter),
+    (&["don't", "bump"], Need::EndOrAfter),
+    (&["without", "moving"], Need::EndOrAfter),
+    (&["without", "touching"], Need::EndOrAfter),
+    (&["without", "disturbing"], Need::EndOrAfter),
+    (&["leave"], Need::EndOrAfter),
+    (&["keep"], Need::After),
+    (&["not"], Need::EndOrAfter),
+];
+
+/// Whether a hold needs words after its phrase.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Need {
+    /// One of [`AFTER`], or the end of the clause.
+    EndOrAfter,
+    /// One of [`AFTER`].
+    After,
+}
+
+/// Words after a phrase that say it stays.
+const AFTER: &[&[&str]] = &[
+    &["where", "it", "is"],
+    &["where", "they", "are"],
+    &["where", "it's"],
+    &["where", "they're"],
+    &["where", "it", "was"],
+    &["where", "they", "were"],
+    &["in", "its", "place"],
+    &["in", "their", "place"],
+    &["in", "place"],
+    &["as", "it", "is"],
+    &["as", "they", "are"],
+    &["as", "is"],
+    &["alone"],
+    &["be"],
+    &["untouched"],
+    &["put"],
+    &["still"],
+    &["itself"],
+    &["themselves"],
+    &["either"],
+];
+
+/// Verbs after a phrase at the start of a clause that say it stays (`the rug stays`).
+const STAYS: &[&[&str]] = &[
+    &["stays"],
+    &["stay"],
+    &["remains"],
+    &["should", "stay"],
+    &["must", "stay"],
+    &["has", "to", "stay"],
+    &["needs", "to", "stay"],
+    &["can", "stay"],
+    &["should", "not", "move"],
+    &["shouldn't", "move"],
+    &["must", "not", "move"],
+    &["mustn't", "move"],
+];
+
+/// Words that join a hold clause to the instruction, cut with it.
+fn joins(w: &str) -> bool {
+    matches!(
+        w,
+        "but" | "and" | "yet" | "while" | "though" | "please" | "just" | "only"
+    )
+}
+
+/// Whether the tokens from `at` are `words`.
+fn words_at(tokens: &[Token], at: usize, words: &[&str]) -> bool {
+    words.len() <= tokens.len().saturating_sub(at)
+        && words
+            .iter()
+            .zip(&tokens[at..])
+            .all(|(w, t)| t.word() == Some(*w))
+}
+
+/// The longest of `options` at `at`, as its length.
+fn longest(tokens: &[Token], at: usize, options: &[&[&str]]) -> Option<usize> {
+    options
+        .iter()
+        .filter(|o| words_at(tokens, at, o))
+        .map(|o| o.len())
+        .max()
+}
+
+/// Whether the clause ends at token `at`: the end, punctuation, or a word that starts the
+/// next clause.
+fn clause_ends(tokens: &[Token], at: usize) -> bool {
+    match tokens.get(at) {
+        None => true,
+        Some(t) => match &t.kind {
+            Kind::Word(w) => matches!(
+                w.as_str(),
+                "and" | "but" | "then" | "just" | "only" | "so" | "please"
+            ),
+            Kind::Punct(_) => true,
+            Kind::Number(_) | Kind::Quoted(_) => false,
+        },
+    }
+}
+
+/// The token range a phrase spans.
+fn token_range(tokens: &[Token], span: &Range<usize>) -> Option<Range<usize>> {
+    let start = tokens.iter().position(|t| t.span.start == span.start)?;
+    let end = tokens.iter().rposition(|t| t.span.end == span.end)? + 1;
+    (start < end).then_some(start..end)
+}
+
+/// The phrases the instruction holds in place.
+pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
+    let mut out = Vec::new();
+    for (p, phrase) in phrases.iter().enumerate() {
+        let Some(range) = token_range(tokens, &phrase.span) else {
+            continue;
+        };
+        let after = longest(tokens, range.end, AFTER);
+        let end = range.end + after.unwrap_or(0);
+        let ends = clause_ends(tokens, end);
+        let before = BEFORE.iter().find(|(words, need)| {
+            range.start >= words.len()
+                && words_at(tokens, range.start - words.len(), words)
+                && match need {
+                    Need::After => after.is_some(),
+                    Need::EndOrAfter => after.is_some() || ends,
+                }
+        });
+        let start = if let Some((words, _)) = before {
+            range.start - words.len()
+        } else {
+            // `the rug stays where it is`: a phrase that opens its clause, then `stays`.
+            let opens = range.start == 0
+                || match &tokens[range.start - 1].kind {
+                    Kind::Word(w) => joins(w),
+                    Kind::Punct(_) => true,
+                    Kind::Number(_) | Kind::Quoted(_) => false,
+                };
+            let Some(n) = longest(tokens, range.end, STAYS).filter(|_| opens) else {
+                continue;
+            };
+            let after = longest(tokens, range.end + n, AFTER).unwrap_or(0);
+            let end = range.end + n + after;
+            if !clause_ends(tokens, end) {
+                continue;
+            }
+            out.push(Hold {
+                phrase: p,
+                cut: cut(tokens, range.start, end),
+            });
+            continue;
+        };
+        if !ends && !clause_ends(tokens, end) {
+            continue;
+        }
+        out.push(Hold {
+            phrase: p,
+            cut: cut(tokens, start, end),
+        });
+    }
+    out
+}
+
+/// The bytes from token `start` (with the joining words and the comma before it) to
+/// token `end` (exclusive).
+fn cut(tokens: &[Token], mut start: usize, end: usize) -> Range<usize> {
+    while start > 0 && tokens[start - 1].word().is_some_and(joins) {
+        start -= 1;
+    }
+    if start > 0 && matches!(tokens[start - 1].kind, Kind::Punct(',' | ';')) {
+        start -= 1;
+    }
+    tokens[start].span.start..tokens[end - 1].span.end
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::words::tokenize;
+    use super::*;
+
+    /// The holds of `text`, where each `[…]` marks a phrase (brackets removed).
+    fn holds(marked: &str) -> (String, Vec<(usize, String)>) {
+        let mut text = String::new();
+        let mut phrases = Vec::new();
+        let mut open = None;
+        for c in marked.chars() {
+            match c {
+                '[' => open = Some(text.len()),
+                ']' => {
+                    let s = open.take().unwrap();
+                    phrases.push(Phrase {
+                        span: s..text.len(),
+                        text: text[s..].to_string(),
+                        objects: vec![phrases.len()],
+                        reasons: Vec::new(),
+                    });
+                }
+                c => text.push(c),
+            }
+        }
+        let tokens = tokenize(&text);
+        let found = find(&tokens, &phrases)
+            .into_iter()
+            .map(|h| (h.phrase, text[h.cut].to_string()))
+            .collect();
+        (text, found)
+    }
+
+    #[test]
+    fn hold_clauses_are_found_with_their_words() {
+        assert_eq!(
+            holds("move [the desk] 15 cm right but leave [the chair] where it is").1,
+            vec![(1, "but leave the chair where it is".to_string())]
+        );
+        assert_eq!(
+            holds("don't touch [the rug], just move [the coffee table]").1,
+            vec![(0, "don't touch the rug".to_string())]
+        );
+        assert_eq!(
+            holds("move [the lamp] on the dresser, not [the dresser] itself").1,
+            vec![(1, ", not the dresser itself".to_string())]
+        );
+        assert_eq!(
+            holds("move [armchair 1] but not [armchair 2]").1,
+            vec![(1, "but not armchair 2".to_string())]
+        );
+        assert_eq!(
+            holds("keep [the books] where they are and move [the shelf] left").1,
+            vec![(0, "keep the books where they are".to_string())]
+        );
+        assert_eq!(
+            holds("move [the table] left without moving [the lamp]").1,
+            vec![(1, "without moving the lamp".to_string())]
+        );
+        assert_eq!(
+            holds("move [the desk] left, [the chair] stays where it is").1,
+            vec![(1, ", the chair stays where it is".to_string())]
+        );
+    }
+
+    #[test]
+    fn words_that_do_not_hold_are_not_holds() {
+        // `keep` with a distance is no hold; `not` inside an amount neither.
+        assert!(holds("keep [the chair] 1 m from [the desk]").1.is_empty());
+        assert!(holds("move [the chair] not too far left").1.is_empty());
+        assert!(holds("leave [the mug] next to [the sink]").1.is_empty());
+    }
+}

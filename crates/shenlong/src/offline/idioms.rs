@@ -1,0 +1,123 @@
+//! Idioms: phrases people use that say what another construct of the reader says, read
+//! as that construct before the clause is read (the words are kept, so what the reader
+//! could not read is still quoted as typed).
+//!
+//! | written | read as |
+//! |---|---|
+//! | `30 cm towards the back wall`, `half a metre toward the front of the room` | `30 cm back`, `half a metre forward` (an amount along the direction of that wall) |
+//! | `all the way to X2`, `all the way up to X2`, `right up to X2` | `against X2` |
+//! | `flush against the left wall`, `flush with X2` | `against …` |
+//! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
+
+use super::amounts;
+use super::clause::Clause;
+
+/// The side of a room a word names, as the direction word the reader knows.
+fn side_direction(w: &str) -> Option<&'static str> {
+    Some(match w {
+        "left" => "left",
+        "right" => "right",
+        "back" | "rear" | "far" => "back",
+        "front" | "near" => "forward",
+        _ => return None,
+    })
+}
+
+fn is_room_word(w: &str) -> bool {
+    matches!(
+        w,
+        "room" | "bedroom" | "kitchen" | "bathroom" | "office" | "space" | "area"
+    )
+}
+
+/// Reads the clause's idioms as the constructs they stand for.
+pub(crate) fn rewrite(c: &mut Clause) {
+    towards_a_wall_by_an_amount(c);
+    all_the_way_to(c);
+    flush(c);
+    out_from(c);
+}
+
+/// `AMOUNT towards the SIDE wall` / `… of the room` → `AMOUNT SIDE`.
+fn towards_a_wall_by_an_amount(c: &mut Clause) {
+    let has_amount = {
+        let mut probe = c.clone();
+        matches!(
+            amounts::length(&mut probe, false),
+            Some(amounts::Length::Metres(_))
+        )
+    };
+    if !has_amount {
+        return;
+    }
+    for i in 0..c.len() {
+        if !(c.words_at(i, &["towards"]) || c.words_at(i, &["toward"])) {
+            continue;
+        }
+        let mut k = i + 1;
+        if c.words_at(k, &["the"]) {
+            k += 1;
+        }
+        let Some(direction) = c.word(k).and_then(side_direction) else {
+            continue;
+        };
+        let rest = if c.words_at(k + 1, &["wall"]) {
+            1
+        } else if c.words_at(k + 1, &["of", "the"]) && c.word(k + 3).is_some_and(is_room_word) {
+            3
+        } else if c.words_at(k + 1, &["side", "of", "the"])
+            && c.word(k + 4).is_some_and(is_room_word)
+        {
+            4
+        } else {
+            continue;
+        };
+        c.mark(i..k);
+        c.replace(k, direction);
+        c.mark(k + 1..k + 1 + rest);
+        return;
+    }
+}
+
+/// `all the way (up) to X2`, `right up to X2` → `against X2`.
+fn all_the_way_to(c: &mut Clause) {
+    for (words, to) in [
+        (&["all", "the", "way", "up", "to"][..], 4),
+        (&["all", "the", "way", "over", "to"], 4),
+        (&["all", "the", "way", "to"], 3),
+        (&["right", "up", "to"], 2),
+        (&["up", "against"], 1),
+    ] {
+        if let Some(i) = c.find(words) {
+            let target = i + words.len();
+            if matches!(c.token(target), Some(super::words::Token::Variable(_))) {
+                c.mark(i..i + to);
+                c.replace(i + to, "against");
+                return;
+            }
+        }
+    }
+}
+
+/// `flush against …`, `flush with …`, `flush to …` → `against …`.
+fn flush(c: &mut Clause) {
+    if let Some(i) = c.find(&["flush"]) {
+        if c.words_at(i + 1, &["against"]) {
+            c.mark(i..i + 1);
+        } else if c.words_at(i + 1, &["with"]) || c.words_at(i + 1, &["to"]) {
+            c.mark(i..i + 1);
+            c.replace(i + 1, "against");
+        }
+    }
+}
+
+/// `out from X2`, `out from under X2` → `away from X2`.
+fn out_from(c: &mut Clause) {
+    for words in [&["out", "from", "under"][..], &["out", "from"]] {
+        if let Some(i) = c.find(words) {
+            c.replace(i, "away");
+            c.mark(i + 2..i + words.len());
+            return;
+        }
+    }
+}
