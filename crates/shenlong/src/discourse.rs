@@ -23,7 +23,8 @@ pub fn canonical(word: &str) -> &str {
         "wanna" => "want",
         "gonna" => "going",
         "ok" | "k" | "kk" | "okey" | "okie" => "okay",
-        "mornin" => "morning",
+        "mornin" | "gm" => "morning",
+        "sec" | "second" | "moment" | "min" | "minute" | "mo" => "sec",
         "hii" | "hiya" | "heya" => "hi",
         "heyy" | "heyyy" => "hey",
         other => other,
@@ -90,6 +91,8 @@ pub fn filler(word: &str) -> bool {
             | "buddy"
             | "pal"
             | "friend"
+            | "instead"
+            | "asap"
     )
 }
 
@@ -107,6 +110,16 @@ const OPENERS: &[&[&str]] = &[
     &["morning"],
     &["afternoon"],
     &["evening"],
+    &["sorry", "to", "bother", "you"],
+    &["sorry", "to", "bug", "you"],
+    &["quick", "one"],
+    &["quick", "question"],
+    &["quick", "request"],
+    &["when", "you", "get", "a", "sec"],
+    &["when", "you", "have", "a", "sec"],
+    &["if", "you", "have", "a", "sec"],
+    &["thanks", "in", "advance"],
+    &["need"],
     // Request frames: the verb that follows is the action.
     &["would", "you", "be", "so", "kind", "as", "to"],
     &["would", "you", "be", "kind", "enough", "to"],
@@ -170,6 +183,13 @@ const CLOSERS: &[&[&str]] = &[
     &["thanks", "a", "bunch"],
     &["thanks", "in", "advance"],
     &["many", "thanks"],
+    &["if", "that's", "ok"],
+    &["if", "that's", "okay"],
+    &["if", "that's", "alright"],
+    &["if", "that", "is", "okay"],
+    &["if", "that's", "possible"],
+    &["when", "you", "get", "a", "sec"],
+    &["asap"],
     &["much", "appreciated"],
     &["thank", "you"],
     &["if", "you", "don't", "mind"],
@@ -230,25 +250,22 @@ pub fn is_discourse_word(word: &str) -> bool {
 /// range of the words that carry the instruction.
 #[must_use]
 pub fn core(words: &[&str]) -> std::ops::Range<usize> {
+    // Sign-offs first, so a clause that is all thanks ("ty in advance!") is all set aside.
+    let mut end = words.len();
+    while let Some(n) = closer_before(words, end) {
+        end -= n;
+    }
     let mut start = 0;
     loop {
-        if let Some(n) = opener_at(words, start) {
+        if let Some(n) = opener_at(&words[..end], start) {
             start += n;
-        } else if start < words.len() && filler(words[start]) && !is_article(words[start]) {
+        } else if start < end && filler(words[start]) && !is_article(words[start]) {
             start += 1;
         } else {
             break;
         }
     }
-    let mut end = words.len();
-    while end > start {
-        if let Some(n) = closer_before(words, end).filter(|&n| end - n >= start) {
-            end -= n;
-        } else {
-            break;
-        }
-    }
-    start..end
+    start..end.max(start)
 }
 
 fn is_article(w: &str) -> bool {
@@ -280,6 +297,11 @@ mod tests {
         );
         assert_eq!(core_of("pls move the bin if you can"), "move the bin");
         assert_eq!(core_of("i'd like the lamp moved"), "the lamp moved");
+        assert_eq!(core_of("ty in advance"), "");
+        assert_eq!(
+            core_of("sorry to bother you could the lamp go left"),
+            "could the lamp go left"
+        );
     }
 
     #[test]

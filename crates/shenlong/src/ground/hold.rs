@@ -41,6 +41,11 @@ const BEFORE: &[(&[&str], Need)] = &[
     (&["leave"], Need::EndOrAfter),
     (&["keep"], Need::After),
     (&["not"], Need::EndOrAfter),
+    (&["except", "for"], Need::EndOrAfter),
+    (&["except"], Need::EndOrAfter),
+    (&["apart", "from"], Need::EndOrAfter),
+    (&["other", "than"], Need::EndOrAfter),
+    (&["excluding"], Need::EndOrAfter),
 ];
 
 /// Whether a hold needs words after its phrase.
@@ -125,8 +130,8 @@ fn clause_ends(tokens: &[Token], at: usize) -> bool {
         None => true,
         Some(t) => match &t.kind {
             Kind::Word(w) => matches!(
-                w.as_str(),
-                "and" | "but" | "then" | "just" | "only" | "so" | "please"
+                crate::discourse::canonical(w),
+                "and" | "but" | "then" | "just" | "only" | "so" | "please" | "thanks" | "cheers"
             ),
             Kind::Punct(_) => true,
             Kind::Number(_) | Kind::Quoted(_) => false,
@@ -141,8 +146,57 @@ fn token_range(tokens: &[Token], span: &Range<usize>) -> Option<Range<usize>> {
     (start < end).then_some(start..end)
 }
 
-/// The phrases the instruction holds in place.
+/// The phrases the instruction holds in place, a list held by one cue included ("leave
+/// the bin and the left side table where they are").
 pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
+    let mut out = single(tokens, phrases);
+    let mut p = 1;
+    while p < phrases.len() {
+        let Some(h) = out.iter().position(|h| h.phrase == p - 1) else {
+            p += 1;
+            continue;
+        };
+        if out.iter().any(|h| h.phrase == p) {
+            p += 1;
+            continue;
+        }
+        let (Some(prev), Some(this)) = (
+            token_range(tokens, &phrases[p - 1].span),
+            token_range(tokens, &phrases[p].span),
+        ) else {
+            p += 1;
+            continue;
+        };
+        // Only `and`, `or` and commas between the two phrases.
+        let joined = prev.end < this.start
+            && (prev.end..this.start).all(|k| match &tokens[k].kind {
+                Kind::Word(w) => matches!(w.as_str(), "and" | "or" | "nor"),
+                Kind::Punct(',') => true,
+                _ => false,
+            });
+        if !joined {
+            p += 1;
+            continue;
+        }
+        let after = longest(tokens, this.end, AFTER).unwrap_or(0);
+        let end = this.end + after;
+        if !clause_ends(tokens, end) {
+            p += 1;
+            continue;
+        }
+        let start = out[h].cut.start;
+        out[h].cut = start..tokens[end - 1].span.end;
+        out.push(Hold {
+            phrase: p,
+            cut: out[h].cut.clone(),
+        });
+        p += 1;
+    }
+    out
+}
+
+/// Each phrase held by a cue of its own.
+fn single(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
     let mut out = Vec::new();
     for (p, phrase) in phrases.iter().enumerate() {
         let Some(range) = token_range(tokens, &phrase.span) else {
@@ -269,6 +323,27 @@ mod tests {
             holds("move [the desk] left, [the chair] stays where it is").1,
             vec![(1, ", the chair stays where it is".to_string())]
         );
+    }
+
+    #[test]
+    fn a_list_is_held_by_one_cue() {
+        let (_, found) =
+            holds("turn [the armchair], leave [the bin] and [the left side table] where they are");
+        assert_eq!(
+            found,
+            vec![
+                (
+                    1,
+                    ", leave the bin and the left side table where they are".to_string()
+                ),
+                (
+                    2,
+                    ", leave the bin and the left side table where they are".to_string()
+                )
+            ]
+        );
+        let (_, found) = holds("move [everything on the desk] left except [the laptop]");
+        assert_eq!(found, vec![(1, "except the laptop".to_string())]);
     }
 
     #[test]

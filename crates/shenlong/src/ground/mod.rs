@@ -1163,9 +1163,31 @@ impl<'a> Reader<'a> {
             && self.word(start - 1).is_some_and(|w| {
                 words::is_preposition(w) && !matches!(w, "up" | "than" | "as" | "like" | "for")
             });
-        let describes = post.as_ref().is_some_and(|(_, p_end)| {
-            self.clause_goes_on(*p_end) || self.verb_takes_no_place(start) || destination
-        });
+        // "put the phone on the desk next to the mug": a relation to something that rests
+        // on the destination is the rest of the destination, not a description of it.
+        let rest_of_destination = destination
+            && post.as_ref().is_some_and(|(p, _)| match p {
+                Post::Relation(
+                    Relation::Near
+                    | Relation::InFront
+                    | Relation::Behind
+                    | Relation::LeftOf
+                    | Relation::RightOf,
+                    targets,
+                ) => {
+                    !targets.is_empty()
+                        && targets.iter().all(|&t| {
+                            objects
+                                .iter()
+                                .any(|&o| self.scene.objects[t].support == Some(o))
+                        })
+                }
+                _ => false,
+            });
+        let describes = !rest_of_destination
+            && post.as_ref().is_some_and(|(_, p_end)| {
+                self.clause_goes_on(*p_end) || self.verb_takes_no_place(start) || destination
+            });
         let picks = (objects.len() != wanted && !group) || ordinal.is_some() || head.generic;
         // A relation after a noun the modifiers before it already pick among ("the left
         // stool next to the chair") is where it goes, unless it clearly describes.

@@ -406,6 +406,8 @@ pub(crate) fn opens_phrase(w: &str) -> bool {
                 | "plus"
                 | "with"
                 | "not"
+                | "but"
+                | "except"
                 | "leave"
                 | "keep"
                 | "touch"

@@ -352,9 +352,35 @@ pub(crate) fn split(tokens: &[Token]) -> Vec<Clause> {
                 )
             )
             && !matches!(word(i + 2), Some(w) if words::verb(w).is_some())
+            || matches!(t, Token::Separator) && {
+                let rest: Vec<&str> = (i + 1..tokens.len())
+                    .map(|k| word(k).unwrap_or(""))
+                    .collect();
+                super::view::view_at(&rest, 0).is_some()
+            }
         {
             i += 1;
             continue;
+        }
+        // "from a bird's eye view, turn …": a view before the comma belongs to the turn.
+        if matches!(t, Token::Separator) {
+            let so_far: Vec<&str> = out
+                .last()
+                .map(|c| {
+                    c.iter()
+                        .map(|t| match t {
+                            Token::Word(w) => w.as_str(),
+                            _ => "",
+                        })
+                        .collect()
+                })
+                .unwrap_or_default();
+            if !so_far.is_empty()
+                && super::view::view_at(&so_far, 0).is_some_and(|(n, _)| n == so_far.len())
+            {
+                i += 1;
+                continue;
+            }
         }
         let after_that = word(i) == Some("after") && word(i + 1) == Some("that");
         let is_break = matches!(t, Token::Separator) || word(i).is_some_and(breaks) || after_that;

@@ -5,7 +5,7 @@
 //! | written | read as |
 //! |---|---|
 //! | `30 cm towards the back wall`, `half a metre toward the front of the room` | `30 cm back`, `half a metre forward` (an amount along the direction of that wall) |
-//! | `all the way to X2`, `all the way up to X2`, `right up to X2` | `against X2` |
+//! | `all the way to X2`, `all the way up to X2`, `right up to X2`, `up to X2` | straight toward X2 until 5 cm from it (`upto X2`) |
 //! | `flush against the left wall`, `flush with X2` | `against …` |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
 
@@ -79,20 +79,25 @@ fn towards_a_wall_by_an_amount(c: &mut Clause) {
     }
 }
 
-/// `all the way (up) to X2`, `right up to X2` → `against X2`.
+/// `all the way (up) to X2`, `right up to X2`, `up to X2` → `upto X2`: straight toward
+/// it until 5 cm from it.
 fn all_the_way_to(c: &mut Clause) {
     for (words, to) in [
         (&["all", "the", "way", "up", "to"][..], 4),
         (&["all", "the", "way", "over", "to"], 4),
         (&["all", "the", "way", "to"], 3),
         (&["right", "up", "to"], 2),
-        (&["up", "against"], 1),
+        (&["up", "to"], 1),
     ] {
         if let Some(i) = c.find(words) {
             let target = i + words.len();
-            if matches!(c.token(target), Some(super::words::Token::Variable(_))) {
+            let article = usize::from(c.words_at(target, &["the"]));
+            if matches!(
+                c.token(target + article),
+                Some(super::words::Token::Variable(_))
+            ) {
                 c.mark(i..i + to);
-                c.replace(i + to, "against");
+                c.replace(i + to, "upto");
                 return;
             }
         }

@@ -23,6 +23,7 @@ mod idioms;
 mod read;
 mod relations;
 mod room;
+mod view;
 mod words;
 
 pub use relations::GAP;

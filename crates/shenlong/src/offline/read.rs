@@ -7,6 +7,7 @@ use super::build::*;
 use super::clause::Clause;
 use super::relations::{self, boxed, Relation, Step, Steps, GAP};
 use super::room::{self, Place};
+use super::view::{view_at, View};
 use super::words::{self, Action, Token};
 use crate::expr::Expr;
 
@@ -619,13 +620,12 @@ impl<'a> Reader<'a> {
             .iter()
             .find_map(|w| has(c, w));
         let clockwise = ["clockwise", "cw"].iter().find_map(|w| has(c, w));
+        let view = mark_view(c);
         if let Some(i) = counter {
             c.mark(i..i + 1);
-            mark_seen_from_above(c);
             degrees = degrees.abs();
         } else if let Some(i) = clockwise {
             c.mark(i..i + 1);
-            mark_seen_from_above(c);
             degrees = -degrees.abs();
         } else if let Some(i) = has(c, "left") {
             c.mark(i..i + 1);
@@ -635,6 +635,10 @@ impl<'a> Reader<'a> {
             c.mark(i..i + 1);
             mark_to_the(c, i);
             degrees = -degrees.abs();
+        }
+        if view == Some(View::Below) && (counter.is_some() || clockwise.is_some()) {
+            // Seen from below, clockwise is counter-clockwise from above.
+            degrees = -degrees;
         }
         Ok(subjects
             .iter()
@@ -783,6 +787,29 @@ impl<'a> Reader<'a> {
             } else {
                 relation
             };
+            // "on X2 next to X3", "on X2 to the left of X3": one destination, beside X3 on
+            // the surface X2.
+            let relation = match (relation, find_relation(c)) {
+                (Relation::On, Some(second)) if targets.len() == 1 && second.targets.len() == 1 => {
+                    let surface = targets[0];
+                    let combined = match second.kind {
+                        RelKind::Fixed(Relation::NextTo) => Some(Relation::NextToOn(surface)),
+                        RelKind::Fixed(side @ Relation::Side(..)) => Some(side),
+                        _ => None,
+                    };
+                    match combined {
+                        Some(rel) => {
+                            c.mark(second.range.clone());
+                            for &(i, _) in &second.targets {
+                                c.mark(i..i + 1);
+                            }
+                            return self.each(&subjects, rel, &[second.targets[0].1], text);
+                        }
+                        None => relation,
+                    }
+                }
+                (relation, _) => relation,
+            };
             self.last_subjects = subjects.clone();
             let mut out = Vec::new();
             if relation == Relation::On && subjects.len() > 1 {
@@ -891,6 +918,26 @@ impl<'a> Reader<'a> {
             }
         }
         None
+    }
+
+    /// Each subject moved into `relation` with `targets`.
+    fn each(
+        &mut self,
+        subjects: &[usize],
+        relation: Relation,
+        targets: &[usize],
+        text: &str,
+    ) -> Result<Vec<(usize, Step)>, String> {
+        let floor = room::floor(self.facts.room);
+        self.last_subjects = subjects.to_vec();
+        subjects
+            .iter()
+            .map(|&s| {
+                relations::vector(relation, s, targets, &self.steps, &floor)
+                    .map(|v| (s, Step::Translate(v)))
+                    .ok_or_else(|| not_read(text, text))
+            })
+            .collect()
     }
 
     /// The room's centre, corners, walls, the floor, or its front/back ("towards the back of
@@ -1210,6 +1257,7 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     (&["inside"], RelKind::Fixed(Relation::To)),
     (&["in"], RelKind::Fixed(Relation::To)),
     (&["to"], RelKind::Fixed(Relation::To)),
+    (&["upto"], RelKind::Fixed(Relation::UpTo)),
     (&["at"], RelKind::Fixed(Relation::To)),
 ];
 
@@ -1345,44 +1393,20 @@ fn named_axis(c: &mut Clause) -> Option<usize> {
     Some(a)
 }
 
-/// Ways to say "seen from above" after clockwise / counter-clockwise: the default view
-/// (SPEC §1), so they are read and change nothing. Any other view ("from below") is left
-/// unread, and the instruction is refused rather than turned the wrong way.
-const SEEN_FROM_ABOVE: &[&[&str]] = &[
-    &["as", "seen", "from", "above"],
-    &["as", "seen", "from", "the", "top"],
-    &["as", "viewed", "from", "above"],
-    &["as", "viewed", "from", "the", "top"],
-    &["seen", "from", "above"],
-    &["seen", "from", "the", "top"],
-    &["viewed", "from", "above"],
-    &["viewed", "from", "the", "top"],
-    &["looking", "from", "above"],
-    &["looking", "down", "from", "above"],
-    &["looking", "down"],
-    &["when", "looking", "down"],
-    &["from", "above"],
-    &["from", "the", "top"],
-    &["from", "overhead"],
-    &["in", "top", "view"],
-    &["in", "plan", "view"],
-    &["in", "plan"],
-    &["seen", "from", "overhead"],
-    &["if", "you", "look", "from", "above"],
-    &["as", "you", "look", "down", "on", "it"],
-];
-
-/// Marks a "seen from above" qualifier read, wherever it stands in the clause.
-fn mark_seen_from_above(c: &mut Clause) {
+/// Marks the view a turn is given in read ([`super::view`]), wherever it stands in the
+/// clause, and returns it.
+fn mark_view(c: &mut Clause) -> Option<View> {
+    let owned: Vec<String> = (0..c.len())
+        .map(|i| c.word(i).unwrap_or("").to_string())
+        .collect();
+    let words: Vec<&str> = owned.iter().map(String::as_str).collect();
     for i in 0..c.len() {
-        if let Some(n) = SEEN_FROM_ABOVE
-            .iter()
-            .filter(|p| c.words_at(i, p))
-            .map(|p| p.len())
-            .max()
-        {
-            c.mark(i..i + n);
-            return;
+        if let Some((n, view)) = view_at(&words, i) {
+            if (i..i + n).all(|k| c.free(k)) {
+                c.mark(i..i + n);
+                return Some(view);
+            }
         }
     }
+    None
 }

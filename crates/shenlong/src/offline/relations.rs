@@ -50,8 +50,16 @@ pub(crate) enum Relation {
     Side(usize, f64),
     /// Next to, beside, by, near: the side of the target nearest the object.
     NextTo,
+    /// Next to the target on the surface it rests on (`on X2 next to X3`, the variable of
+    /// the surface given): the side of the target toward the surface's centre, so the
+    /// object stays on the surface.
+    NextToOn(usize),
     /// To its place, standing on the same level (`to X2`, `at X2`).
     To,
+    /// Straight toward it until 5 cm from it, along the axis they are apart on, nothing
+    /// else changed, when they overlap across that axis; else against its nearest face
+    /// (`all the way to X2`, `right up to X2`).
+    UpTo,
     /// Between two targets.
     Between,
     /// Away from by an amount.
@@ -105,8 +113,10 @@ pub(crate) fn vector(
             };
             sum([along_axis, centre(other), level])
         }
-        Relation::NextTo => next_to(s, t, steps, level),
+        Relation::NextTo => next_to(s, t, steps, level, var(s, "center")),
+        Relation::NextToOn(surface) => next_to(s, t, steps, level, boxed(surface, "center", steps)),
         Relation::To => sum([centre(0), centre(2), level]),
+        Relation::UpTo => up_to(s, t, steps),
         Relation::Between => {
             let c = boxed(*targets.get(1)?, "center", steps);
             let mid = sub(div(add(b("center"), c), num(2.0)), a("center"));
@@ -126,7 +136,7 @@ pub(crate) fn vector(
         Relation::Off => {
             // Beside the target, on the floor.
             let down = scaled_axis(sub(floor.clone(), dot(a("min"), axis(1))), 1);
-            let beside = next_to(s, t, steps, num(0.0));
+            let beside = next_to(s, t, steps, num(0.0), var(s, "center"));
             add(beside, down)
         }
         Relation::OtherSide => {
@@ -173,14 +183,11 @@ pub(crate) fn side_by_side(subjects: &[usize], k: usize, t: usize, steps: &Steps
     ])
 }
 
-/// Against the face of the target nearest the object: its x faces when the object lies
-/// more to the side than in front or behind (in the target's own proportions), else its z
-/// faces; on each axis the face on the object's side (ties go to +); 5 cm gap; centred
-/// along that face; `level` added.
-fn next_to(s: usize, t: usize, steps: &Steps, level: Expr) -> Expr {
+/// Straight toward the target, along the horizontal axis they are apart on (in the
+/// target's proportions, as [`next_to`] chooses), until [`GAP`] from its face.
+fn up_to(s: usize, t: usize, steps: &Steps) -> Expr {
     let b = |attribute: &str| boxed(t, attribute, steps);
     let a = |attribute: &str| var(s, attribute);
-    let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
     let side = |e: usize| {
         let p = step(dot(sub(a("center"), b("center")), axis(e)));
         let plus = sub(
@@ -198,6 +205,68 @@ fn next_to(s: usize, t: usize, steps: &Steps, level: Expr) -> Expr {
     };
     let dx = call("abs", vec![dot(sub(a("center"), b("center")), axis(0))]);
     let dz = call("abs", vec![dot(sub(a("center"), b("center")), axis(2))]);
+    let q = step(sub(
+        mul(dx, dot(b("size"), axis(2))),
+        mul(dz, dot(b("size"), axis(0))),
+    ));
+    let straight = add(
+        mul(q.clone(), side(0)),
+        mul(sub(num(1.0), q.clone()), side(2)),
+    );
+    // Straight only when the two overlap across that axis (the coffee table in front of
+    // the sofa); otherwise a straight move would stop beside nothing, so it goes against
+    // the target's nearest face as `next to` does.
+    let overlap = |e: usize| {
+        step(sub(
+            call("min", vec![dot(a("max"), axis(e)), dot(b("max"), axis(e))]),
+            call("max", vec![dot(a("min"), axis(e)), dot(b("min"), axis(e))]),
+        ))
+    };
+    let across = add(
+        mul(q.clone(), overlap(2)),
+        mul(sub(num(1.0), q), overlap(0)),
+    );
+    add(
+        mul(across.clone(), straight),
+        mul(
+            sub(num(1.0), across),
+            next_to(s, t, steps, num(0.0), a("center")),
+        ),
+    )
+}
+
+/// Against the face of the target nearest the object: its x faces when the object lies
+/// more to the side than in front or behind (in the target's own proportions), else its z
+/// faces; on each axis the face on the object's side (ties go to +); 5 cm gap; centred
+/// along that face; `level` added. Which face is chosen from where `reference` lies (the
+/// object's centre, or the centre of the surface both stand on).
+fn next_to(s: usize, t: usize, steps: &Steps, level: Expr, reference: Expr) -> Expr {
+    let b = |attribute: &str| boxed(t, attribute, steps);
+    let a = |attribute: &str| var(s, attribute);
+    let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
+    let side = |e: usize| {
+        let p = step(dot(sub(reference.clone(), b("center")), axis(e)));
+        let plus = sub(
+            add(dot(b("max"), axis(e)), num(GAP)),
+            dot(a("min"), axis(e)),
+        );
+        let minus = sub(
+            sub(dot(b("min"), axis(e)), num(GAP)),
+            dot(a("max"), axis(e)),
+        );
+        mul(
+            add(mul(p.clone(), plus), mul(sub(num(1.0), p), minus)),
+            axis(e),
+        )
+    };
+    let dx = call(
+        "abs",
+        vec![dot(sub(reference.clone(), b("center")), axis(0))],
+    );
+    let dz = call(
+        "abs",
+        vec![dot(sub(reference.clone(), b("center")), axis(2))],
+    );
     let q = step(sub(
         mul(dx, dot(b("size"), axis(2))),
         mul(dz, dot(b("size"), axis(0))),

@@ -50,7 +50,7 @@ pub fn template_selected(
     let text = grounding.instruction.as_str();
     // What is held is cut from the query (a cut that would take a bound phrase with it is
     // not made: the words stay, and the translator reads or refuses them).
-    let cuts: Vec<std::ops::Range<usize>> = grounding
+    let mut cuts: Vec<std::ops::Range<usize>> = grounding
         .cuts
         .iter()
         .filter(|c| {
@@ -61,6 +61,16 @@ pub fn template_selected(
         })
         .cloned()
         .collect();
+    // In order, and none inside another (a list held by one cue shares its cut).
+    cuts.sort_by_key(|c| (c.start, std::cmp::Reverse(c.end)));
+    let mut last_end = 0;
+    cuts.retain(|c| {
+        let keep = c.start >= last_end;
+        if keep {
+            last_end = c.end;
+        }
+        keep
+    });
     let mut objects: Vec<usize> = Vec::new();
     let mut query = String::with_capacity(text.len());
     let mut at = 0;
