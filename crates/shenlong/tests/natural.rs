@@ -102,6 +102,18 @@ fn check(name: &str, outcomes: &[Outcome], floor: f64) {
     );
 }
 
+/// The third round's suite, written by a helper who had not read the reader's code, on
+/// three scenes of its own: names as 3D tools export them, chat around the instruction,
+/// amounts towards a place, what must not move, vague amounts, verbs, picks by where
+/// things are, views of a turn, spellings and placements (`bench/natural-v3.suite.json`).
+#[test]
+fn the_natural_v3_suite_on_exported_names_and_chat() {
+    let suite = load("natural-v3.suite.json").unwrap();
+    let outcomes = run_offline(&suite);
+    assert_eq!(outcomes.len(), 417);
+    check("natural-v3", &outcomes, 0.95);
+}
+
 #[test]
 fn the_natural_suite_on_the_built_in_scenes() {
     let suite = load("natural.suite.json").unwrap();

@@ -86,7 +86,7 @@ fn side_of(word: &str) -> Option<NameSide> {
 
 /// The parts of a name, each as its normalised words.
 fn parts(name: &str) -> Vec<Vec<String>> {
-    name.split(|c: char| matches!(c, '_' | '-' | '.' | '#' | '(' | ')' | ',' | '/' | ':' | '|'))
+    name.split(['_', '-', '.', '#', '(', ')', ',', '/', ':', '|'])
         .filter(|p| !p.is_empty())
         .map(|p| {
             normalize(p)

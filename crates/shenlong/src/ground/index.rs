@@ -180,6 +180,8 @@ pub(crate) struct NameIndex {
     names: Names,
     /// Per object: its group.
     group_of: Vec<u32>,
+    /// Per object: the instance number its name ends in (`3` for `Lamp_Table.003`).
+    numbers: Vec<Option<u32>>,
     groups: Vec<Group>,
     /// The words postings came through.
     vias: Vec<Box<str>>,
@@ -394,6 +396,7 @@ impl NameIndex {
             let g = b.group(object, written, &id, lexicon);
             b.index.groups[g as usize].objects.push(i);
             b.index.group_of.push(g);
+            b.index.numbers.push(id.number);
             b.index.names.push(&name);
         }
         let mut index = b.index;
@@ -479,6 +482,18 @@ impl NameIndex {
         out.sort_unstable();
         out.dedup();
         out
+    }
+
+    /// The objects a name and an instance number name (`wood chair 1` for
+    /// `Chair_Wood.001`, whose name reads as "wood chair"), when that is not a name itself.
+    pub fn numbered(&self, base: &str, number: u32) -> Option<Vec<usize>> {
+        let hit = self.lookup(base).filter(|h| h.tier == Tier::Name)?;
+        let out: Vec<usize> = hit
+            .objects
+            .into_iter()
+            .filter(|&o| self.numbers[o] == Some(number))
+            .collect();
+        (!out.is_empty()).then_some(out)
     }
 
     /// The objects whose name or base name is this phrase without spaces (`dogbed`).

@@ -601,8 +601,33 @@ impl<'a> Reader<'a> {
         nps.push(np);
     }
 
+    /// An object's name typed as the tool exported it (`Chair_Wood`, `Lamp_Table.003`):
+    /// that object only, not its family.
+    fn identifier_at(&self, k: usize) -> Option<Head> {
+        let w = self.word(k)?;
+        if !w.contains(['_', '.']) {
+            return None;
+        }
+        let raw = &self.text[self.tokens[k].span.clone()];
+        let object = self.scene.find(raw)?;
+        let mut head = self.make_head(
+            k..k + 1,
+            vec![object],
+            Tier::Name,
+            false,
+            words::normalize(raw),
+            raw,
+            None,
+        );
+        head.literal = vec![object];
+        Some(head)
+    }
+
     /// The longest name, category or synonym starting at token `k`.
     fn head_at(&self, k: usize) -> Option<Head> {
+        if let Some(head) = self.identifier_at(k) {
+            return Some(head);
+        }
         let index = &self.g.index;
         let max = index.max_words + 1;
         let mut pieces: Vec<&str> = Vec::new();
@@ -665,6 +690,21 @@ impl<'a> Reader<'a> {
                     plural,
                     text,
                     &via,
+                    typo,
+                ));
+            }
+            // "wood chair 001": a name as it reads and an instance number.
+            if let Some(objects) = words::split_number(&phrase)
+                .1
+                .and_then(|n| index.numbered(words::split_number(&phrase).0, n))
+            {
+                return Some(self.make_head(
+                    range,
+                    objects,
+                    Tier::Name,
+                    false,
+                    phrase.clone(),
+                    &phrase,
                     typo,
                 ));
             }
@@ -958,11 +998,13 @@ impl<'a> Reader<'a> {
             Kind::Word(w) => {
                 let w = w.trim_end_matches("'s");
                 words::side_parts(w).is_some()
+                    || words::normalize(w).is_empty()
                     || words::size_word(w).is_some()
                     || words::ordinal(w).is_some()
                     || words::count_word(w).is_some()
                     || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
                     || words::is_colour(w)
+                    || words::is_colour(&words::normalize(w))
                     || self
                         .g
                         .index
@@ -1099,6 +1141,7 @@ impl<'a> Reader<'a> {
                             // A colour or material must pick; a word of another object's
                             // name ("the dining chair") says nothing about these.
                             if words::is_colour(w)
+                                || words::is_colour(&d)
                                 || self.g.index.attribute_words.contains(d.as_str())
                             {
                                 return Err(GroundError::NoPick {
@@ -1194,6 +1237,24 @@ impl<'a> Reader<'a> {
         let selectors_first = !sides.is_empty() || !sizes.is_empty() || middle;
         let post = post
             .filter(|(p, _)| !(selectors_first && !describes && matches!(p, Post::Relation(..))));
+        // "put the spoon next to the toaster" with two spoons: after a verb of placing the
+        // relation is where the spoon goes, not which spoon; refuse, naming them.
+        if picks && !describes && !group {
+            if let Some((Post::Relation(rel, _), p_end)) = &post {
+                if rel.can_be_a_destination()
+                    && !self.clause_goes_on(*p_end)
+                    && self.placing_verb_before(start)
+                {
+                    let names = self.names(&objects);
+                    return Err(GroundError::Ambiguous {
+                        phrase: self.span_text(&(start..head.range.end)),
+                        example: names[0].clone(),
+                        hints: self.hints(&head.text, &objects),
+                        candidates: names,
+                    });
+                }
+            }
+        }
         if let Some((p, p_end)) = post.filter(|_| picks || describes) {
             if !modified {
                 objects = head.literal.clone();
@@ -1521,6 +1582,42 @@ impl<'a> Reader<'a> {
     /// Whether the clause goes on after token `k` with an amount, a direction or a place
     /// of its own: then a modifier before `k` describes the object rather than saying
     /// where it goes.
+    /// Whether a verb that puts an object somewhere stands right before token `k`
+    /// (`put`, `move`, `place` — not `turn`, `take` or `swap`, which take no place).
+    fn placing_verb_before(&self, k: usize) -> bool {
+        k > 0
+            && self.word(k - 1).is_some_and(|w| {
+                words::is_verb(w)
+                    && !matches!(
+                        w,
+                        "rotate"
+                            | "turn"
+                            | "spin"
+                            | "flip"
+                            | "twist"
+                            | "swivel"
+                            | "pivot"
+                            | "scale"
+                            | "resize"
+                            | "grow"
+                            | "shrink"
+                            | "enlarge"
+                            | "make"
+                            | "swap"
+                            | "switch"
+                            | "exchange"
+                            | "interchange"
+                            | "align"
+                            | "line"
+                            | "take"
+                            | "grab"
+                            | "pick"
+                            | "fetch"
+                            | "straighten"
+                    )
+            })
+    }
+
     fn clause_goes_on(&self, k: usize) -> bool {
         let place_or_amount = |w: &str| {
             words::side_word(w).is_some()

@@ -47,6 +47,15 @@ pub(crate) enum Relation {
     RightOf,
 }
 
+impl Relation {
+    /// Whether the words of this relation can also say where something goes (`next to`,
+    /// `on`, `under`, `behind` …), as opposed to only picking (`nearest`, `carrying`).
+    #[must_use]
+    pub fn can_be_a_destination(self) -> bool {
+        !matches!(self, Self::Nearest | Self::Farthest | Self::Carries)
+    }
+}
+
 fn boxes(scene: &Scene, objects: &[usize]) -> Vec<Aabb> {
     objects
         .iter()

@@ -143,6 +143,9 @@ pub fn normalize(name: &str) -> String {
             continue;
         }
         let w = spelling(w);
+        if w.is_empty() {
+            continue;
+        }
         if !out.is_empty() {
             out.push(' ');
         }
@@ -153,15 +156,15 @@ pub fn normalize(name: &str) -> String {
 
 /// One spelling for words people spell two ways, and the noun for a material adjective,
 /// so that names and instructions compare equal whichever was typed: `gray` → `grey`,
-/// `color` → `colour`, `wooden` → `wood`, `woollen` → `wool`, `metallic` → `metal`.
+/// `colors` → `colours`, `wooden` → `wood`, `woollen` → `wool`, `metallic` → `metal`;
+/// `coloured` / `colored` / `colour` / `color` say nothing (`grey-coloured` is `grey`)
+/// and are dropped (the empty string).
 #[must_use]
 pub fn spelling(word: &str) -> &str {
     match word {
         "gray" => "grey",
         "grayish" | "greyish" => "grey",
-        "color" => "colour",
         "colors" => "colours",
-        "colored" => "coloured",
         "wooden" => "wood",
         "woolen" | "woollen" | "wooly" | "woolly" => "wool",
         "metallic" | "metal's" => "metal",
@@ -170,6 +173,8 @@ pub fn spelling(word: &str) -> &str {
         "marble's" => "marble",
         "aluminum" => "aluminium",
         "favorite" => "favourite",
+        // "the grey-coloured chair" is the grey chair.
+        "coloured" | "colored" | "colour" | "color" => "",
         other => other,
     }
 }
@@ -407,6 +412,7 @@ pub(crate) fn opens_phrase(w: &str) -> bool {
                 | "with"
                 | "not"
                 | "but"
+                | "have"
                 | "except"
                 | "leave"
                 | "keep"

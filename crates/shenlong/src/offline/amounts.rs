@@ -30,6 +30,55 @@ pub(crate) enum Length {
     Far,
     /// All the way: against the wall.
     ToWall,
+    /// As far as it will go: up to the first obstacle in the way (or the wall), 1 cm short.
+    UntilBlocked,
+}
+
+/// "as far as it will go", "until it hits something": up to the first obstacle.
+const UNTIL_BLOCKED: &[&[&str]] = &[
+    &["as", "far", "as", "it", "will", "go"],
+    &["as", "far", "as", "it", "can", "go"],
+    &["as", "far", "as", "it", "would", "go"],
+    &["as", "far", "as", "it'll", "go"],
+    &["as", "far", "as", "it", "goes"],
+    &["as", "far", "as", "they", "will", "go"],
+    &["as", "far", "as", "they", "can", "go"],
+    &["as", "far", "as", "they", "go"],
+    &["as", "far", "as", "possible"],
+    &["as", "far", "as", "you", "can"],
+    &["until", "it", "hits", "something"],
+    &["until", "it", "hits", "anything"],
+    &["until", "it", "touches", "something"],
+    &["until", "it", "bumps", "into", "something"],
+    &["until", "it", "stops"],
+    &["till", "it", "hits", "something"],
+    &["until", "it's", "blocked"],
+];
+
+/// Finds "as far as it will go" (also with the direction inside: "as far right as it
+/// will go", the direction left for the reader), marks it read and says whether it was
+/// there.
+pub(crate) fn until_blocked(c: &mut Clause) -> bool {
+    for i in 0..c.len() {
+        if let Some(p) = UNTIL_BLOCKED.iter().find(|p| c.words_at(i, p)) {
+            c.mark(i..i + p.len());
+            return true;
+        }
+        // "as far right as it will go".
+        if c.words_at(i, &["as", "far"])
+            && c.word(i + 2).and_then(super::words::direction).is_some()
+        {
+            if let Some(p) = UNTIL_BLOCKED
+                .iter()
+                .find(|p| p[0] == "as" && c.words_at(i + 3, &p[2..]))
+            {
+                c.mark(i..i + 2);
+                c.mark(i + 3..i + 3 + p.len() - 2);
+                return true;
+            }
+        }
+    }
+    false
 }
 
 /// The small-amount phrases, longest first; each counts as a bit.
@@ -60,6 +109,18 @@ const TINY: &[&[&str]] = &[
     &["a", "smidge"],
     &["a", "hair"],
     &["a", "fraction"],
+];
+
+/// "a good bit", "a fair bit", "quite a bit": more than a bit, less than a lot.
+pub const GOOD_BIT_METRES: f64 = 0.30;
+
+/// The moderate-amount phrases ([`GOOD_BIT_METRES`]).
+const GOOD_BIT: &[&[&str]] = &[
+    &["a", "good", "bit"],
+    &["a", "fair", "bit"],
+    &["quite", "a", "bit"],
+    &["a", "fair", "way"],
+    &["a", "good", "few", "centimetres"],
 ];
 
 /// The large-amount phrases.
@@ -131,6 +192,9 @@ fn fraction_at(c: &Clause, i: usize) -> Option<(f64, usize)> {
 /// Finds a length in the clause, marks its tokens read, and returns it. With `bare`, a
 /// number without a unit is metres ("2 units" and "2" read alike).
 pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
+    if std::mem::take(&mut c.until_blocked) {
+        return Some(Length::UntilBlocked);
+    }
     for i in 0..c.len() {
         if !c.free(i) {
             continue;
@@ -204,6 +268,13 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
         }
     }
     for i in 0..c.len() {
+        for words in GOOD_BIT {
+            if c.free(i) && c.words_at(i, words) {
+                c.mark(i..i + words.len());
+                c.mark_by(i);
+                return Some(Length::Metres(GOOD_BIT_METRES));
+            }
+        }
         for words in BIT {
             if c.free(i) && c.words_at(i, words) {
                 c.mark(i..i + words.len());

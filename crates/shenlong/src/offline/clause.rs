@@ -10,13 +10,23 @@ use std::ops::Range;
 pub(crate) struct Clause {
     tokens: Vec<Token>,
     used: Vec<bool>,
+    /// The view a turn in it is seen from, once read ([`super::view`]).
+    pub view: Option<super::view::View>,
+    /// Whether it says "as far as it will go" (read before anything takes its `it`),
+    /// until an amount is read from it.
+    pub until_blocked: bool,
 }
 
 impl Clause {
     /// A clause of these tokens, none read yet.
     pub fn new(tokens: Vec<Token>) -> Self {
         let used = vec![false; tokens.len()];
-        Self { tokens, used }
+        Self {
+            tokens,
+            used,
+            view: None,
+            until_blocked: false,
+        }
     }
 
     /// How many tokens.
@@ -121,7 +131,7 @@ impl Clause {
     }
 
     /// Marks read the words that say an amount is approximate — `about`, `roughly`,
-    /// `approximately`, `around`, `some` right before a number, `or so`, `or thereabouts`,
+    /// `approximately`, `around` right before a number, `or so`, `or thereabouts`,
     /// `give or take` and `-ish` after one: the amount is read as given.
     fn mark_approximations(&mut self) {
         let number_at = |c: &Self, i: usize| match c.tokens.get(i) {
@@ -132,13 +142,18 @@ impl Clause {
             _ => false,
         };
         for i in 0..self.len() {
-            let before_number = matches!(
-                self.word(i),
-                Some("about" | "roughly" | "approximately" | "approx" | "around" | "circa" | "maybe")
-            ) && number_at(self, i + 1)
-                // "around a" is a turn ("turn it around a bit"): only before digits or
-                // number words.
-                && !(self.word(i) == Some("around") && !matches!(self.tokens.get(i + 1), Some(Token::Number(_))));
+            let before_number = match self.word(i) {
+                // "around a" is a turn ("turn it around a bit"): only before digits or a
+                // unit ("around a metre").
+                Some("around") => {
+                    matches!(self.tokens.get(i + 1), Some(Token::Number(_)))
+                        || self.word(i + 2).and_then(words::length_unit).is_some()
+                }
+                Some("about" | "roughly" | "approximately" | "approx" | "circa" | "maybe") => {
+                    number_at(self, i + 1)
+                }
+                _ => false,
+            };
             if before_number && self.free(i) {
                 self.mark(i..i + 1);
             }
@@ -289,6 +304,7 @@ pub(crate) fn split(tokens: &[Token]) -> Vec<Clause> {
                         || matches!(
                             w.as_str(),
                             "both"
+                                | "have"
                                 | "all"
                                 | "of"
                                 | "positions"

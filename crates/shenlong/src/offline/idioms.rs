@@ -4,7 +4,7 @@
 //!
 //! | written | read as |
 //! |---|---|
-//! | `30 cm towards the back wall`, `half a metre toward the front of the room` | `30 cm back`, `half a metre forward` (an amount along the direction of that wall) |
+//! | `30 cm towards the back wall`, `half a metre toward the front of the room`, `towards the right wall until it hits something` | `30 cm back`, `half a metre forward`, `right until it hits something` (an amount along the direction of that wall) |
 //! | `all the way to X2`, `all the way up to X2`, `right up to X2`, `up to X2` | straight toward X2 until 5 cm from it (`upto X2`) |
 //! | `flush against the left wall`, `flush with X2` | `against …` |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
@@ -44,7 +44,7 @@ fn towards_a_wall_by_an_amount(c: &mut Clause) {
         let mut probe = c.clone();
         matches!(
             amounts::length(&mut probe, false),
-            Some(amounts::Length::Metres(_))
+            Some(amounts::Length::Metres(_) | amounts::Length::UntilBlocked)
         )
     };
     if !has_amount {

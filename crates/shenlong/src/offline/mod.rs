@@ -58,25 +58,102 @@ pub struct Entry {
     pub expressions: Vec<Expr>,
 }
 
+/// What the reader knows of the bound objects, beyond their variables: all measured from
+/// the scene before the edit. Everything may be left empty (a scene with a room, unturned
+/// objects, nothing measured).
+#[derive(Clone, Debug, Default)]
+pub struct Known {
+    /// Whether the scene has room bounds.
+    pub room: bool,
+    /// Per variable: its turn about the vertical in degrees (for "straighten").
+    pub yaw: Vec<f64>,
+    /// Per variable: the size of its world box (for "to X2": a small thing goes on X2's
+    /// top).
+    pub sizes: Vec<[f64; 3]>,
+    /// Per variable: how far it can go along −x, +x, −z, +z before it meets another
+    /// object or a wall, 1 cm short (for "as far as it will go"); infinite where nothing
+    /// stops it.
+    pub runs: Vec<[f64; 4]>,
+}
+
+impl Known {
+    /// What the reader knows of `objects` (the variables, in order) in `scene`.
+    #[must_use]
+    pub fn of(scene: &Scene, objects: &[usize]) -> Self {
+        let boxes = scene.world_aabbs();
+        Self {
+            room: scene.bounds.is_some(),
+            yaw: objects
+                .iter()
+                .map(|&i| {
+                    let q = scene.objects[i].similarity().rotation;
+                    let (axis, angle) = q.to_axis_angle();
+                    (angle * axis.y.signum()).to_degrees()
+                })
+                .collect(),
+            sizes: objects
+                .iter()
+                .map(|&i| boxes[i].size().to_array())
+                .collect(),
+            runs: objects.iter().map(|&i| runs(scene, &boxes, i)).collect(),
+        }
+    }
+}
+
+/// How far object `i` can slide along −x, +x, −z, +z: to the nearest face of an object
+/// whose box overlaps its path (across the other horizontal axis and in height, by more
+/// than the support gap, so the floor's rug and what it stands on do not stop it), or to
+/// the room's wall, 1 cm short; what rests on it goes with it and does not count.
+fn runs(scene: &Scene, boxes: &[crate::geometry::Aabb], i: usize) -> [f64; 4] {
+    const SHORT: f64 = 0.01;
+    let me = boxes[i];
+    let carried = scene.carried_by(i);
+    let overlaps =
+        |a0: f64, a1: f64, b0: f64, b1: f64| a1.min(b1) - a0.max(b0) > crate::scene::SUPPORT_GAP;
+    let mut out = [f64::INFINITY; 4];
+    if let Some(b) = &scene.bounds {
+        out = [
+            me.min.x - b.min.x,
+            b.max.x - me.max.x,
+            me.min.z - b.min.z,
+            b.max.z - me.max.z,
+        ];
+    }
+    for (j, other) in boxes.iter().enumerate() {
+        if j == i || carried.contains(&j) || !overlaps(me.min.y, me.max.y, other.min.y, other.max.y)
+        {
+            continue;
+        }
+        if overlaps(me.min.z, me.max.z, other.min.z, other.max.z) {
+            if other.max.x <= me.min.x + SHORT {
+                out[0] = out[0].min(me.min.x - other.max.x);
+            } else if other.min.x >= me.max.x - SHORT {
+                out[1] = out[1].min(other.min.x - me.max.x);
+            }
+        }
+        if overlaps(me.min.x, me.max.x, other.min.x, other.max.x) {
+            if other.max.z <= me.min.z + SHORT {
+                out[2] = out[2].min(me.min.z - other.max.z);
+            } else if other.min.z >= me.max.z - SHORT {
+                out[3] = out[3].min(other.min.z - me.max.z);
+            }
+        }
+    }
+    out.map(|d| (d - SHORT).max(0.0))
+}
+
 /// Reads an instruction with variables into expression trees, one entry per variable it
-/// changes. `room`: whether the scene has bounds; `yaw`: each variable's current turn about
-/// the vertical in degrees (for "straighten"); `sizes`: each variable's world box size
-/// (for "to X2": a small thing goes on X2's top), or empty.
+/// changes, with what is `known` of the bound objects.
 ///
 /// # Errors
 /// The unread part of the instruction, quoted.
-pub fn answer(
-    query: &str,
-    variables: usize,
-    room: bool,
-    yaw: &[f64],
-    sizes: &[[f64; 3]],
-) -> Result<Vec<Entry>, String> {
+pub fn answer(query: &str, variables: usize, known: &Known) -> Result<Vec<Entry>, String> {
     let facts = Facts {
         variables,
-        room,
-        yaw: yaw.to_vec(),
-        sizes: sizes.to_vec(),
+        room: known.room,
+        yaw: known.yaw.clone(),
+        sizes: known.sizes.clone(),
+        runs: known.runs.clone(),
     };
     let tokens = words::tokenize(query);
     let mut reader = Reader::new(&facts);
@@ -139,7 +216,12 @@ pub fn reply_text(entries: &[Entry]) -> String {
 /// # Errors
 /// As [`answer`].
 pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
-    answer(query, variables, true, &vec![0.0; variables], &[]).map(|e| reply_text(&e))
+    let known = Known {
+        room: true,
+        yaw: vec![0.0; variables],
+        ..Known::default()
+    };
+    answer(query, variables, &known).map(|e| reply_text(&e))
 }
 
 impl Translator for OfflineTranslator {
@@ -157,28 +239,9 @@ impl Translator for OfflineTranslator {
         scene: &Scene,
     ) -> Result<Translation, TranslateError> {
         let started = Instant::now();
-        let yaw: Vec<f64> = templated
-            .objects
-            .iter()
-            .map(|&i| {
-                let q = scene.objects[i].similarity().rotation;
-                let (axis, angle) = q.to_axis_angle();
-                (angle * axis.y.signum()).to_degrees()
-            })
-            .collect();
-        let sizes: Vec<[f64; 3]> = templated
-            .objects
-            .iter()
-            .map(|&i| scene.objects[i].world_aabb().size().to_array())
-            .collect();
-        let entries = answer(
-            &templated.query,
-            templated.objects.len(),
-            scene.bounds.is_some(),
-            &yaw,
-            &sizes,
-        )
-        .map_err(TranslateError::not_understood)?;
+        let known = Known::of(scene, &templated.objects);
+        let entries = answer(&templated.query, templated.objects.len(), &known)
+            .map_err(TranslateError::not_understood)?;
         let bindings: Bindings = bindings(scene, &templated.objects);
         let reply = reply_text(&entries);
         let mut answers = Vec::new();
@@ -234,3 +297,5 @@ impl Translator for OfflineTranslator {
 
 #[cfg(test)]
 mod tests;
+#[cfg(test)]
+mod tests_round3;

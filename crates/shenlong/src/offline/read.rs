@@ -23,9 +23,25 @@ pub(crate) struct Facts {
     pub yaw: Vec<f64>,
     /// Per variable: the size of its world box (empty when not known).
     pub sizes: Vec<[f64; 3]>,
+    /// Per variable: how far it can go along −x, +x, −z, +z before it meets another
+    /// object or a wall (1 cm short), infinite where nothing stops it (empty when not
+    /// known).
+    pub runs: Vec<[f64; 4]>,
 }
 
 impl Facts {
+    /// How far variable `s` can go along horizontal axis `e` (0 or 2) with `sign`.
+    fn run(&self, s: usize, e: usize, sign: f64) -> Option<f64> {
+        let k = match (e, sign > 0.0) {
+            (0, false) => 0,
+            (0, true) => 1,
+            (2, false) => 2,
+            (2, true) => 3,
+            _ => return None,
+        };
+        self.runs.get(s).map(|r| r[k]).filter(|d| d.is_finite())
+    }
+
     /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
     /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
     /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the
@@ -97,7 +113,15 @@ impl<'a> Reader<'a> {
         // Discourse around the instruction: greetings and request frames at the start,
         // thanks and sign-offs at the end (crate::discourse).
         c.mark_discourse();
+        c.view = mark_view(c);
+        c.until_blocked = amounts::until_blocked(c);
         super::idioms::rewrite(c);
+        // "have X1 and X2 trade places": the causative `have` before the objects.
+        if let Some(i) = (0..c.len()).find(|&i| c.free(i)) {
+            if c.words_at(i, &["have"]) && c.variable_after(i + 1).is_some() {
+                c.mark(i..i + 1);
+            }
+        }
         // A clause of fillers only ("…, thanks"): nothing to do.
         if c.unread().is_empty() {
             return Ok(());
@@ -620,7 +644,7 @@ impl<'a> Reader<'a> {
             .iter()
             .find_map(|w| has(c, w));
         let clockwise = ["clockwise", "cw"].iter().find_map(|w| has(c, w));
-        let view = mark_view(c);
+        let view = c.view;
         if let Some(i) = counter {
             c.mark(i..i + 1);
             degrees = degrees.abs();
@@ -882,23 +906,45 @@ impl<'a> Reader<'a> {
                 c.mark(i..i + 1);
             }
         }
-        let has_room = self.facts.room;
         let mut out = Vec::new();
         for &s in &subjects {
-            let parts: Vec<Expr> = dirs
+            let parts = dirs
                 .iter()
-                .map(|&(e, sign)| match amount {
-                    Some(Length::Metres(m)) => scaled_axis(num(sign * m), e),
-                    Some(Length::Far) => room::far(s, e, sign, has_room),
-                    Some(Length::ToWall) if has_room && e != 1 => room::all_the_way(s, e, sign),
-                    Some(Length::ToWall) if e == 1 && sign < 0.0 => room::onto_floor(s, has_room),
-                    Some(Length::ToWall) => scaled_axis(num(sign * DEFAULT_METRES), e),
-                    None => scaled_axis(num(sign * DEFAULT_METRES), e),
-                })
-                .collect();
+                .map(|&(e, sign)| self.along(s, e, sign, amount, text))
+                .collect::<Result<Vec<Expr>, String>>()?;
             out.push((s, Step::Translate(sum(parts))));
         }
         Ok(out)
+    }
+
+    /// The move of variable `s` along axis `e` (with `sign`) by `amount`.
+    fn along(
+        &self,
+        s: usize,
+        e: usize,
+        sign: f64,
+        amount: Option<Length>,
+        text: &str,
+    ) -> Result<Expr, String> {
+        let has_room = self.facts.room;
+        Ok(match amount {
+            Some(Length::Metres(m)) => scaled_axis(num(sign * m), e),
+            Some(Length::Far) => room::far(s, e, sign, has_room),
+            Some(Length::ToWall) if has_room && e != 1 => room::all_the_way(s, e, sign),
+            Some(Length::ToWall) if e == 1 && sign < 0.0 => room::onto_floor(s, has_room),
+            Some(Length::ToWall) => scaled_axis(num(sign * DEFAULT_METRES), e),
+            // "as far as it will go": up to the first obstacle, measured now.
+            Some(Length::UntilBlocked) => {
+                let run = self.facts.run(s, e, sign).ok_or_else(|| {
+                    format!(
+                        "nothing stops X{} that way in \"{text}\": say how far",
+                        s + 1
+                    )
+                })?;
+                scaled_axis(num(sign * run), e)
+            }
+            None => scaled_axis(num(sign * DEFAULT_METRES), e),
+        })
     }
 
     /// A relation whose object is a pronoun for the objects named before ("next to it",

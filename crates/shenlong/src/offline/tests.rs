@@ -338,7 +338,16 @@ fn nothing_is_acted_on_from_a_partial_reading() {
 
 #[test]
 fn answers_are_trees_printed_for_the_report() {
-    let entries = answer("put X1 on top of X2", 2, true, &[0.0, 0.0], &[]).unwrap();
+    let entries = answer(
+        "put X1 on top of X2",
+        2,
+        &Known {
+            room: true,
+            yaw: vec![0.0, 0.0],
+            ..Known::default()
+        },
+    )
+    .unwrap();
     assert_eq!(entries.len(), 1);
     let text = reply_text(&entries);
     // The printed reply parses back to the same tree.

@@ -62,7 +62,15 @@ pub(crate) fn tokenize(query: &str) -> Vec<Token> {
             tokens.push(Token::Word(unit));
         } else if w.contains('-') && !w.starts_with('-') {
             for part in w.split('-').filter(|p| !p.is_empty()) {
-                tokens.push(Token::Word(part.to_string()));
+                // "20cm-ish": a number with its unit stays one.
+                match (part.parse::<f64>(), split_number_unit(part)) {
+                    (Ok(n), _) if n.is_finite() => tokens.push(Token::Number(n)),
+                    (_, Some((n, unit))) => {
+                        tokens.push(Token::Number(n));
+                        tokens.push(Token::Word(unit));
+                    }
+                    _ => tokens.push(Token::Word(part.to_string())),
+                }
             }
         } else {
             tokens.push(Token::Word(w));

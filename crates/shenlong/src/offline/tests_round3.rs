@@ -1,0 +1,275 @@
+//! Round three of the words, end to end on scenes named as 3D tools export them: where
+//! each object ends up (or that the edit is refused, naming the candidates).
+
+use super::OfflineTranslator;
+use crate::geometry::Aabb;
+use crate::pipeline::{edit, EditOptions};
+use crate::scene::Scene;
+use glam::DVec3;
+
+/// A living room exported from Blender: no categories, names as the tool wrote them.
+fn exported() -> Scene {
+    let mut s = Scene::new("exported");
+    s.bounds = Some(Aabb {
+        min: DVec3::new(-4.0, 0.0, -3.0),
+        max: DVec3::new(4.0, 3.0, 3.0),
+    });
+    for (name, size, at) in [
+        ("Sofa_Fabric", [2.0, 0.8, 0.9], [0.0, 0.0, -2.4]),
+        ("SideTable_L", [0.5, 0.55, 0.5], [-1.4, 0.0, -2.5]),
+        ("SideTable_R", [0.5, 0.55, 0.5], [1.4, 0.0, -2.5]),
+        ("Lamp_Table.003", [0.3, 0.5, 0.3], [-1.4, 0.55, -2.5]),
+        ("SM_FloorLamp_01", [0.4, 1.6, 0.4], [2.2, 0.0, -2.5]),
+        ("Chair_Wood", [0.5, 0.9, 0.5], [-2.0, 0.0, 0.0]),
+        ("Chair_Wood.001", [0.5, 0.9, 0.5], [-1.0, 0.0, 0.0]),
+        ("Table_Round", [1.0, 0.75, 1.0], [0.0, 0.0, 0.5]),
+        ("Vase_Ceramic", [0.15, 0.3, 0.15], [0.0, 0.75, 0.5]),
+        ("TV_Stand", [1.6, 0.5, 0.4], [0.0, 0.0, 2.5]),
+        ("TV_Screen", [1.2, 0.7, 0.1], [0.0, 0.5, 2.5]),
+        ("Remote_TV", [0.05, 0.02, 0.15], [0.7, 0.5, 2.5]),
+        ("Clock_Wall", [0.4, 0.4, 0.05], [-3.0, 1.8, -2.97]),
+        ("Ottoman", [0.6, 0.4, 0.6], [2.0, 0.0, 0.0]),
+        ("Rug_Wool", [2.4, 0.01, 1.2], [0.0, 0.0, -1.0]),
+        ("Table_Coffee", [1.0, 0.4, 0.6], [0.0, 0.01, -1.0]),
+        ("Books_Stack", [0.25, 0.1, 0.2], [0.2, 0.41, -1.0]),
+    ] {
+        s.push_box(name, size, at);
+    }
+    s.detect_supports();
+    s
+}
+
+fn run(scene: &Scene, instruction: &str) -> Scene {
+    let mut after = scene.clone();
+    edit(
+        &mut after,
+        instruction,
+        &OfflineTranslator::new(),
+        &EditOptions::default(),
+    )
+    .unwrap_or_else(|e| panic!("{instruction}: {e}"));
+    after
+}
+
+fn refused(scene: &Scene, instruction: &str, mentions: &[&str]) {
+    let mut after = scene.clone();
+    let message = match edit(
+        &mut after,
+        instruction,
+        &OfflineTranslator::new(),
+        &EditOptions::default(),
+    ) {
+        Ok(_) => panic!("{instruction}: should be refused"),
+        Err(e) => e.message,
+    };
+    for m in mentions {
+        assert!(
+            message.contains(m),
+            "{instruction}: {message} should name {m}"
+        );
+    }
+    for (a, b) in scene.objects.iter().zip(&after.objects) {
+        assert_eq!(
+            a.similarity(),
+            b.similarity(),
+            "{instruction}: a refusal changes nothing"
+        );
+    }
+}
+
+fn moved(before: &Scene, after: &Scene, name: &str) -> DVec3 {
+    let i = before.find(name).unwrap();
+    after.objects[i].world_aabb().min - before.objects[i].world_aabb().min
+}
+
+fn only_moved(before: &Scene, after: &Scene, expected: &[(&str, [f64; 3])]) {
+    for o in &before.objects {
+        let want = expected
+            .iter()
+            .find(|(n, _)| *n == o.name)
+            .map_or(DVec3::ZERO, |(_, d)| DVec3::from(*d));
+        let got = moved(before, after, &o.name);
+        assert!(
+            (got - want).length() < 1e-6,
+            "'{}' moved by {got:?}, wanted {want:?}",
+            o.name
+        );
+    }
+}
+
+#[test]
+fn exported_names_mean_what_a_person_means() {
+    let s = exported();
+    let a = run(&s, "move the left side table 20 cm forward");
+    // The lamp on it goes with it; nothing else moves.
+    only_moved(
+        &s,
+        &a,
+        &[
+            ("SideTable_L", [0.0, 0.0, 0.2]),
+            ("Lamp_Table.003", [0.0, 0.0, 0.2]),
+        ],
+    );
+    let a = run(&s, "move the vase 10 cm to the right");
+    only_moved(&s, &a, &[("Vase_Ceramic", [0.1, 0.0, 0.0])]);
+    let a = run(&s, "move the remote 5 cm left");
+    only_moved(&s, &a, &[("Remote_TV", [-0.05, 0.0, 0.0])]);
+    let a = run(&s, "move Chair_Wood 10 cm back");
+    only_moved(&s, &a, &[("Chair_Wood", [0.0, 0.0, -0.1])]);
+    let a = run(&s, "move wood chair 001 10 cm back");
+    only_moved(&s, &a, &[("Chair_Wood.001", [0.0, 0.0, -0.1])]);
+    // A colour must pick: this ottoman is not grey, however the colour is spelt.
+    refused(
+        &s,
+        "turn the gray-coloured ottoman around",
+        &["grey", "Ottoman"],
+    );
+    let i = s.find("Ottoman").unwrap();
+    // "the TV" is the screen, not the remote for it.
+    let a = run(&s, "move the ottoman 20 cm towards the TV");
+    let d = moved(&s, &a, "Ottoman");
+    let tv = (s.objects[s.find("TV_Screen").unwrap()]
+        .world_aabb()
+        .center()
+        - s.objects[i].world_aabb().center())
+    .with_y(0.0)
+    .normalize();
+    assert!((d - tv * 0.2).length() < 1e-6, "{d:?}");
+    // A wall clock is no wall: "the left wall" is the room's.
+    let a = run(&s, "push the ottoman flush against the right wall");
+    assert!((a.objects[i].world_aabb().max.x - 3.98).abs() < 1e-6);
+}
+
+#[test]
+fn names_that_answer_to_two_kinds_are_refused_when_both_fit() {
+    let s = exported();
+    refused(
+        &s,
+        "move the lamp 10 cm left",
+        &["Lamp_Table.003", "SM_FloorLamp_01"],
+    );
+    refused(
+        &s,
+        "move the side table left",
+        &["SideTable_L", "SideTable_R"],
+    );
+    refused(
+        &s,
+        "move the wooden chair left",
+        &["Chair_Wood", "Chair_Wood.001"],
+    );
+}
+
+#[test]
+fn chat_around_the_instruction_changes_nothing() {
+    let s = exported();
+    for text in [
+        "hey can u move the ottoman a bit left thx",
+        "good morning! would you be so kind as to move the ottoman 10 cm to the left? cheers",
+        "ty in advance! pls scoot the ottoman 10cm left",
+        "sorry to bother you, quick one: move the ottoman left a bit if that's ok",
+        "I'd like the ottoman moved 10 cm left",
+    ] {
+        let a = run(&s, text);
+        only_moved(&s, &a, &[("Ottoman", [-0.1, 0.0, 0.0])]);
+    }
+}
+
+#[test]
+fn what_must_not_move_is_held() {
+    let s = exported();
+    // Not carried: the lamp stays, still on the table it overhangs.
+    let a = run(
+        &s,
+        "move the left side table 10 cm left but leave the table lamp where it is",
+    );
+    only_moved(&s, &a, &[("SideTable_L", [-0.1, 0.0, 0.0])]);
+    // What stands on the coffee table goes with it though the rug under it is held.
+    let a = run(
+        &s,
+        "don't touch the rug, just move the coffee table 10 cm to the right",
+    );
+    only_moved(
+        &s,
+        &a,
+        &[
+            ("Table_Coffee", [0.1, 0.0, 0.0]),
+            ("Books_Stack", [0.1, 0.0, 0.0]),
+        ],
+    );
+    let a = run(
+        &s,
+        "move the coffee table 10 cm right, keep the books where they are",
+    );
+    only_moved(&s, &a, &[("Table_Coffee", [0.1, 0.0, 0.0])]);
+    // A move that leaves the held lamp in the air is refused.
+    refused(
+        &s,
+        "move the left side table 1 m to the left but leave the table lamp where it is",
+        &["Lamp_Table.003", "SideTable_L"],
+    );
+    refused(&s, "don't move the rug", &["Rug_Wool"]);
+}
+
+#[test]
+fn amounts_towards_places_and_as_far_as_it_goes() {
+    let s = exported();
+    let a = run(&s, "move the ottoman 30 cm towards the front wall");
+    only_moved(&s, &a, &[("Ottoman", [0.0, 0.0, 0.3])]);
+    // Up to the first thing in the way (the floor lamp's box is in the ottoman's path).
+    let a = run(&s, "push the ottoman back as far as it will go");
+    let lamp = s.objects[s.find("SM_FloorLamp_01").unwrap()].world_aabb();
+    let i = s.find("Ottoman").unwrap();
+    assert!((a.objects[i].world_aabb().min.z - (lamp.max.z + 0.01)).abs() < 1e-6);
+    // Seen from below, clockwise is the other way.
+    let above = run(
+        &s,
+        "turn the ottoman 90 degrees clockwise as seen from above",
+    );
+    let below = run(
+        &s,
+        "turn the ottoman 90 degrees clockwise as seen from below",
+    );
+    let yaw = |sc: &Scene| {
+        let (axis, angle) = sc.objects[i].similarity().rotation.to_axis_angle();
+        (angle * axis.y.signum()).to_degrees()
+    };
+    assert!((yaw(&above) + 90.0).abs() < 1e-6, "{}", yaw(&above));
+    assert!((yaw(&below) - 90.0).abs() < 1e-6, "{}", yaw(&below));
+}
+
+#[test]
+fn motion_verbs_from_the_lexicon() {
+    let s = exported();
+    for verb in ["park", "budge", "haul", "wheel", "inch"] {
+        let a = run(&s, &format!("{verb} the ottoman 10 cm to the left"));
+        only_moved(&s, &a, &[("Ottoman", [-0.1, 0.0, 0.0])]);
+    }
+}
+
+#[test]
+fn a_destination_after_a_verb_of_placing_is_not_a_pick() {
+    let mut s = exported();
+    s.push_box("Mug_Coffee", [0.1, 0.1, 0.1], [-0.3, 0.75, 0.3]);
+    s.push_box("Mug_Coffee.001", [0.1, 0.1, 0.1], [2.0, 0.4, 0.0]);
+    s.detect_supports();
+    // Two mugs: "next to the vase" is where one goes, not which.
+    refused(
+        &s,
+        "put the mug next to the vase",
+        &["Mug_Coffee", "Mug_Coffee.001"],
+    );
+    // On the round table next to the vase: beside the vase, on the table.
+    let a = run(&s, "put Mug_Coffee.001 on the round table next to the vase");
+    let mug = a.objects[a.find("Mug_Coffee.001").unwrap()].world_aabb();
+    let table = a.objects[a.find("Table_Round").unwrap()].world_aabb();
+    let vase = a.objects[a.find("Vase_Ceramic").unwrap()].world_aabb();
+    assert!((mug.min.y - table.max.y).abs() < 1e-6, "on the table");
+    assert!(mug.min.x >= table.min.x && mug.max.x <= table.max.x);
+    assert!(mug.min.z >= table.min.z && mug.max.z <= table.max.z);
+    let gap = (vase.min.x - mug.max.x)
+        .max(mug.min.x - vase.max.x)
+        .max(vase.min.z - mug.max.z)
+        .max(mug.min.z - vase.max.z);
+    assert!((0.0..=0.06).contains(&gap), "next to the vase: gap {gap}");
+}
