@@ -23,6 +23,7 @@
 //! to put the object (`put the book on the side table`). Nothing is guessed: a phrase
 //! that still fits several objects, or none, is refused ([`GroundError`]).
 
+mod attach;
 mod error;
 mod hold;
 pub mod ident;
@@ -36,6 +37,7 @@ pub use error::GroundError;
 pub use lexicon::Lexicon;
 
 use crate::scene::Scene;
+use attach::{Choice, PostText};
 use index::{NameIndex, Tier};
 use select::{Direction, Relation, SizeError};
 use serde::Serialize;
@@ -1195,67 +1197,20 @@ impl<'a> Reader<'a> {
         } else {
             None
         };
-        // A modifier after the noun picks when the noun alone does not (`the book on the
-        // side table` with two books), and describes when the clause goes on with its own
-        // amount or place, or has a verb that takes none (`move the book on the table 10
-        // cm left`, `rotate the tv on the stand`). Otherwise it is where the object goes
-        // (`put the book on the side table`) and is left for the translator.
-        // The object of a relation ("on top of the magazine on the ottoman") is where
-        // something goes: a modifier after it can only describe it.
-        let destination = start > 0
-            && self.word(start - 1).is_some_and(|w| {
-                words::is_preposition(w) && !matches!(w, "up" | "than" | "as" | "like" | "for")
-            });
-        // "put the phone on the desk next to the mug": a relation to something that rests
-        // on the destination is the rest of the destination, not a description of it.
-        let rest_of_destination = destination
-            && post.as_ref().is_some_and(|(p, _)| match p {
-                Post::Relation(
-                    Relation::Near
-                    | Relation::InFront
-                    | Relation::Behind
-                    | Relation::LeftOf
-                    | Relation::RightOf,
-                    targets,
-                ) => {
-                    !targets.is_empty()
-                        && targets.iter().all(|&t| {
-                            objects
-                                .iter()
-                                .any(|&o| self.scene.objects[t].support == Some(o))
-                        })
-                }
-                _ => false,
-            });
-        let describes = !rest_of_destination
-            && post.as_ref().is_some_and(|(_, p_end)| {
-                self.clause_goes_on(*p_end) || self.verb_takes_no_place(start) || destination
-            });
         let picks = (objects.len() != wanted && !group) || ordinal.is_some() || head.generic;
-        // A relation after a noun the modifiers before it already pick among ("the left
-        // stool next to the chair") is where it goes, unless it clearly describes.
         let selectors_first = !sides.is_empty() || !sizes.is_empty() || middle;
-        let post = post
-            .filter(|(p, _)| !(selectors_first && !describes && matches!(p, Post::Relation(..))));
-        // "put the spoon next to the toaster" with two spoons: after a verb of placing the
-        // relation is where the spoon goes, not which spoon; refuse, naming them.
-        if picks && !describes && !group {
-            if let Some((Post::Relation(rel, _), p_end)) = &post {
-                if rel.can_be_a_destination()
-                    && !self.clause_goes_on(*p_end)
-                    && self.placing_verb_before(start)
-                {
-                    let names = self.names(&objects);
-                    return Err(GroundError::Ambiguous {
-                        phrase: self.span_text(&(start..head.range.end)),
-                        example: names[0].clone(),
-                        hints: self.hints(&head.text, &objects),
-                        candidates: names,
-                    });
-                }
-            }
-        }
-        if let Some((p, p_end)) = post.filter(|_| picks || describes) {
+        let post = self.attach(
+            post,
+            &head,
+            start,
+            &objects,
+            Choice {
+                picks,
+                group,
+                selectors_first,
+            },
+        )?;
+        if let Some((p, p_end)) = post {
             if !modified {
                 objects = head.literal.clone();
             }
@@ -1277,86 +1232,12 @@ impl<'a> Reader<'a> {
                 } else {
                     wanted
                 };
-                match p {
-                    Post::Floor => {
-                        let floor = self.scene.floor();
-                        let on_floor: Vec<usize> = objects
-                            .iter()
-                            .copied()
-                            .filter(|&o| {
-                                self.scene.objects[o].support.is_none()
-                                    && self.scene.objects[o].world_aabb().min.y <= floor + 0.05
-                            })
-                            .collect();
-                        if on_floor.is_empty() || (wanted != usize::MAX && on_floor.len() != wanted)
-                        {
-                            return Err(GroundError::NoPick {
-                                phrase: at,
-                                reason: format!(
-                                    "{} on the floor ({} of {})",
-                                    if on_floor.is_empty() {
-                                        "none is"
-                                    } else {
-                                        "not one is"
-                                    },
-                                    on_floor.len(),
-                                    error::list(&self.names(&objects))
-                                ),
-                            });
-                        }
-                        objects = on_floor;
-                    }
-                    Post::Side(axis, sign) => {
-                        if let Some(o) = ordinal.take() {
-                            let picked =
-                                select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
-                                    .ok_or_else(|| self.too_close(&at, &objects, &words))?;
-                            objects = vec![picked];
-                        } else if filter {
-                            objects = select::at_side(self.scene, &objects, axis, sign);
-                        } else {
-                            let mut direction = glam::DVec3::ZERO;
-                            direction[axis as usize] = sign;
-                            objects = select::by_direction(
-                                self.scene,
-                                &objects,
-                                direction,
-                                wanted.min(objects.len()),
-                            )
-                            .ok_or_else(|| self.too_close(&at, &objects, &words))?;
-                        }
-                    }
-                    Post::Middle => {
-                        let picked = select::middle(self.scene, &objects)
-                            .ok_or_else(|| self.too_close(&at, &objects, "in the middle"))?;
-                        objects = vec![picked];
-                    }
-                    Post::From(direction) => {
-                        let o = ordinal.take().unwrap_or(1);
-                        let picked = select::nth(self.scene, &objects, o, direction)
-                            .ok_or_else(|| self.too_close(&at, &objects, &words))?;
-                        objects = vec![picked];
-                    }
-                    Post::Relation(relation, targets) => {
-                        objects =
-                            select::by_relation(self.scene, &objects, relation, &targets, wanted)
-                                .ok_or_else(|| GroundError::NoPick {
-                                phrase: at.clone(),
-                                reason: if head.generic {
-                                    format!("nothing is {words}")
-                                } else if objects.len() == 1 {
-                                    format!("the {} is not {words}", self.name(objects[0]))
-                                } else {
-                                    format!(
-                                        "no single {} is clearly {words} (the {}s here are {})",
-                                        head.text,
-                                        head.text,
-                                        error::list(&self.names(&objects))
-                                    )
-                                },
-                            })?;
-                    }
-                }
+                let text = PostText {
+                    at: &at,
+                    words: &words,
+                };
+                objects =
+                    self.apply_post(p, objects, &mut ordinal, filter, wanted, &head, &text)?;
                 reasons.push(modifier(&format!(
                     "\"{words}\" picked {}",
                     error::list(&self.names(&objects))
