@@ -160,6 +160,13 @@ struct Np {
     head: String,
 }
 
+/// The objects a noun phrase has come to, why, and what its noun named before any pick.
+struct Candidates {
+    objects: Vec<usize>,
+    reasons: Vec<Reason>,
+    pool: Vec<usize>,
+}
+
 /// A modifier after the noun.
 #[derive(Clone, Debug)]
 enum Post {
@@ -1183,14 +1190,9 @@ impl<'a> Reader<'a> {
         } else if let Some(c) = outer_count {
             count = c;
         }
-        let need = |count: Count, have: usize| match count {
-            Count::One => 1,
-            Count::Exactly(n) => n,
-            Count::All => have,
-        };
         let mut end = head.range.end;
         let phrase_so_far = |end: usize| self.span_text(&(start..end));
-        let wanted = need(count, objects.len());
+        let wanted = count.wanted(objects.len());
         let group = matches!(count, Count::All) && !head.generic;
         let post = if mode == Mode::Main {
             self.post_modifier(end, bound)?
@@ -1245,90 +1247,19 @@ impl<'a> Reader<'a> {
                 end = p_end;
             }
         }
-        if !sides.is_empty() {
-            let mut words_used: Vec<String> = sides.iter().map(|s| s.2.clone()).collect();
-            words_used.dedup();
-            let label = words_used.join(" ");
-            if let (Some(o), [(axis, sign, _)]) = (ordinal, sides.as_slice()) {
-                // "the second left chair": the second from the left.
-                let picked = select::nth(self.scene, &objects, o, Direction::Side(*axis, *sign))
-                    .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &label))?;
-                objects = vec![picked];
-                ordinal = None;
-            } else {
-                let mut direction = glam::DVec3::ZERO;
-                for (axis, sign, _) in &sides {
-                    let mut unit = glam::DVec3::ZERO;
-                    unit[*axis as usize] = *sign;
-                    if direction.dot(unit) <= 0.0 {
-                        direction += unit;
-                    }
-                }
-                if matches!(count, Count::All) {
-                    // "the front chairs": every one at that end.
-                    objects = select::at_direction(self.scene, &objects, direction);
-                } else {
-                    let n = need(count, objects.len());
-                    let picked = select::by_direction(self.scene, &objects, direction, n)
-                        .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, &label))?;
-                    objects = picked;
-                }
-            }
-            reasons.push(modifier(&format!(
-                "\"{label}\" picked {}",
-                error::list(&self.names(&objects))
-            )));
-        }
-        for w in &sizes {
-            if matches!(count, Count::All) && objects.len() > 1 {
-                return Err(GroundError::NoPick {
-                    phrase: phrase_so_far(end),
-                    reason: format!(
-                        "say how many ('the two {} {}s') or name them",
-                        superlative(w),
-                        head.text
-                    ),
-                });
-            }
-            let (measure, sign, degree) = words::size_word(w).expect("a size word");
-            let n = need(count, objects.len());
-            let picked =
-                select::by_size(self.scene, &objects, measure, sign, degree, n).map_err(|e| {
-                    GroundError::NoPick {
-                        phrase: phrase_so_far(end),
-                        reason: match e {
-                            SizeError::ComparesTwo => format!(
-                            "\"{w}\" compares two, but {} {}s fit ({}); say 'the {}' or name one",
-                            objects.len(),
-                            head.text,
-                            error::list(&self.names(&objects)),
-                            superlative(w)
-                        ),
-                            SizeError::TooClose => format!(
-                                "{} are too close in size to tell which is {w}; name one ('{}')",
-                                error::list(&self.names(&objects)),
-                                self.name(objects[0])
-                            ),
-                        },
-                    }
-                })?;
-            if picked.len() < objects.len() {
-                reasons.push(modifier(&format!(
-                    "\"{w}\" picked {}",
-                    error::list(&self.names(&picked))
-                )));
-            }
-            objects = picked;
-        }
-        if middle && objects.len() > 1 {
-            let picked = select::middle(self.scene, &objects)
-                .ok_or_else(|| self.too_close(&phrase_so_far(end), &objects, "in the middle"))?;
-            reasons.push(modifier(&format!(
-                "\"middle\" picked {}",
-                self.name(picked)
-            )));
-            objects = vec![picked];
-        }
+        objects = self.pick_by_premodifiers(
+            &head,
+            count,
+            Premods {
+                ordinal: &mut ordinal,
+                sides: &sides,
+                sizes: &sizes,
+                middle,
+            },
+            objects,
+            &mut reasons,
+            &phrase_so_far(end),
+        )?;
         // "all the chairs except the front-left one", "every chair but chair 3".
         if mode == Mode::Main && matches!(count, Count::All) && !head.generic {
             if let Some((excluded, e_end)) = self.exclusion(end, &objects, &head.text, bound)? {
@@ -1348,6 +1279,38 @@ impl<'a> Reader<'a> {
                 end = e_end;
             }
         }
+        self.finish(
+            head,
+            start..end,
+            count,
+            ordinal,
+            mode,
+            Candidates {
+                objects,
+                reasons,
+                pool,
+            },
+        )
+    }
+
+    /// The last checks of a noun phrase: an ordinal with no direction, a generic noun with
+    /// nothing to say which, the count asked for, a typo that fits several; then a group in
+    /// a stable order (left to right, then back to front).
+    fn finish(
+        &self,
+        head: Head,
+        range: Range<usize>,
+        count: Count,
+        ordinal: Option<usize>,
+        mode: Mode,
+        found: Candidates,
+    ) -> Result<Np, GroundError> {
+        let Candidates {
+            mut objects,
+            mut reasons,
+            pool,
+        } = found;
+        let (start, end) = (range.start, range.end);
         let phrase = self.span_text(&(start..end));
         if let Some(o) = ordinal {
             if objects.len() > 1 {
@@ -1369,7 +1332,7 @@ impl<'a> Reader<'a> {
                 reason: "say which things ('everything on the table')".into(),
             });
         }
-        let wanted = need(count, objects.len());
+        let wanted = count.wanted(objects.len());
         if objects.is_empty() {
             return Err(GroundError::Unknown {
                 phrase,
@@ -1813,6 +1776,119 @@ impl<'a> Reader<'a> {
             }
         }
         Ok(())
+    }
+}
+
+/// The modifiers before a noun that pick by place or size, read from the words.
+struct Premods<'m> {
+    /// "the second …", waiting for a direction.
+    ordinal: &'m mut Option<usize>,
+    /// "left", "front-right": (axis, sign, the word).
+    sides: &'m [(words::Axis, f64, String)],
+    /// "bigger", "tallest".
+    sizes: &'m [String],
+    /// "the middle …".
+    middle: bool,
+}
+
+impl Reader<'_> {
+    /// Selection: the candidates the modifiers before the noun keep — by side (with an
+    /// ordinal, the n-th from that side), by size, in the middle — each needing a clear
+    /// winner. `phrase` is the phrase so far, for messages.
+    fn pick_by_premodifiers(
+        &self,
+        head: &Head,
+        count: Count,
+        mods: Premods<'_>,
+        mut objects: Vec<usize>,
+        reasons: &mut Vec<Reason>,
+        phrase: &str,
+    ) -> Result<Vec<usize>, GroundError> {
+        if !mods.sides.is_empty() {
+            let mut words_used: Vec<String> = mods.sides.iter().map(|s| s.2.clone()).collect();
+            words_used.dedup();
+            let label = words_used.join(" ");
+            if let (Some(o), [(axis, sign, _)]) = (*mods.ordinal, mods.sides) {
+                // "the second left chair": the second from the left.
+                let picked = select::nth(self.scene, &objects, o, Direction::Side(*axis, *sign))
+                    .ok_or_else(|| self.too_close(phrase, &objects, &label))?;
+                objects = vec![picked];
+                *mods.ordinal = None;
+            } else {
+                let mut direction = glam::DVec3::ZERO;
+                for (axis, sign, _) in mods.sides {
+                    let mut unit = glam::DVec3::ZERO;
+                    unit[*axis as usize] = *sign;
+                    if direction.dot(unit) <= 0.0 {
+                        direction += unit;
+                    }
+                }
+                if matches!(count, Count::All) {
+                    // "the front chairs": every one at that end.
+                    objects = select::at_direction(self.scene, &objects, direction);
+                } else {
+                    let n = count.wanted(objects.len());
+                    let picked = select::by_direction(self.scene, &objects, direction, n)
+                        .ok_or_else(|| self.too_close(phrase, &objects, &label))?;
+                    objects = picked;
+                }
+            }
+            reasons.push(modifier(&format!(
+                "\"{label}\" picked {}",
+                error::list(&self.names(&objects))
+            )));
+        }
+        for w in mods.sizes {
+            if matches!(count, Count::All) && objects.len() > 1 {
+                return Err(GroundError::NoPick {
+                    phrase: phrase.to_string(),
+                    reason: format!(
+                        "say how many ('the two {} {}s') or name them",
+                        superlative(w),
+                        head.text
+                    ),
+                });
+            }
+            let (measure, sign, degree) = words::size_word(w).expect("a size word");
+            let n = count.wanted(objects.len());
+            let picked =
+                select::by_size(self.scene, &objects, measure, sign, degree, n).map_err(|e| {
+                    GroundError::NoPick {
+                        phrase: phrase.to_string(),
+                        reason: match e {
+                            SizeError::ComparesTwo => format!(
+                            "\"{w}\" compares two, but {} {}s fit ({}); say 'the {}' or name one",
+                            objects.len(),
+                            head.text,
+                            error::list(&self.names(&objects)),
+                            superlative(w)
+                        ),
+                            SizeError::TooClose => format!(
+                                "{} are too close in size to tell which is {w}; name one ('{}')",
+                                error::list(&self.names(&objects)),
+                                self.name(objects[0])
+                            ),
+                        },
+                    }
+                })?;
+            if picked.len() < objects.len() {
+                reasons.push(modifier(&format!(
+                    "\"{w}\" picked {}",
+                    error::list(&self.names(&picked))
+                )));
+            }
+            objects = picked;
+        }
+        if mods.middle && objects.len() > 1 {
+            let picked = select::middle(self.scene, &objects)
+                .ok_or_else(|| self.too_close(phrase, &objects, "in the middle"))?;
+            reasons.push(modifier(&format!(
+                "\"middle\" picked {}",
+                self.name(picked)
+            )));
+            objects = vec![picked];
+        }
+        Ok(objects)
     }
 }
 

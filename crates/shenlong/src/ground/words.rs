@@ -260,6 +260,18 @@ pub(crate) enum Count {
     All,
 }
 
+impl Count {
+    /// How many objects a phrase with this count asks for, of `have` that fit.
+    #[must_use]
+    pub(crate) fn wanted(self, have: usize) -> usize {
+        match self {
+            Count::One => 1,
+            Count::Exactly(n) => n,
+            Count::All => have,
+        }
+    }
+}
+
 /// `two` → 2 … `ten` → 10 (counts of a group).
 pub(crate) fn count_word(w: &str) -> Option<usize> {
     Some(match w {
