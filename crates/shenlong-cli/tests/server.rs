@@ -736,3 +736,68 @@ fn a_deep_gltf_hierarchy_is_applied_and_exported_without_a_crash() {
     assert_eq!(get(address, "/api/model"), Ok(200));
     assert_eq!(get(address, "/api/scene"), Ok(200));
 }
+
+/// A one-triangle glTF whose buffer is a `data:` URI, and an image at `image_uri` if given.
+fn triangle_gltf(dir: &std::path::Path, image_uri: Option<&str>) -> std::path::PathBuf {
+    use base64::Engine as _;
+    let positions: [f32; 9] = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 0.0];
+    let bytes: Vec<u8> = positions.iter().flat_map(|f| f.to_le_bytes()).collect();
+    let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
+    let mut gltf = json!({
+        "asset": {"version": "2.0"},
+        "scene": 0,
+        "scenes": [{"nodes": [0]}],
+        "nodes": [{"name": "Tri", "mesh": 0}],
+        "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+        "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                        "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 0.0]}],
+        "bufferViews": [{"buffer": 0, "byteLength": 36}],
+        "buffers": [{"byteLength": 36, "uri": format!("data:application/octet-stream;base64,{data}")}]
+    });
+    if let Some(uri) = image_uri {
+        gltf["images"] = json!([{"uri": uri}]);
+    }
+    let path = dir.join("tri.gltf");
+    std::fs::write(&path, serde_json::to_vec(&gltf).unwrap()).unwrap();
+    path
+}
+
+#[tokio::test]
+async fn the_page_is_never_framed_and_never_calls_out() {
+    let dir = tempfile::tempdir().unwrap();
+    // Every answer, the page and a refusal alike, forbids framing and remote content.
+    for path in ["/", "/app.js", "/api/scene", "/api/nothing"] {
+        let response = router(app(None))
+            .oneshot(Request::get(path).body(Body::empty()).unwrap())
+            .await
+            .unwrap();
+        let headers = response.headers();
+        let policy = headers["content-security-policy"].to_str().unwrap();
+        assert!(
+            policy.contains("frame-ancestors 'none'"),
+            "{path}: {policy}"
+        );
+        assert!(policy.contains("default-src 'none'"), "{path}");
+        assert!(policy.contains("img-src 'self' data: blob:;"), "{path}");
+        assert_eq!(headers["x-frame-options"], "DENY", "{path}");
+        assert_eq!(headers["x-content-type-options"], "nosniff", "{path}");
+    }
+    // A scene whose image is a remote URL is drawn as boxes: the page is never handed it.
+    let beacon = triangle_gltf(dir.path(), Some("http://127.0.0.1:9/beacon.png"));
+    let file = shenlong::format::SceneFile::load(&beacon).unwrap();
+    let served = App::new(file, settings(None, false, None));
+    let (_, scene, _) = call(&served, "GET", "/api/scene", None).await;
+    assert_eq!(scene["model"], Value::Null);
+    assert_eq!(
+        call(&served, "GET", "/api/model", None).await.0,
+        StatusCode::NOT_FOUND
+    );
+    // The same scene with everything inside it is served as a model.
+    let inside = tempfile::tempdir().unwrap();
+    let embedded = triangle_gltf(inside.path(), None);
+    let file = shenlong::format::SceneFile::load(&embedded).unwrap();
+    let served = App::new(file, settings(None, false, None));
+    let (status, _, body) = call(&served, "GET", "/api/model", None).await;
+    assert_eq!(status, StatusCode::OK);
+    assert!(!String::from_utf8_lossy(&body).contains("http://"));
+}

@@ -207,7 +207,34 @@ pub fn router(app: Arc<App>) -> Router {
             Arc::clone(&app),
             guard,
         ))
+        .layer(axum::middleware::from_fn(security_headers))
         .with_state(app)
+}
+
+/// Headers on every answer, refusals included: a strict Content-Security-Policy
+/// ([`assets::content_security_policy`]), no framing, no content sniffing, no referrer.
+async fn security_headers(
+    request: axum::extract::Request,
+    next: axum::middleware::Next,
+) -> Response {
+    let mut response = next.run(request).await;
+    let headers = response.headers_mut();
+    if let Ok(policy) = header::HeaderValue::from_str(assets::content_security_policy()) {
+        headers.insert(header::CONTENT_SECURITY_POLICY, policy);
+    }
+    headers.insert(
+        header::X_FRAME_OPTIONS,
+        header::HeaderValue::from_static("DENY"),
+    );
+    headers.insert(
+        header::X_CONTENT_TYPE_OPTIONS,
+        header::HeaderValue::from_static("nosniff"),
+    );
+    headers.insert(
+        header::REFERRER_POLICY,
+        header::HeaderValue::from_static("no-referrer"),
+    );
+    response
 }
 
 async fn asset(uri: Uri) -> Response {
@@ -273,18 +300,23 @@ fn scene_json(inner: &Inner) -> Result<Value, ApiError> {
     }))
 }
 
-/// The scene's meshes as glTF, when its source is a GLB or a self-contained `.gltf` (a
-/// `.gltf` with buffers in other files is drawn as boxes).
+/// The scene's meshes as glTF, when its source is a GLB or `.gltf` whose buffers and
+/// images are all inside it (one with buffers in other files, or any URI to elsewhere, is
+/// drawn as boxes).
 fn model_bytes(inner: &Inner) -> Option<Vec<u8>> {
     let Document::Gltf(document) = &inner.session.file.document else {
         return None;
     };
+    // A URI to anywhere else (`http://…/beacon.png`, a file beside it) is never handed to
+    // the page: the scene is drawn as boxes instead.
+    if !document.embedded_only() {
+        return None;
+    }
     match document.container() {
         shenlong::format::gltf::Container::Glb => inner.session.file.to_bytes(Format::Glb).ok(),
-        shenlong::format::gltf::Container::Gltf { .. } if document.external_uris().is_empty() => {
+        shenlong::format::gltf::Container::Gltf { .. } => {
             inner.session.file.to_bytes(Format::Gltf).ok()
         }
-        _ => None,
     }
 }
 

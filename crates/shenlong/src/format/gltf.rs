@@ -91,6 +91,24 @@ impl GltfDocument {
         }
         uris
     }
+
+    /// Whether every buffer and image the document names is inside it (a `data:` URI, or a
+    /// GLB's own buffer): what a browser may load without calling out to anywhere.
+    #[must_use]
+    pub fn embedded_only(&self) -> bool {
+        ["buffers", "images"].iter().all(|key| {
+            self.json
+                .get(*key)
+                .and_then(Value::as_array)
+                .into_iter()
+                .flatten()
+                .all(|item| {
+                    item.get("uri")
+                        .and_then(Value::as_str)
+                        .is_none_or(|uri| uri.starts_with("data:"))
+                })
+        })
+    }
 }
 
 /// Reads a `.gltf` or `.glb` file.
