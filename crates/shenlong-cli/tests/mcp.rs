@@ -270,3 +270,25 @@ fn save_without_a_save_file_is_a_tool_error() {
     assert!(text(&saved).contains("--save"), "{saved}");
     c.finish();
 }
+
+#[test]
+fn errors_never_echo_huge_arguments() {
+    let mut c = Client::start(&["example:office"]);
+    // A 2 MB object name: refused before anything quotes it.
+    let huge = "x".repeat(2_000_000);
+    let applied = c.call("apply", json!({"object": huge, "expression": "T(e1)"}));
+    assert_eq!(applied["isError"], true);
+    let message = text(&applied);
+    assert!(message.len() < 3_000, "{} bytes", message.len());
+    assert!(message.contains("longer than"), "{message}");
+    // A long instruction that names nothing: the error is cut.
+    let words = "banana ".repeat(280);
+    let edited = c.call("edit", json!({"instruction": words}));
+    assert_eq!(edited["isError"], true);
+    assert!(
+        text(&edited).chars().count() <= 2_100,
+        "{}",
+        text(&edited).len()
+    );
+    c.finish();
+}

@@ -281,6 +281,39 @@ fn listing(scene: &Scene) -> SceneListing {
     }
 }
 
+/// The longest error text a tool answers with: what an error quotes of a huge argument
+/// (a 10 MB object name) is cut, so an answer stays small.
+const MAX_ERROR_CHARS: usize = 2000;
+
+/// The longest object name a request may give.
+const MAX_NAME_CHARS: usize = 1000;
+
+/// A tool's error: one line, cut to [`MAX_ERROR_CHARS`].
+#[derive(Debug)]
+pub struct ToolError(String);
+
+impl From<String> for ToolError {
+    fn from(message: String) -> Self {
+        Self(message)
+    }
+}
+
+impl From<&str> for ToolError {
+    fn from(message: &str) -> Self {
+        Self(message.to_string())
+    }
+}
+
+impl rmcp::model::IntoContents for ToolError {
+    fn into_contents(self) -> Vec<rmcp::model::ContentBlock> {
+        let message = match self.0.char_indices().nth(MAX_ERROR_CHARS) {
+            Some((cut, _)) => format!("{}… (cut at {MAX_ERROR_CHARS} characters)", &self.0[..cut]),
+            None => self.0,
+        };
+        vec![rmcp::model::ContentBlock::text(message)]
+    }
+}
+
 #[tool_router]
 impl ShenlongMcp {
     /// The scene's objects.
@@ -288,7 +321,7 @@ impl ShenlongMcp {
         description = "List the scene's objects: for each its name, position (bottom centre), size, rotation (quaternion [x, y, z, w]), scale, world box, the direction it faces, and what it rests on. Metres; +Y up, +X right, +Z towards the viewer.",
         annotations(read_only_hint = true)
     )]
-    async fn list_objects(&self) -> Result<Json<SceneListing>, String> {
+    async fn list_objects(&self) -> Result<Json<SceneListing>, ToolError> {
         Ok(Json(listing(&self.session().file.scene)))
     }
 
@@ -300,7 +333,7 @@ impl ShenlongMcp {
         &self,
         Parameters(request): Parameters<EditRequest>,
         peer: Peer<RoleServer>,
-    ) -> Result<CallToolResult, String> {
+    ) -> Result<CallToolResult, ToolError> {
         let _turn = self.state.edits.lock().await;
         let before = self.session().file.scene.clone();
         let mut working = before.clone();
@@ -334,7 +367,7 @@ impl ShenlongMcp {
         &self,
         Parameters(request): Parameters<ApplyRequest>,
         peer: Peer<RoleServer>,
-    ) -> Result<CallToolResult, String> {
+    ) -> Result<CallToolResult, ToolError> {
         let _turn = self.state.edits.lock().await;
         let mut names = vec![request.object.as_str()];
         for k in 0..request.bind.len() {
@@ -346,6 +379,12 @@ impl ShenlongMcp {
                 )
             })?;
             names.push(name);
+        }
+        // A name no object could have is refused before anything quotes it.
+        if names.iter().any(|n| n.chars().count() > MAX_NAME_CHARS) {
+            return Err(
+                format!("an object name is longer than {MAX_NAME_CHARS} characters").into(),
+            );
         }
         let before = self.session().file.scene.clone();
         let mut after = before.clone();
@@ -380,13 +419,13 @@ impl ShenlongMcp {
     #[tool(
         description = "Undo the last change (edit or apply). Returns the id of the change undone."
     )]
-    async fn undo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, String> {
+    async fn undo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, ToolError> {
         self.step(true, &peer).await
     }
 
     /// Redo the last undone change.
     #[tool(description = "Redo the last undone change. Returns the id of the change redone.")]
-    async fn redo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, String> {
+    async fn redo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, ToolError> {
         self.step(false, &peer).await
     }
 
@@ -395,7 +434,7 @@ impl ShenlongMcp {
         description = "The changes made so far, oldest first: id, kind (edit or apply), the instruction or expression, the objects that moved, and whether it is undone.",
         annotations(read_only_hint = true)
     )]
-    async fn history(&self) -> Result<CallToolResult, String> {
+    async fn history(&self) -> Result<CallToolResult, ToolError> {
         let session = self.session();
         Ok(CallToolResult::structured(serde_json::json!({
             "history": session.history(),
@@ -412,7 +451,7 @@ impl ShenlongMcp {
     async fn render(
         &self,
         Parameters(request): Parameters<RenderRequest>,
-    ) -> Result<CallToolResult, String> {
+    ) -> Result<CallToolResult, ToolError> {
         let scene = self.session().file.scene.clone();
         let previous = if request.before {
             self.previous().clone()
@@ -434,7 +473,7 @@ impl ShenlongMcp {
     #[tool(
         description = "Save the scene to the file the server was started with (--save), atomically. The file cannot be chosen here."
     )]
-    async fn save(&self) -> Result<CallToolResult, String> {
+    async fn save(&self) -> Result<CallToolResult, ToolError> {
         let session = self.session();
         let Some(path) = session.save_path().map(std::path::Path::to_path_buf) else {
             return Err(
@@ -455,7 +494,7 @@ impl ShenlongMcp {
     async fn export(
         &self,
         Parameters(request): Parameters<ExportRequest>,
-    ) -> Result<CallToolResult, String> {
+    ) -> Result<CallToolResult, ToolError> {
         let (format, mime, extension) = match request.format {
             ExportFormat::Json => (Format::SceneJson, "application/json", "json"),
             ExportFormat::Gltf => (Format::Gltf, "model/gltf+json", "gltf"),
@@ -494,13 +533,13 @@ fn blob(uri: String, mime: &str, bytes: Vec<u8>) -> ResourceContents {
 }
 
 impl ShenlongMcp {
-    async fn step(&self, undo: bool, peer: &Peer<RoleServer>) -> Result<CallToolResult, String> {
+    async fn step(&self, undo: bool, peer: &Peer<RoleServer>) -> Result<CallToolResult, ToolError> {
         let _turn = self.state.edits.lock().await;
         let before = self.session().file.scene.clone();
         let id = match self.session().step(undo) {
             Ok(change) => change.id.unwrap_or_default(),
             Err(StepError::Nothing) => {
-                return Err(format!("nothing to {}", if undo { "undo" } else { "redo" }))
+                return Err(format!("nothing to {}", if undo { "undo" } else { "redo" }).into())
             }
         };
         self.changed(before, peer).await;
