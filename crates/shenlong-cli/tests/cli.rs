@@ -527,3 +527,56 @@ fn a_gltf_cannot_choose_where_its_resources_are_written() {
         "nothing outside the output folder"
     );
 }
+
+#[test]
+fn a_report_that_cannot_be_written_leaves_the_scene_output_unwritten() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("workshop.json");
+    let o = shenlong(&["examples", "workshop", "-o", scene.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let out = dir.path().join("edited.json");
+    let report = dir.path().join("no such folder").join("report.json");
+    let o = shenlong(&[
+        "edit",
+        scene.to_str().unwrap(),
+        "move the 'hammer' 10 cm left",
+        "-o",
+        out.to_str().unwrap(),
+        "--json",
+        report.to_str().unwrap(),
+    ]);
+    assert_fails_cleanly(&o, "report.json");
+    assert!(
+        !out.exists(),
+        "the scene was written though the report could not be"
+    );
+}
+
+#[cfg(unix)]
+#[test]
+fn a_report_linked_to_a_stream_is_written_through_the_link() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("workshop.json");
+    let o = shenlong(&["examples", "workshop", "-o", scene.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let link = dir.path().join("report.json");
+    std::os::unix::fs::symlink("/dev/null", &link).unwrap();
+    let out = dir.path().join("edited.json");
+    let o = shenlong(&[
+        "edit",
+        scene.to_str().unwrap(),
+        "move the 'hammer' 10 cm left",
+        "-o",
+        out.to_str().unwrap(),
+        "--json",
+        link.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(
+        std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink(),
+        "the link was replaced"
+    );
+}

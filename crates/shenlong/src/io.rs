@@ -7,8 +7,90 @@ use std::path::{Path, PathBuf};
 /// then renamed over the target. On any error the target is left as it was and the
 /// temporary file is removed. A replaced file keeps its permissions; a new one is
 /// readable by all (0644 on Unix), as an ordinary write would make it.
+///
+/// Where the output is not a regular file it is written in place, never replaced: a FIFO,
+/// a character device or a socket (`-o /dev/stdout`, a named pipe a user reads from), or a
+/// link to one (`--json out.json` linked to `/proc/self/fd/1`). A link to a regular file
+/// keeps the link: the file it names is replaced, atomically.
 pub fn write_atomic(path: &Path, bytes: &[u8]) -> std::io::Result<()> {
-    stage(path, |file| file.write_all(bytes))?.commit()
+    prepare(path, bytes)?.commit()
+}
+
+/// A write made ready but not yet done: staged in full beside a regular file (or its
+/// link's file), or to be written in place to a stream. [`Prepared::commit`] does it;
+/// dropped, nothing is written. Preparing one output first and writing another before
+/// committing it writes neither when the first cannot be written.
+#[derive(Debug)]
+pub enum Prepared {
+    /// Written beside the file, to be renamed over it.
+    Staged(Staged),
+    /// A stream (FIFO, character device, socket), written in place.
+    InPlace {
+        /// Where.
+        path: PathBuf,
+        /// What.
+        bytes: Vec<u8>,
+    },
+}
+
+impl Prepared {
+    /// Does the write.
+    ///
+    /// # Errors
+    /// The rename or the stream's write failed.
+    pub fn commit(self) -> std::io::Result<()> {
+        match self {
+            Self::Staged(staged) => staged.commit(),
+            Self::InPlace { path, bytes } => {
+                let mut out = std::fs::OpenOptions::new().write(true).open(&path)?;
+                out.write_all(&bytes)?;
+                out.flush()
+            }
+        }
+    }
+}
+
+/// Whether a file type is a stream written in place rather than replaced.
+fn is_stream(kind: std::fs::FileType) -> bool {
+    #[cfg(unix)]
+    {
+        use std::os::unix::fs::FileTypeExt;
+        kind.is_fifo() || kind.is_char_device() || kind.is_socket()
+    }
+    #[cfg(not(unix))]
+    {
+        !kind.is_file() && !kind.is_dir()
+    }
+}
+
+/// Makes a write of `bytes` to `path` ready ([`Prepared`]).
+///
+/// # Errors
+/// The temporary file cannot be written, or `path` is a folder or a block device.
+pub fn prepare(path: &Path, bytes: &[u8]) -> std::io::Result<Prepared> {
+    match std::fs::metadata(path) {
+        // Following links: what the output really is.
+        Ok(m) if is_stream(m.file_type()) => Ok(Prepared::InPlace {
+            path: path.to_path_buf(),
+            bytes: bytes.to_vec(),
+        }),
+        Ok(m) if m.is_dir() => Err(std::io::Error::other("it is a folder")),
+        Ok(m) if !m.is_file() => Err(std::io::Error::other(
+            "it is neither a regular file nor a stream",
+        )),
+        Ok(_) => {
+            let is_link = std::fs::symlink_metadata(path).is_ok_and(|l| l.file_type().is_symlink());
+            let target = if is_link {
+                std::fs::canonicalize(path)?
+            } else {
+                path.to_path_buf()
+            };
+            Ok(Prepared::Staged(stage(&target, |file| {
+                file.write_all(bytes)
+            })?))
+        }
+        Err(_) => Ok(Prepared::Staged(stage(path, |file| file.write_all(bytes))?)),
+    }
 }
 
 /// A file written in full beside its target but not yet in place: [`Staged::commit`]
@@ -130,6 +212,53 @@ mod tests {
             fresh.exists(),
             "a recent one may be another write in progress"
         );
+    }
+
+    #[cfg(unix)]
+    #[test]
+    fn special_outputs_are_written_in_place_never_replaced() {
+        use std::os::unix::fs::FileTypeExt;
+        let dir = tempfile::tempdir().unwrap();
+        // A FIFO with a reader: written through, still a FIFO.
+        let fifo = dir.path().join("out.fifo");
+        let made = std::process::Command::new("mkfifo").arg(&fifo).status();
+        if made.is_ok_and(|s| s.success()) {
+            let reader = {
+                let fifo = fifo.clone();
+                std::thread::spawn(move || std::fs::read(&fifo).unwrap())
+            };
+            write_atomic(&fifo, b"through the pipe").unwrap();
+            assert_eq!(reader.join().unwrap(), b"through the pipe");
+            assert!(std::fs::symlink_metadata(&fifo)
+                .unwrap()
+                .file_type()
+                .is_fifo());
+        }
+        // A link to a character device: the link stays.
+        let null = dir.path().join("null.json");
+        std::os::unix::fs::symlink("/dev/null", &null).unwrap();
+        write_atomic(&null, b"{}").unwrap();
+        assert!(std::fs::symlink_metadata(&null)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        // A link to a regular file: the file is replaced, the link kept.
+        let real = dir.path().join("real.json");
+        std::fs::write(&real, b"old").unwrap();
+        let link = dir.path().join("link.json");
+        std::os::unix::fs::symlink(&real, &link).unwrap();
+        write_atomic(&link, b"new").unwrap();
+        assert!(std::fs::symlink_metadata(&link)
+            .unwrap()
+            .file_type()
+            .is_symlink());
+        assert_eq!(std::fs::read(&real).unwrap(), b"new");
+        // Nothing prepared is written until committed.
+        let later = dir.path().join("later.json");
+        let prepared = prepare(&later, b"x").unwrap();
+        assert!(!later.exists());
+        drop(prepared);
+        assert!(!later.exists());
     }
 
     #[test]

@@ -84,18 +84,29 @@ pub fn run(args: Args) -> Result<()> {
     let report = serde_json::to_string_pretty(&result.report)
         .map_err(|e| anyhow::anyhow!("cannot write the edit report: {e}"))?;
 
+    // The report file is made ready first: when it cannot be written, neither is the
+    // scene (a failed command changes no file).
+    let json_file = match args.json.as_deref() {
+        Some(path) if path != "-" => Some(
+            shenlong::io::prepare(std::path::Path::new(path), format!("{report}\n").as_bytes())
+                .with_context(|| format!("cannot write {path}"))?,
+        ),
+        _ => None,
+    };
     super::write_edit(
         &file,
         before.as_ref(),
         args.output.as_deref(),
         args.tdw.as_deref(),
     )?;
+    if let (Some(prepared), Some(path)) = (json_file, args.json.as_deref()) {
+        prepared
+            .commit()
+            .with_context(|| format!("cannot write {path}"))?;
+    }
     match args.json.as_deref() {
         Some("-") => eprintln!("{report}"),
-        Some(path) => {
-            shenlong::io::write_atomic(std::path::Path::new(path), format!("{report}\n").as_bytes())
-                .with_context(|| format!("cannot write {path}"))?
-        }
+        Some(_) => {}
         None => {
             for c in &result.report.collisions_resolved {
                 let d = c.displacement;
