@@ -512,8 +512,11 @@ fn slow_clients_are_cut_off_and_do_not_starve_others() {
     runtime.spawn(shenlong_cli::server::serve_with(
         app,
         listener,
-        std::time::Duration::from_millis(800),
-        512,
+        shenlong_cli::server::Limits {
+            header_timeout: std::time::Duration::from_millis(800),
+            body_timeout: std::time::Duration::from_millis(800),
+            max_connections: 512,
+        },
     ));
     // 300 clients that never finish their headers.
     let mut slow: Vec<std::net::TcpStream> = (0..300)
@@ -800,4 +803,67 @@ async fn the_page_is_never_framed_and_never_calls_out() {
     let (status, _, body) = call(&served, "GET", "/api/model", None).await;
     assert_eq!(status, StatusCode::OK);
     assert!(!String::from_utf8_lossy(&body).contains("http://"));
+}
+
+#[test]
+fn slow_request_bodies_are_cut_off_and_do_not_starve_others() {
+    use std::io::{Read, Write};
+    let app = app(None);
+    let runtime = tokio::runtime::Runtime::new().unwrap();
+    let listener = runtime
+        .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
+        .unwrap();
+    let address = listener.local_addr().unwrap();
+    // As few connections as slow clients: without a body timeout they would hold them all.
+    runtime.spawn(shenlong_cli::server::serve_with(
+        app,
+        listener,
+        shenlong_cli::server::Limits {
+            header_timeout: std::time::Duration::from_secs(10),
+            body_timeout: std::time::Duration::from_millis(600),
+            max_connections: 40,
+        },
+    ));
+    // 40 clients send their headers and 10 bytes of a 1,000-byte body, then nothing.
+    let mut slow: Vec<std::net::TcpStream> = (0..40)
+        .map(|_| {
+            let mut s = std::net::TcpStream::connect(address).unwrap();
+            s.write_all(
+                b"POST /api/edit HTTP/1.1\r\nHost: 127.0.0.1\r\nContent-Type: application/json\r\nContent-Length: 1000\r\n\r\n{\"instruc",
+            )
+            .unwrap();
+            s
+        })
+        .collect();
+    std::thread::sleep(std::time::Duration::from_millis(300));
+    // A normal request is answered once the slow bodies time out, well within 5 s.
+    let started = std::time::Instant::now();
+    let scene: Value = ureq::get(&format!("http://{address}/api/scene"))
+        .config()
+        .timeout_global(Some(std::time::Duration::from_secs(5)))
+        .build()
+        .call()
+        .unwrap()
+        .body_mut()
+        .read_json()
+        .unwrap();
+    assert!(scene["scene"]["objects"].is_array());
+    assert!(
+        started.elapsed() < std::time::Duration::from_secs(3),
+        "{:?}",
+        started.elapsed()
+    );
+    // Each slow client got a 408.
+    let mut timed_out = 0;
+    for s in &mut slow {
+        s.set_read_timeout(Some(std::time::Duration::from_millis(500)))
+            .unwrap();
+        let mut buf = [0u8; 64];
+        if let Ok(n) = s.read(&mut buf) {
+            if String::from_utf8_lossy(&buf[..n]).starts_with("HTTP/1.1 408") {
+                timed_out += 1;
+            }
+        }
+    }
+    assert_eq!(timed_out, slow.len());
 }

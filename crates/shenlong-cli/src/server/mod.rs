@@ -190,8 +190,13 @@ async fn guard(
     next.run(request).await
 }
 
-/// The router: the API and the page.
+/// The router: the API and the page, with the default body timeout.
 pub fn router(app: Arc<App>) -> Router {
+    router_with(app, BODY_TIMEOUT)
+}
+
+/// The router, each request's body to be read in full within `body_timeout`.
+pub fn router_with(app: Arc<App>, body_timeout: std::time::Duration) -> Router {
     Router::new()
         .route("/api/scene", get(scene))
         .route("/api/edit", post(edit_scene))
@@ -207,8 +212,46 @@ pub fn router(app: Arc<App>) -> Router {
             Arc::clone(&app),
             guard,
         ))
+        .layer(axum::middleware::from_fn(
+            move |request: axum::extract::Request, next: axum::middleware::Next| {
+                read_body_within(request, next, body_timeout)
+            },
+        ))
         .layer(axum::middleware::from_fn(security_headers))
         .with_state(app)
+}
+
+/// Reads a request's body in full (up to the body limit) within `timeout` before anything
+/// handles it: a client that sends its headers and then a body a byte at a time, or part
+/// of one and then nothing, gets a 408 and its connection back, instead of holding it.
+async fn read_body_within(
+    request: axum::extract::Request,
+    next: axum::middleware::Next,
+    timeout: std::time::Duration,
+) -> Response {
+    let (parts, body) = request.into_parts();
+    match tokio::time::timeout(timeout, axum::body::to_bytes(body, MAX_BODY)).await {
+        Ok(Ok(bytes)) => {
+            next.run(axum::extract::Request::from_parts(
+                parts,
+                axum::body::Body::from(bytes),
+            ))
+            .await
+        }
+        Ok(Err(_)) => ApiError(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            format!("the request body is larger than {MAX_BODY} bytes, or broke off"),
+        )
+        .into_response(),
+        Err(_) => ApiError(
+            StatusCode::REQUEST_TIMEOUT,
+            format!(
+                "the request body did not arrive within {} s",
+                timeout.as_secs_f64()
+            ),
+        )
+        .into_response(),
+    }
 }
 
 /// Headers on every answer, refusals included: a strict Content-Security-Policy
@@ -592,25 +635,52 @@ async fn export(
 /// How long a client may take to send a request's headers (and, between requests on a
 /// kept-alive connection, the next one's) before the connection is closed.
 pub const HEADER_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(10);
+/// How long a client may take to send a request's body once its headers are in.
+pub const BODY_TIMEOUT: std::time::Duration = std::time::Duration::from_secs(10);
 /// The most connections served at once; more wait to be accepted.
 pub const MAX_CONNECTIONS: usize = 512;
 
-/// Serves until Ctrl-C, with the default limits.
-pub async fn serve(app: Arc<App>, listener: tokio::net::TcpListener) -> std::io::Result<()> {
-    serve_with(app, listener, HEADER_TIMEOUT, MAX_CONNECTIONS).await
+/// What a client may hold of the server, and for how long.
+#[derive(Clone, Copy, Debug)]
+pub struct Limits {
+    /// To send a request's headers (and, on a kept-alive connection, the next request's).
+    pub header_timeout: std::time::Duration,
+    /// To send a request's body once its headers are in.
+    pub body_timeout: std::time::Duration,
+    /// Connections served at once; more wait to be accepted.
+    pub max_connections: usize,
 }
 
-/// Serves until Ctrl-C: each connection must send its headers within `header_timeout`, and
-/// at most `max_connections` are served at once, so slow or idle clients cannot starve
-/// the others.
+impl Default for Limits {
+    fn default() -> Self {
+        Self {
+            header_timeout: HEADER_TIMEOUT,
+            body_timeout: BODY_TIMEOUT,
+            max_connections: MAX_CONNECTIONS,
+        }
+    }
+}
+
+/// Serves until Ctrl-C, with the default limits.
+pub async fn serve(app: Arc<App>, listener: tokio::net::TcpListener) -> std::io::Result<()> {
+    serve_with(app, listener, Limits::default()).await
+}
+
+/// Serves until Ctrl-C within `limits`: each connection must send its headers, and each
+/// request its body, in time, and at most so many are served at once, so slow or idle
+/// clients cannot starve the others.
 pub async fn serve_with(
     app: Arc<App>,
     listener: tokio::net::TcpListener,
-    header_timeout: std::time::Duration,
-    max_connections: usize,
+    limits: Limits,
 ) -> std::io::Result<()> {
+    let Limits {
+        header_timeout,
+        body_timeout,
+        max_connections,
+    } = limits;
     *app.bound.lock().unwrap_or_else(|e| e.into_inner()) = Some(listener.local_addr()?.ip());
-    let service = router(app);
+    let service = router_with(app, body_timeout);
     let permits = Arc::new(tokio::sync::Semaphore::new(max_connections.max(1)));
     let shutdown = tokio::signal::ctrl_c();
     tokio::pin!(shutdown);
