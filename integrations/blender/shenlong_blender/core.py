@@ -216,6 +216,8 @@ def run_edit(
     """
     if not instruction.strip():
         raise ShenlongError("type an instruction first")
+    if "\x00" in instruction:
+        raise ShenlongError("the instruction contains a NUL character; retype it")
     if not objects:
         raise ShenlongError("there are no visible mesh objects to edit")
     scene = scene_json(objects)
@@ -226,7 +228,7 @@ def run_edit(
         with open(scene_path, "w", encoding="utf-8") as f:
             json.dump(scene, f)
         argv = [
-            binary, "edit", scene_path, instruction,
+            binary, "edit",
             "-o", out_path, "--json", report_path,
             "--llm", llm, "--system", system,
         ]
@@ -234,9 +236,12 @@ def run_edit(
             argv += ["--base-url", base_url]
         for name in selection:
             argv += ["--selected", name]
+        # `--` first: an instruction such as "--help" or "-h" is an instruction, not a flag.
+        argv += ["--", scene_path, instruction]
         try:
             proc = subprocess.run(
-                argv, capture_output=True, text=True, timeout=timeout, check=False
+                argv, capture_output=True, text=True, errors="replace",
+                timeout=timeout, check=False,
             )
         except subprocess.TimeoutExpired:
             raise ShenlongError(f"Shenlong did not finish within {timeout:g} s") from None
@@ -246,16 +251,27 @@ def run_edit(
             lines = [l for l in proc.stderr.strip().splitlines() if l.strip()]
             message = lines[-1] if lines else f"Shenlong failed (exit code {proc.returncode})"
             raise ShenlongError(message.removeprefix("shenlong: "))
-        with open(out_path, encoding="utf-8") as f:
-            edited = json.load(f)
-        with open(report_path, encoding="utf-8") as f:
-            report = json.load(f)
-    motions = []
-    for before, after in zip(scene["objects"], edited["objects"]):
-        motion = motion_of(before, after)
-        if motion is not None:
-            motions.append(motion)
-    return EditResult(motions, report, summarise(report))
+        try:
+            with open(out_path, encoding="utf-8") as f:
+                edited = json.load(f)
+            with open(report_path, encoding="utf-8") as f:
+                report = json.load(f)
+        except (OSError, ValueError) as e:
+            raise ShenlongError(
+                f"{binary} finished but wrote no readable result ({type(e).__name__}); "
+                "is it the shenlong binary?"
+            ) from None
+    try:
+        motions = []
+        if len(edited["objects"]) != len(scene["objects"]):
+            raise ValueError("a different number of objects")
+        for before, after in zip(scene["objects"], edited["objects"]):
+            motion = motion_of(before, after)
+            if motion is not None:
+                motions.append(motion)
+        return EditResult(motions, report, summarise(report))
+    except (KeyError, TypeError, ValueError, AttributeError, IndexError) as e:
+        raise ShenlongError(f"{binary} wrote a result this add-on cannot read ({e})") from None
 
 
 def motion_of(before: dict, after: dict):

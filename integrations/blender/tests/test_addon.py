@@ -299,6 +299,63 @@ class CascadeTests(unittest.TestCase):
     assertVectorAlmostEqual = AddonTests.assertVectorAlmostEqual
 
 
+class HostileInputTests(unittest.TestCase):
+    """Every failure is one line in Blender's report and the scene unchanged."""
+
+    def setUp(self):
+        bpy.ops.wm.read_factory_settings(use_empty=True)
+        if not hasattr(bpy.types.Scene, "shenlong"):
+            shenlong_blender.register()
+        self.crate = cube("Crate", (0.0, 0.0, 0.0), scale=(0.3, 0.3, 0.3))
+        self.matrix = self.crate.matrix_world.copy()
+
+    def assertRefusedCleanly(self, instruction):
+        self.assertEqual(edit(instruction), {"CANCELLED"})
+        error = bpy.context.scene.shenlong.last_error
+        self.assertTrue(error, "an error is reported")
+        self.assertNotIn("Traceback", error)
+        self.assertEqual(len(error.splitlines()), 1, error)
+        self.assertEqual(self.crate.matrix_world, self.matrix)
+        return error
+
+    def test_an_instruction_that_looks_like_a_flag_is_an_instruction(self):
+        for instruction in ("--help", "-h", "--version"):
+            with self.subTest(instruction=instruction):
+                error = self.assertRefusedCleanly(instruction)
+                self.assertNotIn("Usage", error)
+
+    def test_a_nul_byte_is_refused_in_one_line(self):
+        # Blender's own text fields end at a NUL; a script calling the add-on's core may
+        # still pass one.
+        depsgraph = bpy.context.evaluated_depsgraph_get()
+        objects = core.describe([self.crate], depsgraph)
+        with self.assertRaises(core.ShenlongError) as refused:
+            core.run_edit(os.environ["SHENLONG_BIN"], objects, "move the crate\x00 left")
+        self.assertIn("NUL", str(refused.exception))
+        self.assertEqual(self.crate.matrix_world, self.matrix)
+
+    def test_a_binary_that_writes_nothing_or_garbage_is_one_line(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as tmp:
+            for name, script in (
+                ("silent", "#!/bin/sh\nexit 0\n"),
+                ("garbage", "#!/bin/sh\nprintf '\\377\\376garbage' >&2\n"
+                 "for a in \"$@\"; do case $prev in -o|--json) printf '{not json' > \"$a\";; esac; prev=$a; done\nexit 0\n"),
+                ("failing", "#!/bin/sh\nprintf '\\377\\376' >&2\nexit 3\n"),
+            ):
+                with self.subTest(binary=name):
+                    path = os.path.join(tmp, name)
+                    with open(path, "w") as f:
+                        f.write(script)
+                    os.chmod(path, 0o755)
+                    previous = os.environ.get("SHENLONG_BIN")
+                    os.environ["SHENLONG_BIN"] = path
+                    try:
+                        self.assertRefusedCleanly("move the crate 1 m left")
+                    finally:
+                        os.environ["SHENLONG_BIN"] = previous
+
+
 def edit_error(instruction):
     edit(instruction)
     return bpy.context.scene.shenlong.last_error
