@@ -12,7 +12,9 @@
 //!
 //! Node hierarchies of any depth are walked by loops, never by recursion (a file may nest
 //! 100,000 nodes); they must be forests, as glTF requires, so no walk meets a cycle. The
-//! JSON itself may nest [`super::MAX_JSON_DEPTH`] levels.
+//! JSON itself may nest [`super::MAX_JSON_DEPTH`] levels. Every index the gltf crate
+//! follows, and every accessor it reads (strides, bounds), is checked before it reads, so
+//! no file makes it panic.
 
 use super::FormatError;
 use crate::scene::{Labels, Object, Pivot, Scene, Shape, MAX_COORDINATE};
@@ -154,6 +156,7 @@ pub fn read_bytes(
     check_indices(&json)?;
     let gltf = ::gltf::Gltf::from_slice_without_validation(&bytes)
         .map_err(|e| FormatError::new(format!("invalid glTF: {e}")))?;
+    check_accessors(&json)?;
     let document = &gltf.document;
     let buffers = load_buffers(document, bin.as_deref(), base_dir)?;
 
@@ -538,6 +541,157 @@ fn check_indices(json: &Value) -> Result<(), FormatError> {
             v.get("buffer"),
             "buffers",
         )?;
+    }
+    for (i, a) in list("accessors").iter().enumerate() {
+        for part in ["indices", "values"] {
+            check(
+                format!("accessors[{i}].sparse.{part}.bufferView"),
+                a.get("sparse")
+                    .and_then(|s| s.get(part))
+                    .and_then(|p| p.get("bufferView")),
+                "bufferViews",
+            )?;
+        }
+    }
+    for (i, animation) in list("animations").iter().enumerate() {
+        for (k, c) in animation
+            .get("channels")
+            .and_then(Value::as_array)
+            .into_iter()
+            .flatten()
+            .enumerate()
+        {
+            check(
+                format!("animations[{i}].channels[{k}].target.node"),
+                c.get("target").and_then(|t| t.get("node")),
+                "nodes",
+            )?;
+        }
+    }
+    Ok(())
+}
+
+/// Checks every accessor the reader reads (the meshes' `POSITION` attributes) before the
+/// gltf crate reads it, so that what the crate would assert on, overflow or read past is
+/// refused with the accessor named: the type (`VEC3` of `FLOAT`), a count of at least one,
+/// each buffer view's `byteStride` (at least the element's size) and bounds (`byteOffset +
+/// byteStride × (count − 1) + element size` within the view, the view within its buffer),
+/// for the accessor's own view and a sparse accessor's indices and values alike. The
+/// arithmetic is checked, so no count or offset can overflow it.
+fn check_accessors(json: &Value) -> Result<(), FormatError> {
+    let list = |key: &str| json.get(key).and_then(Value::as_array);
+    let number = |v: &Value, key: &str| v.get(key).and_then(Value::as_u64);
+    let accessors = list("accessors");
+    let views = list("bufferViews");
+    let buffers = list("buffers");
+    let mut positions: Vec<u64> = list("meshes")
+        .into_iter()
+        .flatten()
+        .filter_map(|m| m.get("primitives").and_then(Value::as_array))
+        .flatten()
+        .filter_map(|p| p.get("attributes")?.get("POSITION")?.as_u64())
+        .collect();
+    positions.sort_unstable();
+    positions.dedup();
+    // `count` elements of `size` bytes from `offset` in bufferViews[view], for `what`.
+    let check_view = |what: &str, view: u64, offset: u64, count: u64, size: u64| {
+        let fail = |why: String| Err(FormatError::new(format!("{what}: {why}")));
+        let Some(v) = views.and_then(|v| v.get(view as usize)) else {
+            return fail(format!("bufferViews[{view}] does not exist"));
+        };
+        let stride = match v.get("byteStride") {
+            None => size,
+            Some(s) => match s.as_u64() {
+                // 0 is read as tightly packed, as the gltf crate does.
+                Some(0) => size,
+                Some(s) if s >= size => s,
+                _ => {
+                    return fail(format!(
+                        "bufferViews[{view}].byteStride is {s}, less than its {size}-byte elements"
+                    ))
+                }
+            },
+        };
+        let length = number(v, "byteLength").unwrap_or(0);
+        let end = (count - 1)
+            .checked_mul(stride)
+            .and_then(|n| n.checked_add(offset))
+            .and_then(|n| n.checked_add(size));
+        match end {
+            Some(end) if end <= length => {}
+            _ => {
+                return fail(format!(
+                    "{count} elements of {size} bytes every {stride} from byte {offset} do not fit in bufferViews[{view}]'s {length} bytes"
+                ))
+            }
+        }
+        let buffer = number(v, "buffer").unwrap_or(0);
+        let buffer_length = buffers
+            .and_then(|b| b.get(buffer as usize))
+            .and_then(|b| number(b, "byteLength"))
+            .unwrap_or(0);
+        let view_offset = number(v, "byteOffset").unwrap_or(0);
+        if view_offset
+            .checked_add(length)
+            .is_none_or(|end| end > buffer_length)
+        {
+            return fail(format!(
+                "bufferViews[{view}] ({length} bytes from byte {view_offset}) does not fit in buffers[{buffer}]'s {buffer_length} bytes"
+            ));
+        }
+        Ok(())
+    };
+    for index in positions {
+        let what = format!("accessors[{index}] (vertex positions)");
+        let Some(a) = accessors.and_then(|a| a.get(index as usize)) else {
+            continue; // check_indices has refused it
+        };
+        let fail = |why: &str| Err(FormatError::new(format!("{what}: {why}")));
+        if a.get("type").and_then(Value::as_str) != Some("VEC3")
+            || number(a, "componentType") != Some(5126)
+        {
+            return fail("positions must be VEC3 of FLOAT (componentType 5126)");
+        }
+        let count = number(a, "count").unwrap_or(0);
+        if count == 0 {
+            return fail("its count is 0; an accessor has one element at least");
+        }
+        if let Some(view) = number(a, "bufferView") {
+            check_view(&what, view, number(a, "byteOffset").unwrap_or(0), count, 12)?;
+        }
+        let Some(sparse) = a.get("sparse") else {
+            continue;
+        };
+        let sparse_count = number(sparse, "count").unwrap_or(0);
+        if sparse_count == 0 || sparse_count > count {
+            return fail(&format!(
+                "its sparse count is {sparse_count}; it must be from 1 to the accessor's {count}"
+            ));
+        }
+        let part = |key: &str| sparse.get(key).cloned().unwrap_or(Value::Null);
+        let (indices, values) = (part("indices"), part("values"));
+        let index_size = match number(&indices, "componentType") {
+            Some(5121) => 1,
+            Some(5123) => 2,
+            Some(5125) => 4,
+            _ => {
+                return fail(
+                    "its sparse indices must be UNSIGNED_BYTE, UNSIGNED_SHORT or UNSIGNED_INT",
+                )
+            }
+        };
+        for (key, part, size) in [("indices", &indices, index_size), ("values", &values, 12)] {
+            let Some(view) = number(part, "bufferView") else {
+                return fail(&format!("its sparse {key} name no bufferView"));
+            };
+            check_view(
+                &format!("{what}, sparse {key}"),
+                view,
+                number(part, "byteOffset").unwrap_or(0),
+                sparse_count,
+                size,
+            )?;
+        }
     }
     Ok(())
 }
@@ -925,6 +1079,20 @@ mod index_tests {
             "bufferViews": [{"buffer": 0, "byteLength": 12}],
             "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}]}"#;
         let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message.contains(
+                "accessors[0] (vertex positions): 3 elements of 12 bytes every 12 from byte 0 do not fit in bufferViews[0]'s 12 bytes"
+            ),
+            "{}",
+            e.message
+        );
+        // Vertices that are not finite: the node is named.
+        let nan =
+            base64::engine::general_purpose::STANDARD.encode(f32::NAN.to_le_bytes().repeat(9));
+        let text = text
+            .replace(r#""byteLength": 12"#, r#""byteLength": 36"#)
+            .replace("AAAAAAAAAAAAAAAA", &nan);
+        let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
         assert!(e.message.contains("nodes[0] ('tri')"), "{}", e.message);
     }
 
@@ -944,6 +1112,100 @@ mod index_tests {
             "bufferViews": [{{"buffer": 0, "byteLength": 36}}],
             "buffers": [{{"byteLength": 36, "uri": "data:application/octet-stream;base64,{data}"}}]}}"#
         )
+    }
+
+    #[test]
+    fn strides_and_bounds_the_gltf_crate_would_panic_on_are_refused_with_the_accessor_named() {
+        // Each edit of the one-triangle file, and what the one-line error must say. Every
+        // one of them panicked inside the gltf crate (an assertion, an overflow, an unwrap).
+        type Edit<'a> = &'a dyn Fn(&mut Value);
+        let cases: [(&str, Edit, &str); 10] = [
+            ("stride 4", &|j| j["bufferViews"][0]["byteStride"] = 4.into(),
+             "accessors[0] (vertex positions): bufferViews[0].byteStride is 4, less than its 12-byte elements"),
+            ("stride 1", &|j| j["bufferViews"][0]["byteStride"] = 1.into(),
+             "bufferViews[0].byteStride is 1"),
+            ("offset", &|j| j["accessors"][0]["byteOffset"] = 4.into(),
+             "accessors[0] (vertex positions): 3 elements of 12 bytes every 12 from byte 4 do not fit in bufferViews[0]'s 36 bytes"),
+            ("huge count", &|j| j["accessors"][0]["count"] = (1u64 << 62).into(),
+             "accessors[0] (vertex positions): 4611686018427387904 elements"),
+            ("no count", &|j| j["accessors"][0]["count"] = 0.into(),
+             "accessors[0] (vertex positions): its count is 0"),
+            ("bytes", &|j| j["accessors"][0]["componentType"] = 5121.into(),
+             "accessors[0] (vertex positions): positions must be VEC3 of FLOAT"),
+            ("view past its buffer", &|j| j["bufferViews"][0]["byteOffset"] = 30.into(),
+             "bufferViews[0] (36 bytes from byte 30) does not fit in buffers[0]'s 36 bytes"),
+            ("sparse stride", &|j| {
+                j["bufferViews"].as_array_mut().unwrap().push(
+                    serde_json::json!({"buffer": 0, "byteLength": 36, "byteStride": 4}));
+                j["accessors"][0]["sparse"] = serde_json::json!({"count": 1,
+                    "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 1}});
+            }, "accessors[0] (vertex positions), sparse values: bufferViews[1].byteStride is 4"),
+            ("sparse view", &|j| j["accessors"][0]["sparse"] = serde_json::json!({"count": 1,
+                    "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 7}}),
+             "accessors[0].sparse.values.bufferView is 7, but the file has 1 bufferViews"),
+            ("animated ghost", &|j| j["animations"] = serde_json::json!([{"channels":
+                    [{"sampler": 0, "target": {"node": 9, "path": "translation"}}],
+                    "samplers": [{"input": 0, "output": 0}]}]),
+             "animations[0].channels[0].target.node is 9, but the file has 1 nodes"),
+        ];
+        let base: Value =
+            serde_json::from_str(&triangle_under(r#"[{"name": "tri", "mesh": 0}]"#)).unwrap();
+        for (case, edit, message) in cases {
+            let mut json = base.clone();
+            edit(&mut json);
+            let bytes = serde_json::to_vec(&json).unwrap();
+            let e = read_bytes(bytes, Path::new("."), "t").unwrap_err();
+            assert!(e.message.contains(message), "{case}: {}", e.message);
+            assert_eq!(e.message.lines().count(), 1, "{case}: {}", e.message);
+        }
+        // What is valid is still read: a stride of 12 or 0, a sparse accessor in bounds.
+        for stride in [0, 12] {
+            let mut json = base.clone();
+            json["bufferViews"][0]["byteStride"] = stride.into();
+            let bytes = serde_json::to_vec(&json).unwrap();
+            assert_eq!(
+                read_bytes(bytes, Path::new("."), "t")
+                    .unwrap()
+                    .0
+                    .objects
+                    .len(),
+                1
+            );
+        }
+        let mut json = base.clone();
+        // Vertex 0 replaced by vertex 1 (index 0 is the u32 0 at byte 0; the value is bytes 12..24).
+        json["bufferViews"]
+            .as_array_mut()
+            .unwrap()
+            .push(serde_json::json!({"buffer": 0, "byteOffset": 12, "byteLength": 12}));
+        json["accessors"][0]["sparse"] = serde_json::json!({"count": 1,
+            "indices": {"bufferView": 0, "componentType": 5125}, "values": {"bufferView": 1}});
+        let bytes = serde_json::to_vec(&json).unwrap();
+        let scene = read_bytes(bytes, Path::new("."), "t").unwrap().0;
+        assert_eq!(scene.objects.len(), 1);
+    }
+
+    #[test]
+    fn a_cycle_of_empty_nodes_is_refused_or_never_walked() {
+        // Through empty nodes below a root: one of them has two parents.
+        let text = triangle_under(
+            r#"[{"name": "root", "children": [1, 3]}, {"name": "a", "children": [2]},
+                {"name": "b", "children": [1]}, {"name": "tri", "mesh": 0}]"#,
+        );
+        let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
+        assert!(
+            e.message
+                .contains("nodes[1] is a child of both nodes[0] and nodes[2]"),
+            "{}",
+            e.message
+        );
+        // A pure cycle with no root, in a file without scenes: no node is a root, nothing
+        // is walked, and the read ends at once.
+        let text =
+            triangle_under(r#"[{"name": "a", "children": [1]}, {"name": "b", "children": [0]}]"#)
+                .replace(r#""scene": 0, "scenes": [{"nodes": [0]}],"#, "");
+        let (scene, _) = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap();
+        assert!(scene.objects.is_empty());
     }
 
     #[test]
