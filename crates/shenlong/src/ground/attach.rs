@@ -94,8 +94,12 @@ impl Reader<'_> {
         // "put the spoon next to the toaster" with two spoons: after a verb of placing the
         // relation is where the spoon goes, not which spoon; refuse, naming them.
         if picks && !describes && !group {
-            if let Some((Post::Relation(rel, _), p_end)) = &post {
-                if rel.can_be_a_destination()
+            if let Some((p @ (Post::Relation(..) | Post::Room(_)), p_end)) = &post {
+                let can_be_a_destination = match p {
+                    Post::Relation(rel, _) => rel.can_be_a_destination(),
+                    _ => true,
+                };
+                if can_be_a_destination
                     && !self.clause_goes_on(*p_end)
                     && self.placing_verb_before(start)
                 {
@@ -174,6 +178,26 @@ impl Reader<'_> {
                     )
                     .ok_or_else(|| self.too_close(&at, &objects, words))?;
                 }
+            }
+            Post::Room(place) => {
+                let kept = select::in_room(self.scene, &objects, place).ok_or_else(|| {
+                    GroundError::NoPick {
+                        phrase: at.clone(),
+                        reason: if self.scene.bounds.is_none() {
+                            "the scene has no room (no \"bounds\") to be in".to_string()
+                        } else if objects.len() == 1 {
+                            format!("the {} is not {words}", self.name(objects[0]))
+                        } else {
+                            format!(
+                                "no single {} is clearly {words} (the {}s here are {})",
+                                head.text,
+                                head.text,
+                                error::list(&self.names(&objects))
+                            )
+                        },
+                    }
+                })?;
+                objects = kept;
             }
             Post::Middle => {
                 let picked = select::middle(self.scene, &objects)

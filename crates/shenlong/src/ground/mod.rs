@@ -176,6 +176,8 @@ enum Post {
     Middle,
     From(Direction),
     Relation(Relation, Vec<usize>),
+    /// A place in the room: "in the corner", "in the middle of the room", "on the wall".
+    Room(select::RoomPlace),
 }
 
 /// Whether a noun phrase stands on its own, or names the other object of a modifier
@@ -1592,6 +1594,9 @@ impl<'a> Reader<'a> {
                 return Ok(Some((Post::Middle, s + 1)));
             }
         }
+        if let Some(room) = self.room_place_at(j) {
+            return Ok(Some(room));
+        }
         if w(j) == "from" {
             if w(j + 1) == "the" {
                 if let Some((axis, sign)) = words::side_word(w(j + 2)) {
@@ -1642,6 +1647,51 @@ impl<'a> Reader<'a> {
             }
         }
         Ok(None)
+    }
+
+    /// A place in the room after a noun, and where it ends: `in the (back left) corner`,
+    /// `in the middle of the room` (or of the kitchen, …), `on the wall`.
+    fn room_place_at(&self, j: usize) -> Option<(Post, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        if !(matches!(w(j), "in" | "at" | "on" | "against") && w(j + 1) == "the") {
+            return None;
+        }
+        let mut s = j + 2;
+        let (mut x, mut z) = (None, None);
+        while let Some(parts) = words::side_parts(w(s)) {
+            for (axis, sign) in parts {
+                match axis {
+                    words::Axis::X => x = Some(sign),
+                    words::Axis::Z => z = Some(sign),
+                    words::Axis::Y => return None,
+                }
+            }
+            s += 1;
+        }
+        match w(s) {
+            "corner" if matches!(w(j), "in" | "at") => {
+                Some((Post::Room(select::RoomPlace::Corner(x, z)), s + 1))
+            }
+            "middle" | "centre" | "center"
+                if x.is_none() && z.is_none() && w(s + 1) == "of" && w(s + 2) == "the" =>
+            {
+                let room = w(s + 3);
+                let names_room = self.g.lexicon.concepts_of(room).iter().any(|&c| {
+                    let concept = self.g.lexicon.concept(c);
+                    concept.term == "room"
+                        || concept
+                            .hypernyms
+                            .iter()
+                            .any(|&h| self.g.lexicon.concept(h).term == "room")
+                });
+                (room == "room" || names_room)
+                    .then_some((Post::Room(select::RoomPlace::Middle), s + 4))
+            }
+            "wall" if x.is_none() && z.is_none() && matches!(w(j), "on" | "against") => {
+                Some((Post::Room(select::RoomPlace::Wall), s + 1))
+            }
+            _ => None,
+        }
     }
 
     /// A relation word group at `j` and where its object starts.

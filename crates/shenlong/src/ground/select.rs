@@ -329,3 +329,117 @@ fn relation_key(
     };
     Some(key)
 }
+
+/// A place in the room that picks an object standing there.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum RoomPlace {
+    /// A corner: the sides named (x sign, z sign), else whichever corner is nearest.
+    Corner(Option<f64>, Option<f64>),
+    /// The middle of the room.
+    Middle,
+    /// On a wall: hanging on it or standing against it.
+    Wall,
+}
+
+/// How close to a wall an object "on the wall" is.
+pub(crate) const WALL_GAP: f64 = 0.05;
+/// How close to both walls of a corner an object "in the corner" is.
+pub(crate) const CORNER_REACH: f64 = 0.5;
+/// How close to the room's middle an object "in the middle of the room" is (its centre),
+/// as a fraction of the room's smaller horizontal extent.
+pub(crate) const MIDDLE_REACH: f64 = 0.25;
+
+/// The candidates a room place keeps: of those there at all (within [`CORNER_REACH`] of
+/// both walls of the corner, within [`MIDDLE_REACH`] of the room's smaller extent of the
+/// middle), the one nearest it,
+/// with a clear margin over the next ([`DISTANCE_MARGIN`], [`DISTANCE_RATIO`]); or every
+/// one within [`WALL_GAP`] of a wall. `None` when none is clearly there.
+pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> Option<Vec<usize>> {
+    let room = scene.bounds?;
+    let b = boxes(scene, candidates);
+    let flat = |v: glam::DVec3| glam::DVec2::new(v.x, v.z);
+    let distance = |bx: &Aabb| -> f64 {
+        let c = flat(bx.center());
+        match place {
+            RoomPlace::Middle => (c - flat(room.center())).length(),
+            RoomPlace::Corner(x, z) => {
+                let xs: Vec<f64> = match x {
+                    Some(s) if s < 0.0 => vec![room.min.x],
+                    Some(_) => vec![room.max.x],
+                    None => vec![room.min.x, room.max.x],
+                };
+                let zs: Vec<f64> = match z {
+                    Some(s) if s < 0.0 => vec![room.min.z],
+                    Some(_) => vec![room.max.z],
+                    None => vec![room.min.z, room.max.z],
+                };
+                xs.iter()
+                    .flat_map(|&cx| zs.iter().map(move |&cz| glam::DVec2::new(cx, cz)))
+                    .map(|corner| (c - corner).length())
+                    .fold(f64::INFINITY, f64::min)
+            }
+            RoomPlace::Wall => 0.0,
+        }
+    };
+    if place == RoomPlace::Wall {
+        let against = |bx: &Aabb| {
+            bx.min.x - room.min.x <= WALL_GAP
+                || room.max.x - bx.max.x <= WALL_GAP
+                || bx.min.z - room.min.z <= WALL_GAP
+                || room.max.z - bx.max.z <= WALL_GAP
+        };
+        let kept: Vec<usize> = candidates
+            .iter()
+            .zip(&b)
+            .filter(|(_, bx)| against(bx))
+            .map(|(&i, _)| i)
+            .collect();
+        return (!kept.is_empty()).then_some(kept);
+    }
+    // To be there at all: within [`CORNER_REACH`] of both walls of a corner, or within
+    // [`MIDDLE_REACH`] of the room's middle.
+    let there = |bx: &Aabb| match place {
+        RoomPlace::Corner(x, z) => {
+            let near_x = |sign: f64| {
+                if sign < 0.0 {
+                    bx.min.x - room.min.x <= CORNER_REACH
+                } else {
+                    room.max.x - bx.max.x <= CORNER_REACH
+                }
+            };
+            let near_z = |sign: f64| {
+                if sign < 0.0 {
+                    bx.min.z - room.min.z <= CORNER_REACH
+                } else {
+                    room.max.z - bx.max.z <= CORNER_REACH
+                }
+            };
+            let xs = x.map_or_else(|| vec![-1.0, 1.0], |s| vec![s]);
+            let zs = z.map_or_else(|| vec![-1.0, 1.0], |s| vec![s]);
+            xs.iter().any(|&sx| near_x(sx))
+                && zs.iter().any(|&sz| near_z(sz))
+                && xs
+                    .iter()
+                    .any(|&sx| zs.iter().any(|&sz| near_x(sx) && near_z(sz)))
+        }
+        RoomPlace::Middle => {
+            let extent = (room.max.x - room.min.x).min(room.max.z - room.min.z);
+            (flat(bx.center()) - flat(room.center())).length() <= MIDDLE_REACH * extent
+        }
+        RoomPlace::Wall => true,
+    };
+    let mut order: Vec<(f64, usize)> = b
+        .iter()
+        .zip(candidates.iter().copied())
+        .filter(|(bx, _)| there(bx))
+        .map(|(bx, i)| (distance(bx), i))
+        .collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    match order.as_slice() {
+        [(_, one)] => Some(vec![*one]),
+        [(d0, first), (d1, _), ..] => {
+            (d1 - d0 > DISTANCE_MARGIN && *d1 > d0 * DISTANCE_RATIO).then(|| vec![*first])
+        }
+        [] => None,
+    }
+}

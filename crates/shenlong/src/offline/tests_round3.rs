@@ -32,6 +32,7 @@ fn exported() -> Scene {
         ("Rug_Wool", [2.4, 0.01, 1.2], [0.0, 0.0, -1.0]),
         ("Table_Coffee", [1.0, 0.4, 0.6], [0.0, 0.01, -1.0]),
         ("Books_Stack", [0.25, 0.1, 0.2], [0.2, 0.41, -1.0]),
+        ("Lamp_Standing.001", [0.35, 1.5, 0.35], [3.7, 0.0, 2.7]),
     ] {
         s.push_box(name, size, at);
     }
@@ -272,4 +273,26 @@ fn a_destination_after_a_verb_of_placing_is_not_a_pick() {
         .max(vase.min.z - mug.max.z)
         .max(mug.min.z - vase.max.z);
     assert!((0.0..=0.06).contains(&gap), "next to the vase: gap {gap}");
+}
+
+#[test]
+fn where_an_object_is_in_the_room_says_which() {
+    let s = exported();
+    // Of three lamps, one stands in a corner.
+    let a = run(&s, "move the lamp in the corner 10 cm to the left");
+    only_moved(&s, &a, &[("Lamp_Standing.001", [-0.1, 0.0, 0.0])]);
+    let a = run(&s, "move the clock on the wall 20 cm down");
+    only_moved(&s, &a, &[("Clock_Wall", [0.0, -0.2, 0.0])]);
+    // A description that does not hold is refused, not ignored.
+    refused(
+        &s,
+        "move the ottoman in the corner 10 cm left",
+        &["Ottoman"],
+    );
+    // After a verb of placing, a room place that would have to pick is where one goes.
+    refused(
+        &s,
+        "put the lamp in the corner",
+        &["Lamp_Table.003", "SM_FloorLamp_01", "Lamp_Standing.001"],
+    );
 }
