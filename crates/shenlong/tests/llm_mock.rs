@@ -437,6 +437,37 @@ fn an_oversized_reply_is_refused_and_never_sent_back() {
 }
 
 #[test]
+fn an_endless_reply_is_read_up_to_the_limit_once_and_refused() {
+    let sent = std::sync::Arc::new(std::sync::atomic::AtomicUsize::new(0));
+    // Four replies scripted: a client that retried would come back for them.
+    let server = MockLlm::start(vec![Reply::Endless(std::sync::Arc::clone(&sent)); 4]);
+    let mut options = ClientOptions::new(server.url.clone(), "mock-model", None);
+    options.backoff = Duration::from_millis(10);
+    options.request_timeout = Duration::from_secs(60);
+    let t = LlmTranslator {
+        backend: Box::new(OpenAiClient::new(options)),
+        system: System::Cga,
+        retries: 5,
+        deadline: Duration::from_secs(300),
+        cache: None,
+        recorder: None,
+    };
+    let started = std::time::Instant::now();
+    let mut scene = workshop();
+    let e = edit(&mut scene, INSTRUCTION, &t, &EditOptions::default()).unwrap_err();
+    let elapsed = started.elapsed();
+    assert!(e.message.contains("larger than 320 KiB"), "{e}");
+    assert_eq!(e.message.lines().count(), 1, "{e}");
+    assert!(!e.message.contains("attempts"), "{e}");
+    assert!(elapsed < Duration::from_secs(3), "{elapsed:?}");
+    assert_eq!(server.count(), 1, "one request, not retried");
+    // What the server got out is the limit and what the sockets' buffers held, far short
+    // of the 16 MiB an attempt used to read.
+    let sent = sent.load(std::sync::atomic::Ordering::SeqCst);
+    assert!(sent < 8 << 20, "{sent} bytes sent");
+}
+
+#[test]
 fn a_long_retry_after_cannot_outlast_the_deadline() {
     let server = MockLlm::start(vec![
         Reply::Raw(

@@ -11,6 +11,11 @@ pub mod tokens;
 use serde::{Deserialize, Serialize};
 use std::time::Duration;
 
+/// The longest reply read from a model, in bytes: a larger one is refused, never echoed
+/// back in a retry, and recorded only in part. A model server's HTTP body is read up to
+/// [`openai::MAX_BODY_BYTES`] (this and room for the JSON around it) and no further.
+pub const MAX_REPLY_BYTES: usize = 256 * 1024;
+
 /// One chat message.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]
 pub struct Message {

@@ -6,6 +6,7 @@
 
 use super::{tokens, Backend, Completion, LlmError, Message, Usage};
 use serde_json::{json, Value};
+use std::io::Read;
 use std::time::{Duration, Instant};
 
 /// The official OpenAI endpoint.
@@ -15,6 +16,12 @@ pub const OLLAMA_BASE_URL: &str = "http://localhost:11434/v1";
 
 /// The longest wait a server's `Retry-After` may ask for, in seconds.
 pub const MAX_RETRY_AFTER_SECS: f64 = 30.0;
+
+/// The most bytes of a model server's HTTP body read: a reply of [`super::MAX_REPLY_BYTES`]
+/// and 64 KiB for the JSON around it. Reading stops there, whatever the server sends (an
+/// endless stream costs one request and this much), and the reply is refused, not retried:
+/// a reply too large is the model's doing, and asking again would only read it again.
+pub const MAX_BODY_BYTES: u64 = super::MAX_REPLY_BYTES as u64 + 64 * 1024;
 
 /// Connection settings.
 #[derive(Clone, Debug)]
@@ -182,18 +189,34 @@ impl OpenAiClient {
             .and_then(|v| v.trim().parse::<f64>().ok())
             .filter(|s| s.is_finite() && *s >= 0.0)
             .map(|s| Duration::from_secs_f64(s.min(MAX_RETRY_AFTER_SECS)));
-        let text = response
-            .body_mut()
-            .with_config()
-            .limit(16 * 1024 * 1024)
-            .read_to_string()
-            .map_err(|e| {
-                AttemptError::new(
-                    format!("cannot read the model server's reply: {e}"),
-                    true,
-                    None,
-                )
-            })?;
+        // At most one byte past the limit is read: enough to know the reply is too large.
+        let mut bytes = Vec::new();
+        std::io::Read::take(
+            response.body_mut().with_config().reader(),
+            MAX_BODY_BYTES + 1,
+        )
+        .read_to_end(&mut bytes)
+        .map_err(|e| {
+            AttemptError::new(
+                format!("cannot read the model server's reply: {e}"),
+                true,
+                None,
+            )
+        })?;
+        if bytes.len() as u64 > MAX_BODY_BYTES {
+            let message = format!(
+                "the model server's reply (HTTP {status}) is larger than {} KiB; reading stopped there, and a reply that large is not asked for again",
+                MAX_BODY_BYTES / 1024
+            );
+            return Err(AttemptError::new(message, false, None));
+        }
+        let text = String::from_utf8(bytes).map_err(|e| {
+            AttemptError::new(
+                format!("the model server's reply is not UTF-8: {e}"),
+                false,
+                None,
+            )
+        })?;
         if status != 200 {
             let detail = serde_json::from_str::<Value>(&text)
                 .ok()

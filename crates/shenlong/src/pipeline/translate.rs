@@ -9,9 +9,7 @@ pub use crate::translate::{Exchange, TranslateError, Translation, Translator};
 use crate::translate::{ReplyCounts, System, Templated};
 use std::time::{Duration, Instant};
 
-/// The longest reply read from a model, in bytes: a larger one is refused, never echoed
-/// back in a retry, and recorded only in part.
-pub const MAX_REPLY_BYTES: usize = 256 * 1024;
+pub use crate::llm::MAX_REPLY_BYTES;
 
 /// A language model prompted with one of the three systems, retrying with the error when a
 /// reply cannot be used.

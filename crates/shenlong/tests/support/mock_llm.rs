@@ -20,6 +20,9 @@ pub enum Reply {
     Raw(u16, Vec<(String, String)>, String),
     /// Accept, read the request, then say nothing for this long and close.
     Hang(Duration),
+    /// A 200 whose body never ends (no length, `x` after `x` inside a reply's content),
+    /// until the client hangs up or 30 s pass; the counter says how many bytes were sent.
+    Endless(Arc<std::sync::atomic::AtomicUsize>),
 }
 
 /// A request as the server saw it.
@@ -171,6 +174,19 @@ fn serve_with(
     let (status, extra, text) = match reply {
         Reply::Hang(d) => {
             std::thread::sleep(d);
+            return;
+        }
+        Reply::Endless(sent) => {
+            let head = "HTTP/1.1 200 Mock\r\nContent-Type: application/json\r\nConnection: close\r\n\r\n{\"choices\": [{\"message\": {\"role\": \"assistant\", \"content\": \"";
+            let chunk = vec![b'x'; 64 * 1024];
+            let until = Instant::now() + Duration::from_secs(30);
+            let mut ok = stream.write_all(head.as_bytes()).is_ok();
+            while ok && Instant::now() < until {
+                ok = stream.write_all(&chunk).is_ok();
+                if ok {
+                    sent.fetch_add(chunk.len(), std::sync::atomic::Ordering::SeqCst);
+                }
+            }
             return;
         }
         Reply::Content(content) => (200, vec![], serde_json::json!({
