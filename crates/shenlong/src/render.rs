@@ -307,11 +307,25 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
     svg
 }
 
+/// `text` as XML 1.0 character data or an attribute value: `& < > " '` as entities, and
+/// each character XML 1.0 forbids (the C0 controls but tab, newline and carriage return;
+/// U+FFFE and U+FFFF) as U+FFFD, so that a name with a control character in it still gives
+/// a well-formed SVG (and a PNG).
 fn escape(text: &str) -> String {
-    text.replace('&', "&amp;")
-        .replace('<', "&lt;")
-        .replace('>', "&gt;")
-        .replace('"', "&quot;")
+    let mut out = String::with_capacity(text.len());
+    for c in text.chars() {
+        match c {
+            '&' => out.push_str("&amp;"),
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '"' => out.push_str("&quot;"),
+            '\'' => out.push_str("&apos;"),
+            '\t' | '\n' | '\r' => out.push(c),
+            '\u{0}'..='\u{1f}' | '\u{fffe}' | '\u{ffff}' => out.push(char::REPLACEMENT_CHARACTER),
+            c => out.push(c),
+        }
+    }
+    out
 }
 
 /// Rasterises an SVG (such as [`plan_svg`]'s) to PNG bytes, with the system's fonts for
@@ -402,6 +416,28 @@ mod tests {
 #[cfg(test)]
 mod label_tests {
     use super::*;
+
+    #[test]
+    fn names_with_control_characters_give_well_formed_xml() {
+        let name = "a\u{1}b\u{1b}]0;pwned\u{7} <&> \"q\" 'x' \u{fffe}\u{ffff}\u{0}\tz";
+        let mut scene = Scene::new(name);
+        scene.push_box(name, [1.0, 1.0, 1.0], [0.0, 0.0, 0.0]);
+        let svg = plan_svg(&scene, None);
+        let document = roxmltree::Document::parse(&svg).unwrap_or_else(|e| panic!("{e}"));
+        // The characters XML forbids became U+FFFD; the rest read back as they were.
+        let shown = "a\u{fffd}b\u{fffd}]0;pwned\u{fffd} <&> \"q\" 'x' \u{fffd}\u{fffd}\u{fffd}\tz";
+        let texts: Vec<String> = document
+            .descendants()
+            .filter_map(|n| n.text())
+            .map(str::to_string)
+            .collect();
+        assert!(texts.iter().any(|t| t.contains(shown)), "{texts:?}");
+        #[cfg(feature = "png")]
+        {
+            let png = svg_to_png(&svg).unwrap();
+            assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
+        }
+    }
 
     #[test]
     fn huge_names_are_cut_and_the_plan_stays_small() {
