@@ -13,6 +13,20 @@
 /// (`u` → `you`, `pls` → `please`, `thx` → `thanks`). Other words are returned as they are.
 #[must_use]
 pub fn canonical(word: &str) -> &str {
+    // Greetings typed long: "hiii", "heyyy", "hellooo".
+    let stretched = |stem: &str, last: char| {
+        word.strip_prefix(stem)
+            .is_some_and(|rest| !rest.is_empty() && rest.chars().all(|c| c == last))
+    };
+    if stretched("hi", 'i') {
+        return "hi";
+    }
+    if stretched("hey", 'y') {
+        return "hey";
+    }
+    if stretched("hello", 'o') {
+        return "hello";
+    }
     match word {
         "u" | "ya" | "yu" => "you",
         "ur" => "your",
@@ -25,8 +39,7 @@ pub fn canonical(word: &str) -> &str {
         "ok" | "k" | "kk" | "okey" | "okie" => "okay",
         "mornin" | "gm" => "morning",
         "sec" | "second" | "moment" | "min" | "minute" | "mo" => "sec",
-        "hii" | "hiya" | "heya" => "hi",
-        "heyy" | "heyyy" => "hey",
+        "hiya" | "heya" => "hi",
         other => other,
     }
 }
@@ -114,6 +127,9 @@ const OPENERS: &[&[&str]] = &[
     &["sorry", "to", "bug", "you"],
     &["quick", "one"],
     &["quick", "question"],
+    &["quick", "q"],
+    &["if", "poss"],
+    &["if", "possible"],
     &["quick", "request"],
     &["when", "you", "get", "a", "sec"],
     &["when", "you", "have", "a", "sec"],
@@ -188,6 +204,9 @@ const CLOSERS: &[&[&str]] = &[
     &["if", "that's", "alright"],
     &["if", "that", "is", "okay"],
     &["if", "that's", "possible"],
+    &["if", "poss"],
+    &["ta", "very", "much"],
+    &["ta"],
     &["when", "you", "get", "a", "sec"],
     &["asap"],
     &["much", "appreciated"],

@@ -94,7 +94,7 @@ impl Reader<'_> {
         // "put the spoon next to the toaster" with two spoons: after a verb of placing the
         // relation is where the spoon goes, not which spoon; refuse, naming them.
         if picks && !describes && !group {
-            if let Some((p @ (Post::Relation(..) | Post::Room(_)), p_end)) = &post {
+            if let Some((p @ (Post::Relation(..) | Post::Room(_) | Post::Floor), p_end)) = &post {
                 let can_be_a_destination = match p {
                     Post::Relation(rel, _) => rel.can_be_a_destination(),
                     _ => true,

@@ -41,11 +41,11 @@ const BEFORE: &[(&[&str], Need)] = &[
     (&["leave"], Need::EndOrAfter),
     (&["keep"], Need::After),
     (&["not"], Need::EndOrAfter),
-    (&["except", "for"], Need::EndOrAfter),
-    (&["except"], Need::EndOrAfter),
-    (&["apart", "from"], Need::EndOrAfter),
-    (&["other", "than"], Need::EndOrAfter),
-    (&["excluding"], Need::EndOrAfter),
+    (&["except", "for"], Need::Nothing),
+    (&["except"], Need::Nothing),
+    (&["apart", "from"], Need::Nothing),
+    (&["other", "than"], Need::Nothing),
+    (&["excluding"], Need::Nothing),
 ];
 
 /// Whether a hold needs words after its phrase.
@@ -55,6 +55,8 @@ enum Need {
     EndOrAfter,
     /// One of [`AFTER`].
     After,
+    /// Nothing: the words before say it all (`except the laptop`, wherever it stands).
+    Nothing,
 }
 
 /// Words after a phrase that say it stays.
@@ -211,6 +213,7 @@ fn single(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
                 && match need {
                     Need::After => after.is_some(),
                     Need::EndOrAfter => after.is_some() || ends,
+                    Need::Nothing => true,
                 }
         });
         let start = if let Some((words, _)) = before {
@@ -237,7 +240,8 @@ fn single(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
             });
             continue;
         };
-        if !ends && !clause_ends(tokens, end) {
+        let anywhere = before.is_some_and(|(_, need)| *need == Need::Nothing);
+        if !anywhere && !ends && !clause_ends(tokens, end) {
             continue;
         }
         out.push(Hold {
@@ -344,6 +348,9 @@ mod tests {
         );
         let (_, found) = holds("move [everything on the desk] left except [the laptop]");
         assert_eq!(found, vec![(1, "except the laptop".to_string())]);
+        let (_, found) =
+            holds("slide [everything on the dresser] except [the blue book] 10 cm left");
+        assert_eq!(found, vec![(1, "except the blue book".to_string())]);
     }
 
     #[test]

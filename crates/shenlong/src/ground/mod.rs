@@ -619,10 +619,24 @@ impl<'a> Reader<'a> {
         if !w.contains(['_', '.']) {
             return None;
         }
-        let raw = &self.text[self.tokens[k].span.clone()];
+        // Unity's copies: `Lamp_Bedside (1)` is its own object, never `Lamp_Bedside`.
+        let copy = matches!(
+            (
+                self.tokens.get(k + 1).map(|t| &t.kind),
+                self.tokens.get(k + 2).map(|t| &t.kind),
+                self.tokens.get(k + 3).map(|t| &t.kind),
+            ),
+            (
+                Some(Kind::Punct('(')),
+                Some(Kind::Number(_)),
+                Some(Kind::Punct(')'))
+            )
+        );
+        let end = if copy { k + 4 } else { k + 1 };
+        let raw = &self.text[self.tokens[k].span.start..self.tokens[end - 1].span.end];
         let object = self.scene.find(raw)?;
         let mut head = self.make_head(
-            k..k + 1,
+            k..end,
             vec![object],
             Tier::Name,
             false,

@@ -149,9 +149,9 @@ impl Clause {
                     matches!(self.tokens.get(i + 1), Some(Token::Number(_)))
                         || self.word(i + 2).and_then(words::length_unit).is_some()
                 }
-                Some("about" | "roughly" | "approximately" | "approx" | "circa" | "maybe") => {
-                    number_at(self, i + 1)
-                }
+                Some(
+                    "about" | "roughly" | "approximately" | "approx" | "circa" | "maybe" | "like",
+                ) => number_at(self, i + 1),
                 _ => false,
             };
             if before_number && self.free(i) {
