@@ -181,20 +181,13 @@ impl Reader<'_> {
             }
             Post::Room(place) => {
                 let kept = select::in_room(self.scene, &objects, place).ok_or_else(|| {
-                    GroundError::NoPick {
-                        phrase: at.clone(),
-                        reason: if self.scene.bounds.is_none() {
-                            "the scene has no room (no \"bounds\") to be in".to_string()
-                        } else if objects.len() == 1 {
-                            format!("the {} is not {words}", self.name(objects[0]))
-                        } else {
-                            format!(
-                                "no single {} is clearly {words} (the {}s here are {})",
-                                head.text,
-                                head.text,
-                                error::list(&self.names(&objects))
-                            )
-                        },
+                    if self.scene.bounds.is_none() {
+                        GroundError::NoPick {
+                            phrase: at.clone(),
+                            reason: "the scene has no room (no \"bounds\") to be in".into(),
+                        }
+                    } else {
+                        self.not_there(head, &objects, text)
                     }
                 })?;
                 objects = kept;
@@ -212,23 +205,30 @@ impl Reader<'_> {
             }
             Post::Relation(relation, targets) => {
                 objects = select::by_relation(self.scene, &objects, relation, &targets, wanted)
-                    .ok_or_else(|| GroundError::NoPick {
-                        phrase: at.clone(),
-                        reason: if head.generic {
-                            format!("nothing is {words}")
-                        } else if objects.len() == 1 {
-                            format!("the {} is not {words}", self.name(objects[0]))
-                        } else {
-                            format!(
-                                "no single {} is clearly {words} (the {}s here are {})",
-                                head.text,
-                                head.text,
-                                error::list(&self.names(&objects))
-                            )
-                        },
-                    })?;
+                    .ok_or_else(|| self.not_there(head, &objects, text))?;
             }
         }
         Ok(objects)
+    }
+
+    /// The refusal for a post-modifier that keeps none of the candidates, or cannot tell
+    /// one from the others.
+    fn not_there(&self, head: &Head, objects: &[usize], text: &PostText<'_>) -> GroundError {
+        let words = text.words;
+        GroundError::NoPick {
+            phrase: text.at.to_string(),
+            reason: if head.generic {
+                format!("nothing is {words}")
+            } else if objects.len() == 1 {
+                format!("the {} is not {words}", self.name(objects[0]))
+            } else {
+                format!(
+                    "no single {} is clearly {words} (the {}s here are {})",
+                    head.text,
+                    head.text,
+                    error::list(&self.names(objects))
+                )
+            },
+        }
     }
 }

@@ -1448,21 +1448,10 @@ impl<'a> Reader<'a> {
         k > 0
             && self.word(k - 1).is_some_and(|w| {
                 words::is_verb(w)
+                    && !words::turns_or_scales(w)
                     && !matches!(
                         w,
-                        "rotate"
-                            | "turn"
-                            | "spin"
-                            | "flip"
-                            | "twist"
-                            | "swivel"
-                            | "pivot"
-                            | "scale"
-                            | "resize"
-                            | "grow"
-                            | "shrink"
-                            | "enlarge"
-                            | "make"
+                        "make"
                             | "swap"
                             | "switch"
                             | "exchange"
@@ -1473,7 +1462,6 @@ impl<'a> Reader<'a> {
                             | "grab"
                             | "pick"
                             | "fetch"
-                            | "straighten"
                     )
             })
     }
@@ -1526,30 +1514,8 @@ impl<'a> Reader<'a> {
                 Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
                 Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
                 Kind::Word(w) if words::is_verb(w) => {
-                    return matches!(
-                        w.as_str(),
-                        "rotate"
-                            | "turn"
-                            | "spin"
-                            | "twist"
-                            | "flip"
-                            | "swivel"
-                            | "pivot"
-                            | "scale"
-                            | "resize"
-                            | "grow"
-                            | "shrink"
-                            | "enlarge"
-                            | "lift"
-                            | "raise"
-                            | "lower"
-                            | "elevate"
-                            | "double"
-                            | "halve"
-                            | "triple"
-                            | "straighten"
-                            | "face"
-                    )
+                    return words::turns_or_scales(w)
+                        || matches!(w.as_str(), "lift" | "raise" | "lower" | "elevate");
                 }
                 _ => {}
             }

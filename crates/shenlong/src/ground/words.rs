@@ -224,6 +224,30 @@ pub fn singular(word: &str) -> Vec<String> {
     out
 }
 
+/// Verbs that turn or scale an object where it is, and so take no place.
+pub(crate) fn turns_or_scales(w: &str) -> bool {
+    matches!(
+        w,
+        "rotate"
+            | "turn"
+            | "spin"
+            | "twist"
+            | "flip"
+            | "swivel"
+            | "pivot"
+            | "scale"
+            | "resize"
+            | "grow"
+            | "shrink"
+            | "enlarge"
+            | "double"
+            | "halve"
+            | "triple"
+            | "straighten"
+            | "face"
+    )
+}
+
 /// Determiners and quantifiers that open a noun phrase.
 pub(crate) fn is_determiner(w: &str) -> bool {
     matches!(

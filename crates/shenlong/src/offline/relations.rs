@@ -183,26 +183,32 @@ pub(crate) fn side_by_side(subjects: &[usize], k: usize, t: usize, steps: &Steps
     ])
 }
 
+/// The move along axis `e` that puts subject `s` [`GAP`] from the face of target `t` on
+/// the side where `reference` lies (ties go to +).
+fn to_face(s: usize, t: usize, steps: &Steps, e: usize, reference: &Expr) -> Expr {
+    let b = |attribute: &str| boxed(t, attribute, steps);
+    let a = |attribute: &str| var(s, attribute);
+    let p = step(dot(sub(reference.clone(), b("center")), axis(e)));
+    let plus = sub(
+        add(dot(b("max"), axis(e)), num(GAP)),
+        dot(a("min"), axis(e)),
+    );
+    let minus = sub(
+        sub(dot(b("min"), axis(e)), num(GAP)),
+        dot(a("max"), axis(e)),
+    );
+    mul(
+        add(mul(p.clone(), plus), mul(sub(num(1.0), p), minus)),
+        axis(e),
+    )
+}
+
 /// Straight toward the target, along the horizontal axis they are apart on (in the
 /// target's proportions, as [`next_to`] chooses), until [`GAP`] from its face.
 fn up_to(s: usize, t: usize, steps: &Steps) -> Expr {
     let b = |attribute: &str| boxed(t, attribute, steps);
     let a = |attribute: &str| var(s, attribute);
-    let side = |e: usize| {
-        let p = step(dot(sub(a("center"), b("center")), axis(e)));
-        let plus = sub(
-            add(dot(b("max"), axis(e)), num(GAP)),
-            dot(a("min"), axis(e)),
-        );
-        let minus = sub(
-            sub(dot(b("min"), axis(e)), num(GAP)),
-            dot(a("max"), axis(e)),
-        );
-        mul(
-            add(mul(p.clone(), plus), mul(sub(num(1.0), p), minus)),
-            axis(e),
-        )
-    };
+    let side = |e: usize| to_face(s, t, steps, e, &a("center"));
     let dx = call("abs", vec![dot(sub(a("center"), b("center")), axis(0))]);
     let dz = call("abs", vec![dot(sub(a("center"), b("center")), axis(2))]);
     let q = step(sub(
@@ -244,21 +250,7 @@ fn next_to(s: usize, t: usize, steps: &Steps, level: Expr, reference: Expr) -> E
     let b = |attribute: &str| boxed(t, attribute, steps);
     let a = |attribute: &str| var(s, attribute);
     let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
-    let side = |e: usize| {
-        let p = step(dot(sub(reference.clone(), b("center")), axis(e)));
-        let plus = sub(
-            add(dot(b("max"), axis(e)), num(GAP)),
-            dot(a("min"), axis(e)),
-        );
-        let minus = sub(
-            sub(dot(b("min"), axis(e)), num(GAP)),
-            dot(a("max"), axis(e)),
-        );
-        mul(
-            add(mul(p.clone(), plus), mul(sub(num(1.0), p), minus)),
-            axis(e),
-        )
-    };
+    let side = |e: usize| to_face(s, t, steps, e, &reference);
     let dx = call(
         "abs",
         vec![dot(sub(reference.clone(), b("center")), axis(0))],
