@@ -4,3 +4,4 @@
 pub mod mcp;
 pub mod server;
 pub mod session;
+pub mod terminal;

@@ -58,7 +58,7 @@ fn main() -> ExitCode {
                 .find_map(|l| l.strip_prefix("tip: "))
                 .map(|t| format!(" ({t})"))
                 .unwrap_or_default();
-            eprintln!("shenlong: {first}{tip}; see 'shenlong --help'");
+            shenlong_cli::say!("shenlong: {first}{tip}; see 'shenlong --help'");
             return ExitCode::from(2);
         }
     };
@@ -78,7 +78,7 @@ fn main() -> ExitCode {
         Err(error) => {
             // One line: the chain of causes joined, newlines folded.
             let message = format!("{error:#}").replace('\n', " ");
-            eprintln!("shenlong: {message}");
+            shenlong_cli::say!("shenlong: {message}");
             ExitCode::FAILURE
         }
     }

@@ -580,3 +580,73 @@ fn a_report_linked_to_a_stream_is_written_through_the_link() {
         "the link was replaced"
     );
 }
+
+#[test]
+fn control_and_bidi_characters_never_reach_the_terminal() {
+    let dir = tempfile::tempdir().unwrap();
+    let scene = dir.path().join("evil.json");
+    let evil = "sofa\u{1b}]0;pwned\u{7}\u{202e}";
+    std::fs::write(
+        &scene,
+        serde_json::json!({"name": "evil\u{1b}]0;pwned\u{7}", "objects": [
+            {"name": evil, "position": [0, 0, 0], "size": [2, 0.8, 0.9]},
+            {"name": "lamp\u{2066}x\u{9b}\u{0}\u{200f}\u{61c}", "position": [3, 0, 0], "size": [0.4, 1.5, 0.4]}
+        ]})
+        .to_string(),
+    )
+    .unwrap();
+    let scene = scene.to_str().unwrap();
+    let raw = |c: char| {
+        matches!(c, '\u{0}'..='\u{1f}' | '\u{7f}'..='\u{9f}' | '\u{61c}' | '\u{200e}' | '\u{200f}'
+            | '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+            && c != '\n'
+    };
+    let runs: [(&[&str], &str); 4] = [
+        // "names no object": the scene's names quoted, and an instruction with ESC in it.
+        (
+            &[
+                "edit",
+                scene,
+                "move the \u{1b}[31mwardrobe\u{202e} to the left",
+            ],
+            "names no object",
+        ),
+        // "did you mean": the name asked for and the name suggested.
+        (
+            &[
+                "eval",
+                "T(X1.max)",
+                "--scene",
+                scene,
+                "--bind",
+                "X1=sofa\u{1b}]0;pwned\u{7}",
+            ],
+            "did you mean 'sofa\\u{1b}]0;pwned\\u{7}\\u{202e}'",
+        ),
+        (
+            &["edit", scene, "move the sofa to the left"],
+            "did you mean",
+        ),
+        // An argument clap refuses, quoted in its error.
+        (
+            &["edit", scene, "x", "--system", "\u{1b}[2J\u{202e}"],
+            "invalid value",
+        ),
+    ];
+    for (args, message) in runs {
+        let o = shenlong(args);
+        assert!(!o.status.success(), "{args:?}");
+        let err = stderr(&o);
+        assert!(err.contains(message), "{args:?}: {err}");
+        assert!(!err.chars().any(raw), "{args:?}: {err:?}");
+        assert_eq!(err.lines().count(), 1, "{err}");
+    }
+    // The JSON report on stderr is still JSON, with the same names, escaped.
+    let instruction = format!("move the '{evil}' 1 m to the left");
+    let o = shenlong(&["edit", scene, &instruction, "--json", "-"]);
+    let err = stderr(&o);
+    assert!(o.status.success(), "{err}");
+    assert!(!err.chars().any(raw), "{err:?}");
+    let report: serde_json::Value = serde_json::from_str(err.trim()).unwrap();
+    assert_eq!(report["bindings"][0]["object"], evil, "{report}");
+}

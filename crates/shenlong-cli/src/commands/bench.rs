@@ -148,7 +148,10 @@ pub fn run_bench(args: Args) -> Result<()> {
         .expect("a valid template")
         .progress_chars("=> "),
     );
-    bar.set_prefix(format!("{} ({})", suite.name, args.translator.llm));
+    bar.set_prefix(
+        shenlong_cli::terminal::safe(&format!("{} ({})", suite.name, args.translator.llm))
+            .into_owned(),
+    );
     let options = RunOptions {
         systems: systems.clone(),
         jobs: args.jobs,
@@ -258,7 +261,7 @@ fn write_report(out: &std::path::Path, rep: &report::Report) -> Result<()> {
         )?;
     }
     super::write_stdout(report::summary(rep).as_bytes())?;
-    eprintln!("report: {}", out.join("report.md").display());
+    shenlong_cli::say!("report: {}", out.join("report.md").display());
     Ok(())
 }
 
@@ -307,7 +310,7 @@ fn merge(dirs: &[PathBuf], out: Option<&std::path::Path>) -> Result<()> {
             }
         }
         if unreadable > 0 {
-            eprintln!(
+            shenlong_cli::say!(
                 "shenlong: warning: {}: {unreadable} unreadable line(s) skipped (run that shard again to redo them)",
                 results.display()
             );
@@ -333,7 +336,7 @@ fn merge(dirs: &[PathBuf], out: Option<&std::path::Path>) -> Result<()> {
             .map(|k| format!("{k}/{n}"))
             .collect();
         if !missing.is_empty() {
-            eprintln!(
+            shenlong_cli::say!(
                 "shenlong: warning: shard(s) {} are not among the folders: the report covers part of the run",
                 missing.join(", ")
             );

@@ -105,12 +105,12 @@ pub fn run(args: Args) -> Result<()> {
             .with_context(|| format!("cannot write {path}"))?;
     }
     match args.json.as_deref() {
-        Some("-") => eprintln!("{report}"),
+        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&report)),
         Some(_) => {}
         None => {
             for c in &result.report.collisions_resolved {
                 let d = c.displacement;
-                eprintln!(
+                shenlong_cli::say!(
                     "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}",
                     c.object,
                     d[0],
@@ -120,7 +120,7 @@ pub fn run(args: Args) -> Result<()> {
                 );
             }
             for o in &result.report.overlaps_remaining {
-                eprintln!("note: {o} (--allow-collisions)");
+                shenlong_cli::say!("note: {o} (--allow-collisions)");
             }
         }
     }

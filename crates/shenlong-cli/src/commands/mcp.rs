@@ -57,6 +57,6 @@ pub fn run(args: Args) -> Result<()> {
         .enable_all()
         .build()
         .context("cannot start the MCP server's runtime")?;
-    eprintln!("shenlong: serving '{}' over MCP on stdio", file.scene.name);
+    shenlong_cli::say!("shenlong: serving '{}' over MCP on stdio", file.scene.name);
     runtime.block_on(serve_stdio(file, settings))
 }

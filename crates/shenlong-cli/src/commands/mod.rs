@@ -219,7 +219,7 @@ impl TranslatorArgs {
 pub fn collision_notes(placed: &shenlong::pipeline::Placed) {
     for c in &placed.collisions_resolved {
         let d = c.displacement;
-        eprintln!(
+        shenlong_cli::say!(
             "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}{}",
             c.object,
             d[0],
@@ -233,7 +233,7 @@ pub fn collision_notes(placed: &shenlong::pipeline::Placed) {
         );
     }
     for o in &placed.overlaps_remaining {
-        eprintln!("note: {o} (--allow-collisions)");
+        shenlong_cli::say!("note: {o} (--allow-collisions)");
     }
 }
 

@@ -78,12 +78,12 @@ pub fn run(args: Args) -> Result<()> {
                     "{address} can be reached from other machines and the API has no authentication; listen on 127.0.0.1, or pass --allow-remote"
                 );
             }
-            eprintln!(
+            shenlong_cli::say!(
                 "shenlong: warning: listening on {address}: anyone who can reach it can edit the scene{}",
                 if settings.llm == "offline" { "" } else { " and use the model's key" }
             );
         }
-        eprintln!(
+        shenlong_cli::say!(
             "shenlong: editing '{}' at http://{address}/ (Ctrl-C to stop)",
             file.scene.name
         );
