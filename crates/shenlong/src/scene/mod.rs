@@ -330,15 +330,25 @@ impl Scene {
     /// on them, stay.
     #[must_use]
     pub fn carried_by_except(&self, index: usize, held: &[usize]) -> Vec<usize> {
+        // What rests on each object, indexed once: a chain of thousands costs its length.
+        let mut on: Vec<Vec<usize>> = vec![Vec::new(); self.objects.len()];
+        for (i, o) in self.objects.iter().enumerate() {
+            if let Some(s) = o.support.filter(|&s| s < on.len()) {
+                on[s].push(i);
+            }
+        }
+        let mut seen = vec![false; self.objects.len()];
+        for &h in held.iter().chain(std::iter::once(&index)) {
+            if let Some(s) = seen.get_mut(h) {
+                *s = true;
+            }
+        }
         let mut out = Vec::new();
         let mut frontier = vec![index];
         while let Some(parent) = frontier.pop() {
-            for (i, o) in self.objects.iter().enumerate() {
-                if o.support == Some(parent)
-                    && i != index
-                    && !held.contains(&i)
-                    && !out.contains(&i)
-                {
+            for &i in on.get(parent).map_or(&[][..], Vec::as_slice) {
+                if !seen[i] {
+                    seen[i] = true;
                     out.push(i);
                     frontier.push(i);
                 }

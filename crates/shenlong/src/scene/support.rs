@@ -26,8 +26,16 @@ pub fn detect(scene: &mut Scene) {
 /// `boxes` and `grid` must already hold the new boxes. Costs what moved, not the scene.
 pub fn detect_around(scene: &mut Scene, boxes: &[Aabb], grid: &FloorGrid, changed: &[usize]) {
     let mut candidates: Vec<usize> = changed.to_vec();
+    let mut moved = vec![false; scene.objects.len()];
+    for &c in changed {
+        if let Some(m) = moved.get_mut(c) {
+            *m = true;
+        }
+    }
     for (i, o) in scene.objects.iter().enumerate() {
-        if o.support.is_some_and(|s| changed.contains(&s)) {
+        if o.support
+            .is_some_and(|s| moved.get(s).copied().unwrap_or(false))
+        {
             candidates.push(i);
         }
     }
