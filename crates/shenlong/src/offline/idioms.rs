@@ -11,6 +11,7 @@
 
 use super::amounts;
 use super::clause::Clause;
+use super::read::is_room_word;
 
 /// The side of a room a word names, as the direction word the reader knows.
 fn side_direction(w: &str) -> Option<&'static str> {
@@ -21,13 +22,6 @@ fn side_direction(w: &str) -> Option<&'static str> {
         "front" | "near" => "forward",
         _ => return None,
     })
-}
-
-fn is_room_word(w: &str) -> bool {
-    matches!(
-        w,
-        "room" | "bedroom" | "kitchen" | "bathroom" | "office" | "space" | "area"
-    )
 }
 
 /// Reads the clause's idioms as the constructs they stand for.

@@ -60,9 +60,10 @@ pub struct Entry {
 
 /// What the reader knows of the bound objects, beyond their variables: all measured from
 /// the scene before the edit. Everything may be left empty (a scene with a room, unturned
-/// objects, nothing measured).
-#[derive(Clone, Debug, Default)]
-pub struct Known {
+/// objects, nothing measured). What only some instructions need ("as far as it will go":
+/// every box of the scene) is measured when first asked for, never on every edit.
+#[derive(Debug, Default)]
+pub struct Known<'s> {
     /// Whether the scene has room bounds.
     pub room: bool,
     /// Per variable: its turn about the vertical in degrees (for "straighten").
@@ -70,17 +71,16 @@ pub struct Known {
     /// Per variable: the size of its world box (for "to X2": a small thing goes on X2's
     /// top).
     pub sizes: Vec<[f64; 3]>,
-    /// Per variable: how far it can go along −x, +x, −z, +z before it meets another
-    /// object or a wall, 1 cm short (for "as far as it will go"); infinite where nothing
-    /// stops it.
-    pub runs: Vec<[f64; 4]>,
+    /// The scene and the variables' objects, for what is measured on demand.
+    scene: Option<(&'s Scene, &'s [usize])>,
+    /// The scene's world boxes, once measured.
+    boxes: std::cell::OnceCell<Vec<crate::geometry::Aabb>>,
 }
 
-impl Known {
+impl<'s> Known<'s> {
     /// What the reader knows of `objects` (the variables, in order) in `scene`.
     #[must_use]
-    pub fn of(scene: &Scene, objects: &[usize]) -> Self {
-        let boxes = scene.world_aabbs();
+    pub fn of(scene: &'s Scene, objects: &'s [usize]) -> Self {
         Self {
             room: scene.bounds.is_some(),
             yaw: objects
@@ -93,10 +93,40 @@ impl Known {
                 .collect(),
             sizes: objects
                 .iter()
-                .map(|&i| boxes[i].size().to_array())
+                .map(|&i| scene.objects[i].world_aabb().size().to_array())
                 .collect(),
-            runs: objects.iter().map(|&i| runs(scene, &boxes, i)).collect(),
+            scene: Some((scene, objects)),
+            boxes: std::cell::OnceCell::new(),
         }
+    }
+
+    /// How far variable `s` can go along horizontal axis `e` (0 or 2) with `sign` before
+    /// it meets another object or a wall, 1 cm short ([`runs`]); `None` where nothing
+    /// stops it or nothing is known.
+    pub(crate) fn run(&self, s: usize, e: usize, sign: f64) -> Option<f64> {
+        let k = match (e, sign > 0.0) {
+            (0, false) => 0,
+            (0, true) => 1,
+            (2, false) => 2,
+            (2, true) => 3,
+            _ => return None,
+        };
+        let (scene, objects) = self.scene?;
+        let object = *objects.get(s)?;
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        Some(runs(scene, boxes, object)[k]).filter(|d| d.is_finite())
+    }
+
+    /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
+    /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
+    /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the
+    /// table" is not small beside it and goes to its place on the floor.
+    pub(crate) fn small_onto(&self, s: usize, t: usize) -> bool {
+        let (Some(a), Some(b)) = (self.sizes.get(s), self.sizes.get(t)) else {
+            return false;
+        };
+        let volume = |v: &[f64; 3]| v[0] * v[1] * v[2];
+        a[0] <= b[0] && a[2] <= b[2] && volume(a) * 20.0 < volume(b) && b[1] <= 1.3
     }
 }
 
@@ -147,14 +177,8 @@ fn runs(scene: &Scene, boxes: &[crate::geometry::Aabb], i: usize) -> [f64; 4] {
 ///
 /// # Errors
 /// The unread part of the instruction, quoted.
-pub fn answer(query: &str, variables: usize, known: &Known) -> Result<Vec<Entry>, String> {
-    let facts = Facts {
-        variables,
-        room: known.room,
-        yaw: known.yaw.clone(),
-        sizes: known.sizes.clone(),
-        runs: known.runs.clone(),
-    };
+pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<Entry>, String> {
+    let facts = Facts { variables, known };
     let tokens = words::tokenize(query);
     let mut reader = Reader::new(&facts);
     for mut c in clause::split(&tokens) {

@@ -11,53 +11,19 @@ use super::view::{view_at, View};
 use super::words::{self, Action, Token};
 use crate::expr::Expr;
 
-/// What the translator knows about the scene besides the query: whether it has a room,
-/// and each variable's current heading (for "straighten").
-#[derive(Clone, Debug, Default)]
-pub(crate) struct Facts {
+/// What the translator knows besides the query: how many variables, and what is known of
+/// their objects ([`super::Known`]).
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Facts<'k> {
     /// Variables bound.
     pub variables: usize,
-    /// Whether the scene has room bounds.
-    pub room: bool,
-    /// Per variable: its turn about the vertical, in degrees.
-    pub yaw: Vec<f64>,
-    /// Per variable: the size of its world box (empty when not known).
-    pub sizes: Vec<[f64; 3]>,
-    /// Per variable: how far it can go along −x, +x, −z, +z before it meets another
-    /// object or a wall (1 cm short), infinite where nothing stops it (empty when not
-    /// known).
-    pub runs: Vec<[f64; 4]>,
-}
-
-impl Facts {
-    /// How far variable `s` can go along horizontal axis `e` (0 or 2) with `sign`.
-    fn run(&self, s: usize, e: usize, sign: f64) -> Option<f64> {
-        let k = match (e, sign > 0.0) {
-            (0, false) => 0,
-            (0, true) => 1,
-            (2, false) => 2,
-            (2, true) => 3,
-            _ => return None,
-        };
-        self.runs.get(s).map(|r| r[k]).filter(|d| d.is_finite())
-    }
-
-    /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
-    /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
-    /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the
-    /// table" is not small beside it and goes to its place on the floor.
-    fn small_onto(&self, s: usize, t: usize) -> bool {
-        let (Some(a), Some(b)) = (self.sizes.get(s), self.sizes.get(t)) else {
-            return false;
-        };
-        let volume = |v: &[f64; 3]| v[0] * v[1] * v[2];
-        a[0] <= b[0] && a[2] <= b[2] && volume(a) * 20.0 < volume(b) && b[1] <= 1.3
-    }
+    /// What is known of them.
+    pub known: &'k super::Known<'k>,
 }
 
 /// The state carried from clause to clause.
 pub(crate) struct Reader<'a> {
-    pub facts: &'a Facts,
+    pub facts: &'a Facts<'a>,
     pub steps: Steps,
     last_subjects: Vec<usize>,
     last_action: Option<Action>,
@@ -98,7 +64,7 @@ fn verb_of(w: &str) -> Option<(Action, Option<Direction>)> {
 }
 
 impl<'a> Reader<'a> {
-    pub fn new(facts: &'a Facts) -> Self {
+    pub fn new(facts: &'a Facts<'a>) -> Self {
         Self {
             facts,
             steps: Steps::new(),
@@ -540,7 +506,8 @@ impl<'a> Reader<'a> {
                 .iter()
                 .find_map(|w| c.find(&[w]));
             let room_word = c.find(&["room"]);
-            if (wall.is_some() || centre.is_some() || room_word.is_some()) && self.facts.room {
+            if (wall.is_some() || centre.is_some() || room_word.is_some()) && self.facts.known.room
+            {
                 c.mark(i..i + 1);
                 let side = [
                     ("left", (0usize, -1.0)),
@@ -724,7 +691,7 @@ impl<'a> Reader<'a> {
         Ok(subjects
             .iter()
             .map(|&s| {
-                let yaw = self.facts.yaw.get(s).copied().unwrap_or(0.0);
+                let yaw = self.facts.known.yaw.get(s).copied().unwrap_or(0.0);
                 let delta = (yaw / 90.0).round() * 90.0 - yaw;
                 (s, Step::Turn(rotor(degrees_of(delta), (2, 0))))
             })
@@ -738,7 +705,7 @@ impl<'a> Reader<'a> {
         implied: Option<(usize, f64)>,
         text: &str,
     ) -> Result<Vec<(usize, Step)>, String> {
-        let floor = room::floor(self.facts.room);
+        let floor = room::floor(self.facts.known.room);
         // A relation to an object named before: "move X2 next to it".
         let pronoun_target = if find_relation(c).is_none() {
             self.pronoun_relation(c)
@@ -805,7 +772,7 @@ impl<'a> Reader<'a> {
                 && targets.len() == 1
                 && subjects
                     .iter()
-                    .all(|&s| self.facts.small_onto(s, targets[0]))
+                    .all(|&s| self.facts.known.small_onto(s, targets[0]))
             {
                 Relation::On
             } else {
@@ -926,7 +893,7 @@ impl<'a> Reader<'a> {
         amount: Option<Length>,
         text: &str,
     ) -> Result<Expr, String> {
-        let has_room = self.facts.room;
+        let has_room = self.facts.known.room;
         Ok(match amount {
             Some(Length::Metres(m)) => scaled_axis(num(sign * m), e),
             Some(Length::Far) => room::far(s, e, sign, has_room),
@@ -935,7 +902,7 @@ impl<'a> Reader<'a> {
             Some(Length::ToWall) => scaled_axis(num(sign * DEFAULT_METRES), e),
             // "as far as it will go": up to the first obstacle, measured now.
             Some(Length::UntilBlocked) => {
-                let run = self.facts.run(s, e, sign).ok_or_else(|| {
+                let run = self.facts.known.run(s, e, sign).ok_or_else(|| {
                     format!(
                         "nothing stops X{} that way in \"{text}\": say how far",
                         s + 1
@@ -974,7 +941,7 @@ impl<'a> Reader<'a> {
         targets: &[usize],
         text: &str,
     ) -> Result<Vec<(usize, Step)>, String> {
-        let floor = room::floor(self.facts.room);
+        let floor = room::floor(self.facts.known.room);
         self.last_subjects = subjects.to_vec();
         subjects
             .iter()
@@ -995,7 +962,7 @@ impl<'a> Reader<'a> {
         action: Action,
         text: &str,
     ) -> Result<Option<Box<dyn Fn(usize) -> Expr>>, String> {
-        let has_room = self.facts.room;
+        let has_room = self.facts.known.room;
         let need_room = |c: &Clause| -> Result<(), String> {
             if has_room {
                 Ok(())
@@ -1150,7 +1117,8 @@ fn degrees_of(d: f64) -> Expr {
 }
 
 /// Room words: `room`, and room types (`bedroom`, `kitchen`): the scene's bounds.
-fn is_room_word(w: &str) -> bool {
+/// Words for the room as a whole (`the middle of the kitchen`).
+pub(super) fn is_room_word(w: &str) -> bool {
     matches!(
         w,
         "room"
