@@ -226,30 +226,30 @@ const CLOSERS: &[&[&str]] = &[
     &["please"],
 ];
 
-fn matches_at(words: &[&str], at: usize, phrase: &[&str]) -> bool {
+/// Whether the words from `at` are `phrase`. The readers' one matcher of fixed phrases
+/// (discourse here, holds in the grounder, views of a turn in the offline translator).
+#[must_use]
+pub fn phrase_at(words: &[&str], at: usize, phrase: &[&str]) -> bool {
     phrase.len() <= words.len().saturating_sub(at)
-        && phrase
-            .iter()
-            .zip(&words[at..])
-            .all(|(p, w)| *p == canonical(w))
+        && phrase.iter().zip(&words[at..]).all(|(p, w)| p == w)
 }
 
-/// The length, in words, of the longest greeting or request frame that starts at `at`.
+/// The length, in words, of the longest of `options` standing at `at`.
 #[must_use]
-pub fn opener_at(words: &[&str], at: usize) -> Option<usize> {
-    OPENERS
+pub fn longest_phrase(words: &[&str], at: usize, options: &[&[&str]]) -> Option<usize> {
+    options
         .iter()
-        .filter(|p| matches_at(words, at, p))
-        .map(|p| p.len())
+        .filter(|o| phrase_at(words, at, o))
+        .map(|o| o.len())
         .max()
 }
 
-/// The length, in words, of the longest sign-off that ends exactly at `end` (exclusive).
-#[must_use]
-pub fn closer_before(words: &[&str], end: usize) -> Option<usize> {
+/// The length, in words, of the longest sign-off that ends exactly at `end` (exclusive)
+/// in canonical words.
+fn closer_before(words: &[&str], end: usize) -> Option<usize> {
     CLOSERS
         .iter()
-        .filter(|p| p.len() <= end && matches_at(words, end - p.len(), p))
+        .filter(|p| p.len() <= end && phrase_at(words, end - p.len(), p))
         .map(|p| p.len())
         .max()
 }
@@ -269,14 +269,15 @@ pub fn is_discourse_word(word: &str) -> bool {
 /// range of the words that carry the instruction.
 #[must_use]
 pub fn core(words: &[&str]) -> std::ops::Range<usize> {
+    let words: Vec<&str> = words.iter().map(|w| canonical(w)).collect();
     // Sign-offs first, so a clause that is all thanks ("ty in advance!") is all set aside.
     let mut end = words.len();
-    while let Some(n) = closer_before(words, end) {
+    while let Some(n) = closer_before(&words, end) {
         end -= n;
     }
     let mut start = 0;
     loop {
-        if let Some(n) = opener_at(&words[..end], start) {
+        if let Some(n) = longest_phrase(&words[..end], start, OPENERS) {
             start += n;
         } else if start < end && filler(words[start]) && !is_article(words[start]) {
             start += 1;

@@ -10,6 +10,7 @@
 
 use super::words::{Kind, Token};
 use super::Phrase;
+use crate::discourse::{longest_phrase, phrase_at};
 use std::ops::Range;
 
 /// A phrase held in place, and the words of the instruction that say so.
@@ -107,24 +108,6 @@ fn joins(w: &str) -> bool {
     )
 }
 
-/// Whether the tokens from `at` are `words`.
-fn words_at(tokens: &[Token], at: usize, words: &[&str]) -> bool {
-    words.len() <= tokens.len().saturating_sub(at)
-        && words
-            .iter()
-            .zip(&tokens[at..])
-            .all(|(w, t)| t.word() == Some(*w))
-}
-
-/// The longest of `options` at `at`, as its length.
-fn longest(tokens: &[Token], at: usize, options: &[&[&str]]) -> Option<usize> {
-    options
-        .iter()
-        .filter(|o| words_at(tokens, at, o))
-        .map(|o| o.len())
-        .max()
-}
-
 /// Whether the clause ends at token `at`: the end, punctuation, or a word that starts the
 /// next clause.
 fn clause_ends(tokens: &[Token], at: usize) -> bool {
@@ -151,7 +134,8 @@ fn token_range(tokens: &[Token], span: &Range<usize>) -> Option<Range<usize>> {
 /// The phrases the instruction holds in place, a list held by one cue included ("leave
 /// the bin and the left side table where they are").
 pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
-    let mut out = single(tokens, phrases);
+    let words: Vec<&str> = tokens.iter().map(|t| t.word().unwrap_or("")).collect();
+    let mut out = single(tokens, &words, phrases);
     let mut p = 1;
     while p < phrases.len() {
         let Some(h) = out.iter().position(|h| h.phrase == p - 1) else {
@@ -180,7 +164,7 @@ pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
             p += 1;
             continue;
         }
-        let after = longest(tokens, this.end, AFTER).unwrap_or(0);
+        let after = longest_phrase(&words, this.end, AFTER).unwrap_or(0);
         let end = this.end + after;
         if !clause_ends(tokens, end) {
             p += 1;
@@ -198,26 +182,26 @@ pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
 }
 
 /// Each phrase held by a cue of its own.
-fn single(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
+fn single(tokens: &[Token], words: &[&str], phrases: &[Phrase]) -> Vec<Hold> {
     let mut out = Vec::new();
     for (p, phrase) in phrases.iter().enumerate() {
         let Some(range) = token_range(tokens, &phrase.span) else {
             continue;
         };
-        let after = longest(tokens, range.end, AFTER);
+        let after = longest_phrase(words, range.end, AFTER);
         let end = range.end + after.unwrap_or(0);
         let ends = clause_ends(tokens, end);
-        let before = BEFORE.iter().find(|(words, need)| {
-            range.start >= words.len()
-                && words_at(tokens, range.start - words.len(), words)
+        let before = BEFORE.iter().find(|(cue, need)| {
+            range.start >= cue.len()
+                && phrase_at(words, range.start - cue.len(), cue)
                 && match need {
                     Need::After => after.is_some(),
                     Need::EndOrAfter => after.is_some() || ends,
                     Need::Nothing => true,
                 }
         });
-        let start = if let Some((words, _)) = before {
-            range.start - words.len()
+        let start = if let Some((cue, _)) = before {
+            range.start - cue.len()
         } else {
             // `the rug stays where it is`: a phrase that opens its clause, then `stays`.
             let opens = range.start == 0
@@ -226,10 +210,10 @@ fn single(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
                     Kind::Punct(_) => true,
                     Kind::Number(_) | Kind::Quoted(_) => false,
                 };
-            let Some(n) = longest(tokens, range.end, STAYS).filter(|_| opens) else {
+            let Some(n) = longest_phrase(words, range.end, STAYS).filter(|_| opens) else {
                 continue;
             };
-            let after = longest(tokens, range.end + n, AFTER).unwrap_or(0);
+            let after = longest_phrase(words, range.end + n, AFTER).unwrap_or(0);
             let end = range.end + n + after;
             if !clause_ends(tokens, end) {
                 continue;

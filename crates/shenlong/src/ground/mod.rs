@@ -719,10 +719,8 @@ impl<'a> Reader<'a> {
                 ));
             }
             // "wood chair 001": a name as it reads and an instance number.
-            if let Some(objects) = words::split_number(&phrase)
-                .1
-                .and_then(|n| index.numbered(words::split_number(&phrase).0, n))
-            {
+            let (base, number) = words::split_number(&phrase);
+            if let Some(objects) = number.and_then(|n| index.numbered(base, n)) {
                 return Some(self.make_head(
                     range,
                     objects,

@@ -5,6 +5,8 @@
 //! an optional verb of seeing (`seen`, `viewed`, `looking (at it)`, `looked at`, `you'd
 //! see it`, `you look (at it)`) with an optional `down`, then where from.
 
+use crate::discourse::{longest_phrase, phrase_at};
+
 /// The view a turn's sense is given in.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum View {
@@ -12,19 +14,6 @@ pub(crate) enum View {
     Above,
     /// From below: clockwise and counter-clockwise swap.
     Below,
-}
-
-fn at(words: &[&str], i: usize, phrase: &[&str]) -> bool {
-    phrase.len() <= words.len().saturating_sub(i)
-        && phrase.iter().zip(&words[i..]).all(|(p, w)| p == w)
-}
-
-fn longest(words: &[&str], i: usize, options: &[&[&str]]) -> Option<usize> {
-    options
-        .iter()
-        .filter(|o| at(words, i, o))
-        .map(|o| o.len())
-        .max()
 }
 
 const LEADS: &[&[&str]] = &[&["as"], &["when"], &["if"], &["while"]];
@@ -73,20 +62,20 @@ const TOP_VIEW: &[&[&str]] = &[
 
 /// The view phrase starting at word `i`: its length and the view.
 pub(crate) fn view_at(words: &[&str], i: usize) -> Option<(usize, View)> {
-    if let Some(n) = longest(words, i, TOP_VIEW) {
+    if let Some(n) = longest_phrase(words, i, TOP_VIEW) {
         return Some((n, View::Above));
     }
-    let mut k = i + longest(words, i, LEADS).unwrap_or(0);
-    let seer = longest(words, k, SEERS);
+    let mut k = i + longest_phrase(words, i, LEADS).unwrap_or(0);
+    let seer = longest_phrase(words, k, SEERS);
     k += seer.unwrap_or(0);
-    let down = at(words, k, &["down"]);
+    let down = phrase_at(words, k, &["down"]);
     if down {
         k += 1;
     }
-    if let Some(n) = longest(words, k, ABOVE) {
+    if let Some(n) = longest_phrase(words, k, ABOVE) {
         return Some((k + n - i, View::Above));
     }
-    if let Some(n) = longest(words, k, BELOW) {
+    if let Some(n) = longest_phrase(words, k, BELOW) {
         return Some((k + n - i, View::Below));
     }
     // "looking down": from above, with nothing after.
