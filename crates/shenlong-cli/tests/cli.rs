@@ -528,12 +528,18 @@ fn a_gltf_cannot_choose_where_its_resources_are_written() {
     );
 }
 
+/// The built-in workshop written as `workshop.json` in `dir`.
+fn workshop_scene(dir: &std::path::Path) -> std::path::PathBuf {
+    let scene = dir.join("workshop.json");
+    let o = shenlong(&["examples", "workshop", "-o", scene.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    scene
+}
+
 #[test]
 fn a_report_that_cannot_be_written_leaves_the_scene_output_unwritten() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = dir.path().join("workshop.json");
-    let o = shenlong(&["examples", "workshop", "-o", scene.to_str().unwrap()]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let scene = workshop_scene(dir.path());
     let out = dir.path().join("edited.json");
     let report = dir.path().join("no such folder").join("report.json");
     let o = shenlong(&[
@@ -556,9 +562,7 @@ fn a_report_that_cannot_be_written_leaves_the_scene_output_unwritten() {
 #[test]
 fn a_report_linked_to_a_stream_is_written_through_the_link() {
     let dir = tempfile::tempdir().unwrap();
-    let scene = dir.path().join("workshop.json");
-    let o = shenlong(&["examples", "workshop", "-o", scene.to_str().unwrap()]);
-    assert!(o.status.success(), "{}", stderr(&o));
+    let scene = workshop_scene(dir.path());
     let link = dir.path().join("report.json");
     std::os::unix::fs::symlink("/dev/null", &link).unwrap();
     let out = dir.path().join("edited.json");

@@ -497,27 +497,14 @@ async fn after_an_apply_moves_the_bottle_off_the_table_moving_the_table_leaves_i
 #[test]
 fn slow_clients_are_cut_off_and_do_not_starve_others() {
     use std::io::{Read, Write};
-    let scene = shenlong::examples::build("workshop").unwrap();
-    let file = shenlong::format::SceneFile {
-        scene,
-        document: shenlong::format::Document::None,
-        path: None,
-    };
-    let app = App::new(file, settings(None, false, None));
-    let runtime = tokio::runtime::Runtime::new().unwrap();
-    let listener = runtime
-        .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
-        .unwrap();
-    let address = listener.local_addr().unwrap();
-    runtime.spawn(shenlong_cli::server::serve_with(
-        app,
-        listener,
+    let (_runtime, address) = serve_over_loopback_within(
+        workshop_file(),
         shenlong_cli::server::Limits {
             header_timeout: std::time::Duration::from_millis(800),
             body_timeout: std::time::Duration::from_millis(800),
             max_connections: 512,
         },
-    ));
+    );
     // 300 clients that never finish their headers.
     let mut slow: Vec<std::net::TcpStream> = (0..300)
         .map(|_| {
@@ -647,14 +634,31 @@ fn the_history_keeps_within_its_byte_budget() {
 fn serve_over_loopback(
     file: shenlong::format::SceneFile,
 ) -> (tokio::runtime::Runtime, std::net::SocketAddr) {
+    serve_over_loopback_within(file, shenlong_cli::server::Limits::default())
+}
+
+/// [`serve_over_loopback`] within `limits`.
+fn serve_over_loopback_within(
+    file: shenlong::format::SceneFile,
+    limits: shenlong_cli::server::Limits,
+) -> (tokio::runtime::Runtime, std::net::SocketAddr) {
     let app = App::new(file, settings(None, false, None));
     let runtime = tokio::runtime::Runtime::new().unwrap();
     let listener = runtime
         .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
         .unwrap();
     let address = listener.local_addr().unwrap();
-    runtime.spawn(serve(app, listener));
+    runtime.spawn(shenlong_cli::server::serve_with(app, listener, limits));
     (runtime, address)
+}
+
+/// The workshop, as a scene file with no document.
+fn workshop_file() -> shenlong::format::SceneFile {
+    shenlong::format::SceneFile {
+        scene: shenlong::examples::build("workshop").unwrap(),
+        document: shenlong::format::Document::None,
+        path: None,
+    }
 }
 
 /// A GET over loopback: the status, or the transport error (the server stopped).
@@ -808,22 +812,15 @@ async fn the_page_is_never_framed_and_never_calls_out() {
 #[test]
 fn slow_request_bodies_are_cut_off_and_do_not_starve_others() {
     use std::io::{Read, Write};
-    let app = app(None);
-    let runtime = tokio::runtime::Runtime::new().unwrap();
-    let listener = runtime
-        .block_on(tokio::net::TcpListener::bind("127.0.0.1:0"))
-        .unwrap();
-    let address = listener.local_addr().unwrap();
     // As few connections as slow clients: without a body timeout they would hold them all.
-    runtime.spawn(shenlong_cli::server::serve_with(
-        app,
-        listener,
+    let (_runtime, address) = serve_over_loopback_within(
+        workshop_file(),
         shenlong_cli::server::Limits {
             header_timeout: std::time::Duration::from_secs(10),
             body_timeout: std::time::Duration::from_millis(600),
             max_connections: 40,
         },
-    ));
+    );
     // 40 clients send their headers and 10 bytes of a 1,000-byte body, then nothing.
     let mut slow: Vec<std::net::TcpStream> = (0..40)
         .map(|_| {
