@@ -78,6 +78,30 @@ pub struct Answer {
     pub expressions: Vec<String>,
     /// The transformation, about the object's pivot.
     pub transformation: Transformation,
+    /// What the object was put next to or between, when the translator knows it (the
+    /// offline translator does; a model's reply does not say): placement refuses to
+    /// leave it elsewhere ([`crate::collide::NEXT_TO_MAX_GAP`]).
+    pub near: Option<Near>,
+}
+
+/// What an object was put near, which placement keeps it near.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Near {
+    /// Next to (beside, on a side of) this one.
+    Beside(usize),
+    /// Between these two.
+    Between(usize, usize),
+}
+
+impl Near {
+    /// The same relation to other indices (variables → objects).
+    #[must_use]
+    pub fn map(self, f: impl Fn(usize) -> usize) -> Self {
+        match self {
+            Self::Beside(t) => Self::Beside(f(t)),
+            Self::Between(a, b) => Self::Between(f(a), f(b)),
+        }
+    }
 }
 
 /// The variables of an expression about `objects` of `scene`: `X1`, `X2`, … bound to their

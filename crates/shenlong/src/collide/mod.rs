@@ -21,3 +21,8 @@ pub use resolve::{resolve, resolve_with, Adjustment, Resolution, ResolveError, R
 
 /// How far two boxes must overlap on every axis to collide, in metres.
 pub const EPSILON: f64 = 1e-4;
+
+/// The largest horizontal gap, in metres, between an object put "next to" (beside, left
+/// of, in front of, …) another and that other, once collisions are resolved: farther than
+/// this, the nearest free place is no longer next to it and the edit is refused.
+pub const NEXT_TO_MAX_GAP: f64 = 0.5;

@@ -282,15 +282,17 @@ fn search(
             .collect();
         // Put on a top face, it stays on that face: never stacked on what stands there
         // (a stack is asked for by the instruction, which puts it on that object's top).
-        let raised: Vec<f64> = if surface.is_some() {
-            Vec::new()
-        } else {
-            lifts
-                .iter()
-                .copied()
-                .filter(|dy| !level.contains(dy))
-                .collect()
-        };
+        // Floor furniture is never lifted onto anything: lifting is for small things.
+        let raised: Vec<f64> =
+            if surface.is_some() || crate::ground::kind::is_floor_bound(scene, root) {
+                Vec::new()
+            } else {
+                lifts
+                    .iter()
+                    .copied()
+                    .filter(|dy| !level.contains(dy))
+                    .collect()
+            };
         let mut candidates = ordered_candidates(&horizontal, &level)
             .chain(ordered_candidates(&horizontal, &raised))
             .filter(|&offset| on_surface(offset))

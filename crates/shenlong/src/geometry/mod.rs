@@ -84,6 +84,19 @@ impl Aabb {
         o.x.max(0.0) * o.z.max(0.0)
     }
 
+    /// The horizontal distance between the two boxes' footprints on the floor plan (0 where
+    /// they touch or overlap).
+    #[must_use]
+    pub fn floor_gap(&self, other: &Self) -> f64 {
+        let dx = (other.min.x - self.max.x)
+            .max(self.min.x - other.max.x)
+            .max(0.0);
+        let dz = (other.min.z - self.max.z)
+            .max(self.min.z - other.max.z)
+            .max(0.0);
+        dx.hypot(dz)
+    }
+
     /// The box moved by `offset`.
     pub fn translated(&self, offset: DVec3) -> Self {
         Self::new(self.min + offset, self.max + offset)

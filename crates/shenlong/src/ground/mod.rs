@@ -28,6 +28,7 @@ mod error;
 mod hold;
 pub mod ident;
 mod index;
+pub mod kind;
 pub mod lexicon;
 mod select;
 pub mod verbs;

@@ -56,6 +56,8 @@ pub struct Entry {
     pub variable: usize,
     /// The expressions, first applied first.
     pub expressions: Vec<Expr>,
+    /// What it was last put next to or between (variables), if anything.
+    pub near: Option<crate::translate::Near>,
 }
 
 /// What the reader knows of the bound objects, beyond their variables: all measured from
@@ -126,9 +128,247 @@ impl<'s> Known<'s> {
             return false;
         };
         let volume = |v: &[f64; 3]| v[0] * v[1] * v[2];
-        a[0] <= b[0] && a[2] <= b[2] && volume(a) * 20.0 < volume(b) && b[1] <= 1.3
+        a[0] <= b[0]
+            && a[2] <= b[2]
+            && volume(a) * 20.0 < volume(b)
+            && b[1] <= 1.3
+            && !self.stays_on_floor(s)
     }
 }
+
+impl Known<'_> {
+    /// Whether object `i` hangs: it rests on nothing, above the floor (a picture, a
+    /// whiteboard, a wall shelf).
+    fn hangs(scene: &Scene, i: usize) -> bool {
+        scene.objects[i].support.is_none()
+            && scene.objects[i].world_aabb().min.y > scene.floor() + crate::scene::SUPPORT_GAP
+    }
+
+    /// Whether variable `s` stays on the floor: floor furniture ([`crate::ground::kind`])
+    /// that does not hang.
+    pub(crate) fn stays_on_floor(&self, s: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        objects.get(s).is_some_and(|&a| {
+            crate::ground::kind::is_floor_bound(scene, a) && !Self::hangs(scene, a)
+        })
+    }
+
+    /// Whether "next to", a side of, "to" or "between" target `t` puts subject `s` on the
+    /// floor rather than on `t`'s level: `s` stays on the floor and `t` stands above it (a
+    /// laptop on a desk), or `t` hangs (a whiteboard on the wall) and `s` does not.
+    pub(crate) fn grounded_beside(&self, s: usize, t: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return false;
+        };
+        // What hangs beside what hangs stays on the wall (a picture by the clock).
+        if Self::hangs(scene, a) {
+            return false;
+        }
+        let raised = scene.objects[b].world_aabb().min.y > scene.floor() + LOW;
+        Self::hangs(scene, b) || (raised && self.stays_on_floor(s))
+    }
+
+    /// For "next to `t`" where `t` rests on a surface and `s` does not stay on the floor:
+    /// the side of `t` on that surface where `s` fits ([`Known::side_on`]). `Ok(None)` when
+    /// `t` rests on nothing or `s` stays on the floor ("next to" then keeps its face).
+    ///
+    /// # Errors
+    /// As [`Known::side_on`].
+    pub(crate) fn side_on_support(
+        &self,
+        s: usize,
+        t: usize,
+    ) -> Result<Option<relations::Relation>, String> {
+        let Some((scene, objects)) = self.scene else {
+            return Ok(None);
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return Ok(None);
+        };
+        let Some(surface) = scene.objects[b].support else {
+            return Ok(None);
+        };
+        if surface == a || self.stays_on_floor(s) {
+            return Ok(None);
+        }
+        Self::side_on(scene, a, b, surface).map(Some)
+    }
+
+    /// How far target `t` floats above the top of the surface it rests on (metres, 0 when
+    /// it stands on it or rests on nothing): ProcTHOR's data sets some objects a few
+    /// centimetres above their tables.
+    pub(crate) fn float_above_support(&self, t: usize) -> f64 {
+        let Some((scene, objects)) = self.scene else {
+            return 0.0;
+        };
+        let Some(&b) = objects.get(t) else {
+            return 0.0;
+        };
+        scene.objects[b].support.map_or(0.0, |surface| {
+            let d = scene.objects[b].world_aabb().min.y - scene.objects[surface].world_aabb().max.y;
+            if d > crate::scene::SUPPORT_GAP / 10.0 {
+                d
+            } else {
+                0.0
+            }
+        })
+    }
+
+    /// For "on `y` next to `t`": the side of `t` on `y` where `s` fits ([`Known::side_on`]);
+    /// `Ok(None)` when nothing is known of the scene.
+    ///
+    /// # Errors
+    /// As [`Known::side_on`].
+    pub(crate) fn side_on_surface(
+        &self,
+        s: usize,
+        t: usize,
+        y: usize,
+    ) -> Result<Option<relations::Relation>, String> {
+        let Some((scene, objects)) = self.scene else {
+            return Ok(None);
+        };
+        match (objects.get(s), objects.get(t), objects.get(y)) {
+            (Some(&a), Some(&b), Some(&c)) => Self::side_on(scene, a, b, c).map(Some),
+            _ => Ok(None),
+        }
+    }
+
+    /// For "on `y` between `z` and `w`": refuses what cannot be placed there — `s` at the
+    /// midpoint not within `y`'s top, or not fitting in the space between the two.
+    ///
+    /// # Errors
+    /// One line naming the objects.
+    pub(crate) fn between_on(&self, s: usize, z: usize, w: usize, y: usize) -> Result<(), String> {
+        let Some((scene, objects)) = self.scene else {
+            return Ok(());
+        };
+        let (Some(&a), Some(&p), Some(&q), Some(&c)) = (
+            objects.get(s),
+            objects.get(z),
+            objects.get(w),
+            objects.get(y),
+        ) else {
+            return Ok(());
+        };
+        let name = |i: usize| &scene.objects[i].name;
+        for i in [p, q] {
+            Self::not_sunk(scene, i, c)?;
+        }
+        let (me, pb, qb, top) = (
+            scene.objects[a].world_aabb(),
+            scene.objects[p].world_aabb(),
+            scene.objects[q].world_aabb(),
+            scene.objects[c].world_aabb(),
+        );
+        let mid = (pb.center() + qb.center()) / 2.0;
+        let half = me.size() / 2.0;
+        let on_top = mid.x - half.x >= top.min.x - 1e-9
+            && mid.x + half.x <= top.max.x + 1e-9
+            && mid.z - half.z >= top.min.z - 1e-9
+            && mid.z + half.z <= top.max.z + 1e-9;
+        // The space between them along the axis they are apart on.
+        let d = qb.center() - pb.center();
+        let e = if d.x.abs() >= d.z.abs() { 0 } else { 2 };
+        let (near, far) = if d[e] >= 0.0 { (pb, qb) } else { (qb, pb) };
+        let room = far.min[e] - near.max[e];
+        if !on_top || room < me.size()[e] {
+            return Err(format!(
+                "'{}' does not fit on '{}' between '{}' and '{}'; say where else it should go",
+                name(a),
+                name(c),
+                name(p),
+                name(q)
+            ));
+        }
+        Ok(())
+    }
+
+    /// Refuses a place beside `b` on `surface` when `b` stands inside the surface's box (an
+    /// egg in a fridge, a pillow in a sofa's seat): anything put beside it would end inside
+    /// the surface.
+    fn not_sunk(scene: &Scene, b: usize, surface: usize) -> Result<(), String> {
+        let (target, top) = (
+            scene.objects[b].world_aabb(),
+            scene.objects[surface].world_aabb(),
+        );
+        if target.min.y < top.max.y - crate::scene::SUPPORT_GAP {
+            return Err(format!(
+                "'{}' stands inside '{}', so nothing put beside it would stand on '{}'; say where else it should go",
+                scene.objects[b].name, scene.objects[surface].name, scene.objects[surface].name
+            ));
+        }
+        Ok(())
+    }
+
+    /// The first side of object `b`, in the order "next to" chooses (the face nearest `a`,
+    /// then the nearer face across, then the far ones), where object `a`, set [`GAP`] from
+    /// that face and centred along it, lies within `surface`'s top.
+    ///
+    /// # Errors
+    /// `b` stands inside `surface` ([`Known::not_sunk`]), or `a` fits on no side: one line
+    /// naming the three.
+    fn side_on(
+        scene: &Scene,
+        a: usize,
+        b: usize,
+        surface: usize,
+    ) -> Result<relations::Relation, String> {
+        Self::not_sunk(scene, b, surface)?;
+        let (me, target, top) = (
+            scene.objects[a].world_aabb(),
+            scene.objects[b].world_aabb(),
+            scene.objects[surface].world_aabb(),
+        );
+        let (mc, tc, ts) = (me.center(), target.center(), target.size());
+        let sign = |d: f64| if d >= 0.0 { 1.0 } else { -1.0 };
+        let (dx, dz) = (mc.x - tc.x, mc.z - tc.z);
+        // As `next_to` chooses: the x faces when the subject lies more to the side than in
+        // front or behind, in the target's proportions.
+        let first_x = dx.abs() * ts.z > dz.abs() * ts.x;
+        let (x, z) = ((0, sign(dx)), (2, sign(dz)));
+        let order = if first_x {
+            [x, z, (0, -x.1), (2, -z.1)]
+        } else {
+            [z, x, (2, -z.1), (0, -x.1)]
+        };
+        let half = me.size() / 2.0;
+        let fits = |lo: f64, hi: f64, min: f64, max: f64| lo >= min - 1e-9 && hi <= max + 1e-9;
+        order
+            .into_iter()
+            .find_map(|(e, sign)| {
+                let along = if sign > 0.0 {
+                    target.max[e] + GAP + half[e]
+                } else {
+                    target.min[e] - GAP - half[e]
+                };
+                let across = 2 - e;
+                let ok = fits(along - half[e], along + half[e], top.min[e], top.max[e])
+                    && fits(
+                        tc[across] - half[across],
+                        tc[across] + half[across],
+                        top.min[across],
+                        top.max[across],
+                    );
+                ok.then_some(relations::Relation::Side(e, sign))
+            })
+            .ok_or_else(|| {
+                format!(
+                    "'{}' does not fit next to '{}' on '{}': there is no room on any side of it; say where else it should go",
+                    scene.objects[a].name, scene.objects[b].name, scene.objects[surface].name
+                )
+            })
+    }
+}
+
+/// How far above the floor an object's bottom may be and still stand on it (on a rug),
+/// in metres.
+const LOW: f64 = 0.05;
 
 /// How far object `i` can slide along −x, +x, −z, +z: to the nearest face of an object
 /// whose box overlaps its path (across the other horizontal axis and in height, by more
@@ -213,6 +453,7 @@ pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<En
             Entry {
                 variable: v,
                 expressions,
+                near: reader.near.get(&v).copied(),
             }
         })
         .collect())
@@ -293,6 +534,7 @@ impl Translator for OfflineTranslator {
                 object: templated.objects[e.variable],
                 expressions: e.expressions.iter().map(ToString::to_string).collect(),
                 transformation,
+                near: e.near.map(|n| n.map(|v| templated.objects[v])),
             });
         }
         let exchange = Exchange {

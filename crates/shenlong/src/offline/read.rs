@@ -5,11 +5,13 @@
 use super::amounts::{self, Length, DEFAULT_DEGREES, DEFAULT_METRES};
 use super::build::*;
 use super::clause::Clause;
-use super::relations::{self, boxed, Relation, Step, Steps, GAP};
+use super::relations::{self, boxed, Level, Relation, Step, Steps, GAP};
 use super::room::{self, Place};
 use super::view::{view_at, View};
 use super::words::{self, Action, Token};
 use crate::expr::Expr;
+use crate::translate::Near;
+use std::collections::BTreeMap;
 
 /// What the translator knows besides the query: how many variables, and what is known of
 /// their objects ([`super::Known`]).
@@ -25,7 +27,12 @@ pub(crate) struct Facts<'k> {
 pub(crate) struct Reader<'a> {
     pub facts: &'a Facts<'a>,
     pub steps: Steps,
+    /// Per variable, what it was last put next to or between.
+    pub near: BTreeMap<usize, Near>,
     last_subjects: Vec<usize>,
+    /// The objects the last relation was to ("next to X2"): what "it" means after "face"
+    /// when "it" is the clause's subject ("… and turn it to face it").
+    last_targets: Vec<usize>,
     last_action: Option<Action>,
     last_steps: Vec<Step>,
 }
@@ -68,7 +75,9 @@ impl<'a> Reader<'a> {
         Self {
             facts,
             steps: Steps::new(),
+            near: BTreeMap::new(),
             last_subjects: Vec::new(),
+            last_targets: Vec::new(),
             last_action: None,
             last_steps: Vec::new(),
         }
@@ -197,7 +206,13 @@ impl<'a> Reader<'a> {
     fn read(&mut self, c: &mut Clause) -> Result<Vec<(usize, Step)>, String> {
         let text = c.text();
         let verb = self.verb(c);
-        let facing = find_facing(c);
+        // "face it" where "it" is the object turned: the one thing named as the last
+        // relation's target (an object cannot face itself).
+        let other = match self.last_targets.as_slice() {
+            &[t] if !self.last_subjects.contains(&t) => Some(t),
+            _ => None,
+        };
+        let facing = find_facing(c, other);
         let (mut action, implied) = match verb {
             Some((a, implied, _)) => (a, implied),
             None => match self.last_action {
@@ -449,7 +464,7 @@ impl<'a> Reader<'a> {
             c.mark(f.range.clone());
             c.mark(f.target_at..f.target_at + 1);
             let subjects = self.subjects(c, Some(f.range.start));
-            if subjects.is_empty() {
+            if subjects.is_empty() || subjects.contains(&f.target) {
                 return Err(not_read(text, text));
             }
             self.last_subjects = subjects.clone();
@@ -468,7 +483,12 @@ impl<'a> Reader<'a> {
                 .map(|&s| {
                     // About the vertical, so that the front (+Z) points at the target: +θ
                     // about +Y takes +Z toward +X, so θ = atan2(dx, dz); away adds a half turn.
-                    let d = sub(boxed(f.target, "center", &self.steps), var(s, "center"));
+                    // Both where earlier clauses left them ("move X1 next to X2 and turn
+                    // it to face X2" faces X2 from beside it).
+                    let d = sub(
+                        boxed(f.target, "center", &self.steps),
+                        boxed(s, "center", &self.steps),
+                    );
                     let mut angle = sub(heading(d), heading(var(s, "front")));
                     if f.away {
                         angle = add(angle, name("pi"));
@@ -705,7 +725,6 @@ impl<'a> Reader<'a> {
         implied: Option<(usize, f64)>,
         text: &str,
     ) -> Result<Vec<(usize, Step)>, String> {
-        let floor = room::floor(self.facts.known.room);
         // A relation to an object named before: "move X2 next to it".
         let pronoun_target = if find_relation(c).is_none() {
             self.pronoun_relation(c)
@@ -718,23 +737,16 @@ impl<'a> Reader<'a> {
             if subjects.is_empty() || targets.iter().any(|t| subjects.contains(t)) {
                 return Err(not_read(text, text));
             }
-            self.last_subjects = subjects.clone();
-            let mut out = Vec::new();
-            for &s in &subjects {
-                let kind = MARKERS
-                    .iter()
-                    .find(|(w, _)| c.words_at_any(r.start, w))
-                    .map(|(_, k)| *k);
-                let relation = match kind {
-                    Some(RelKind::Fixed(rel)) => rel,
-                    Some(RelKind::Away) => Relation::Away(DEFAULT_METRES),
-                    Some(RelKind::Closer) | None => Relation::Closer(None),
-                };
-                let v = relations::vector(relation, s, &targets, &self.steps, &floor)
-                    .ok_or_else(|| not_read(text, text))?;
-                out.push((s, Step::Translate(v)));
-            }
-            return Ok(out);
+            let kind = MARKERS
+                .iter()
+                .find(|(w, _)| c.words_at_any(r.start, w))
+                .map(|(_, k)| *k);
+            let relation = match kind {
+                Some(RelKind::Fixed(rel)) => rel,
+                Some(RelKind::Away) => Relation::Away(DEFAULT_METRES),
+                Some(RelKind::Closer) | None => Relation::Closer(None),
+            };
+            return self.each(&subjects, relation, &targets, text);
         }
         // A relation to another object.
         if let Some(r) = find_relation(c) {
@@ -781,42 +793,42 @@ impl<'a> Reader<'a> {
             // "on X2 next to X3", "on X2 to the left of X3": one destination, beside X3 on
             // the surface X2.
             let relation = match (relation, find_relation(c)) {
-                (Relation::On, Some(second)) if targets.len() == 1 && second.targets.len() == 1 => {
+                (Relation::On, Some(second)) if targets.len() == 1 => {
                     let surface = targets[0];
-                    let combined = match second.kind {
-                        RelKind::Fixed(Relation::NextTo) => Some(Relation::NextToOn(surface)),
-                        RelKind::Fixed(side @ Relation::Side(..)) => Some(side),
+                    let combined = match (second.kind, second.targets.len()) {
+                        (RelKind::Fixed(Relation::NextTo), 1) => Some(Relation::NextToOn(surface)),
+                        (RelKind::Fixed(side @ Relation::Side(..)), 1) => Some(side),
+                        (RelKind::Fixed(Relation::Between), 2) => {
+                            Some(Relation::BetweenOn(surface))
+                        }
                         _ => None,
                     };
                     match combined {
                         Some(rel) => {
-                            c.mark(second.range.clone());
-                            for &(i, _) in &second.targets {
-                                c.mark(i..i + 1);
-                            }
-                            return self.each(&subjects, rel, &[second.targets[0].1], text);
+                            // The marker, the targets and what joins them ("and").
+                            let last = second.targets.last().map_or(0, |&(i, _)| i);
+                            c.mark(second.range.start..last + 1);
+                            let on: Vec<usize> = second.targets.iter().map(|&(_, v)| v).collect();
+                            return self.each(&subjects, rel, &on, text);
                         }
                         None => relation,
                     }
                 }
                 (relation, _) => relation,
             };
-            self.last_subjects = subjects.clone();
-            let mut out = Vec::new();
             if relation == Relation::On && subjects.len() > 1 {
                 // "put the mug and the bowl on the dresser": side by side on it.
-                for (k, &s) in subjects.iter().enumerate() {
-                    let v = relations::side_by_side(&subjects, k, targets[0], &self.steps);
-                    out.push((s, Step::Translate(v)));
-                }
-                return Ok(out);
+                self.last_subjects = subjects.clone();
+                return Ok(subjects
+                    .iter()
+                    .enumerate()
+                    .map(|(k, &s)| {
+                        let v = relations::side_by_side(&subjects, k, targets[0], &self.steps);
+                        (s, Step::Translate(v))
+                    })
+                    .collect());
             }
-            for &s in &subjects {
-                let v = relations::vector(relation, s, &targets, &self.steps, &floor)
-                    .ok_or_else(|| not_read(text, text))?;
-                out.push((s, Step::Translate(v)));
-            }
-            return Ok(out);
+            return self.each(&subjects, relation, &targets, text);
         }
         let subjects = self.required_subjects(c, text)?;
         // A place in the room.
@@ -941,16 +953,82 @@ impl<'a> Reader<'a> {
         targets: &[usize],
         text: &str,
     ) -> Result<Vec<(usize, Step)>, String> {
-        let floor = room::floor(self.facts.known.room);
         self.last_subjects = subjects.to_vec();
+        self.last_targets = targets.to_vec();
+        let near = match (relation, targets) {
+            (Relation::NextTo | Relation::NextToOn(_) | Relation::Side(..), &[t, ..]) => {
+                Some(Near::Beside(t))
+            }
+            (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
+            _ => None,
+        };
         subjects
             .iter()
             .map(|&s| {
-                relations::vector(relation, s, targets, &self.steps, &floor)
-                    .map(|v| (s, Step::Translate(v)))
-                    .ok_or_else(|| not_read(text, text))
+                let v = self.vector(relation, s, targets, text)?;
+                match near {
+                    Some(n) => self.near.insert(s, n),
+                    None => self.near.remove(&s),
+                };
+                Ok((s, Step::Translate(v)))
             })
             .collect()
+    }
+
+    /// The vector that takes subject `s` into `relation` with `targets`, placed as a
+    /// person would: beside a target that rests on a surface, on a side of it where the
+    /// subject fits on that surface; on the floor where the subject is floor furniture
+    /// and the target stands higher, or the target hangs on a wall.
+    ///
+    /// # Errors
+    /// Beside a target on a surface, no side of it where the subject fits on the surface;
+    /// or the words of `text` not read.
+    fn vector(
+        &self,
+        relation: Relation,
+        s: usize,
+        targets: &[usize],
+        text: &str,
+    ) -> Result<Expr, String> {
+        let floor = room::floor(self.facts.known.room);
+        let t = *targets.first().ok_or_else(|| not_read(text, text))?;
+        // Where an earlier clause moved the target, the scene's numbers no longer say
+        // where it is.
+        let as_is = !self.steps.contains_key(&t);
+        let known = self.facts.known;
+        let unmoved = |v: usize| !self.steps.contains_key(&v);
+        let mut level = Level::Target;
+        let relation = match relation {
+            Relation::NextTo if as_is => match known.side_on_support(s, t)? {
+                Some(side) => {
+                    let d = known.float_above_support(t);
+                    if d > 0.0 {
+                        level = Level::Under(d);
+                    }
+                    side
+                }
+                None => relation,
+            },
+            Relation::NextToOn(y) if as_is && unmoved(y) => {
+                level = Level::Surface(y);
+                known.side_on_surface(s, t, y)?.unwrap_or(relation)
+            }
+            Relation::BetweenOn(y) if targets.iter().chain([&y]).all(|&v| unmoved(v)) => {
+                let w = *targets.get(1).ok_or_else(|| not_read(text, text))?;
+                known.between_on(s, t, w, y)?;
+                relation
+            }
+            r => r,
+        };
+        let beside = matches!(
+            relation,
+            Relation::NextTo | Relation::Side(..) | Relation::To | Relation::Between
+        );
+        if beside && as_is && known.grounded_beside(s, t) {
+            level = Level::Floor;
+        }
+        relations::vector(relation, s, targets, &self.steps, &floor, level)
+            .ok_or_else(|| not_read(text, text))
     }
 
     /// The room's centre, corners, walls, the floor, or its front/back ("towards the back of
@@ -1324,7 +1402,8 @@ struct Facing {
     away: bool,
 }
 
-fn find_facing(c: &Clause) -> Option<Facing> {
+/// `it_means`: what a free "it" after the phrase stands for, when it is not the subject.
+fn find_facing(c: &Clause, it_means: Option<usize>) -> Option<Facing> {
     const FORMS: &[(&[&str], bool)] = &[
         (&["so", "that", "its", "back", "is", "to"], true),
         (&["so", "its", "back", "is", "to"], true),
@@ -1357,6 +1436,17 @@ fn find_facing(c: &Clause) -> Option<Facing> {
                     target_at: t,
                     away: *away,
                 });
+            }
+            let t = i + words.len();
+            if let (Some(v), Some("it")) = (it_means, c.word(t)) {
+                if c.free(t) && c.word(t + 1).is_none() {
+                    return Some(Facing {
+                        range: i..t,
+                        target: v,
+                        target_at: t,
+                        away: *away,
+                    });
+                }
             }
         }
     }

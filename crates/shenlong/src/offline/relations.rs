@@ -54,6 +54,9 @@ pub(crate) enum Relation {
     /// the surface given): the side of the target toward the surface's centre, so the
     /// object stays on the surface.
     NextToOn(usize),
+    /// Between two targets on the surface they rest on (`on X2 between X3 and X4`, the
+    /// variable of the surface given).
+    BetweenOn(usize),
     /// To its place, standing on the same level (`to X2`, `at X2`).
     To,
     /// Straight toward it until 5 cm from it, along the axis they are apart on, nothing
@@ -73,19 +76,41 @@ pub(crate) enum Relation {
     OtherSide,
 }
 
-/// The vector that takes subject `s` into `relation` with `targets`.
+/// Where a subject put beside a target (next to, a side, to, between) stands.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(crate) enum Level {
+    /// On the target's level (its bottom).
+    Target,
+    /// On the floor: floor furniture beside something on a desk; anything beside
+    /// something that hangs on a wall.
+    Floor,
+    /// On the top of this variable, the surface the target rests on (`on X2 next to X3`).
+    Surface(usize),
+    /// On the target's level moved down by this much (metres): the top of the surface
+    /// under a target that floats a little above it (as in ProcTHOR's data).
+    Under(f64),
+}
+
+/// The vector that takes subject `s` into `relation` with `targets`, standing on `level`
+/// where it is put beside a target.
 pub(crate) fn vector(
     relation: Relation,
     s: usize,
     targets: &[usize],
     steps: &Steps,
     floor: &Expr,
+    level: Level,
 ) -> Option<Expr> {
     let t = *targets.first()?;
     let b = |attribute: &str| boxed(t, attribute, steps);
     let a = |attribute: &str| var(s, attribute);
     let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
-    let level = along(sub(b("min"), a("min")), 1);
+    let level = match level {
+        Level::Floor => scaled_axis(sub(floor.clone(), dot(a("min"), axis(1))), 1),
+        Level::Target => along(sub(b("min"), a("min")), 1),
+        Level::Surface(y) => on_surface_level(s, t, y, steps),
+        Level::Under(d) => add(along(sub(b("min"), a("min")), 1), scaled_axis(num(-d), 1)),
+    };
     let gap = num(GAP);
     Some(match relation {
         Relation::On => sum([
@@ -114,7 +139,19 @@ pub(crate) fn vector(
             sum([along_axis, centre(other), level])
         }
         Relation::NextTo => next_to(s, t, steps, level, var(s, "center")),
-        Relation::NextToOn(surface) => next_to(s, t, steps, level, boxed(surface, "center", steps)),
+        Relation::NextToOn(surface) => next_to(
+            s,
+            t,
+            steps,
+            on_surface_level(s, t, surface, steps),
+            boxed(surface, "center", steps),
+        ),
+        Relation::BetweenOn(surface) => {
+            let c = boxed(*targets.get(1)?, "center", steps);
+            let mid = sub(div(add(b("center"), c), num(2.0)), a("center"));
+            let level = on_surface_level(s, t, surface, steps);
+            sum([along(mid.clone(), 0), along(mid, 2), level])
+        }
         Relation::To => sum([centre(0), centre(2), level]),
         Relation::UpTo => up_to(s, t, steps),
         Relation::Between => {
@@ -150,6 +187,20 @@ pub(crate) fn vector(
             )
         }
     })
+}
+
+/// The vertical move that sets subject `s` on `surface` beside `t`, which rests on it: at
+/// `t`'s bottom, or at the surface's top where `t` stands above it (so a pillow's level on
+/// a sofa's seat, inside the sofa's box, but never a vase's that floats over a desk).
+fn on_surface_level(s: usize, t: usize, surface: usize, steps: &Steps) -> Expr {
+    let bottom = call(
+        "min",
+        vec![
+            dot(boxed(t, "min", steps), axis(1)),
+            dot(boxed(surface, "max", steps), axis(1)),
+        ],
+    );
+    scaled_axis(sub(bottom, dot(var(s, "min"), axis(1))), 1)
 }
 
 /// Several objects put on one surface, side by side in the order given, centred on it

@@ -7,7 +7,7 @@ use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
 use crate::ground::{Grounder, Reason};
 use crate::scene::{AppliedMotion, Scene};
-use crate::translate::ReplyCounts;
+use crate::translate::{Near, ReplyCounts};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -274,7 +274,12 @@ pub fn edit_with(
         .iter()
         .map(|a| (a.object, a.transformation.versor))
         .collect();
-    let placed = place_holding(scene, &moves, options, &templated.held)?;
+    let near: Vec<(usize, Near)> = translation
+        .answers
+        .iter()
+        .filter_map(|a| a.near.map(|n| (a.object, n)))
+        .collect();
+    let placed = place_holding(scene, &moves, options, &templated.held, &near)?;
     timings.apply = placed.apply_ms;
     timings.collide = placed.collide_ms;
     timings.collide_setup = placed.collide_setup_ms;
@@ -408,20 +413,24 @@ pub fn place(
     moves: &[(usize, cga::Multivector)],
     options: &EditOptions,
 ) -> Result<Placed, EditError> {
-    place_holding(scene, moves, options, &[])
+    place_holding(scene, moves, options, &[], &[])
 }
 
 /// [`place`] with objects held where they are (what an instruction says must not move):
 /// they are not carried, collision resolution does not move them, and the edit is refused
-/// when it would move one or take its support from under it.
+/// when it would move one or take its support from under it. Each `(object, near)` of
+/// `near` was put next to or between others: the edit is refused when the nearest free
+/// placement left it elsewhere ([`check_near`]).
 ///
 /// # Errors
-/// As [`place`], and a held object that would move or be left in the air.
+/// As [`place`], a held object that would move or be left in the air, and an object no
+/// longer next to what it was put next to.
 pub fn place_holding(
     scene: &mut Scene,
     moves: &[(usize, cga::Multivector)],
     options: &EditOptions,
     held: &[usize],
+    near: &[(usize, Near)],
 ) -> Result<Placed, EditError> {
     let supports: Vec<(Option<usize>, bool)> = scene
         .objects
@@ -430,7 +439,8 @@ pub fn place_holding(
         .collect();
     let mut motions = Vec::new();
     let result = place_into(scene, moves, options, held, &mut motions)
-        .and_then(|placed| check_held(scene, held, &supports, &motions).map(|()| placed));
+        .and_then(|placed| check_held(scene, held, &supports, &motions).map(|()| placed))
+        .and_then(|placed| check_near(scene, near).map(|()| placed));
     if result.is_err() {
         for m in motions.iter().rev() {
             scene.undo(m);
@@ -453,6 +463,68 @@ fn held_error(message: String) -> EditError {
         kind: EditErrorKind::Held,
         replies: ReplyCounts::default(),
     }
+}
+
+/// How far the centre of an object put between two others may end off the segment
+/// between their centres (floor plan), metres: the benchmark's `between` tolerance.
+const BETWEEN_TOLERANCE: f64 = 0.3;
+
+/// How far above the floor an object may stand and be on the floor (on a rug), metres.
+const FLOOR_LEVEL: f64 = 0.05;
+
+/// Refuses a placement that left an object where it was not put: farther from what it was
+/// put next to than [`collide::NEXT_TO_MAX_GAP`], or, put between two objects, with its
+/// centre not projecting onto the segment between theirs or more than
+/// [`BETWEEN_TOLERANCE`] off it —
+/// collision resolution found free space only elsewhere. The gap is measured on the floor
+/// plan to the other object, or, for an object on the floor, to what the other stands on
+/// (a chair put next to a lamp on a desk stands next to the desk).
+fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
+    let refuse = |message: String| EditError {
+        message,
+        kind: EditErrorKind::Placement,
+        replies: ReplyCounts::default(),
+    };
+    for &(object, near) in near {
+        let other = match near {
+            Near::Beside(other) => other,
+            Near::Between(p, q) => {
+                let flat = |i: usize| {
+                    let c = scene.objects[i].world_aabb().center();
+                    glam::DVec2::new(c.x, c.z)
+                };
+                let (c, a, b) = (flat(object), flat(p), flat(q));
+                let d = b - a;
+                let t = (c - a).dot(d) / d.length_squared().max(1e-12);
+                let off = (a + d * t.clamp(0.0, 1.0) - c).length();
+                if !(-1e-6..=1.0 + 1e-6).contains(&t) || off > BETWEEN_TOLERANCE {
+                    return Err(refuse(format!(
+                        "no free place for '{}' between '{}' and '{}': the nearest free one is {off:.2} m off the line between them",
+                        scene.objects[object].name, scene.objects[p].name, scene.objects[q].name
+                    )));
+                }
+                continue;
+            }
+        };
+        let a = scene.objects[object].world_aabb();
+        let on_floor = a.min.y <= scene.floor() + FLOOR_LEVEL;
+        let mut gap = f64::INFINITY;
+        let mut next = Some(other);
+        let mut hops = 0;
+        while let Some(j) = next.filter(|_| hops < 8) {
+            gap = gap.min(a.floor_gap(&scene.objects[j].world_aabb()));
+            // Down the stack only from the floor.
+            next = scene.objects[j].support.filter(|_| on_floor);
+            hops += 1;
+        }
+        if gap > collide::NEXT_TO_MAX_GAP {
+            return Err(refuse(format!(
+                "no free place for '{}' next to '{}': the nearest free one is {gap:.2} m from it",
+                scene.objects[object].name, scene.objects[other].name
+            )));
+        }
+    }
+    Ok(())
 }
 
 /// Refuses a placement that moved a held object or left one in the air (its support

@@ -167,6 +167,7 @@ impl System {
                     }
                     let transformation = expr::to_transformation(&m)?;
                     answers.push(Answer {
+                        near: None,
                         variable: entry.variable,
                         object,
                         expressions: entry.expressions,
@@ -194,6 +195,7 @@ impl System {
                     let transformation = omniverse_transformation(scene, object, value)
                         .map_err(|m| ExprError::whole(format!("{variable}: {m}")))?;
                     answers.push(Answer {
+                        near: None,
                         variable,
                         object,
                         expressions: vec![value.to_string()],

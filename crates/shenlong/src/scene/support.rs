@@ -22,8 +22,10 @@ pub fn detect(scene: &mut Scene) {
 }
 
 /// [`detect`] for what `changed` (objects whose boxes moved) can have changed: the changed
-/// objects themselves, what rested on them, and what stands over their new footprints.
-/// `boxes` and `grid` must already hold the new boxes. Costs what moved, not the scene.
+/// objects themselves and what rested on them. What did not move never comes to rest on
+/// what moved under it (a chair pushed under a whiteboard does not carry the whiteboard
+/// away). `boxes` and `grid` must already hold the new boxes. Costs what moved, not the
+/// scene.
 pub fn detect_around(scene: &mut Scene, boxes: &[Aabb], grid: &FloorGrid, changed: &[usize]) {
     let mut candidates: Vec<usize> = changed.to_vec();
     let mut moved = vec![false; scene.objects.len()];
@@ -39,16 +41,35 @@ pub fn detect_around(scene: &mut Scene, boxes: &[Aabb], grid: &FloorGrid, change
             candidates.push(i);
         }
     }
-    for &c in changed {
-        candidates.extend(grid.near_box(&boxes[c]));
-    }
     candidates.sort_unstable();
     candidates.dedup();
     for i in candidates {
-        if !scene.objects[i].support_from_file {
+        if scene.objects[i].support_from_file {
+            continue;
+        }
+        // What still rests on its support keeps it (a lamp carried with its nightstand
+        // into the bed's box still stands on the nightstand, not on the bed).
+        let keeps = scene.objects[i]
+            .support
+            .is_some_and(|s| s != i && rests(scene, &boxes[i], &boxes[s]));
+        if !keeps {
             scene.objects[i].support = support_of(scene, boxes, grid, i);
         }
     }
+}
+
+/// Whether box `a` rests on box `b` by the rule of [`detect`]: its bottom within
+/// [`SUPPORT_GAP`] of `b`'s top, above the floor, reaching above that top, its centre over
+/// `b`'s footprint.
+fn rests(scene: &Scene, a: &Aabb, b: &Aabb) -> bool {
+    let centre = a.center();
+    a.min.y > scene.floor() + SUPPORT_GAP
+        && (a.min.y - b.max.y).abs() <= SUPPORT_GAP
+        && a.max.y > b.max.y + 1e-3
+        && centre.x >= b.min.x
+        && centre.x <= b.max.x
+        && centre.z >= b.min.z
+        && centre.z <= b.max.z
 }
 
 /// What object `i` rests on, by the rule of [`detect`].
@@ -64,14 +85,7 @@ fn support_of(scene: &Scene, boxes: &[Aabb], grid: &FloorGrid, i: usize) -> Opti
         if i == j {
             continue;
         }
-        let gap = a.min.y - b.max.y;
-        let rests = gap.abs() <= SUPPORT_GAP
-            && a.max.y > b.max.y + 1e-3
-            && centre.x >= b.min.x
-            && centre.x <= b.max.x
-            && centre.z >= b.min.z
-            && centre.z <= b.max.z;
-        if !rests {
+        if !rests(scene, a, b) {
             continue;
         }
         let overlap = a.footprint_overlap(b);

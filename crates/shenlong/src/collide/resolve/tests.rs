@@ -445,3 +445,28 @@ fn an_object_moved_on_the_floor_stays_on_the_floor() {
     .unwrap();
     assert!(s.objects[chair].world_aabb().min.y.abs() < 1e-9);
 }
+
+#[test]
+fn floor_furniture_is_never_lifted_onto_another_object() {
+    // The closet of the test above: the box could only go on the crate; a chair there is
+    // refused instead of being stood on the crate.
+    let mut s = Scene::new("closet");
+    s.bounds = Some(Aabb::new(
+        DVec3::new(-0.4, 0.0, -0.4),
+        DVec3::new(0.4, 2.5, 0.4),
+    ));
+    s.push_box("crate", [0.7, 0.4, 0.7], [0.0, 0.0, 0.0]);
+    let chair = s.push_box("chair", [0.4, 0.9, 0.4], [0.0, 0.4, 0.0]);
+    let e = edit(
+        &mut s,
+        chair,
+        DVec3::new(0.0, -0.4, 0.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap_err();
+    assert!(
+        e.message
+            .starts_with("no collision-free placement for 'chair'"),
+        "{e}"
+    );
+}
