@@ -219,9 +219,7 @@ fn centre_over(a: &Aabb, b: &Aabb) -> bool {
 }
 
 fn gap(a: &Aabb, b: &Aabb) -> f64 {
-    let dx = (b.min.x - a.max.x).max(a.min.x - b.max.x).max(0.0);
-    let dz = (b.min.z - a.max.z).max(a.min.z - b.max.z).max(0.0);
-    dx.hypot(dz)
+    a.floor_gap(b)
 }
 
 /// Property 1.

@@ -251,13 +251,7 @@ fn search(
         // Within the face when the edit put it within (a placement on the surface);
         // its footprint's centre over the face when it already overhung (real furniture
         // overhangs: a tv turned on its stand).
-        let within = |b: &Aabb, t: &Aabb| {
-            b.min.x >= t.min.x - 1e-9
-                && b.max.x <= t.max.x + 1e-9
-                && b.min.z >= t.min.z - 1e-9
-                && b.max.z <= t.max.z + 1e-9
-        };
-        let contained = surface.is_some_and(|j| within(&after[root], &after[j]));
+        let contained = surface.is_some_and(|j| after[root].footprint_within(&after[j]));
         let on_surface = |offset: DVec3| -> bool {
             let Some(j) = surface else { return true };
             if offset.y.abs() > 1e-12 {
@@ -266,7 +260,7 @@ fn search(
             let t = after[j];
             let b = after[root].translated(offset);
             if contained {
-                return within(&b, &t);
+                return b.footprint_within(&t);
             }
             let c = b.center();
             c.x >= t.min.x && c.x <= t.max.x && c.z >= t.min.z && c.z <= t.max.z

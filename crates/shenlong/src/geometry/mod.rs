@@ -84,6 +84,15 @@ impl Aabb {
         o.x.max(0.0) * o.z.max(0.0)
     }
 
+    /// Whether this box's footprint lies within `other`'s on the floor plan (to 1 nm).
+    #[must_use]
+    pub fn footprint_within(&self, other: &Self) -> bool {
+        self.min.x >= other.min.x - 1e-9
+            && self.max.x <= other.max.x + 1e-9
+            && self.min.z >= other.min.z - 1e-9
+            && self.max.z <= other.max.z + 1e-9
+    }
+
     /// The horizontal distance between the two boxes' footprints on the floor plan (0 where
     /// they touch or overlap).
     #[must_use]

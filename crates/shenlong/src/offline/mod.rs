@@ -137,22 +137,15 @@ impl<'s> Known<'s> {
 }
 
 impl Known<'_> {
-    /// Whether object `i` hangs: it rests on nothing, above the floor (a picture, a
-    /// whiteboard, a wall shelf).
-    fn hangs(scene: &Scene, i: usize) -> bool {
-        scene.objects[i].support.is_none()
-            && scene.objects[i].world_aabb().min.y > scene.floor() + crate::scene::SUPPORT_GAP
-    }
-
     /// Whether variable `s` stays on the floor: floor furniture ([`crate::ground::kind`])
     /// that does not hang.
     pub(crate) fn stays_on_floor(&self, s: usize) -> bool {
         let Some((scene, objects)) = self.scene else {
             return false;
         };
-        objects.get(s).is_some_and(|&a| {
-            crate::ground::kind::is_floor_bound(scene, a) && !Self::hangs(scene, a)
-        })
+        objects
+            .get(s)
+            .is_some_and(|&a| crate::ground::kind::is_floor_bound(scene, a) && !scene.hangs(a))
     }
 
     /// Whether "next to", a side of, "to" or "between" target `t` puts subject `s` on the
@@ -166,11 +159,12 @@ impl Known<'_> {
             return false;
         };
         // What hangs beside what hangs stays on the wall (a picture by the clock).
-        if Self::hangs(scene, a) {
+        if scene.hangs(a) {
             return false;
         }
-        let raised = scene.objects[b].world_aabb().min.y > scene.floor() + LOW;
-        Self::hangs(scene, b) || (raised && self.stays_on_floor(s))
+        let raised =
+            scene.objects[b].world_aabb().min.y > scene.floor() + crate::scene::FLOOR_LEVEL;
+        scene.hangs(b) || (raised && self.stays_on_floor(s))
     }
 
     /// For "next to `t`" where `t` rests on a surface and `s` does not stay on the floor:
@@ -267,11 +261,12 @@ impl Known<'_> {
             scene.objects[c].world_aabb(),
         );
         let mid = (pb.center() + qb.center()) / 2.0;
-        let half = me.size() / 2.0;
-        let on_top = mid.x - half.x >= top.min.x - 1e-9
-            && mid.x + half.x <= top.max.x + 1e-9
-            && mid.z - half.z >= top.min.z - 1e-9
-            && mid.z + half.z <= top.max.z + 1e-9;
+        let at_mid = me.translated(glam::DVec3::new(
+            mid.x - me.center().x,
+            0.0,
+            mid.z - me.center().z,
+        ));
+        let on_top = at_mid.footprint_within(&top);
         // The space between them along the axis they are apart on.
         let d = qb.center() - pb.center();
         let e = if d.x.abs() >= d.z.abs() { 0 } else { 2 };
@@ -337,25 +332,20 @@ impl Known<'_> {
         } else {
             [z, x, (2, -z.1), (0, -x.1)]
         };
-        let half = me.size() / 2.0;
-        let fits = |lo: f64, hi: f64, min: f64, max: f64| lo >= min - 1e-9 && hi <= max + 1e-9;
         order
             .into_iter()
             .find_map(|(e, sign)| {
-                let along = if sign > 0.0 {
-                    target.max[e] + GAP + half[e]
+                // The subject set GAP from that face and centred along it.
+                let mut offset = tc - mc;
+                offset.y = 0.0;
+                offset[e] = if sign > 0.0 {
+                    target.max[e] + GAP - me.min[e]
                 } else {
-                    target.min[e] - GAP - half[e]
+                    target.min[e] - GAP - me.max[e]
                 };
-                let across = 2 - e;
-                let ok = fits(along - half[e], along + half[e], top.min[e], top.max[e])
-                    && fits(
-                        tc[across] - half[across],
-                        tc[across] + half[across],
-                        top.min[across],
-                        top.max[across],
-                    );
-                ok.then_some(relations::Relation::Side(e, sign))
+                me.translated(offset)
+                    .footprint_within(&top)
+                    .then_some(relations::Relation::Side(e, sign))
             })
             .ok_or_else(|| {
                 format!(
@@ -365,10 +355,6 @@ impl Known<'_> {
             })
     }
 }
-
-/// How far above the floor an object's bottom may be and still stand on it (on a rug),
-/// in metres.
-const LOW: f64 = 0.05;
 
 /// How far object `i` can slide along −x, +x, −z, +z: to the nearest face of an object
 /// whose box overlaps its path (across the other horizontal axis and in height, by more

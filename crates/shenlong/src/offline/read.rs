@@ -994,9 +994,9 @@ impl<'a> Reader<'a> {
         let t = *targets.first().ok_or_else(|| not_read(text, text))?;
         // Where an earlier clause moved the target, the scene's numbers no longer say
         // where it is.
-        let as_is = !self.steps.contains_key(&t);
-        let known = self.facts.known;
         let unmoved = |v: usize| !self.steps.contains_key(&v);
+        let as_is = unmoved(t);
+        let known = self.facts.known;
         let mut level = Level::Target;
         let relation = match relation {
             Relation::NextTo if as_is => match known.side_on_support(s, t)? {

@@ -469,9 +469,6 @@ fn held_error(message: String) -> EditError {
 /// between their centres (floor plan), metres: the benchmark's `between` tolerance.
 const BETWEEN_TOLERANCE: f64 = 0.3;
 
-/// How far above the floor an object may stand and be on the floor (on a rug), metres.
-const FLOOR_LEVEL: f64 = 0.05;
-
 /// Refuses a placement that left an object where it was not put: farther from what it was
 /// put next to than [`collide::NEXT_TO_MAX_GAP`], or, put between two objects, with its
 /// centre not projecting onto the segment between theirs or more than
@@ -507,7 +504,7 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
             }
         };
         let a = scene.objects[object].world_aabb();
-        let on_floor = a.min.y <= scene.floor() + FLOOR_LEVEL;
+        let on_floor = a.min.y <= scene.floor() + crate::scene::FLOOR_LEVEL;
         let mut gap = f64::INFINITY;
         let mut next = Some(other);
         let mut hops = 0;
@@ -545,9 +542,7 @@ fn check_held(
         let Some(support) = supports[h].0 else {
             continue;
         };
-        let floating = scene.objects[h].support.is_none()
-            && scene.objects[h].world_aabb().min.y > scene.floor() + crate::scene::SUPPORT_GAP;
-        if floating {
+        if scene.hangs(h) {
             return Err(held_error(format!(
                 "'{name}' is to stay where it is, but '{}' would move from under it",
                 scene.objects[support].name

@@ -15,7 +15,7 @@ use crate::geometry::Aabb;
 use cga::{CgaError, Multivector, Similarity};
 use glam::{DQuat, DVec3};
 
-pub use support::SUPPORT_GAP;
+pub use support::{FLOOR_LEVEL, SUPPORT_GAP};
 
 /// The largest coordinate (and box extent) Shenlong keeps exact, in metres: positions and
 /// sizes beyond it are refused on reading, and an edit that would go beyond it is refused.
@@ -318,6 +318,14 @@ impl Scene {
     /// The floor height: the room's `min.y`, or 0.
     pub fn floor(&self) -> f64 {
         self.bounds.map_or(0.0, |b| b.min.y)
+    }
+
+    /// Whether object `i` hangs: it rests on nothing, above the floor (a picture, a
+    /// whiteboard, a wall shelf — or something left in the air).
+    #[must_use]
+    pub fn hangs(&self, i: usize) -> bool {
+        self.objects[i].support.is_none()
+            && self.objects[i].world_aabb().min.y > self.floor() + SUPPORT_GAP
     }
 
     /// The objects resting on `index`, directly or through others (not `index` itself),

@@ -7,6 +7,10 @@ use crate::geometry::{Aabb, FloorGrid};
 /// in metres. Objects also count as resting when they sink slightly into their support.
 pub const SUPPORT_GAP: f64 = 0.01;
 
+/// How far above the floor an object's bottom may be and still stand on the floor (on a
+/// rug), in metres.
+pub const FLOOR_LEVEL: f64 = 0.05;
+
 /// Marks, for each object without a support from the file, the object it rests on: the
 /// one whose top is within [`SUPPORT_GAP`] of its bottom, that its footprint's centre lies
 /// over, and that it rises above (so two supports can never form a cycle). Among several,

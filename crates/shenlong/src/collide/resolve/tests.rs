@@ -404,16 +404,22 @@ fn a_full_surface_is_refused_saying_so() {
     assert!(e.message.contains("'book'"), "{e}");
 }
 
-#[test]
-fn off_a_surface_a_lift_is_the_last_resort_and_is_reported() {
-    // A closet barely larger than the crate: pushed down into the crate, the box can only
-    // go back on top of it.
+/// A closet barely larger than the crate standing in it (the crate's index is 0): pushed
+/// down into the crate, what stands on it can only go back on top of it.
+fn closet() -> Scene {
     let mut s = Scene::new("closet");
     s.bounds = Some(Aabb::new(
         DVec3::new(-0.4, 0.0, -0.4),
         DVec3::new(0.4, 2.5, 0.4),
     ));
-    let crate_ = s.push_box("crate", [0.7, 0.4, 0.7], [0.0, 0.0, 0.0]);
+    s.push_box("crate", [0.7, 0.4, 0.7], [0.0, 0.0, 0.0]);
+    s
+}
+
+#[test]
+fn off_a_surface_a_lift_is_the_last_resort_and_is_reported() {
+    let mut s = closet();
+    let crate_ = 0;
     let b = s.push_box("box", [0.3, 0.3, 0.3], [0.0, 0.4, 0.0]);
     let r = edit(
         &mut s,
@@ -448,14 +454,9 @@ fn an_object_moved_on_the_floor_stays_on_the_floor() {
 
 #[test]
 fn floor_furniture_is_never_lifted_onto_another_object() {
-    // The closet of the test above: the box could only go on the crate; a chair there is
-    // refused instead of being stood on the crate.
-    let mut s = Scene::new("closet");
-    s.bounds = Some(Aabb::new(
-        DVec3::new(-0.4, 0.0, -0.4),
-        DVec3::new(0.4, 2.5, 0.4),
-    ));
-    s.push_box("crate", [0.7, 0.4, 0.7], [0.0, 0.0, 0.0]);
+    // Where a box could only go back on the crate, a chair is refused instead of being
+    // stood on it.
+    let mut s = closet();
     let chair = s.push_box("chair", [0.4, 0.9, 0.4], [0.0, 0.4, 0.0]);
     let e = edit(
         &mut s,
