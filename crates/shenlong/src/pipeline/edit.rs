@@ -567,6 +567,13 @@ fn place_into(
         )));
     }
     let before = scene.world_aabbs();
+    // What hung when the edit began (a whiteboard) never comes to rest on what moves under
+    // it.
+    let hung: Vec<bool> = before
+        .iter()
+        .enumerate()
+        .map(|(i, b)| scene.hangs_at(i, b))
+        .collect();
     let mut boxes = before.clone();
     let mut grid = crate::geometry::FloorGrid::new(&boxes);
     let mut moved = Vec::new();
@@ -617,7 +624,7 @@ fn place_into(
         // The moved object rests wherever it was put now, not on its old support: a later
         // motion that moves the old support must not carry it back.
         scene.objects[object].support_from_file = false;
-        scene.detect_supports_around(&boxes, &grid, &changed);
+        scene.detect_supports_around(&boxes, &grid, &changed, &hung);
     }
     let apply_ms = ms(t0);
 
@@ -677,7 +684,7 @@ fn place_into(
             ));
         }
         if !changed.is_empty() {
-            scene.detect_supports_around(&boxes, &grid, &changed);
+            scene.detect_supports_around(&boxes, &grid, &changed, &hung);
         }
     }
     let collide_ms = ms(t0);
@@ -775,6 +782,30 @@ mod place_tests {
             }),
             selection: Vec::new(),
         }
+    }
+
+    #[test]
+    fn what_hangs_is_not_carried_by_what_moves_under_it_but_a_lamp_finds_its_new_table() {
+        // A whiteboard on the wall, its bottom at a chair's height; two side tables, a lamp
+        // on the first.
+        let mut s = Scene::new("t");
+        let board = s.push_box("whiteboard", [1.8, 1.1, 0.03], [0.0, 1.1, -2.0]);
+        let chair = s.push_box("chair", [0.6, 1.1, 0.6], [2.0, 0.0, 0.0]);
+        let left = s.push_box("left table", [0.5, 0.6, 0.5], [-2.0, 0.0, 1.0]);
+        let right = s.push_box("right table", [0.5, 0.6, 0.5], [2.0, 0.0, 2.0]);
+        let lamp = s.push_box("lamp", [0.2, 0.4, 0.2], [-2.0, 0.6, 1.0]);
+        s.detect_supports();
+        // The chair right under the board's bottom edge: touching, not carrying.
+        let under = Multivector::translator(DVec3::new(-2.0, 0.0, -1.7));
+        place(&mut s, &[(chair, under)], &EditOptions::default()).unwrap();
+        assert_eq!(s.objects[board].support, None);
+        // The tables swapped with the lamp held: it now stands on the right table.
+        let swap = [
+            (left, Multivector::translator(DVec3::new(4.0, 0.0, 1.0))),
+            (right, Multivector::translator(DVec3::new(-4.0, 0.0, -1.0))),
+        ];
+        place_holding(&mut s, &swap, &EditOptions::default(), &[lamp], &[]).unwrap();
+        assert_eq!(s.objects[lamp].support, Some(right));
     }
 
     #[test]

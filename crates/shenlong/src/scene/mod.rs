@@ -324,8 +324,13 @@ impl Scene {
     /// whiteboard, a wall shelf — or something left in the air).
     #[must_use]
     pub fn hangs(&self, i: usize) -> bool {
-        self.objects[i].support.is_none()
-            && self.objects[i].world_aabb().min.y > self.floor() + SUPPORT_GAP
+        self.hangs_at(i, &self.objects[i].world_aabb())
+    }
+
+    /// [`Scene::hangs`] with object `i`'s world box already known.
+    #[must_use]
+    pub fn hangs_at(&self, i: usize, world: &Aabb) -> bool {
+        self.objects[i].support.is_none() && world.min.y > self.floor() + SUPPORT_GAP
     }
 
     /// The objects resting on `index`, directly or through others (not `index` itself),
@@ -455,14 +460,17 @@ impl Scene {
     }
 
     /// [`Scene::detect_supports`] for only what moving `changed` can have changed, given
-    /// the world boxes of every object (`boxes`, already updated) and a grid over them.
+    /// the world boxes of every object (`boxes`, already updated) and a grid over them;
+    /// the objects marked in `hung` (that hung when the edit began) do not come to rest on
+    /// what moved under them (an empty slice marks none).
     pub fn detect_supports_around(
         &mut self,
         boxes: &[Aabb],
         grid: &crate::geometry::FloorGrid,
         changed: &[usize],
+        hung: &[bool],
     ) {
-        support::detect_around(self, boxes, grid, changed);
+        support::detect_around(self, boxes, grid, changed, hung);
     }
 }
 

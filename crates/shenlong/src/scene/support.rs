@@ -26,11 +26,19 @@ pub fn detect(scene: &mut Scene) {
 }
 
 /// [`detect`] for what `changed` (objects whose boxes moved) can have changed: the changed
-/// objects themselves and what rested on them. What did not move never comes to rest on
-/// what moved under it (a chair pushed under a whiteboard does not carry the whiteboard
-/// away). `boxes` and `grid` must already hold the new boxes. Costs what moved, not the
-/// scene.
-pub fn detect_around(scene: &mut Scene, boxes: &[Aabb], grid: &FloorGrid, changed: &[usize]) {
+/// objects themselves, what rested on them, and what stands over their new footprints —
+/// except the objects marked in `hung` (those that hung when the edit began): they never
+/// come to rest on what moved under them (a chair pushed under a whiteboard does not carry
+/// the whiteboard away), while a lamp whose table went away comes to rest on the table
+/// moved under it. `boxes` and `grid` must already hold the new boxes. Costs what moved,
+/// not the scene.
+pub fn detect_around(
+    scene: &mut Scene,
+    boxes: &[Aabb],
+    grid: &FloorGrid,
+    changed: &[usize],
+    hung: &[bool],
+) {
     let mut candidates: Vec<usize> = changed.to_vec();
     let mut moved = vec![false; scene.objects.len()];
     for &c in changed {
@@ -44,6 +52,13 @@ pub fn detect_around(scene: &mut Scene, boxes: &[Aabb], grid: &FloorGrid, change
         {
             candidates.push(i);
         }
+    }
+    for &c in changed {
+        candidates.extend(
+            grid.near_box(&boxes[c])
+                .into_iter()
+                .filter(|&j| !hung.get(j).copied().unwrap_or(false)),
+        );
     }
     candidates.sort_unstable();
     candidates.dedup();

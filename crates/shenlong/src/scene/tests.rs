@@ -324,7 +324,7 @@ fn supports_found_around_what_moved_match_a_full_detection() {
         }
         let mut full = s.clone();
         full.detect_supports();
-        s.detect_supports_around(&boxes, &grid, &changed);
+        s.detect_supports_around(&boxes, &grid, &changed, &[]);
         let around: Vec<_> = s.objects.iter().map(|o| o.support).collect();
         let everywhere: Vec<_> = full.objects.iter().map(|o| o.support).collect();
         assert_eq!(around, everywhere, "after moving b{i}");
