@@ -1,0 +1,243 @@
+//! The five placements of issue 25, each on a scene authored here with the same
+//! arrangement as the report (and names other than the dev suites' scenes), through the
+//! whole pipeline (offline translator, collision resolution). Each test asserts where the
+//! object ends up — its level, its footprint, its gap and what it overlaps — never a
+//! string.
+
+use shenlong::collide::NEXT_TO_MAX_GAP;
+use shenlong::format::json;
+use shenlong::geometry::Aabb;
+use shenlong::offline::OfflineTranslator;
+use shenlong::pipeline::{edit, EditOptions};
+use shenlong::scene::Scene;
+
+/// Level tolerance, metres.
+const LEVEL: f64 = 0.011;
+/// Overlap that counts, metres on every axis (touching is not colliding).
+const OVERLAP: f64 = 1e-3;
+
+fn scene(text: &str) -> Scene {
+    json::read(text, "case").unwrap().scene
+}
+
+fn run(scene: &mut Scene, instruction: &str) {
+    let translator = OfflineTranslator::new();
+    if let Err(e) = edit(scene, instruction, &translator, &EditOptions::default()) {
+        panic!("{instruction:?} was refused: {}", e.message);
+    }
+}
+
+fn aabb(scene: &Scene, name: &str) -> Aabb {
+    scene.objects[scene.find(name).unwrap()].world_aabb()
+}
+
+/// The horizontal (x, z) gap between two boxes; 0 when their footprints touch or overlap.
+fn gap(a: &Aabb, b: &Aabb) -> f64 {
+    let dx = (a.min.x - b.max.x).max(b.min.x - a.max.x).max(0.0);
+    let dz = (a.min.z - b.max.z).max(b.min.z - a.max.z).max(0.0);
+    dx.hypot(dz)
+}
+
+fn overlaps(a: &Aabb, b: &Aabb) -> bool {
+    a.min.x < b.max.x - OVERLAP
+        && b.min.x < a.max.x - OVERLAP
+        && a.min.y < b.max.y - OVERLAP
+        && b.min.y < a.max.y - OVERLAP
+        && a.min.z < b.max.z - OVERLAP
+        && b.min.z < a.max.z - OVERLAP
+}
+
+fn footprint_within(inner: &Aabb, outer: &Aabb) -> bool {
+    inner.min.x >= outer.min.x - LEVEL
+        && inner.max.x <= outer.max.x + LEVEL
+        && inner.min.z >= outer.min.z - LEVEL
+        && inner.max.z <= outer.max.z + LEVEL
+}
+
+/// `name` overlaps no other object of the scene.
+fn overlaps_nothing(scene: &Scene, name: &str) {
+    let i = scene.find(name).unwrap();
+    let b = scene.objects[i].world_aabb();
+    for (j, other) in scene.objects.iter().enumerate() {
+        if j != i {
+            assert!(
+                !overlaps(&b, &other.world_aabb()),
+                "{name} ends inside {}: {b:?} vs {:?}",
+                other.name,
+                other.world_aabb()
+            );
+        }
+    }
+}
+
+/// Rests on `support`'s top with its footprint within it.
+fn rests_on(scene: &Scene, name: &str, support: &str) {
+    let b = aabb(scene, name);
+    let s = aabb(scene, support);
+    assert!(
+        (b.min.y - s.max.y).abs() < LEVEL,
+        "{name} floats or sinks: bottom {:.3}, {support}'s top {:.3}",
+        b.min.y,
+        s.max.y
+    );
+    assert!(
+        footprint_within(&b, &s),
+        "{name} overhangs {support}: {b:?} vs {s:?}"
+    );
+}
+
+const STUDY: &str = r#"{
+  "name": "study",
+  "bounds": {"min": [-3, 0, -3], "max": [3, 2.6, 3]},
+  "objects": [
+    {"name": "writing desk", "position": [1.0, 0, -2.4], "size": [1.4, 0.74, 0.7]},
+    {"name": "laptop", "position": [0.7, 0.74, -2.45], "size": [0.33, 0.02, 0.23]},
+    {"name": "mug", "position": [1.55, 0.74, -2.2], "size": [0.09, 0.1, 0.09]},
+    {"name": "notebook", "position": [1.2, 0.74, -2.5], "size": [0.21, 0.02, 0.3]},
+    {"name": "chair", "position": [1.0, 0, -1.6], "size": [0.5, 0.9, 0.5], "rotation": [0, 1, 0, 0]},
+    {"name": "bookshelf", "position": [-2.6, 0, 0], "size": [0.35, 1.9, 1.0]}
+  ]
+}"#;
+
+#[test]
+fn a_mug_put_next_to_a_laptop_on_a_desk_stays_on_the_desk() {
+    let mut s = scene(STUDY);
+    run(&mut s, "put the mug next to the laptop");
+    rests_on(&s, "mug", "writing desk");
+    let g = gap(&aabb(&s, "mug"), &aabb(&s, "laptop"));
+    assert!(g <= NEXT_TO_MAX_GAP, "mug {g:.2} m from the laptop");
+    overlaps_nothing(&s, "mug");
+}
+
+const LOUNGE: &str = r#"{
+  "name": "lounge",
+  "bounds": {"min": [-4, 0, -3], "max": [4, 2.7, 3]},
+  "objects": [
+    {"name": "Sofa", "position": [0, 0, -2.3], "size": [2.1, 0.85, 0.9]},
+    {"name": "SideTable_L", "position": [-1.55, 0, -2.4], "size": [0.8, 0.55, 0.5]},
+    {"name": "SideTable_R", "position": [1.45, 0, -2.4], "size": [0.5, 0.55, 0.5]},
+    {"name": "Lamp_Table", "position": [-1.78, 0.55, -2.4], "size": [0.28, 0.55, 0.28]},
+    {"name": "Cushion", "position": [0.5, 0.45, -2.3], "size": [0.36, 0.12, 0.36]},
+    {"name": "Blanket", "position": [-0.5, 0.45, -2.3], "size": [0.6, 0.1, 0.5]},
+    {"name": "CoffeeTable", "position": [0, 0, -0.8], "size": [1.1, 0.42, 0.6]},
+    {"name": "Rug", "position": [0, 0, -0.9], "size": [2.4, 0.01, 1.7]}
+  ]
+}"#;
+
+#[test]
+fn a_cushion_put_on_a_side_table_with_a_lamp_lands_beside_the_lamp() {
+    let mut s = scene(LOUNGE);
+    run(&mut s, "put the cushion on the left side table");
+    rests_on(&s, "Cushion", "SideTable_L");
+    overlaps_nothing(&s, "Cushion");
+    // The lamp stayed where it stood.
+    let lamp = aabb(&s, "Lamp_Table");
+    assert!((lamp.min.y - 0.55).abs() < LEVEL && (lamp.center().x + 1.78).abs() < 1e-6);
+
+    // What has no room beside the lamp is refused, naming the lamp; nothing moves.
+    let mut s = scene(LOUNGE);
+    let before = s.world_aabbs();
+    let translator = OfflineTranslator::new();
+    let e = edit(
+        &mut s,
+        "put the blanket on the left side table",
+        &translator,
+        &EditOptions::default(),
+    )
+    .unwrap_err();
+    assert!(e.message.contains("Lamp_Table"), "{}", e.message);
+    assert_eq!(s.world_aabbs(), before);
+}
+
+const MEETING: &str = r#"{
+  "name": "meeting room",
+  "bounds": {"min": [-3.5, 0, -3], "max": [3.5, 2.8, 3]},
+  "objects": [
+    {"name": "whiteboard", "position": [-1.5, 1.0, -2.985], "size": [1.6, 1.0, 0.03]},
+    {"name": "meeting table", "position": [0.5, 0, 0], "size": [2.0, 0.75, 1.0]},
+    {"name": "office chair 1", "position": [2.6, 0, 1.8], "size": [0.6, 1.05, 0.6], "color": "grey"},
+    {"name": "office chair 2", "position": [-1.0, 0, 1.8], "size": [0.6, 1.05, 0.6], "color": "black"},
+    {"name": "cabinet", "position": [-0.4, 0, -2.75], "size": [0.8, 0.9, 0.45]},
+    {"name": "projector", "position": [0.5, 0.75, 0], "size": [0.3, 0.1, 0.25]}
+  ]
+}"#;
+
+#[test]
+fn a_chair_moved_next_to_a_whiteboard_and_turned_to_face_it_stays_on_the_floor() {
+    let mut s = scene(MEETING);
+    run(
+        &mut s,
+        "move the grey office chair next to the whiteboard and turn it to face it",
+    );
+    let chair = s.find("office chair 1").unwrap();
+    let b = s.objects[chair].world_aabb();
+    assert!(
+        b.min.y.abs() < LEVEL,
+        "the chair was lifted to {:.2}",
+        b.min.y
+    );
+    let board = aabb(&s, "whiteboard");
+    let g = gap(&b, &board);
+    assert!(g <= NEXT_TO_MAX_GAP, "chair {g:.2} m from the whiteboard");
+    let front = s.objects[chair].world_front();
+    let to = board.center() - b.center();
+    let to = glam::DVec3::new(to.x, 0.0, to.z).normalize();
+    assert!(
+        front.dot(to) > 0.95,
+        "the chair faces {front:?}, the whiteboard is towards {to:?}"
+    );
+    for (j, other) in s.objects.iter().enumerate() {
+        if j != chair {
+            assert!(!overlaps(&b, &other.world_aabb()), "inside {}", other.name);
+        }
+    }
+}
+
+const DEN: &str = r#"{
+  "name": "den",
+  "bounds": {"min": [-3, 0, -3], "max": [3, 2.6, 3]},
+  "objects": [
+    {"name": "tv stand", "position": [0, 0, -2.7], "size": [1.6, 0.5, 0.45]},
+    {"name": "television", "position": [0, 0.5, -2.72], "size": [1.3, 0.75, 0.22]},
+    {"name": "armchair", "position": [0, 0, 1.0], "size": [0.85, 0.9, 0.85], "rotation": [0, 1, 0, 0]},
+    {"name": "side table", "position": [0.8, 0, 1.0], "size": [0.45, 0.55, 0.45]},
+    {"name": "credit card", "position": [0.8, 0.55, 1.0], "size": [0.086, 0.001, 0.054]}
+  ]
+}"#;
+
+#[test]
+fn a_card_put_on_a_tv_stand_with_a_television_lands_beside_it_not_inside() {
+    let mut s = scene(DEN);
+    run(&mut s, "put the credit card on the tv stand");
+    rests_on(&s, "credit card", "tv stand");
+    overlaps_nothing(&s, "credit card");
+}
+
+const BEDROOM: &str = r#"{
+  "name": "bedroom",
+  "bounds": {"min": [-3, 0, -3], "max": [3, 2.6, 3]},
+  "objects": [
+    {"name": "dresser", "position": [-1.8, 0, -2.7], "size": [1.2, 0.8, 0.5]},
+    {"name": "desk lamp", "position": [-1.45, 0.8, -2.75], "size": [0.2, 0.45, 0.2]},
+    {"name": "jewellery box", "position": [-2.2, 0.8, -2.7], "size": [0.25, 0.1, 0.18]},
+    {"name": "desk", "position": [1.6, 0, -2.6], "size": [1.2, 0.75, 0.6]},
+    {"name": "mug", "position": [1.3, 0.75, -2.5], "size": [0.09, 0.1, 0.09]},
+    {"name": "bed", "position": [0, 0, 1.2], "size": [1.6, 0.55, 2.0]}
+  ]
+}"#;
+
+#[test]
+fn on_a_dresser_next_to_a_lamp_is_one_destination() {
+    let mut s = scene(BEDROOM);
+    run(&mut s, "put the mug on the dresser next to the desk lamp");
+    rests_on(&s, "mug", "dresser");
+    let g = gap(&aabb(&s, "mug"), &aabb(&s, "desk lamp"));
+    assert!(g <= NEXT_TO_MAX_GAP, "mug {g:.2} m from the lamp");
+    // Nearer the lamp than the jewellery box at the other end of the dresser.
+    let to_box = gap(&aabb(&s, "mug"), &aabb(&s, "jewellery box"));
+    assert!(
+        g < to_box,
+        "mug {g:.2} m from the lamp, {to_box:.2} m from the box"
+    );
+    overlaps_nothing(&s, "mug");
+}
