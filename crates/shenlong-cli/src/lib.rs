@@ -1,7 +1,7 @@
 //! The parts of the `shenlong` command that are worth testing from outside: the web
-//! editor's server, the MCP server, and the editing session they share.
+//! editor's server and the MCP server (the editing session they share is
+//! [`shenlong::session`]).
 
 pub mod mcp;
 pub mod server;
-pub mod session;
 pub mod terminal;

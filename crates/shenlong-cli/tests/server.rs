@@ -578,7 +578,7 @@ async fn a_save_that_fails_later_keeps_the_edit_and_says_so() {
 
 #[test]
 fn the_history_keeps_within_its_byte_budget() {
-    use shenlong_cli::session::Session;
+    use shenlong::session::Session;
     // Each change moves every object of a scene of 2,000, so each step costs about
     // 2 × 2,000 objects; a budget of 3 such steps keeps the last 3.
     let mut scene = shenlong::scene::Scene::new("many");

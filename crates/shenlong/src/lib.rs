@@ -7,6 +7,7 @@
 //! - [`format`]: scene files — scene JSON — read and written back in their own shape.
 //! - [`expr`]: the CGA expression language a model answers in — parse, check, evaluate.
 //! - [`io`]: atomic file writes.
+//! - [`session`]: one scene edited over time, with undo, redo and a history.
 
 #![warn(missing_docs)]
 
@@ -24,4 +25,5 @@ pub mod offline;
 pub mod pipeline;
 pub mod render;
 pub mod scene;
+pub mod session;
 pub mod translate;

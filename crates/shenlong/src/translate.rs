@@ -65,6 +65,25 @@ impl System {
             .into_iter()
             .find(|s| s.name() == name.trim().to_lowercase())
     }
+
+    /// Systems named in a list separated by commas (`cga,euclidean`), each once, in order.
+    ///
+    /// # Errors
+    /// An unknown name, or a list that names none.
+    pub fn parse_list(text: &str) -> Result<Vec<Self>, String> {
+        let mut systems = Vec::new();
+        for name in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
+            let system = Self::from_name(name)
+                .ok_or_else(|| format!("unknown system '{name}': use cga, euclidean, omniverse"))?;
+            if !systems.contains(&system) {
+                systems.push(system);
+            }
+        }
+        if systems.is_empty() {
+            return Err("no prompt system named: use cga, euclidean, omniverse".into());
+        }
+        Ok(systems)
+    }
 }
 
 /// One variable's answer.

@@ -9,7 +9,6 @@
 //! says is executed: instructions and expressions are read by Shenlong's grammar and
 //! expression language. Every failure is a tool error (`isError: true`) with one line.
 
-use crate::session::{Session, StepError};
 use base64::Engine as _;
 use rmcp::handler::server::router::tool::ToolRouter;
 use rmcp::handler::server::wrapper::Parameters;
@@ -21,12 +20,14 @@ use rmcp::model::{
 };
 use rmcp::service::RequestContext;
 use rmcp::{schemars, tool, tool_handler, tool_router, ErrorData, Json, Peer, RoleServer};
-use serde::{Deserialize, Serialize};
+use serde::Deserialize;
 use shenlong::collide::ResolveOptions;
 use shenlong::format::{Format, SceneFile};
 use shenlong::ground::Grounder;
 use shenlong::pipeline::{edit_with, EditOptions, Translator};
+use shenlong::scene::listing::{listing, SceneListing};
 use shenlong::scene::Scene;
+use shenlong::session::{Session, StepError};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -119,47 +120,6 @@ pub enum ExportFormat {
     Tdw,
 }
 
-/// The scene, for `list_objects`.
-#[derive(Debug, Serialize, schemars::JsonSchema)]
-pub struct SceneListing {
-    /// The scene's name.
-    pub scene: String,
-    /// The room (floor at `min[1]`, walls at the x and z limits), if it has one.
-    pub bounds: Option<Bounds>,
-    /// The objects, in file order.
-    pub objects: Vec<ObjectListing>,
-}
-
-/// An axis-aligned box, in metres (+Y up, +X right, +Z towards the viewer).
-#[derive(Debug, Serialize, schemars::JsonSchema)]
-pub struct Bounds {
-    /// The low corner.
-    pub min: [f64; 3],
-    /// The high corner.
-    pub max: [f64; 3],
-}
-
-/// One object.
-#[derive(Debug, Serialize, schemars::JsonSchema)]
-pub struct ObjectListing {
-    /// Its name (unique, compared without case).
-    pub name: String,
-    /// Its pose's position: the bottom centre of its box (for a mesh, its origin).
-    pub position: [f64; 3],
-    /// Its box's size along its own axes (for a mesh, its world box's).
-    pub size: [f64; 3],
-    /// Its rotation as a unit quaternion `[x, y, z, w]`.
-    pub rotation: [f64; 4],
-    /// Its uniform scale.
-    pub scale: f64,
-    /// Its world bounding box.
-    pub world_box: Bounds,
-    /// The direction it faces, in the world.
-    pub front: [f64; 3],
-    /// The object it rests on, if any (it is carried when that one moves).
-    pub rests_on: Option<String>,
-}
-
 const APPLY_DESCRIPTION: &str = "Apply a CGA (conformal geometric algebra) expression to one object, for an assistant that writes the transformation itself. Nothing is executed: the expression is parsed and evaluated by Shenlong's expression language, checked to be a translation·rotation·uniform scale, applied about the object's pivot (the bottom centre of its box), carrying what rests on it, then collisions are resolved.\n\nFrame: metres, right-handed, +Y up, +X right, +Z towards the viewer (front); e1, e2, e3 are the x, y, z unit vectors. The object is X1; bind others as X2, X3… with `bind`.\nVersors, one example each:\n- T(v) translates by the vector v: T(0.5*e1) moves 0.5 m right.\n- R(angle, u, v) rotates by angle (radians) in the plane from u to v: R(pi/2, e3, e1) turns a quarter turn counter-clockwise seen from above.\n- D(s) scales uniformly about the pivot: D(2) doubles the size.\n- Compose with *, right to left: T(e2) * R(pi/4, e3, e1) turns, then lifts 1 m.\nBoxes (points and vectors of the world box), one example each; `| e2` takes the y component (| binds loosely: parenthesise it):\n- X1.min, X1.max: the low and high corners: T(((X2.max | e2) - (X1.min | e2)) * e2) puts X1's bottom at X2's top height.\n- X1.center: T(((X2.center - X1.center) | e1) * e1) lines X1 up with X2 along x.\n- X1.size: T((X1.size | e1) * e1) moves X1 by its own width to the right.\n- X1.front: the direction X1 faces: T(0.3 * X1.front) moves it 30 cm forward.\nExample, X1 on top of X2: T(((X2.max | e2) - (X1.min | e2)) * e2 + ((X2.center - X1.center) | e1) * e1 + ((X2.center - X1.center) | e3) * e3).";
 
 impl ShenlongMcp {
@@ -242,42 +202,6 @@ impl ShenlongMcp {
             .to_bytes(Format::SceneJson)
             .map_err(|e| e.to_string())?;
         String::from_utf8(bytes).map_err(|e| e.to_string())
-    }
-}
-
-fn listing(scene: &Scene) -> SceneListing {
-    let r = |v: glam::DVec3| v.to_array().map(shenlong::format::tidy);
-    SceneListing {
-        scene: scene.name.clone(),
-        bounds: scene.bounds.map(|b| Bounds {
-            min: r(b.min),
-            max: r(b.max),
-        }),
-        objects: scene
-            .objects
-            .iter()
-            .map(|o| {
-                let pose = o.similarity();
-                let world = o.world_aabb();
-                let size = match &o.shape {
-                    shenlong::scene::Shape::Box { size } => *size,
-                    shenlong::scene::Shape::Points { .. } => world.size(),
-                };
-                ObjectListing {
-                    name: o.name.clone(),
-                    position: r(pose.translation),
-                    size: r(size),
-                    rotation: pose.rotation.to_array().map(shenlong::format::tidy),
-                    scale: shenlong::format::tidy(pose.scale),
-                    world_box: Bounds {
-                        min: r(world.min),
-                        max: r(world.max),
-                    },
-                    front: r(o.world_front()),
-                    rests_on: o.support.map(|s| scene.objects[s].name.clone()),
-                }
-            })
-            .collect(),
     }
 }
 

@@ -8,7 +8,6 @@
 
 pub mod assets;
 
-use crate::session::{Session, StepError};
 use axum::body::Bytes;
 use axum::extract::rejection::JsonRejection;
 use axum::extract::{DefaultBodyLimit, Query, State};
@@ -23,6 +22,7 @@ use shenlong::format::{Document, Format, SceneFile};
 use shenlong::pipeline::backends::{translator, TranslatorSettings};
 use shenlong::pipeline::{edit_with, EditErrorKind, EditOptions, System};
 use shenlong::scene::Scene;
+use shenlong::session::{Session, StepError};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
@@ -415,7 +415,7 @@ struct EditRequest {
 /// Records a change through the session (see [`Session::commit`]). A save that failed
 /// does not fail the request: the edit was made and kept, and the answer says so in its
 /// `warning`.
-fn commit(app: &App, after: Scene, kind: &str, text: &str) -> crate::session::Change {
+fn commit(app: &App, after: Scene, kind: &str, text: &str) -> shenlong::session::Change {
     app.lock().session.commit(after, kind, text)
 }
 

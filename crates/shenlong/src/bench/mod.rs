@@ -3,6 +3,7 @@
 //! significance — the paper's comparison, automatic and reproducible.
 
 pub mod checks;
+pub mod folder;
 pub mod instantiate;
 pub mod report;
 pub mod run;

@@ -154,6 +154,10 @@ pub struct Report {
     pub comparisons: Vec<Comparison>,
     /// Every failed instance with its reasons.
     pub failures: Vec<Outcome>,
+    /// Shards `K/N` of a merged run that were not among its folders (the report covers
+    /// the rest); absent when none is missing.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub missing_shards: Vec<String>,
 }
 
 /// Builds the report from outcomes, in any order: they are sorted by system and instance
@@ -229,6 +233,7 @@ pub fn build(suite: &str, model: &str, outcomes: &[Outcome]) -> Report {
         systems,
         comparisons,
         failures,
+        missing_shards: Vec::new(),
     }
 }
 
@@ -294,6 +299,13 @@ pub fn markdown(report: &Report) -> String {
         "# Benchmark: {}\n\nTranslator: `{}`.\n",
         report.suite, report.model
     );
+    if !report.missing_shards.is_empty() {
+        let _ = writeln!(
+            md,
+            "**Partial**: shard(s) {} are missing; the figures cover the other shards.\n",
+            report.missing_shards.join(", ")
+        );
+    }
     let _ = writeln!(md, "## Success rate and response time\n");
     let _ = writeln!(md, "| system | category | n | success | response (mean ± sd) | retries | tokens in / out | cache hits |\n|---|---|---|---|---|---|---|---|");
     for (system, category, f) in rows(report, "**overall**") {

@@ -644,6 +644,7 @@ impl<'a> Evaluator<'a> {
     ) -> Result<Multivector, ExprError> {
         let (u, v) = match values.len() {
             3 => (values[1], values[2]),
+            2 => return self.rotor_in_plane(values, args, expr),
             n => {
                 return Err(self.error(
                     format!("R needs three arguments: angle, u, v (got {n}); for example R(pi/2, e3, e1) turns +90° about +Y"),
@@ -669,6 +670,58 @@ impl<'a> Evaluator<'a> {
             }
         }
         Multivector::rotor(angle, &u, &v).map_err(|e| self.error(cga_message(&e), expr))
+    }
+}
+
+impl Evaluator<'_> {
+    /// `R(B, angle)` or `R(angle, B)`: a rotation by `angle` in the plane of the Euclidean
+    /// bivector `B`, in the sense from `u` to `v` where `B = u ∧ v` — `R(e12, a)` is
+    /// `R(a, e1, e2)`, `R(e31, a)` is `R(a, e3, e1)`.
+    fn rotor_in_plane(
+        &self,
+        values: &[Multivector],
+        args: &[Expr],
+        expr: &Expr,
+    ) -> Result<Multivector, ExprError> {
+        let (plane, angle, plane_arg) = match (scalar_of(&values[0]), scalar_of(&values[1])) {
+            (None, Some(angle)) => (values[0], angle, &args[0]),
+            (Some(angle), None) => (values[1], angle, &args[1]),
+            _ => {
+                return Err(self.error(
+                    "R with two arguments takes a plane and an angle, as R(e31, pi/2); or write R(angle, u, v)",
+                    expr,
+                ))
+            }
+        };
+        let at = |name: &str| {
+            cga::BLADE_NAMES
+                .iter()
+                .position(|n| *n == name)
+                .map_or(0.0, |i| plane[i])
+        };
+        let mut rest = plane;
+        for name in ["e12", "e13", "e23"] {
+            if let Some(i) = cga::BLADE_NAMES.iter().position(|n| *n == name) {
+                rest[i] = 0.0;
+            }
+        }
+        // The plane's normal: e23 ↔ e1, e31 ↔ e2, e12 ↔ e3.
+        let normal = DVec3::new(at("e23"), -at("e13"), at("e12"));
+        if rest.max_abs() > 1e-12 || normal.length() < 1e-12 {
+            return Err(self.error(
+                format!("the plane of R must be a Euclidean bivector such as e12, e31 or e23, got {plane}"),
+                plane_arg,
+            ));
+        }
+        let n = normal.normalize();
+        let u = n.any_orthonormal_vector();
+        let v = n.cross(u);
+        Multivector::rotor(
+            angle,
+            &Multivector::from_vector(u),
+            &Multivector::from_vector(v),
+        )
+        .map_err(|e| self.error(cga_message(&e), expr))
     }
 }
 

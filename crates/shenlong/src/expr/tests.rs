@@ -185,6 +185,26 @@ fn the_papers_expressions_mean_what_they_say() {
 }
 
 #[test]
+fn a_rotor_by_plane_and_angle_is_the_rotor_from_u_to_v() {
+    for (short, long) in [
+        ("R(e12, pi/2)", "R(pi/2, e1, e2)"),
+        ("R(pi/3, e31)", "R(pi/3, e3, e1)"),
+        ("R(e13, 0.7)", "R(0.7, e1, e3)"),
+        ("R(2 * e23, -1.2)", "R(-1.2, e2, e3)"),
+        ("T(e1) * R(e12, pi/2)", "T(e1) * R(pi/2, e1, e2)"),
+    ] {
+        let (a, b) = (transformation(short), transformation(long));
+        assert!(close(a.translation, b.translation), "{short}");
+        assert!(
+            a.rotation.dot(b.rotation).abs() > 1.0 - 1e-12,
+            "{short}: {:?} vs {:?}",
+            a.rotation,
+            b.rotation
+        );
+    }
+}
+
+#[test]
 fn error_messages_say_what_and_where() {
     assert_eq!(
         error("T(e1 * 2"),
@@ -194,7 +214,15 @@ fn error_messages_say_what_and_where() {
         error("T(X9.max)"),
         "unknown name 'X9' (bound: X1, X2) at column 3"
     );
-    assert_eq!(error("R(pi, e1)"), "R needs three arguments: angle, u, v (got 2); for example R(pi/2, e3, e1) turns +90° about +Y at column 1");
+    assert_eq!(error("R(pi)"), "R needs three arguments: angle, u, v (got 1); for example R(pi/2, e3, e1) turns +90° about +Y at column 1");
+    assert!(error("R(pi, e1)")
+        .starts_with("the plane of R must be a Euclidean bivector such as e12, e31 or e23"));
+    assert!(
+        error("R(pi, e1)").ends_with("at column 7"),
+        "{}",
+        error("R(pi, e1)")
+    );
+    assert!(error("R(e12, e3)").starts_with("R with two arguments takes a plane and an angle"));
     assert_eq!(
         error("X1.max - X1.min"),
         "result is a vector, not a transformation: wrap a translation vector in T(...)"

@@ -9,6 +9,7 @@
 //! along with the same world motion. Every applied motion records the poses it replaced,
 //! so undoing it is exact to the bit.
 
+pub mod listing;
 mod support;
 
 use crate::geometry::Aabb;

@@ -1,9 +1,10 @@
-//! One scene being edited over time, as the editor's server and the MCP server keep it:
-//! the scene file, undo and redo as the poses each change replaced, a history, and saving
-//! to the one file given at start-up (after each change, or when asked).
+//! One scene being edited over time, as the editor's server, the MCP server and the Python
+//! package keep it: the scene file, undo and redo as the poses each change replaced, a
+//! history, and saving to the one file given at start-up (after each change, or when
+//! asked).
 
-use shenlong::format::SceneFile;
-use shenlong::scene::{Object, Scene};
+use crate::format::SceneFile;
+use crate::scene::{Object, Scene};
 use std::path::PathBuf;
 
 /// One entry of the history.
@@ -56,8 +57,8 @@ fn object_bytes(o: &Object) -> usize {
     std::mem::size_of::<Object>()
         + o.name.len()
         + match &o.shape {
-            shenlong::scene::Shape::Points { points } => points.len() * 24,
-            shenlong::scene::Shape::Box { .. } => 0,
+            crate::scene::Shape::Points { points } => points.len() * 24,
+            crate::scene::Shape::Box { .. } => 0,
         }
 }
 
@@ -76,7 +77,7 @@ pub enum StepError {
 pub struct Change {
     /// The change's id (`None` when it moved nothing and was not recorded).
     pub id: Option<u64>,
-    /// The change was made and kept, but the `--save` file could not be written: why.
+    /// The change was made and kept, but the save file could not be written: why.
     pub save_error: Option<String>,
 }
 
@@ -216,7 +217,7 @@ impl Session {
         })
     }
 
-    /// Writes the scene to the `--save` file, if there is one (atomically).
+    /// Writes the scene to the save file, if there is one (atomically).
     ///
     /// # Errors
     /// A message saying the change was made but not saved.
@@ -230,7 +231,7 @@ impl Session {
         }
     }
 
-    /// The `--save` file.
+    /// The file the session saves to.
     pub fn save_path(&self) -> Option<&std::path::Path> {
         self.save.as_deref()
     }

@@ -1,0 +1,380 @@
+//! `shenlong._native`: the Shenlong library for Python, built with PyO3 and maturin.
+//!
+//! The Python package (`python/py/shenlong`) wraps this module: values cross as JSON text
+//! (Python's `json` on one side, serde on the other), so the only types here are strings,
+//! numbers, booleans and lists of them. Every call that works on a scene releases the GIL;
+//! edits run on a copy of the scene, committed only when they succeed, so a refusal, an
+//! error or even a bug (a panic, caught here) leaves the scene exactly as it was and
+//! reaches Python as `EditError`, never as a panic.
+
+use pyo3::exceptions::PyValueError;
+use pyo3::prelude::*;
+use shenlong::bench::folder;
+use shenlong::bench::run::RunOptions;
+use shenlong::bench::Suite;
+use shenlong::format::procthor::{self, AssetDatabase};
+use shenlong::format::{json, Document, Format, SceneFile};
+use shenlong::pipeline::backends::{translator, TranslatorSettings};
+use shenlong::pipeline::{apply_expression, edit, EditOptions, System, Translator};
+use shenlong::scene::listing::listing;
+use shenlong::session::{Session, StepError};
+use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::path::PathBuf;
+use std::sync::atomic::AtomicBool;
+
+pyo3::create_exception!(
+    _native,
+    EditError,
+    PyValueError,
+    "An instruction Shenlong refused, or bad input: the message is one line saying what and where; the scene is as it was."
+);
+
+fn error(message: impl std::fmt::Display) -> PyErr {
+    EditError::new_err(message.to_string())
+}
+
+/// Runs `f`, turning a panic (a bug) into an error that says so.
+fn guarded<T>(f: impl FnOnce() -> Result<T, String>) -> Result<T, String> {
+    catch_unwind(AssertUnwindSafe(f)).unwrap_or_else(|panic| {
+        let what = panic
+            .downcast_ref::<&str>()
+            .map(|s| (*s).to_string())
+            .or_else(|| panic.downcast_ref::<String>().cloned())
+            .unwrap_or_else(|| "unknown".into());
+        Err(format!(
+            "internal error (a bug in Shenlong, please report it): {what}; nothing was changed"
+        ))
+    })
+}
+
+/// Runs `f` without the GIL, guarded against panics.
+fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Send) -> PyResult<T> {
+    py.detach(|| guarded(f)).map_err(error)
+}
+
+fn to_json<T: serde::Serialize>(value: &T) -> Result<String, String> {
+    serde_json::to_string(value).map_err(|e| format!("cannot write the answer as JSON: {e}"))
+}
+
+fn make_translator(llm: &str, system: &str) -> Result<Box<dyn Translator>, String> {
+    let system = System::from_name(system)
+        .ok_or_else(|| format!("unknown system '{system}': use cga, euclidean, omniverse"))?;
+    translator(
+        llm,
+        &TranslatorSettings {
+            system,
+            ..TranslatorSettings::default()
+        },
+    )
+}
+
+fn collisions(collide: bool) -> Option<shenlong::collide::ResolveOptions> {
+    collide.then(shenlong::collide::ResolveOptions::default)
+}
+
+/// A scene being edited, with undo and redo (`shenlong.Scene` wraps it).
+#[pyclass(module = "shenlong._native", name = "Scene")]
+struct PyScene {
+    session: Session,
+}
+
+impl PyScene {
+    fn new(file: SceneFile) -> Self {
+        Self {
+            session: Session::saving_on_request(file, None),
+        }
+    }
+
+    /// Runs `change` on a copy of the scene and commits it when it succeeds.
+    fn change<T: Send>(
+        &mut self,
+        py: Python<'_>,
+        kind: &str,
+        text: &str,
+        change: impl FnOnce(&mut shenlong::scene::Scene) -> Result<T, String> + Send,
+    ) -> PyResult<T> {
+        let session = &mut self.session;
+        detached(py, move || {
+            let mut after = session.file.scene.clone();
+            let out = change(&mut after)?;
+            session.commit(after, kind, text);
+            Ok(out)
+        })
+    }
+
+    fn step(&mut self, py: Python<'_>, undo: bool) -> PyResult<bool> {
+        let session = &mut self.session;
+        detached(py, move || match session.step(undo) {
+            Ok(_) => Ok(true),
+            Err(StepError::Nothing) => Ok(false),
+        })
+    }
+}
+
+#[pymethods]
+impl PyScene {
+    /// Reads a scene file (`.json`, `.gltf`, `.glb`).
+    #[staticmethod]
+    fn load(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+        detached(py, move || {
+            SceneFile::load(&path)
+                .map(Self::new)
+                .map_err(|e| e.to_string())
+        })
+    }
+
+    /// A scene from scene-JSON text; `name` names a scene without a `"name"`.
+    #[staticmethod]
+    fn from_json(py: Python<'_>, text: String, name: String) -> PyResult<Self> {
+        detached(py, move || {
+            let read = json::read_string(text, &name).map_err(|e| e.to_string())?;
+            Ok(Self::new(SceneFile {
+                scene: read.scene,
+                document: Document::SceneJson(read.document),
+                path: None,
+            }))
+        })
+    }
+
+    /// A ProcTHOR / Holodeck house (JSON text) with its asset database (JSON text).
+    #[staticmethod]
+    fn from_procthor(py: Python<'_>, house: String, assets: String) -> PyResult<Self> {
+        detached(py, move || {
+            let house: serde_json::Value =
+                serde_json::from_str(&house).map_err(|e| format!("the house is not JSON: {e}"))?;
+            if !procthor::looks_like_house(&house) {
+                return Err(
+                    "the house has no rooms and objects of a ProcTHOR/Holodeck house".into(),
+                );
+            }
+            let assets = AssetDatabase::from_json(&assets)
+                .map_err(|e| format!("the asset database: {e}"))?;
+            let name = house
+                .get("id")
+                .and_then(serde_json::Value::as_str)
+                .unwrap_or("house")
+                .to_string();
+            let document = procthor::convert(&house, &assets, &name).map_err(|e| e.to_string())?;
+            let (scene, document) =
+                json::scene_from_value(&document, &name).map_err(|e| e.to_string())?;
+            Ok(Self::new(SceneFile {
+                scene,
+                document: Document::SceneJson(document),
+                path: None,
+            }))
+        })
+    }
+
+    /// The scene's name.
+    #[getter]
+    fn name(&self) -> String {
+        self.session.file.scene.name.clone()
+    }
+
+    /// The number of objects.
+    fn len(&self) -> usize {
+        self.session.file.scene.objects.len()
+    }
+
+    /// Every object as JSON: name, position, rotation, scale, size, world_box, front,
+    /// rests_on.
+    fn objects_json(&self) -> PyResult<String> {
+        to_json(&listing(&self.session.file.scene).objects).map_err(error)
+    }
+
+    /// The scene as scene-JSON text.
+    fn to_json(&self, py: Python<'_>) -> PyResult<String> {
+        let file = &self.session.file;
+        detached(py, move || {
+            let bytes = file
+                .to_bytes(Format::SceneJson)
+                .map_err(|e| e.to_string())?;
+            String::from_utf8(bytes).map_err(|e| e.to_string())
+        })
+    }
+
+    /// The history as JSON, oldest first.
+    fn history_json(&self) -> PyResult<String> {
+        to_json(&self.session.history()).map_err(error)
+    }
+
+    /// Runs an instruction; returns the edit report as JSON.
+    #[allow(clippy::too_many_arguments)]
+    fn edit(
+        &mut self,
+        py: Python<'_>,
+        instruction: String,
+        llm: String,
+        system: String,
+        collide: bool,
+        carry: bool,
+        selected: Vec<String>,
+    ) -> PyResult<String> {
+        let text = instruction.clone();
+        self.change(py, "edit", &text, move |scene| {
+            let translator = make_translator(&llm, &system)?;
+            let selection = selected
+                .iter()
+                .map(|name| scene.resolve(name).map_err(|e| format!("selected: {e}")))
+                .collect::<Result<Vec<_>, _>>()?;
+            let options = EditOptions {
+                carry,
+                collisions: collisions(collide),
+                selection,
+            };
+            let done =
+                edit(scene, &instruction, translator.as_ref(), &options).map_err(|e| e.message)?;
+            to_json(&done.report)
+        })
+    }
+
+    /// Applies one CGA expression to one object; returns what it did as JSON.
+    fn apply(
+        &mut self,
+        py: Python<'_>,
+        name: String,
+        expr: String,
+        collide: bool,
+        carry: bool,
+    ) -> PyResult<String> {
+        let text = format!("{name}: {expr}");
+        self.change(py, "apply", &text, move |scene| {
+            let options = EditOptions {
+                carry,
+                collisions: collisions(collide),
+                selection: Vec::new(),
+            };
+            let (placed, t) =
+                apply_expression(scene, &name, &expr, &options).map_err(|e| e.message)?;
+            let s = t.similarity;
+            to_json(&serde_json::json!({
+                "object": scene.objects[placed.moved[0]].name,
+                "moved": placed.moved.iter().map(|&i| &scene.objects[i].name).collect::<Vec<_>>(),
+                "carried": placed.carried,
+                "collisions_resolved": placed.collisions_resolved,
+                "overlaps_remaining": placed.overlaps_remaining,
+                "translation": s.translation.to_array(),
+                "rotation": s.rotation.to_array(),
+                "scale": s.scale,
+            }))
+        })
+    }
+
+    /// Undoes the last change; false when there is none.
+    fn undo(&mut self, py: Python<'_>) -> PyResult<bool> {
+        self.step(py, true)
+    }
+
+    /// Redoes the last undone change; false when there is none.
+    fn redo(&mut self, py: Python<'_>) -> PyResult<bool> {
+        self.step(py, false)
+    }
+
+    /// Writes the scene atomically, the format by extension.
+    fn save(&self, py: Python<'_>, path: PathBuf) -> PyResult<()> {
+        let file = &self.session.file;
+        detached(py, move || file.save(&path).map_err(|e| e.to_string()))
+    }
+}
+
+/// Evaluates a CGA expression with no objects; the versor M = T·R·D as JSON.
+#[pyfunction]
+fn eval_json(py: Python<'_>, expr: String) -> PyResult<String> {
+    detached(py, move || {
+        let t = shenlong::expr::evaluate_transformation(&expr, &shenlong::expr::Bindings::new())
+            .map_err(|e| e.to_string())?;
+        let s = t.similarity;
+        to_json(&serde_json::json!({
+            "versor": t.versor.coefficients().to_vec(),
+            "translation": s.translation.to_array(),
+            "rotation": s.rotation.to_array(),
+            "scale": s.scale,
+        }))
+    })
+}
+
+/// Runs a suite into the folder `out` (as `shenlong bench`); the report as JSON.
+/// `progress(done, total)` is called as instances finish, if given.
+#[pyfunction]
+#[pyo3(signature = (suite, out, llm, systems, collide, limit, jobs, shard, progress=None))]
+#[allow(clippy::too_many_arguments)]
+fn bench_json(
+    py: Python<'_>,
+    suite: PathBuf,
+    out: PathBuf,
+    llm: String,
+    systems: String,
+    collide: bool,
+    limit: Option<usize>,
+    jobs: usize,
+    shard: Option<(usize, usize)>,
+    progress: Option<Py<PyAny>>,
+) -> PyResult<String> {
+    if jobs == 0 {
+        return Err(error("jobs must be at least 1"));
+    }
+    if let Some((k, n)) = shard {
+        if n == 0 || k == 0 || k > n {
+            return Err(error(format!("shard {k}/{n}: K must be between 1 and N")));
+        }
+    }
+    detached(py, move || {
+        let suite = Suite::load(&suite).map_err(|e| e.to_string())?;
+        let systems = System::parse_list(&systems)?;
+        // Everything is checked before anything runs: scenes, backends.
+        let scenes = suite.load_scenes().map_err(|e| e.to_string())?;
+        let translators = systems
+            .iter()
+            .map(|&system| Ok((system, make_translator(&llm, system.name())?)))
+            .collect::<Result<Vec<(System, Box<dyn Translator>)>, String>>()?;
+        let options = RunOptions {
+            systems,
+            jobs,
+            limit,
+            collide,
+            shard,
+        };
+        let tell = |done: usize, total: usize| {
+            if let Some(callback) = &progress {
+                // A callback that raises is the caller's to see; the run goes on.
+                Python::attach(|py| {
+                    if let Err(e) = callback.call1(py, (done, total)) {
+                        e.print(py);
+                    }
+                });
+            }
+        };
+        let finished = folder::run_into(
+            &out,
+            &suite,
+            &scenes,
+            &translators,
+            &options,
+            &tell,
+            &AtomicBool::new(false),
+        )
+        .map_err(|e| e.to_string())?;
+        to_json(&finished.report)
+    })
+}
+
+/// One report from the folders of a run's shards (as `shenlong bench --merge`); JSON.
+#[pyfunction]
+fn bench_merge_json(py: Python<'_>, dirs: Vec<PathBuf>, out: PathBuf) -> PyResult<String> {
+    detached(py, move || {
+        let merged = folder::merge(&dirs, &out).map_err(|e| e.to_string())?;
+        to_json(&merged.report)
+    })
+}
+
+/// The native module.
+#[pymodule]
+fn _native(m: &Bound<'_, PyModule>) -> PyResult<()> {
+    m.add("EditError", m.py().get_type::<EditError>())?;
+    m.add("__version__", env!("CARGO_PKG_VERSION"))?;
+    m.add_class::<PyScene>()?;
+    m.add_function(wrap_pyfunction!(eval_json, m)?)?;
+    m.add_function(wrap_pyfunction!(bench_json, m)?)?;
+    m.add_function(wrap_pyfunction!(bench_merge_json, m)?)?;
+    Ok(())
+}
