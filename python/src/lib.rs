@@ -10,7 +10,7 @@
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
 use shenlong::bench::folder;
-use shenlong::bench::run::RunOptions;
+use shenlong::bench::run::{check_shard, RunOptions};
 use shenlong::bench::Suite;
 use shenlong::format::procthor::{self, AssetDatabase};
 use shenlong::format::{json, Document, Format, SceneFile};
@@ -56,9 +56,7 @@ fn to_json<T: serde::Serialize>(value: &T) -> Result<String, String> {
     serde_json::to_string(value).map_err(|e| format!("cannot write the answer as JSON: {e}"))
 }
 
-fn make_translator(llm: &str, system: &str) -> Result<Box<dyn Translator>, String> {
-    let system = System::from_name(system)
-        .ok_or_else(|| format!("unknown system '{system}': use cga, euclidean, omniverse"))?;
+fn make_translator(llm: &str, system: System) -> Result<Box<dyn Translator>, String> {
     translator(
         llm,
         &TranslatorSettings {
@@ -212,7 +210,7 @@ impl PyScene {
     ) -> PyResult<String> {
         let text = instruction.clone();
         self.change(py, "edit", &text, move |scene| {
-            let translator = make_translator(&llm, &system)?;
+            let translator = make_translator(&llm, System::parse(&system)?)?;
             let selection = selected
                 .iter()
                 .map(|name| scene.resolve(name).map_err(|e| format!("selected: {e}")))
@@ -314,9 +312,7 @@ fn bench_json(
         return Err(error("jobs must be at least 1"));
     }
     if let Some((k, n)) = shard {
-        if n == 0 || k == 0 || k > n {
-            return Err(error(format!("shard {k}/{n}: K must be between 1 and N")));
-        }
+        check_shard(k, n).map_err(error)?;
     }
     detached(py, move || {
         let suite = Suite::load(&suite).map_err(|e| e.to_string())?;
@@ -325,7 +321,7 @@ fn bench_json(
         let scenes = suite.load_scenes().map_err(|e| e.to_string())?;
         let translators = systems
             .iter()
-            .map(|&system| Ok((system, make_translator(&llm, system.name())?)))
+            .map(|&system| Ok((system, make_translator(&llm, system)?)))
             .collect::<Result<Vec<(System, Box<dyn Translator>)>, String>>()?;
         let options = RunOptions {
             systems,

@@ -66,6 +66,15 @@ impl System {
             .find(|s| s.name() == name.trim().to_lowercase())
     }
 
+    /// [`System::from_name`], with the error a person reads.
+    ///
+    /// # Errors
+    /// An unknown name, with the names there are.
+    pub fn parse(name: &str) -> Result<Self, String> {
+        Self::from_name(name)
+            .ok_or_else(|| format!("unknown system '{name}': use cga, euclidean, omniverse"))
+    }
+
     /// Systems named in a list separated by commas (`cga,euclidean`), each once, in order.
     ///
     /// # Errors
@@ -73,8 +82,7 @@ impl System {
     pub fn parse_list(text: &str) -> Result<Vec<Self>, String> {
         let mut systems = Vec::new();
         for name in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
-            let system = Self::from_name(name)
-                .ok_or_else(|| format!("unknown system '{name}': use cga, euclidean, omniverse"))?;
+            let system = Self::parse(name)?;
             if !systems.contains(&system) {
                 systems.push(system);
             }

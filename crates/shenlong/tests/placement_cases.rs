@@ -31,20 +31,12 @@ fn aabb(scene: &Scene, name: &str) -> Aabb {
     scene.objects[scene.find(name).unwrap()].world_aabb()
 }
 
-/// The horizontal (x, z) gap between two boxes; 0 when their footprints touch or overlap.
-fn gap(a: &Aabb, b: &Aabb) -> f64 {
-    let dx = (a.min.x - b.max.x).max(b.min.x - a.max.x).max(0.0);
-    let dz = (a.min.z - b.max.z).max(b.min.z - a.max.z).max(0.0);
-    dx.hypot(dz)
-}
-
-fn overlaps(a: &Aabb, b: &Aabb) -> bool {
-    a.min.x < b.max.x - OVERLAP
-        && b.min.x < a.max.x - OVERLAP
-        && a.min.y < b.max.y - OVERLAP
-        && b.min.y < a.max.y - OVERLAP
-        && a.min.z < b.max.z - OVERLAP
-        && b.min.z < a.max.z - OVERLAP
+/// The horizontal gap between `name` and `other`, asserted to be at most what "next to"
+/// may leave.
+fn next_to(scene: &Scene, name: &str, other: &str) -> f64 {
+    let g = aabb(scene, name).floor_gap(&aabb(scene, other));
+    assert!(g <= NEXT_TO_MAX_GAP, "{name} {g:.2} m from {other}");
+    g
 }
 
 fn footprint_within(inner: &Aabb, outer: &Aabb) -> bool {
@@ -61,7 +53,7 @@ fn overlaps_nothing(scene: &Scene, name: &str) {
     for (j, other) in scene.objects.iter().enumerate() {
         if j != i {
             assert!(
-                !overlaps(&b, &other.world_aabb()),
+                !b.intersects(&other.world_aabb(), OVERLAP),
                 "{name} ends inside {}: {b:?} vs {:?}",
                 other.name,
                 other.world_aabb()
@@ -104,8 +96,7 @@ fn a_mug_put_next_to_a_laptop_on_a_desk_stays_on_the_desk() {
     let mut s = scene(STUDY);
     run(&mut s, "put the mug next to the laptop");
     rests_on(&s, "mug", "writing desk");
-    let g = gap(&aabb(&s, "mug"), &aabb(&s, "laptop"));
-    assert!(g <= NEXT_TO_MAX_GAP, "mug {g:.2} m from the laptop");
+    next_to(&s, "mug", "laptop");
     overlaps_nothing(&s, "mug");
 }
 
@@ -169,28 +160,22 @@ fn a_chair_moved_next_to_a_whiteboard_and_turned_to_face_it_stays_on_the_floor()
         &mut s,
         "move the grey office chair next to the whiteboard and turn it to face it",
     );
-    let chair = s.find("office chair 1").unwrap();
-    let b = s.objects[chair].world_aabb();
+    let chair = "office chair 1";
+    let b = aabb(&s, chair);
     assert!(
         b.min.y.abs() < LEVEL,
         "the chair was lifted to {:.2}",
         b.min.y
     );
-    let board = aabb(&s, "whiteboard");
-    let g = gap(&b, &board);
-    assert!(g <= NEXT_TO_MAX_GAP, "chair {g:.2} m from the whiteboard");
-    let front = s.objects[chair].world_front();
-    let to = board.center() - b.center();
+    next_to(&s, chair, "whiteboard");
+    let front = s.objects[s.find(chair).unwrap()].world_front();
+    let to = aabb(&s, "whiteboard").center() - b.center();
     let to = glam::DVec3::new(to.x, 0.0, to.z).normalize();
     assert!(
         front.dot(to) > 0.95,
         "the chair faces {front:?}, the whiteboard is towards {to:?}"
     );
-    for (j, other) in s.objects.iter().enumerate() {
-        if j != chair {
-            assert!(!overlaps(&b, &other.world_aabb()), "inside {}", other.name);
-        }
-    }
+    overlaps_nothing(&s, chair);
 }
 
 const DEN: &str = r#"{
@@ -231,10 +216,9 @@ fn on_a_dresser_next_to_a_lamp_is_one_destination() {
     let mut s = scene(BEDROOM);
     run(&mut s, "put the mug on the dresser next to the desk lamp");
     rests_on(&s, "mug", "dresser");
-    let g = gap(&aabb(&s, "mug"), &aabb(&s, "desk lamp"));
-    assert!(g <= NEXT_TO_MAX_GAP, "mug {g:.2} m from the lamp");
+    let g = next_to(&s, "mug", "desk lamp");
     // Nearer the lamp than the jewellery box at the other end of the dresser.
-    let to_box = gap(&aabb(&s, "mug"), &aabb(&s, "jewellery box"));
+    let to_box = aabb(&s, "mug").floor_gap(&aabb(&s, "jewellery box"));
     assert!(
         g < to_box,
         "mug {g:.2} m from the lamp, {to_box:.2} m from the box"

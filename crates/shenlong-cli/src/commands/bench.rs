@@ -73,9 +73,7 @@ fn parse_shard(text: &str) -> Result<(usize, usize), String> {
             .parse()
             .map_err(|_| format!("'{n}' is not a number of shards"))?,
     );
-    if n == 0 || k == 0 || k > n {
-        return Err(format!("shard {k}/{n}: K must be between 1 and N"));
-    }
+    shenlong::bench::run::check_shard(k, n)?;
     Ok((k, n))
 }
 

@@ -443,11 +443,7 @@ async fn edit_scene(
         ));
     }
     let system = match &request.system {
-        Some(name) => System::from_name(name).ok_or_else(|| {
-            bad(format!(
-                "unknown system '{name}': use cga, euclidean or omniverse"
-            ))
-        })?,
+        Some(name) => System::parse(name).map_err(bad)?,
         None => app.settings.system,
     };
     let llm = allowed_llm(&app.settings.llm, request.llm.as_deref())?;

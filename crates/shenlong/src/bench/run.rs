@@ -69,6 +69,17 @@ pub struct RunOptions {
     pub shard: Option<(usize, usize)>,
 }
 
+/// Checks a shard `K/N` for [`RunOptions::shard`]: `1 ≤ K ≤ N`.
+///
+/// # Errors
+/// A shard outside that range, said as `shard K/N: …`.
+pub fn check_shard(k: usize, n: usize) -> Result<(), String> {
+    if n == 0 || k == 0 || k > n {
+        return Err(format!("shard {k}/{n}: K must be between 1 and N"));
+    }
+    Ok(())
+}
+
 /// Every instance of a suite on its scenes, in a fixed order.
 pub fn instances(suite: &Suite, scenes: &[Scene]) -> Vec<Instance> {
     let mut out = Vec::new();
