@@ -106,6 +106,7 @@ impl Reader<'_> {
                     let names = self.names(objects);
                     return Err(GroundError::Ambiguous {
                         phrase: self.span_text(&(start..head.range.end)),
+                        span: self.byte_span(&(start..head.range.end)),
                         example: names[0].clone(),
                         hints: self.hints(&head.text, objects),
                         candidates: names,

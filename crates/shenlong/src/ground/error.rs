@@ -37,6 +37,8 @@ pub enum GroundError {
     Ambiguous {
         /// The phrase.
         phrase: String,
+        /// Where the phrase is: bytes of the trimmed instruction.
+        span: std::ops::Range<usize>,
         /// Every object it fits.
         candidates: Vec<String>,
         /// One of them, to show how to name one.
@@ -49,6 +51,8 @@ pub enum GroundError {
     Count {
         /// The phrase.
         phrase: String,
+        /// Where the phrase is: bytes of the trimmed instruction.
+        span: std::ops::Range<usize>,
         /// How many it asks for.
         wanted: usize,
         /// The objects that fit.
@@ -107,7 +111,49 @@ pub(crate) fn list(names: &[String]) -> String {
     }
 }
 
+/// A choice a refusal leaves to the user: the phrase, where it stands in the (trimmed)
+/// instruction, and the objects it competes for. Replacing `span` by one of `objects`,
+/// quoted, makes an instruction that names that one.
+#[derive(Clone, Debug, PartialEq, Eq, serde::Serialize)]
+pub struct Ambiguity {
+    /// The phrase as typed.
+    pub phrase: String,
+    /// Its bytes in the trimmed instruction: `[start, end)`.
+    pub span: [usize; 2],
+    /// The objects it could mean, by name.
+    pub objects: Vec<String>,
+}
+
 impl GroundError {
+    /// The choice a refusal leaves between objects: the candidates of an ambiguous
+    /// phrase, or the objects that fit a phrase that asks for another number of them.
+    #[must_use]
+    pub fn ambiguity(&self) -> Option<Ambiguity> {
+        match self {
+            GroundError::Ambiguous {
+                phrase,
+                span,
+                candidates,
+                ..
+            } => Some(Ambiguity {
+                phrase: phrase.clone(),
+                span: [span.start, span.end],
+                objects: candidates.clone(),
+            }),
+            GroundError::Count {
+                phrase,
+                span,
+                found,
+                ..
+            } => Some(Ambiguity {
+                phrase: phrase.clone(),
+                span: [span.start, span.end],
+                objects: found.clone(),
+            }),
+            _ => None,
+        }
+    }
+
     /// The objects a refusal names (candidates, or suggestions), for programs.
     #[must_use]
     pub fn mentions(&self) -> &[String] {

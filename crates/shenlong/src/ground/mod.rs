@@ -34,7 +34,7 @@ mod select;
 pub mod verbs;
 pub mod words;
 
-pub use error::GroundError;
+pub use error::{Ambiguity, GroundError};
 pub use lexicon::Lexicon;
 
 use crate::scene::Scene;
@@ -530,9 +530,12 @@ impl<'a> Reader<'a> {
     }
 
     fn span_text(&self, range: &Range<usize>) -> String {
-        let start = self.tokens[range.start].span.start;
-        let end = self.tokens[range.end - 1].span.end;
-        self.text[start..end].to_string()
+        self.text[self.byte_span(range)].to_string()
+    }
+
+    /// The bytes of the instruction that tokens `range` cover.
+    fn byte_span(&self, range: &Range<usize>) -> Range<usize> {
+        self.tokens[range.start].span.start..self.tokens[range.end - 1].span.end
     }
 
     fn name(&self, i: usize) -> String {
@@ -934,6 +937,7 @@ impl<'a> Reader<'a> {
                 let names = self.names(&np.objects);
                 return Err(GroundError::Ambiguous {
                     phrase: self.span_text(&np.range),
+                    span: self.byte_span(&np.range),
                     example: names[names.len().min(3) - 1].clone(),
                     hints: self.hints(&text, &np.objects),
                     candidates: names,
@@ -1197,6 +1201,7 @@ impl<'a> Reader<'a> {
             if objects.len() != n {
                 return Err(GroundError::Count {
                     phrase: self.span_text(&(start..head.range.end)),
+                    span: self.byte_span(&(start..head.range.end)),
                     wanted: n,
                     found: self.names(&objects),
                 });
@@ -1360,12 +1365,14 @@ impl<'a> Reader<'a> {
             return Err(match count {
                 Count::One => GroundError::Ambiguous {
                     phrase,
+                    span: self.byte_span(&(start..end)),
                     example: names[names.len().min(3) - 1].clone(),
                     hints: self.hints(&head.text, &objects),
                     candidates: names,
                 },
                 _ => GroundError::Count {
                     phrase,
+                    span: self.byte_span(&(start..end)),
                     wanted,
                     found: names,
                 },
@@ -1751,6 +1758,7 @@ impl<'a> Reader<'a> {
             let names = self.names(&np.objects);
             return Err(GroundError::Ambiguous {
                 phrase: self.span_text(&np.range),
+                span: self.byte_span(&np.range),
                 example: names[2].clone(),
                 hints: self.hints(&text, &np.objects),
                 candidates: names,

@@ -183,6 +183,9 @@ pub struct EditError {
     pub kind: EditErrorKind,
     /// The model's replies received before the translation failed (none otherwise).
     pub replies: ReplyCounts,
+    /// The choice a grounding refusal leaves to the user (the phrase and the objects it
+    /// could mean), for a page or program to offer; `None` for other failures.
+    pub ambiguity: Option<crate::ground::Ambiguity>,
 }
 
 /// The kinds of edit failure, for callers that answer differently (the HTTP API: 4xx for
@@ -252,6 +255,7 @@ pub fn edit_with(
             message: e.to_string(),
             kind: EditErrorKind::Instruction,
             replies: ReplyCounts::default(),
+            ambiguity: e.ambiguity(),
         })?;
     timings.template = ms(t0);
 
@@ -266,6 +270,7 @@ pub fn edit_with(
             },
             message: e.message,
             replies: e.replies,
+            ambiguity: None,
         })?;
     timings.translate = ms(t0);
 
@@ -462,6 +467,7 @@ fn held_error(message: String) -> EditError {
         message,
         kind: EditErrorKind::Held,
         replies: ReplyCounts::default(),
+        ambiguity: None,
     }
 }
 
@@ -481,6 +487,7 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
         message,
         kind: EditErrorKind::Placement,
         replies: ReplyCounts::default(),
+        ambiguity: None,
     };
     for &(object, near) in near {
         let other = match near {
@@ -606,6 +613,7 @@ fn place_into(
                 message: e.to_string(),
                 kind: EditErrorKind::NotUnderstood,
                 replies: ReplyCounts::default(),
+                ambiguity: None,
             })?;
         for m in &motion.moves {
             if m.object != object {
@@ -645,6 +653,7 @@ fn place_into(
             message: e.message,
             kind: EditErrorKind::Placement,
             replies: ReplyCounts::default(),
+            ambiguity: None,
         })?;
         collide_setup_ms = resolution.setup_ms;
         collide_search_ms = resolution.search_ms;
@@ -665,6 +674,7 @@ fn place_into(
                     ),
                     kind: EditErrorKind::Placement,
  replies: ReplyCounts::default(),
+ ambiguity: None,
 });
             }
             collisions_resolved.push(CollisionReport {
@@ -733,6 +743,7 @@ pub fn apply_expression_bound(
         message,
         kind: EditErrorKind::Instruction,
         replies: ReplyCounts::default(),
+        ambiguity: None,
     };
     if objects.is_empty() {
         return Err(instruction("name the object to move (X1)".into()));
@@ -753,6 +764,7 @@ pub fn apply_expression_bound(
         message: e.to_string(),
         kind: EditErrorKind::NotUnderstood,
         replies: ReplyCounts::default(),
+        ambiguity: None,
     })?;
     Ok((place(scene, &[(indices[0], t.versor)], options)?, t))
 }
