@@ -864,3 +864,253 @@ fn slow_request_bodies_are_cut_off_and_do_not_starve_others() {
     }
     assert_eq!(timed_out, slow.len());
 }
+
+/// The kitchen the editor's end-to-end test opens: four identical chairs around a dining
+/// table, and an object whose name is markup.
+const KITCHEN: &str = include_str!("../web/e2e/kitchen.json");
+
+/// A server for the scene JSON `text` (offline, collisions on), with the folder it is in.
+fn app_for(text: &str) -> (tempfile::TempDir, Arc<App>) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("scene.json");
+    std::fs::write(&path, text).unwrap();
+    let file = shenlong::format::SceneFile::load(&path).unwrap();
+    (dir, App::new(file, settings(None, true, None)))
+}
+
+fn edit_body(instruction: &str) -> String {
+    json!({ "instruction": instruction }).to_string()
+}
+
+#[tokio::test]
+async fn an_ambiguous_phrase_is_answered_with_its_candidates_as_data() {
+    let (_dir, app) = app_for(KITCHEN);
+    let chairs = json!(["chair 1", "chair 2", "chair 3", "chair 4"]);
+    // Spaces around the instruction: the span counts in the trimmed instruction.
+    let typed = "  move the chair 20 cm to the left ";
+    let (status, value, _) = call(&app, "POST", "/api/edit", Some(&edit_body(typed))).await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{value}");
+    let error = value["error"].as_str().unwrap();
+    assert!(error.contains("could mean chair 1, chair 2"), "{error}");
+    assert!(!error.contains('\n'), "one line: {error}");
+    let ambiguity = &value["ambiguity"];
+    assert_eq!(ambiguity["phrase"], "the chair");
+    assert_eq!(ambiguity["span"], json!([5, 14]));
+    assert_eq!(&typed.trim()[5..14], "the chair");
+    assert_eq!(ambiguity["objects"], chairs);
+    let choices = ambiguity["choices"].as_array().unwrap();
+    assert_eq!(choices.len(), 4);
+    for (choice, chair) in choices.iter().zip(chairs.as_array().unwrap()) {
+        assert_eq!(&choice["object"], chair);
+        assert_eq!(
+            choice["instruction"],
+            format!("move '{}' 20 cm to the left", chair.as_str().unwrap())
+        );
+    }
+    // Nothing moved, nothing recorded.
+    let (_, history, _) = call(&app, "GET", "/api/history", None).await;
+    assert_eq!(history, json!({"history": [], "last_edit": null}));
+
+    // A choice, sent back as it is, moves that chair and no other.
+    let chosen = choices[2]["instruction"].as_str().unwrap();
+    let (status, report, _) = call(&app, "POST", "/api/edit", Some(&edit_body(chosen))).await;
+    assert_eq!(status, StatusCode::OK, "{report}");
+    assert_eq!(
+        report["moved"],
+        json!([{
+            "object": "chair 3",
+            "before": {"position": [-0.45, 0, 0.75], "rotation": [0, 1, 0, 0], "scale": 1},
+            "after": {"position": [-0.65, 0, 0.75], "rotation": [0, 1, 0, 0], "scale": 1},
+        }])
+    );
+    // Each grounded phrase's span is its bytes in the report's instruction.
+    let instruction = report["instruction"].as_str().unwrap();
+    for phrase in report["grounding"].as_array().unwrap() {
+        let [start, end] = [0, 1].map(|k| phrase["span"][k].as_u64().unwrap() as usize);
+        assert_eq!(instruction[start..end], phrase["phrase"], "{phrase}");
+    }
+    assert_eq!(report["grounding"][0]["objects"], json!(["chair 3"]));
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(position(&scene, "chair 3"), json!([-0.65, 0, 0.75]));
+    assert_eq!(position(&scene, "chair 1"), json!([-0.45, 0, -0.75]));
+
+    // A phrase that asks for another number of objects leaves a choice too.
+    let (status, value, _) = call(
+        &app,
+        "POST",
+        "/api/edit",
+        Some(&edit_body("move the two chairs 20 cm to the left")),
+    )
+    .await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{value}");
+    assert_eq!(value["ambiguity"]["phrase"], "the two chairs");
+    assert_eq!(value["ambiguity"]["objects"], chairs);
+
+    // Other refusals answer the message alone.
+    for (body, expected) in [
+        (
+            edit_body("move the 'sofaa' left"),
+            StatusCode::UNPROCESSABLE_ENTITY,
+        ),
+        (
+            edit_body("sing to the fridge"),
+            StatusCode::UNPROCESSABLE_ENTITY,
+        ),
+        ("not json".to_string(), StatusCode::BAD_REQUEST),
+    ] {
+        let (status, value, _) = call(&app, "POST", "/api/edit", Some(&body)).await;
+        assert_eq!(status, expected, "{body}: {value}");
+        assert!(value["error"].is_string(), "{body}: {value}");
+        assert_eq!(
+            value.as_object().unwrap().keys().collect::<Vec<_>>(),
+            ["error"],
+            "{body}: {value}"
+        );
+    }
+}
+
+#[tokio::test]
+async fn each_candidate_is_named_in_quotes_its_name_does_not_hold() {
+    let (_dir, app) = app_for(
+        r#"{"name": "lamps", "objects": [
+            {"name": "Bob's lamp", "size": [0.3, 1, 0.3], "position": [0, 0, 0]},
+            {"name": "Ann's \"big\" lamp", "size": [0.3, 1, 0.3], "position": [2, 0, 0]},
+            {"name": "<img src=x onerror=alert(1)> lamp", "size": [0.3, 0.3, 0.3], "position": [-2, 0, 0]}
+        ]}"#,
+    );
+    let (status, value, _) = call(
+        &app,
+        "POST",
+        "/api/edit",
+        Some(&edit_body("move the lamp 1 m to the left")),
+    )
+    .await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{value}");
+    let choices = value["ambiguity"]["choices"].as_array().unwrap().clone();
+    let instructions: Vec<&str> = choices
+        .iter()
+        .map(|c| c["instruction"].as_str().unwrap())
+        .collect();
+    assert_eq!(
+        instructions,
+        [
+            "move \"Bob's lamp\" 1 m to the left",
+            "move ‘Ann's \"big\" lamp’ 1 m to the left",
+            "move '<img src=x onerror=alert(1)> lamp' 1 m to the left",
+        ]
+    );
+    // Each one names its lamp: run, it moves that lamp 1 m to the left, and is undone.
+    for choice in &choices {
+        let name = choice["object"].as_str().unwrap();
+        let instruction = choice["instruction"].as_str().unwrap();
+        let (_, before, _) = call(&app, "GET", "/api/scene", None).await;
+        let x = position(&before, name)[0].as_f64().unwrap();
+        let (status, report, _) =
+            call(&app, "POST", "/api/edit", Some(&edit_body(instruction))).await;
+        assert_eq!(status, StatusCode::OK, "{instruction}: {report}");
+        assert_eq!(report["moved"].as_array().unwrap().len(), 1, "{report}");
+        assert_eq!(report["moved"][0]["object"], name);
+        assert_eq!(
+            report["moved"][0]["after"]["position"][0].as_f64().unwrap(),
+            x - 1.0
+        );
+        assert_eq!(
+            call(&app, "POST", "/api/undo", None).await.0,
+            StatusCode::OK
+        );
+    }
+}
+
+#[tokio::test]
+async fn the_last_edit_and_an_example_of_the_scene_are_there_for_a_page_opened_later() {
+    let (_dir, app) = app_for(KITCHEN);
+    // The example instruction names this scene's own objects and is understood.
+    let (status, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(status, StatusCode::OK);
+    let example = scene["example"].as_str().unwrap().to_string();
+    assert_eq!(example, "put the kettle on the dining table");
+    let (status, report, _) = call(&app, "POST", "/api/edit", Some(&edit_body(&example))).await;
+    assert_eq!(status, StatusCode::OK, "{report}");
+    assert_eq!(report["bindings"][0]["object"], "kettle");
+    assert_eq!(report["bindings"][1]["object"], "dining table");
+    let id = report["history_id"].clone();
+    // The history holds the last edit's whole answer, for a page opened after it.
+    let (_, history, _) = call(&app, "GET", "/api/history", None).await;
+    assert_eq!(history["history"][0]["id"], id);
+    assert_eq!(history["last_edit"], report);
+    // It stays the last edit when it is undone (the history says so) or followed by an
+    // expression applied; a new edit replaces it.
+    assert_eq!(
+        call(&app, "POST", "/api/undo", None).await.0,
+        StatusCode::OK
+    );
+    let (_, history, _) = call(&app, "GET", "/api/history", None).await;
+    assert_eq!(history["history"][0]["undone"], true);
+    assert_eq!(history["last_edit"]["history_id"], id);
+    let (status, report, _) = call(
+        &app,
+        "POST",
+        "/api/edit",
+        Some(&edit_body("move the fridge 10 cm to the left")),
+    )
+    .await;
+    assert_eq!(status, StatusCode::OK, "{report}");
+    let (_, history, _) = call(&app, "GET", "/api/history", None).await;
+    assert_eq!(
+        history["last_edit"]["instruction"],
+        "move the fridge 10 cm to the left"
+    );
+    assert_eq!(
+        history["last_edit"]["moved"][0]["before"]["position"],
+        json!([2.1, 0, -1.6])
+    );
+
+    // The workshop's example is its own, and a scene whose names are no plain words has
+    // none (the page keeps its generic placeholder).
+    let (_, workshop, _) = call(&self::app(None), "GET", "/api/scene", None).await;
+    assert_eq!(workshop["example"], "put the screwdriver on the workbench");
+    let (_dir, hostile) = app_for(
+        r#"{"name": "x", "objects": [{"name": "<img src=x onerror=alert(1)>", "size": [1, 1, 1], "position": [0, 0, 0]}]}"#,
+    );
+    let (_, scene, _) = call(&hostile, "GET", "/api/scene", None).await;
+    assert_eq!(scene["example"], Value::Null);
+}
+
+#[test]
+fn over_loopback_a_choice_is_json_a_browser_can_read_and_send_back() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("kitchen.json");
+    std::fs::write(&path, KITCHEN).unwrap();
+    let (_runtime, address) =
+        serve_over_loopback(shenlong::format::SceneFile::load(&path).unwrap());
+    let agent: ureq::Agent = ureq::Agent::config_builder()
+        .http_status_as_error(false)
+        .timeout_global(Some(std::time::Duration::from_secs(60)))
+        .build()
+        .into();
+    let post = |instruction: &str| {
+        let mut response = agent
+            .post(&format!("http://{address}/api/edit"))
+            .header("content-type", "application/json")
+            .send(edit_body(instruction))
+            .unwrap();
+        let kind = response
+            .headers()
+            .get("content-type")
+            .map(|v| v.to_str().unwrap().to_string());
+        let body: Value = serde_json::from_str(&response.body_mut().read_to_string().unwrap())
+            .expect("the answer is JSON");
+        (response.status().as_u16(), kind, body)
+    };
+    let (status, kind, body) = post("move the chair 20 cm to the left");
+    assert_eq!(status, 422, "{body}");
+    assert_eq!(kind.as_deref(), Some("application/json"));
+    assert_eq!(body["ambiguity"]["objects"].as_array().unwrap().len(), 4);
+    let chosen = body["ambiguity"]["choices"][0]["instruction"]
+        .as_str()
+        .unwrap()
+        .to_string();
+    let (status, _, report) = post(&chosen);
+    assert_eq!(status, 200, "{report}");
+    assert_eq!(report["moved"][0]["object"], "chair 1");
+}

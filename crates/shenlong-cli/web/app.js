@@ -1,4 +1,7 @@
 // Shenlong's editor: draws the scene with three.js and edits it through the JSON API.
+//
+// Every name from the scene reaches the page through `textContent` or a text node (the
+// `h` helper below), never as markup: a name is data, whatever characters it holds.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/OrbitControls.js';
 import { VRButton } from 'three/addons/VRButton.js';
@@ -6,11 +9,26 @@ import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
 
 const view = document.getElementById('view');
 const status = document.getElementById('status');
-const tooltip = document.getElementById('tooltip');
 const $ = (id) => document.getElementById(id);
 
-const COLOURS = { floor: 0x9bb8de, resting: 0xf2b880, edited: 0x5cc46f };
+const COLOURS = { floor: 0x9bb8de, resting: 0xf2b880, edited: 0x5cc46f, candidate: 0xa97fe0 };
 const ANIMATION_MS = 600;
+// The most candidates offered as buttons; the rest are named by typing.
+const MAX_CHOICES = 24;
+
+// An element with properties and children; strings become text nodes, never markup.
+function h(tag, props = {}, ...children) {
+  const element = document.createElement(tag);
+  for (const [key, value] of Object.entries(props)) {
+    if (key === 'class') element.className = value;
+    else element[key] = value;
+  }
+  for (const child of children.flat(Infinity)) {
+    if (child === null || child === undefined || child === false) continue;
+    element.append(child instanceof Node ? child : document.createTextNode(String(child)));
+  }
+  return element;
+}
 
 const renderer = new THREE.WebGLRenderer({ antialias: true, preserveDrawingBuffer: true });
 renderer.setPixelRatio(window.devicePixelRatio);
@@ -39,11 +57,17 @@ let camera = perspective;
 const controls = new OrbitControls(perspective, renderer.domElement);
 controls.enableDamping = true;
 
-const objects = new Map(); // name → { mesh, edges, data }
+const objects = new Map(); // name → { group, mesh, edges, front, data, row }
 let roomLines = null;
 let extent = new THREE.Box3(new THREE.Vector3(-3, 0, -3), new THREE.Vector3(3, 2, 3));
 const animations = [];
-const edited = new Set();
+const edited = new Set(); // moved by the last edit
+const selected = new Set(); // clicked in the view or the list
+const candidates = new Set(); // offered by the last refusal
+let hovered = new Set(); // under the pointer, in the view or on anything linked to objects
+let allNames = false; // the "Names" button
+const ghosts = new THREE.Group(); // where the last edit's objects were
+world.add(ghosts);
 
 function resize() {
   const { clientWidth: w, clientHeight: h } = view;
@@ -63,12 +87,21 @@ function say(text, kind = '') {
   status.className = kind;
 }
 
+// A failed request: the API's one-line message, with the whole answer (`ambiguity`).
+class ApiFailure extends Error {
+  constructor(message, status, data) {
+    super(message);
+    this.status = status;
+    this.data = data;
+  }
+}
+
 async function api(path, body) {
   const response = await fetch(path, body === undefined ? {} : {
     method: 'POST', headers: { 'Content-Type': 'application/json' }, body: JSON.stringify(body),
   });
   const data = await response.json().catch(() => ({ error: `HTTP ${response.status}` }));
-  if (!response.ok) throw new Error(data.error || `HTTP ${response.status}`);
+  if (!response.ok) throw new ApiFailure(data.error || `HTTP ${response.status}`, response.status, data);
   return data;
 }
 
@@ -80,9 +113,10 @@ function pose(data) {
   return { position: new THREE.Vector3(x, y, z), quaternion: new THREE.Quaternion(q[0], q[1], q[2], q[3]), scale: s };
 }
 
-function colourOf(data) {
-  if (edited.has(data.name)) return COLOURS.edited;
-  return data.resting_on ? COLOURS.resting : COLOURS.floor;
+function kindOf(data) {
+  if (candidates.has(data.name)) return 'candidate';
+  if (edited.has(data.name)) return 'edited';
+  return data.resting_on ? 'resting' : 'floor';
 }
 
 function place(entry, p) {
@@ -103,40 +137,147 @@ function place(entry, p) {
   ]);
 }
 
+// Colours, highlight and list classes of one object, from the sets above.
+function look(entry) {
+  const name = entry.data.name;
+  const kind = kindOf(entry.data);
+  entry.mesh.material.color.setHex(COLOURS[kind]);
+  const hover = hovered.has(name);
+  entry.mesh.material.emissive.setHex(hover ? 0x5a5a2a : selected.has(name) ? 0x1c3560 : 0x000000);
+  entry.edges.material.color.setHex(hover ? 0xe0a800 : selected.has(name) ? 0x2f6db3 : kind === 'candidate' ? 0x6b3fb0 : 0x2d3a4d);
+  if (entry.row) {
+    entry.row.button.classList.toggle('hover', hover);
+    entry.row.button.classList.toggle('selected', selected.has(name));
+    entry.row.button.classList.toggle('candidate', candidates.has(name));
+    entry.row.swatch.className = `swatch ${kind}`;
+  }
+}
+
+// Restyles the objects named in `only` (all of them by default), what is linked to
+// objects, and the labels.
+function restyle(only) {
+  if (only) {
+    for (const name of only) if (objects.has(name)) look(objects.get(name));
+  } else {
+    for (const entry of objects.values()) look(entry);
+  }
+  for (const element of document.querySelectorAll('.linked')) {
+    element.classList.toggle('hover', (element.linkedNames || []).some((n) => hovered.has(n)));
+  }
+  updateLabels();
+}
+
+// Highlights `names` (in the view, the list, and whatever else names them), or nothing.
+function setHover(names) {
+  const next = new Set(names.filter((n) => objects.has(n)));
+  if (next.size === hovered.size && [...next].every((n) => hovered.has(n))) return;
+  const changed = new Set([...hovered, ...next]);
+  hovered = next;
+  restyle(changed);
+  if (next.size === 1) {
+    const row = objects.get([...next][0]).row;
+    if (row && !row.item.hidden && document.activeElement !== $('filter')) row.button.scrollIntoView({ block: 'nearest' });
+  }
+}
+
+// Makes `element` stand for `names`: hovering it highlights them.
+function link(element, names) {
+  element.classList.add('linked');
+  element.linkedNames = names;
+  element.addEventListener('mouseenter', () => setHover(names));
+  element.addEventListener('mouseleave', () => setHover([]));
+  return element;
+}
+
+// Quotes a name as the grounder reads one name: the first pair whose closing quote is not
+// in it.
+function quote(name) {
+  for (const [open, close] of [["'", "'"], ['"', '"'], ['‘', '’'], ['“', '”'], ['`', '`']]) {
+    if (!name.includes(close)) return `${open}${name}${close}`;
+  }
+  return name;
+}
+
+// Inserts an object's quoted name at the cursor (after a space, unless one is there),
+// and selects it.
+function insertName(name) {
+  const box = $('instruction');
+  const at = box.selectionStart ?? box.value.length;
+  const text = (at > 0 && !/\s/.test(box.value[at - 1]) ? ' ' : '') + quote(name);
+  box.value = box.value.slice(0, at) + text + box.value.slice(box.selectionEnd ?? at);
+  box.focus();
+  box.selectionStart = box.selectionEnd = at + text.length;
+  selected.add(name);
+  restyle([name]);
+}
+
+// The outliner: one row per object, in scene order.
+function buildList() {
+  const list = $('object-list');
+  list.replaceChildren();
+  for (const entry of objects.values()) {
+    const name = entry.data.name;
+    const swatch = h('span', { class: 'swatch' });
+    const button = h('button', { type: 'button', title: `Insert '${name}' into the instruction` }, swatch, h('span', { class: 'name' }, name));
+    button.addEventListener('mouseenter', () => setHover([name]));
+    button.addEventListener('mouseleave', () => setHover([]));
+    button.addEventListener('focus', () => setHover([name]));
+    button.addEventListener('blur', () => setHover([]));
+    button.addEventListener('click', () => insertName(name));
+    const item = h('li', {}, button);
+    entry.row = { item, button, swatch, key: name.toLowerCase() };
+    list.append(item);
+  }
+  $('object-count').textContent = `(${objects.size})`;
+  filterList();
+}
+
+function filterList() {
+  const words = $('filter').value.toLowerCase().split(/\s+/).filter(Boolean);
+  for (const entry of objects.values()) {
+    if (entry.row) entry.row.item.hidden = !words.every((w) => entry.row.key.includes(w));
+  }
+}
+$('filter').addEventListener('input', filterList);
+
 function build(scene, animate) {
   $('scene-name').textContent = scene.name || '';
   const seen = new Set();
+  let added = false;
   for (const data of scene.objects) {
     seen.add(data.name);
     let entry = objects.get(data.name);
     const target = pose(data);
     if (!entry) {
       const geometry = new THREE.BoxGeometry(1, 1, 1).translate(0, 0.5, 0);
-      const mesh = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ color: colourOf(data), roughness: 0.8, transparent: true, opacity: 0.92 }));
+      const mesh = new THREE.Mesh(geometry, new THREE.MeshStandardMaterial({ color: COLOURS.floor, roughness: 0.8, transparent: true, opacity: 0.92 }));
       const edges = new THREE.LineSegments(new THREE.EdgesGeometry(geometry), new THREE.LineBasicMaterial({ color: 0x2d3a4d }));
       const front = new THREE.Line(new THREE.BufferGeometry(), new THREE.LineBasicMaterial({ color: 0xc0392b }));
       const group = new THREE.Group();
       group.add(mesh, edges, front);
       mesh.userData.name = data.name;
       world.add(group);
-      entry = { group, mesh, edges, front, data };
+      entry = { group, mesh, edges, front, data, row: null };
       objects.set(data.name, entry);
       place(entry, target);
+      added = true;
       continue;
     }
     const from = { position: entry.group.position.clone(), quaternion: entry.group.quaternion.clone(), scale: entry.group.scale.x };
     entry.data = data;
-    entry.mesh.material.color.setHex(colourOf(data));
     if (animate) {
       animations.push({ entry, from, to: target, start: performance.now() });
     } else {
       place(entry, target);
     }
   }
+  let removed = false;
   for (const [name, entry] of objects) {
-    if (!seen.has(name)) { world.remove(entry.group); objects.delete(name); }
+    if (!seen.has(name)) { world.remove(entry.group); objects.delete(name); removed = true; }
   }
+  if (added || removed) buildList();
   drawRoom(scene);
+  restyle();
 }
 
 function drawRoom(scene) {
@@ -173,6 +314,102 @@ function frameCamera() {
   resize();
 }
 
+// Ghosts: each object the last edit moved, drawn where it was, with a line to where it is.
+const ghostLabels = []; // { element, point }: "was here" above each ghost
+function clearGhosts() {
+  for (const { element } of ghostLabels.splice(0)) element.remove();
+  for (const ghost of [...ghosts.children]) {
+    ghost.traverse((o) => { if (o.geometry) o.geometry.dispose(); if (o.material) o.material.dispose(); });
+    ghosts.remove(ghost);
+  }
+}
+
+function showGhosts(moved) {
+  clearGhosts();
+  for (const m of moved || []) {
+    const entry = objects.get(m.object);
+    if (!entry) continue;
+    const [w, hgt, d] = entry.data.size;
+    const geometry = new THREE.BoxGeometry(1, 1, 1).translate(0, 0.5, 0);
+    const box = new THREE.Mesh(geometry, new THREE.MeshBasicMaterial({ color: 0x7d8898, transparent: true, opacity: 0.22, depthWrite: false }));
+    const outline = new THREE.LineSegments(new THREE.EdgesGeometry(geometry), new THREE.LineDashedMaterial({ color: 0x2d3a4d, dashSize: 0.05, gapSize: 0.035 }));
+    outline.computeLineDistances();
+    box.scale.set(w, hgt, d);
+    outline.scale.set(w, hgt, d);
+    const ghost = new THREE.Group();
+    ghost.add(box, outline);
+    const before = pose(m.before);
+    ghost.position.copy(before.position);
+    ghost.quaternion.copy(before.quaternion);
+    ghost.scale.setScalar(before.scale);
+    ghost.userData = { object: m.object, position: m.before.position };
+    const after = pose(m.after);
+    const lift = new THREE.Vector3(0, 0.02, 0);
+    const trail = new THREE.Line(new THREE.BufferGeometry().setFromPoints([before.position.clone().add(lift), after.position.clone().add(lift)]),
+      new THREE.LineBasicMaterial({ color: 0x2f8a43, depthTest: false, transparent: true }));
+    trail.userData = { trail: true };
+    ghosts.add(ghost, trail);
+    const top = new THREE.Vector3(0, hgt, 0).applyMatrix4(new THREE.Matrix4().compose(before.position, before.quaternion, new THREE.Vector3().setScalar(before.scale)));
+    const element = h('div', { class: 'label ghost', title: `where ${m.object} was` }, 'was here');
+    $('labels').append(element);
+    ghostLabels.push({ element, point: top });
+  }
+  placeLabels();
+}
+
+// Names in the view: for the objects hovered, selected, offered, just edited — or all.
+const labels = new Map(); // name → element
+const labelPoint = new THREE.Vector3();
+function labelled() {
+  if (allNames) return new Set(objects.keys());
+  return new Set([...hovered, ...selected, ...candidates, ...edited].filter((n) => objects.has(n)));
+}
+
+function updateLabels() {
+  const wanted = labelled();
+  for (const [name, element] of labels) {
+    if (!wanted.has(name)) { element.remove(); labels.delete(name); }
+  }
+  for (const name of wanted) {
+    let element = labels.get(name);
+    if (!element) {
+      element = h('div', { class: 'label' }, name);
+      labels.set(name, element);
+      $('labels').append(element);
+    }
+    element.className = `label${edited.has(name) ? ' edited' : ''}${selected.has(name) ? ' selected' : ''}${candidates.has(name) ? ' candidate' : ''}${hovered.has(name) ? ' hover' : ''}`;
+  }
+  placeLabels();
+}
+
+// Screen position (CSS pixels within the view) of a point on an object: its top centre.
+function screenOf(entry, height = 1) {
+  return screenOfPoint(entry.group.localToWorld(new THREE.Vector3(0, entry.data.size[1] * height, 0)));
+}
+
+// Screen position of a world point.
+function screenOfPoint(point) {
+  labelPoint.copy(point).project(camera);
+  return {
+    x: (labelPoint.x + 1) / 2 * view.clientWidth,
+    y: (1 - labelPoint.y) / 2 * view.clientHeight,
+    visible: labelPoint.z < 1 && Math.abs(labelPoint.x) <= 1 && Math.abs(labelPoint.y) <= 1,
+  };
+}
+
+function placeLabel(element, p) {
+  element.hidden = !p.visible;
+  element.style.transform = `translate(${p.x.toFixed(1)}px, ${(p.y - 4).toFixed(1)}px) translate(-50%, -100%)`;
+}
+
+function placeLabels() {
+  for (const [name, element] of labels) {
+    const entry = objects.get(name);
+    if (entry) placeLabel(element, screenOf(entry));
+  }
+  for (const { element, point } of ghostLabels) placeLabel(element, screenOfPoint(point));
+}
+
 function tick(now) {
   for (let i = animations.length - 1; i >= 0; i--) {
     const a = animations[i];
@@ -187,10 +424,12 @@ function tick(now) {
   }
   controls.update();
   renderer.render(world, camera);
+  placeLabels();
 }
 renderer.setAnimationLoop(tick);
 
-// Hover: names. Click: insert the quoted name into the instruction.
+// Hover: names and highlight in both the view and the list. Click (not a drag): insert
+// the quoted name into the instruction.
 const raycaster = new THREE.Raycaster();
 const pointer = new THREE.Vector2();
 function pick(event) {
@@ -202,50 +441,120 @@ function pick(event) {
 }
 renderer.domElement.addEventListener('pointermove', (event) => {
   const name = pick(event);
-  tooltip.hidden = !name;
-  if (name) {
-    tooltip.textContent = name;
-    tooltip.style.left = `${event.clientX + 12}px`;
-    tooltip.style.top = `${event.clientY + 12}px`;
-  }
+  setHover(name ? [name] : []);
+  renderer.domElement.style.cursor = name ? 'pointer' : '';
 });
+renderer.domElement.addEventListener('pointerleave', () => setHover([]));
+let pressedAt = null;
+renderer.domElement.addEventListener('pointerdown', (event) => { pressedAt = [event.clientX, event.clientY]; });
 renderer.domElement.addEventListener('click', (event) => {
+  // A drag that turned the view is not a click on what it ended over.
+  if (pressedAt && Math.hypot(event.clientX - pressedAt[0], event.clientY - pressedAt[1]) > 5) return;
   const name = pick(event);
-  if (!name) return;
-  const box = $('instruction');
-  const text = `'${name}'`;
-  const at = box.selectionStart ?? box.value.length;
-  box.value = box.value.slice(0, at) + text + box.value.slice(box.selectionEnd ?? at);
-  box.focus();
-  box.selectionStart = box.selectionEnd = at + text.length;
+  if (name) insertName(name);
 });
 
-function escape(text) {
-  return String(text).replace(/[&<>"']/g, (c) => ({ '&': '&amp;', '<': '&lt;', '>': '&gt;', '"': '&quot;', "'": '&#39;' }[c]));
+// A byte range of UTF-8 text as a string (the API's spans are bytes).
+const encoder = new TextEncoder();
+const decoder = new TextDecoder();
+
+// The instruction as it was understood: each grounded phrase marked, with its variable,
+// and linked to its objects.
+function showUnderstood(r) {
+  const line = $('understood');
+  const bytes = encoder.encode(r.instruction);
+  const parts = ['Understood: '];
+  let at = 0;
+  for (const g of [...(r.grounding || [])].sort((a, b) => a.span[0] - b.span[0])) {
+    const [start, end] = g.span;
+    if (start < at || end > bytes.length || start >= end) continue;
+    parts.push(decoder.decode(bytes.slice(at, start)));
+    const mark = link(h('mark', { title: `“${g.phrase}” → ${g.objects.join(', ')}` }, decoder.decode(bytes.slice(start, end))), g.objects);
+    parts.push(mark, h('sub', {}, g.variables.join(',')));
+    at = end;
+  }
+  parts.push(decoder.decode(bytes.slice(at)));
+  line.replaceChildren(...parts);
+  line.hidden = false;
 }
 
-function showReport(r) {
+function showReport(r, note) {
+  showUnderstood(r);
   const fmt = (v) => v.map((x) => Number(x).toFixed(3)).join(', ');
-  const objectsHtml = r.objects.map((o) => `<dd><b>${escape(o.variable)}</b> ${escape(o.object)}: ${o.expressions.map((e) => `<code>${escape(e)}</code>`).join(' then ')}<br>
-    move [${fmt(o.translation)}] · turn ${o.rotation_degrees.toFixed(1)}° · scale ${o.scale.toFixed(3)}</dd>`).join('');
+  const grounding = (r.grounding || []).map((g) => link(h('dd', { class: 'grounding' },
+    `“${g.phrase}” → `, h('b', {}, g.variables.join(', ')), ` ${g.objects.join(', ')}`, h('br'),
+    h('span', { class: 'why' }, g.reasons.map((why) => `${why.kind}: ${why.detail}`).join(' · '))), g.objects));
+  const changes = r.objects.map((o) => link(h('dd', {},
+    h('b', {}, o.variable), ` ${o.object}: `,
+    o.expressions.map((e, i) => [i ? ' then ' : '', h('code', {}, e)]),
+    h('br'), `move [${fmt(o.translation)}] · turn ${o.rotation_degrees.toFixed(1)}° · scale ${o.scale.toFixed(3)}`), [o.object]));
   const collisions = r.collisions_resolved.length
-    ? r.collisions_resolved.map((c) => `<dd>${escape(c.object)} moved [${fmt(c.displacement)}] to clear ${escape(c.collided_with.join(', '))}</dd>`).join('')
-    : '<dd>none</dd>';
-  const grounding = (r.grounding || []).map((g) => `<dd class="grounding">“${escape(g.phrase)}” → <b>${escape(g.variables.join(', '))}</b> ${escape(g.objects.join(', '))}<br>
-    <span class="why">${g.reasons.map((why) => `${escape(why.kind)}: ${escape(why.detail)}`).join(' · ')}</span></dd>`).join('') || '<dd>none</dd>';
-  $('report').innerHTML = `<dl>
-    <dt>Grounding</dt>${grounding}
-    <dt>Query</dt><dd><code>${escape(r.query)}</code></dd>
-    <dt>Objects</dt>${objectsHtml}
-    <dt>Collisions resolved</dt>${collisions}
-    <dt>Model</dt><dd>${escape(r.model)} · answered by ${escape(r.answered_by || r.model)} · ${escape(r.system)} (${escape(r.prompt_version)}) · ${r.retries} retries${r.cache_hit ? ' · cached' : ''}${r.offline_refusal ? `<br><span class="why">offline: ${escape(r.offline_refusal)}</span>` : ''}</dd>
-    <dt>Timings</dt><dd>translate ${r.timings_ms.translate.toFixed(2)} ms · total ${r.timings_ms.total.toFixed(2)} ms</dd>
-  </dl>`;
+    ? r.collisions_resolved.map((c) => link(h('dd', {}, `${c.object} moved [${fmt(c.displacement)}] to clear ${c.collided_with.join(', ')}`), [c.object]))
+    : [h('dd', {}, 'none')];
+  $('report').replaceChildren(h('dl', {},
+    note ? h('dd', { class: 'why' }, note) : null,
+    h('dt', {}, 'Grounding'), grounding.length ? grounding : h('dd', {}, 'none'),
+    h('dt', {}, 'Query'), h('dd', {}, h('code', {}, r.query)),
+    h('dt', {}, 'Objects'), changes,
+    r.carried.length ? [h('dt', {}, 'Carried'), link(h('dd', {}, r.carried.join(', ')), r.carried)] : null,
+    h('dt', {}, 'Collisions resolved'), collisions,
+    h('dt', {}, 'Model'), h('dd', {},
+      `${r.model} · answered by ${r.answered_by || r.model} · ${r.system} (${r.prompt_version}) · ${r.retries} retries${r.cache_hit ? ' · cached' : ''}`,
+      r.offline_refusal ? [h('br'), h('span', { class: 'why' }, `offline: ${r.offline_refusal}`)] : null),
+    h('dt', {}, 'Timings'), h('dd', {}, `translate ${r.timings_ms.translate.toFixed(2)} ms · total ${r.timings_ms.total.toFixed(2)} ms`)));
+}
+
+// The edit the page shows: its report, its objects in green, and the ghosts of where they
+// were (while it is the latest change).
+function showEdit(report, current) {
+  edited.clear();
+  if (current) {
+    for (const m of report.moved || []) edited.add(m.object);
+    showGhosts(report.moved);
+  } else {
+    clearGhosts();
+  }
+  showReport(report, current ? null : 'Undone or followed by other changes.');
+  window.shenlong.lastReport = report;
+  restyle();
+}
+
+// A refusal that leaves a choice: the candidates as buttons, highlighted in the view.
+function showChoice(ambiguity) {
+  candidates.clear();
+  for (const name of ambiguity.objects) if (objects.has(name)) candidates.add(name);
+  const choices = ambiguity.choices || ambiguity.objects.map((object) => ({ object, instruction: null }));
+  const shown = choices.slice(0, MAX_CHOICES);
+  $('choice-text').replaceChildren(h('span', {}, `“${ambiguity.phrase}” could mean ${ambiguity.objects.length} objects. Which one?`,
+    choices.length > shown.length ? h('span', { class: 'why' }, ` (the first ${shown.length}; name another by typing)`) : null));
+  $('choices').replaceChildren(...shown.map((choice) => {
+    const button = link(h('button', { type: 'button', title: choice.instruction || `Insert '${choice.object}'` }, choice.object), [choice.object]);
+    button.addEventListener('click', () => {
+      if (choice.instruction) {
+        $('instruction').value = choice.instruction;
+        run(choice.instruction);
+      } else {
+        insertName(choice.object);
+      }
+    });
+    return button;
+  }));
+  $('choice').hidden = false;
+  restyle();
+}
+
+function clearChoice() {
+  candidates.clear();
+  $('choice').hidden = true;
+  $('choices').replaceChildren();
+  restyle();
 }
 
 async function refreshHistory() {
-  const { history } = await api('/api/history');
-  $('history').innerHTML = history.map((h) => `<li class="${h.undone ? 'undone' : ''}"><code>${escape(h.text)}</code> — ${escape(h.objects.join(', ') || 'nothing moved')}</li>`).join('');
+  const data = await api('/api/history');
+  $('history').replaceChildren(...data.history.map((item) => h('li', { class: item.undone ? 'undone' : '' },
+    h('code', {}, item.text), ` — ${item.objects.join(', ') || 'nothing moved'}`)));
+  return data;
 }
 
 function setUndoRedo(data) {
@@ -273,53 +582,98 @@ async function load(animate) {
   const data = await api('/api/scene');
   build(data.scene, animate);
   setUndoRedo(data);
+  if (data.example) $('instruction').placeholder = data.example;
   if (data.model) await loadModel(data.model);
   return data;
 }
 
-$('form').addEventListener('submit', async (event) => {
-  event.preventDefault();
-  const instruction = $('instruction').value.trim();
+let running = false;
+async function run(instruction) {
+  if (running) return;
   if (!instruction) { say('Type an instruction first.', 'error'); return; }
+  running = true;
   $('run').disabled = true;
+  clearChoice();
   say('Editing…', 'busy');
   try {
     const report = await api('/api/edit', { instruction, llm: $('llm').value.trim() || undefined, system: $('system').value });
-    edited.clear();
-    for (const o of report.objects) edited.add(o.object);
-    for (const name of report.carried) edited.add(name);
-    showReport(report);
-    window.shenlong.lastReport = report;
+    selected.clear();
     await load(true);
+    showEdit(report, true);
     await refreshHistory();
     if (report.warning) say(`Done, but ${report.warning}`, 'error');
     else say(`Done: ${report.objects.map((o) => o.object).join(', ')}`);
   } catch (error) {
     say(error.message, 'error');
+    if (error.data && error.data.ambiguity) showChoice(error.data.ambiguity);
   } finally {
+    running = false;
     $('run').disabled = false;
+  }
+}
+
+$('form').addEventListener('submit', (event) => {
+  event.preventDefault();
+  run($('instruction').value.trim());
+});
+
+// Enter runs; Shift+Enter is a new line.
+$('instruction').addEventListener('keydown', (event) => {
+  if (event.key === 'Enter' && !event.shiftKey && !event.isComposing) {
+    event.preventDefault();
+    $('form').requestSubmit();
   }
 });
 
-for (const [id, path, verb] of [['undo', '/api/undo', 'Undone'], ['redo', '/api/redo', 'Redone']]) {
-  $(id).addEventListener('click', async () => {
-    try {
-      const data = await api(path, {});
-      build(data.scene, true);
-      setUndoRedo(data);
-      await refreshHistory();
-      say(verb);
-    } catch (error) {
-      say(error.message, 'error');
-    }
-  });
+async function step(undo) {
+  try {
+    const data = await api(undo ? '/api/undo' : '/api/redo', {});
+    build(data.scene, true);
+    setUndoRedo(data);
+    edited.clear();
+    clearGhosts();
+    clearChoice();
+    await refreshHistory();
+    say(undo ? 'Undone' : 'Redone');
+  } catch (error) {
+    say(error.message, 'error');
+  }
 }
+$('undo').addEventListener('click', () => step(true));
+$('redo').addEventListener('click', () => step(false));
+
+// Ctrl+Z / Ctrl+Shift+Z (and Ctrl+Y) undo and redo, except in a text field, where they
+// are the field's own. Esc clears the selection and the choice.
+document.addEventListener('keydown', (event) => {
+  const target = event.target;
+  const typing = target instanceof HTMLTextAreaElement || target instanceof HTMLSelectElement
+    || (target instanceof HTMLInputElement && target.type !== 'button' && target.type !== 'checkbox');
+  if (event.key === 'Escape') {
+    if (target === $('filter') && $('filter').value) return;
+    selected.clear();
+    clearChoice();
+    return;
+  }
+  if (typing || !(event.ctrlKey || event.metaKey) || event.altKey) return;
+  const key = event.key.toLowerCase();
+  if (key === 'z' || key === 'y') {
+    event.preventDefault();
+    step(key === 'z' && !event.shiftKey);
+  }
+});
 
 $('topdown').addEventListener('click', () => {
   const top = camera === perspective;
   camera = top ? orthographic : perspective;
   controls.enabled = !top;
   $('topdown').setAttribute('aria-pressed', String(top));
+  updateLabels();
+});
+
+$('names').addEventListener('click', () => {
+  allNames = !allNames;
+  $('names').setAttribute('aria-pressed', String(allNames));
+  updateLabels();
 });
 
 window.shenlong = {
@@ -327,11 +681,33 @@ window.shenlong = {
   lastReport: null,
   // How many meshes are drawn (for tests): boxes, or a glTF model's meshes as well.
   meshes: () => { let n = 0; world.traverse((o) => { if (o.isMesh) n += 1; }); return n; },
+  // The ghosts shown: each object and where it was.
+  ghosts: () => ghosts.children.filter((g) => g.userData.object).map((g) => ({ object: g.userData.object, position: g.userData.position })),
+  // The objects highlighted in the view (under the pointer or linked).
+  highlighted: () => [...hovered],
+  // The names shown in the view.
+  labels: () => [...labels.entries()].filter(([, e]) => !e.hidden).map(([name]) => name),
+  // Where a point of an object is on the page (by default its middle), for tests that
+  // point at it.
+  pointAt: (name, height = 0.5) => {
+    const entry = objects.get(name);
+    if (!entry) return null;
+    const p = screenOf(entry, height);
+    const rect = view.getBoundingClientRect();
+    return { x: rect.left + p.x, y: rect.top + p.y };
+  },
 };
 try {
   await load(false);
   frameCamera();
-  await refreshHistory();
+  // The last edit and the history, even when the edit was made before the page opened.
+  const history = await refreshHistory();
+  const last = history.last_edit;
+  if (last) {
+    const latest = history.history[history.history.length - 1];
+    const current = latest !== undefined && latest.id === last.history_id && !latest.undone;
+    showEdit(last, current);
+  }
   window.shenlong.ready = true;
 } catch (error) {
   say(`Cannot load the scene: ${error.message}`, 'error');

@@ -59,6 +59,12 @@ pub struct App {
     bound: Mutex<Option<std::net::IpAddr>>,
     /// The scene's name index, built once: edits move objects, never rename them.
     grounder: Arc<shenlong::ground::Grounder>,
+    /// The answer to the last instruction edit (its report, `history_id` and `moved`), so
+    /// a page opened later shows it.
+    last_edit: Mutex<Option<Arc<Value>>>,
+    /// An instruction made of the scene's own objects, for the page's placeholder; made
+    /// once, on the first request for the scene.
+    example: std::sync::OnceLock<Option<String>>,
 }
 
 impl App {
@@ -73,6 +79,8 @@ impl App {
             edits: tokio::sync::Mutex::new(()),
             settings,
             bound: Mutex::new(None),
+            last_edit: Mutex::new(None),
+            example: std::sync::OnceLock::new(),
         })
     }
 
@@ -83,26 +91,46 @@ impl App {
 
 /// An error answer: a status and `{"error": "..."}`.
 #[derive(Debug)]
-pub struct ApiError(StatusCode, String);
+pub struct ApiError {
+    status: StatusCode,
+    message: String,
+    /// For a refusal that leaves a choice between objects: `{"phrase", "span", "objects",
+    /// "choices"}` ([`ambiguity_json`]), answered beside the message.
+    ambiguity: Option<Value>,
+}
+
+impl ApiError {
+    fn new(status: StatusCode, message: impl Into<String>) -> Self {
+        Self {
+            status,
+            message: message.into(),
+            ambiguity: None,
+        }
+    }
+}
 
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
-        (self.0, Json(json!({"error": self.1}))).into_response()
+        let mut body = json!({"error": self.message});
+        if let Some(ambiguity) = self.ambiguity {
+            body["ambiguity"] = ambiguity;
+        }
+        (self.status, Json(body)).into_response()
     }
 }
 
 fn bad(message: impl Into<String>) -> ApiError {
-    ApiError(StatusCode::BAD_REQUEST, message.into())
+    ApiError::new(StatusCode::BAD_REQUEST, message.into())
 }
 
 fn unprocessable(message: impl Into<String>) -> ApiError {
-    ApiError(StatusCode::UNPROCESSABLE_ENTITY, message.into())
+    ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, message.into())
 }
 
 fn json_body<T>(body: Result<Json<T>, JsonRejection>) -> Result<T, ApiError> {
     body.map(|Json(v)| v).map_err(|e| match e {
         JsonRejection::BytesRejection(b) if b.status() == StatusCode::PAYLOAD_TOO_LARGE => {
-            ApiError(
+            ApiError::new(
                 StatusCode::PAYLOAD_TOO_LARGE,
                 format!("the request body is larger than {MAX_BODY} bytes"),
             )
@@ -141,7 +169,7 @@ async fn guard(
     next: axum::middleware::Next,
 ) -> Response {
     let headers = request.headers();
-    let forbidden = |message: String| ApiError(StatusCode::FORBIDDEN, message).into_response();
+    let forbidden = |message: String| ApiError::new(StatusCode::FORBIDDEN, message).into_response();
     let bound = *app.bound.lock().unwrap_or_else(|e| e.into_inner());
     let host = headers
         .get(header::HOST)
@@ -180,9 +208,9 @@ async fn guard(
                     .is_some_and(|t| t.trim().eq_ignore_ascii_case("application/json"))
             });
         if !json {
-            return ApiError(
+            return ApiError::new(
                 StatusCode::UNSUPPORTED_MEDIA_TYPE,
-                "state-changing requests must be sent as Content-Type: application/json".into(),
+                "state-changing requests must be sent as Content-Type: application/json",
             )
             .into_response();
         }
@@ -238,12 +266,12 @@ async fn read_body_within(
             ))
             .await
         }
-        Ok(Err(_)) => ApiError(
+        Ok(Err(_)) => ApiError::new(
             StatusCode::PAYLOAD_TOO_LARGE,
             format!("the request body is larger than {MAX_BODY} bytes, or broke off"),
         )
         .into_response(),
-        Err(_) => ApiError(
+        Err(_) => ApiError::new(
             StatusCode::REQUEST_TIMEOUT,
             format!(
                 "the request body did not arrive within {} s",
@@ -290,14 +318,13 @@ async fn asset(uri: Uri) -> Response {
             bytes,
         )
             .into_response(),
-        None if uri.path().starts_with("/api/") => ApiError(
+        None if uri.path().starts_with("/api/") => ApiError::new(
             StatusCode::NOT_FOUND,
             format!("no API endpoint {}", uri.path()),
         )
         .into_response(),
-        None => {
-            ApiError(StatusCode::NOT_FOUND, format!("nothing at {}", uri.path())).into_response()
-        }
+        None => ApiError::new(StatusCode::NOT_FOUND, format!("nothing at {}", uri.path()))
+            .into_response(),
     }
 }
 
@@ -305,7 +332,7 @@ async fn asset(uri: Uri) -> Response {
 /// file held, a scene that cannot be shown is an error answer, never a panic.
 fn scene_json(inner: &Inner) -> Result<Value, ApiError> {
     let cannot = |e: String| {
-        ApiError(
+        ApiError::new(
             StatusCode::INTERNAL_SERVER_ERROR,
             format!("cannot show the scene: {e}"),
         )
@@ -366,9 +393,9 @@ fn model_bytes(inner: &Inner) -> Option<Vec<u8>> {
 async fn model(State(app): State<Arc<App>>) -> Result<Response, ApiError> {
     let inner = app.lock();
     let bytes = model_bytes(&inner).ok_or_else(|| {
-        ApiError(
+        ApiError::new(
             StatusCode::NOT_FOUND,
-            "this scene has no self-contained glTF model: it is drawn as boxes".into(),
+            "this scene has no self-contained glTF model: it is drawn as boxes",
         )
     })?;
     let content_type = if bytes.starts_with(b"glTF") {
@@ -387,7 +414,77 @@ async fn model(State(app): State<Arc<App>>) -> Result<Response, ApiError> {
 }
 
 async fn scene(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
-    scene_json(&app.lock()).map(Json)
+    let inner = app.lock();
+    let mut value = scene_json(&inner)?;
+    let example = app
+        .example
+        .get_or_init(|| example_instruction(&app, &inner.session.file.scene));
+    value["example"] = json!(example);
+    Ok(Json(value))
+}
+
+/// Whether a name reads well in an example instruction: short, plain words.
+fn plain_name(name: &str) -> bool {
+    !name.trim().is_empty()
+        && name.chars().count() <= 40
+        && name
+            .chars()
+            .all(|c| c.is_alphanumeric() || matches!(c, ' ' | '-' | '_' | '.'))
+}
+
+/// An instruction made of the scene's own objects that the scene's grounding and the
+/// offline translator both read: `put the screwdriver on the workbench` (its smallest
+/// object on the object with the largest footprint it does not already rest on), or
+/// `move the screwdriver 30 cm to the left`; `None` when no object has a plain name.
+fn example_instruction(app: &App, scene: &Scene) -> Option<String> {
+    let plain: Vec<usize> = (0..scene.objects.len())
+        .filter(|&i| plain_name(&scene.objects[i].name))
+        .collect();
+    let boxes: Vec<shenlong::geometry::Aabb> = plain
+        .iter()
+        .map(|&i| scene.objects[i].world_aabb())
+        .collect();
+    let volume = |k: usize| {
+        let s = boxes[k].size();
+        s.x * s.y * s.z
+    };
+    let footprint = |k: usize| {
+        let s = boxes[k].size();
+        s.x * s.z
+    };
+    let small = (0..plain.len()).min_by(|&a, &b| volume(a).total_cmp(&volume(b)))?;
+    let s = plain[small];
+    let big = (0..plain.len())
+        .filter(|&k| plain[k] != s && Some(plain[k]) != scene.objects[s].support)
+        .max_by(|&a, &b| footprint(a).total_cmp(&footprint(b)))
+        .map(|k| plain[k]);
+    let name = |i: usize| scene.objects[i].name.as_str();
+    let mut tries: Vec<(String, Vec<usize>)> = Vec::new();
+    if let Some(b) = big {
+        tries.push((
+            format!("put the {} on the {}", name(s), name(b)),
+            vec![s, b],
+        ));
+        tries.push((
+            format!("put the '{}' on the '{}'", name(s), name(b)),
+            vec![s, b],
+        ));
+    }
+    tries.push((format!("move the {} 30 cm to the left", name(s)), vec![s]));
+    tries.push((format!("move the '{}' 30 cm to the left", name(s)), vec![s]));
+    let offline = translator(
+        "offline",
+        &TranslatorSettings {
+            system: app.settings.system,
+            ..app.settings.translator.clone()
+        },
+    )
+    .ok()?;
+    tries.into_iter().find_map(|(text, objects)| {
+        let templated = shenlong::pipeline::template_with(&app.grounder, &text, scene).ok()?;
+        (templated.objects == objects && offline.translate(&templated, scene).is_ok())
+            .then_some(text)
+    })
 }
 
 /// The translator a request may choose: `offline`, or the one the server was started
@@ -419,6 +516,79 @@ fn commit(app: &App, after: Scene, kind: &str, text: &str) -> shenlong::session:
     app.lock().session.commit(after, kind, text)
 }
 
+/// A refusal's choice between objects, as the API answers it: the phrase, its bytes in
+/// the trimmed instruction, the objects it could mean, and for each object the
+/// instruction that names it (the phrase replaced by the quoted name; `null` when the
+/// name cannot be quoted or would make the instruction too long).
+fn ambiguity_json(instruction: &str, ambiguity: &shenlong::ground::Ambiguity) -> Value {
+    let text = instruction.trim();
+    let choices: Vec<Value> = ambiguity
+        .objects
+        .iter()
+        .map(|name| json!({"object": name, "instruction": naming(text, ambiguity.span, name)}))
+        .collect();
+    json!({
+        "phrase": ambiguity.phrase,
+        "span": ambiguity.span,
+        "objects": ambiguity.objects,
+        "choices": choices,
+    })
+}
+
+/// `text` with the bytes `span` replaced by `name` in quotes the grounder reads as one
+/// name: the first pair whose closing quote is not in the name (`'…'`, `"…"`, `‘…’`,
+/// `“…”`, `` `…` ``; an apostrophe right after a letter would not open a quote).
+fn naming(text: &str, span: [usize; 2], name: &str) -> Option<String> {
+    let [start, end] = span;
+    if start > end || name.is_empty() {
+        return None;
+    }
+    let (before, after) = (text.get(..start)?, text.get(end..)?);
+    let after_word = before
+        .chars()
+        .next_back()
+        .is_some_and(char::is_alphanumeric);
+    let (open, close) = [('\'', '\''), ('"', '"'), ('‘', '’'), ('“', '”'), ('`', '`')]
+        .into_iter()
+        .find(|&(open, close)| !(name.contains(close) || (after_word && open == '\'')))?;
+    let named = format!("{before}{open}{name}{close}{after}");
+    (named.chars().count() <= MAX_INSTRUCTION).then_some(named)
+}
+
+/// Each object whose pose differs between `before` and `after`: its name and both poses
+/// (position, rotation `[x, y, z, w]`, scale), as the scene JSON writes them.
+fn moved_objects(before: &Scene, after: &Scene) -> Vec<Value> {
+    // As the scene JSON writes numbers: to a nanometre, whole ones without a fraction.
+    let number = |x: f64| {
+        let x = shenlong::format::tidy(x);
+        if x.fract() == 0.0 && x.abs() < 1e15 {
+            json!(x as i64)
+        } else {
+            json!(x)
+        }
+    };
+    let pose = |o: &shenlong::scene::Object| {
+        let s = o.similarity();
+        json!({
+            "position": s.translation.to_array().map(number),
+            "rotation": s.rotation.to_array().map(number),
+            "scale": number(s.scale),
+        })
+    };
+    before
+        .objects
+        .iter()
+        .zip(&after.objects)
+        .filter(|(a, b)| {
+            let (p, q) = (a.similarity(), b.similarity());
+            (p.translation - q.translation).length() > 1e-12
+                || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-15
+                || (p.scale - q.scale).abs() > 1e-12
+        })
+        .map(|(a, b)| json!({"object": b.name, "before": pose(a), "after": pose(b)}))
+        .collect()
+}
+
 /// The HTTP status of an edit error: 4xx for the request, 502 for a model server.
 fn edit_status(e: shenlong::pipeline::EditError) -> ApiError {
     let status = match e.kind {
@@ -428,7 +598,7 @@ fn edit_status(e: shenlong::pipeline::EditError) -> ApiError {
         EditErrorKind::Placement | EditErrorKind::Held => StatusCode::CONFLICT,
         EditErrorKind::Model => StatusCode::BAD_GATEWAY,
     };
-    ApiError(status, e.message)
+    ApiError::new(status, e.message)
 }
 
 async fn edit_scene(
@@ -437,7 +607,7 @@ async fn edit_scene(
 ) -> Result<Json<Value>, ApiError> {
     let request = json_body(body)?;
     if request.instruction.chars().count() > MAX_INSTRUCTION {
-        return Err(ApiError(
+        return Err(ApiError::new(
             StatusCode::PAYLOAD_TOO_LARGE,
             format!("the instruction is longer than {MAX_INSTRUCTION} characters"),
         ));
@@ -474,15 +644,31 @@ async fn edit_scene(
     })
     .await
     .map_err(|e| {
-        ApiError(
+        ApiError::new(
             StatusCode::INTERNAL_SERVER_ERROR,
             format!("the edit stopped: {e}"),
         )
     })?;
-    let (after, report) = outcome.map_err(edit_status)?;
-    let change = commit(&app, after, "edit", &request.instruction);
+    let (after, report) = outcome.map_err(|e| {
+        let ambiguity = e
+            .ambiguity
+            .as_ref()
+            .map(|a| ambiguity_json(&request.instruction, a));
+        ApiError {
+            ambiguity,
+            ..edit_status(e)
+        }
+    })?;
+    let (change, moved) = {
+        let mut inner = app.lock();
+        let moved = moved_objects(&inner.session.file.scene, &after);
+        (
+            inner.session.commit(after, "edit", &request.instruction),
+            moved,
+        )
+    };
     let mut value = serde_json::to_value(&report).map_err(|e| {
-        ApiError(
+        ApiError::new(
             StatusCode::INTERNAL_SERVER_ERROR,
             format!(
                 "the edit was made (history {:?}) but its report cannot be written: {e}",
@@ -491,10 +677,13 @@ async fn edit_scene(
         )
     })?;
     value["history_id"] = json!(change.id);
+    value["moved"] = Value::Array(moved);
     if let Some(warning) = change.save_error {
         value["warning"] = json!(warning);
     }
-    Ok(Json(value))
+    let value = Arc::new(value);
+    *app.last_edit.lock().unwrap_or_else(|e| e.into_inner()) = Some(Arc::clone(&value));
+    Ok(Json(Value::clone(&value)))
 }
 
 #[derive(Deserialize)]
@@ -547,7 +736,7 @@ fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
             }
             Ok(Json(value))
         }
-        Err(StepError::Nothing) => Err(ApiError(
+        Err(StepError::Nothing) => Err(ApiError::new(
             StatusCode::CONFLICT,
             format!("nothing to {}", if undo { "undo" } else { "redo" }),
         )),
@@ -565,7 +754,15 @@ async fn redo(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
 }
 
 async fn history(State(app): State<Arc<App>>) -> Json<Value> {
-    Json(json!({"history": app.lock().session.history()}))
+    let last_edit = app
+        .last_edit
+        .lock()
+        .unwrap_or_else(|e| e.into_inner())
+        .clone();
+    Json(json!({
+        "history": app.lock().session.history(),
+        "last_edit": last_edit.as_deref(),
+    }))
 }
 
 async fn export(
@@ -704,5 +901,48 @@ pub async fn serve_with(
                 .await;
             drop(permit);
         });
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_candidate_is_named_in_the_first_quotes_that_hold_it() {
+        let text = "move the chair 20 cm to the left";
+        assert_eq!(
+            naming(text, [5, 14], "chair 3").as_deref(),
+            Some("move 'chair 3' 20 cm to the left")
+        );
+        assert_eq!(
+            naming(text, [5, 14], "Bob's chair").as_deref(),
+            Some("move \"Bob's chair\" 20 cm to the left")
+        );
+        assert_eq!(
+            naming(text, [5, 14], "Bob's \"big\" chair").as_deref(),
+            Some("move ‘Bob's \"big\" chair’ 20 cm to the left")
+        );
+        // Right after a letter an apostrophe is part of the word, not a quote.
+        assert_eq!(naming("ab", [1, 2], "n").as_deref(), Some("a\"n\""));
+        // A name that every closing quote is in cannot be named.
+        assert_eq!(naming(text, [5, 14], "a'b\"c’d”e`"), None);
+    }
+
+    #[test]
+    fn a_span_that_is_not_the_instructions_own_names_nothing() {
+        let text = "move the café chair left";
+        // Inside the two bytes of 'é', backwards, past the end.
+        assert_eq!(naming(text, [9, 13], "x"), None);
+        assert_eq!(naming(text, [14, 9], "x"), None);
+        assert_eq!(naming(text, [9, 99], "x"), None);
+        assert_eq!(naming(text, [9, 20], "").as_deref(), None);
+        assert_eq!(
+            naming(text, [5, 20], "chair 2").as_deref(),
+            Some("move 'chair 2' left")
+        );
+        // An instruction the name would make too long is not offered.
+        let long = "n".repeat(MAX_INSTRUCTION);
+        assert_eq!(naming(text, [5, 20], &long), None);
     }
 }
