@@ -882,13 +882,19 @@ fn edit_body(instruction: &str) -> String {
     json!({ "instruction": instruction }).to_string()
 }
 
+/// `POST /api/edit` with `instruction`: the status and the answer.
+async fn post_edit(app: &Arc<App>, instruction: &str) -> (StatusCode, Value) {
+    let (status, value, _) = call(app, "POST", "/api/edit", Some(&edit_body(instruction))).await;
+    (status, value)
+}
+
 #[tokio::test]
 async fn an_ambiguous_phrase_is_answered_with_its_candidates_as_data() {
     let (_dir, app) = app_for(KITCHEN);
     let chairs = json!(["chair 1", "chair 2", "chair 3", "chair 4"]);
     // Spaces around the instruction: the span counts in the trimmed instruction.
     let typed = "  move the chair 20 cm to the left ";
-    let (status, value, _) = call(&app, "POST", "/api/edit", Some(&edit_body(typed))).await;
+    let (status, value) = post_edit(&app, typed).await;
     assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{value}");
     let error = value["error"].as_str().unwrap();
     assert!(error.contains("could mean chair 1, chair 2"), "{error}");
@@ -913,7 +919,7 @@ async fn an_ambiguous_phrase_is_answered_with_its_candidates_as_data() {
 
     // A choice, sent back as it is, moves that chair and no other.
     let chosen = choices[2]["instruction"].as_str().unwrap();
-    let (status, report, _) = call(&app, "POST", "/api/edit", Some(&edit_body(chosen))).await;
+    let (status, report) = post_edit(&app, chosen).await;
     assert_eq!(status, StatusCode::OK, "{report}");
     assert_eq!(
         report["moved"],
@@ -935,13 +941,7 @@ async fn an_ambiguous_phrase_is_answered_with_its_candidates_as_data() {
     assert_eq!(position(&scene, "chair 1"), json!([-0.45, 0, -0.75]));
 
     // A phrase that asks for another number of objects leaves a choice too.
-    let (status, value, _) = call(
-        &app,
-        "POST",
-        "/api/edit",
-        Some(&edit_body("move the two chairs 20 cm to the left")),
-    )
-    .await;
+    let (status, value) = post_edit(&app, "move the two chairs 20 cm to the left").await;
     assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{value}");
     assert_eq!(value["ambiguity"]["phrase"], "the two chairs");
     assert_eq!(value["ambiguity"]["objects"], chairs);
@@ -978,13 +978,7 @@ async fn each_candidate_is_named_in_quotes_its_name_does_not_hold() {
             {"name": "<img src=x onerror=alert(1)> lamp", "size": [0.3, 0.3, 0.3], "position": [-2, 0, 0]}
         ]}"#,
     );
-    let (status, value, _) = call(
-        &app,
-        "POST",
-        "/api/edit",
-        Some(&edit_body("move the lamp 1 m to the left")),
-    )
-    .await;
+    let (status, value) = post_edit(&app, "move the lamp 1 m to the left").await;
     assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{value}");
     let choices = value["ambiguity"]["choices"].as_array().unwrap().clone();
     let instructions: Vec<&str> = choices
@@ -1005,8 +999,7 @@ async fn each_candidate_is_named_in_quotes_its_name_does_not_hold() {
         let instruction = choice["instruction"].as_str().unwrap();
         let (_, before, _) = call(&app, "GET", "/api/scene", None).await;
         let x = position(&before, name)[0].as_f64().unwrap();
-        let (status, report, _) =
-            call(&app, "POST", "/api/edit", Some(&edit_body(instruction))).await;
+        let (status, report) = post_edit(&app, instruction).await;
         assert_eq!(status, StatusCode::OK, "{instruction}: {report}");
         assert_eq!(report["moved"].as_array().unwrap().len(), 1, "{report}");
         assert_eq!(report["moved"][0]["object"], name);
@@ -1029,7 +1022,7 @@ async fn the_last_edit_and_an_example_of_the_scene_are_there_for_a_page_opened_l
     assert_eq!(status, StatusCode::OK);
     let example = scene["example"].as_str().unwrap().to_string();
     assert_eq!(example, "put the kettle on the dining table");
-    let (status, report, _) = call(&app, "POST", "/api/edit", Some(&edit_body(&example))).await;
+    let (status, report) = post_edit(&app, &example).await;
     assert_eq!(status, StatusCode::OK, "{report}");
     assert_eq!(report["bindings"][0]["object"], "kettle");
     assert_eq!(report["bindings"][1]["object"], "dining table");
@@ -1047,13 +1040,7 @@ async fn the_last_edit_and_an_example_of_the_scene_are_there_for_a_page_opened_l
     let (_, history, _) = call(&app, "GET", "/api/history", None).await;
     assert_eq!(history["history"][0]["undone"], true);
     assert_eq!(history["last_edit"]["history_id"], id);
-    let (status, report, _) = call(
-        &app,
-        "POST",
-        "/api/edit",
-        Some(&edit_body("move the fridge 10 cm to the left")),
-    )
-    .await;
+    let (status, report) = post_edit(&app, "move the fridge 10 cm to the left").await;
     assert_eq!(status, StatusCode::OK, "{report}");
     let (_, history, _) = call(&app, "GET", "/api/history", None).await;
     assert_eq!(

@@ -45,14 +45,6 @@ impl Step {
     }
 }
 
-/// Whether an object's pose changed beyond rounding.
-fn moved(a: &Object, b: &Object) -> bool {
-    let (p, q) = (a.similarity(), b.similarity());
-    (p.translation - q.translation).length() > 1e-12
-        || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-15
-        || (p.scale - q.scale).abs() > 1e-12
-}
-
 fn object_bytes(o: &Object) -> usize {
     std::mem::size_of::<Object>()
         + o.name.len()
@@ -148,7 +140,7 @@ impl Session {
             .iter()
             .zip(&after.objects)
             .enumerate()
-            .filter(|(_, (a, b))| moved(a, b) || a.support != b.support)
+            .filter(|(_, (a, b))| a.pose_differs(b) || a.support != b.support)
             .map(|(i, (a, b))| (i, a.clone(), b.clone()))
             .collect();
         if changes.is_empty() {
@@ -159,7 +151,7 @@ impl Session {
         }
         let changed: Vec<String> = changes
             .iter()
-            .filter(|(_, a, b)| moved(a, b))
+            .filter(|(_, a, b)| a.pose_differs(b))
             .map(|(_, _, b)| b.name.clone())
             .collect();
         let id = self.next_id;

@@ -558,15 +558,7 @@ fn naming(text: &str, span: [usize; 2], name: &str) -> Option<String> {
 /// Each object whose pose differs between `before` and `after`: its name and both poses
 /// (position, rotation `[x, y, z, w]`, scale), as the scene JSON writes them.
 fn moved_objects(before: &Scene, after: &Scene) -> Vec<Value> {
-    // As the scene JSON writes numbers: to a nanometre, whole ones without a fraction.
-    let number = |x: f64| {
-        let x = shenlong::format::tidy(x);
-        if x.fract() == 0.0 && x.abs() < 1e15 {
-            json!(x as i64)
-        } else {
-            json!(x)
-        }
-    };
+    let number = shenlong::format::tidy_json;
     let pose = |o: &shenlong::scene::Object| {
         let s = o.similarity();
         json!({
@@ -579,12 +571,7 @@ fn moved_objects(before: &Scene, after: &Scene) -> Vec<Value> {
         .objects
         .iter()
         .zip(&after.objects)
-        .filter(|(a, b)| {
-            let (p, q) = (a.similarity(), b.similarity());
-            (p.translation - q.translation).length() > 1e-12
-                || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-15
-                || (p.scale - q.scale).abs() > 1e-12
-        })
+        .filter(|(a, b)| a.pose_differs(b))
         .map(|(a, b)| json!({"object": b.name, "before": pose(a), "after": pose(b)}))
         .collect()
 }

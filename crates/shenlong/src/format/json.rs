@@ -8,7 +8,7 @@
 //! the objects that moved, so it costs what changed, and a file under version control
 //! shows only the edit in its diff.
 
-use super::FormatError;
+use super::{tidy_json, FormatError};
 use crate::geometry::Aabb;
 use crate::scene::{Labels, Object, Scene, MAX_COORDINATE, MAX_SCALE, MIN_SCALE};
 use cga::Similarity;
@@ -651,14 +651,14 @@ fn patched(scene: &Scene, document: &JsonDocument) -> String {
     out
 }
 
-/// `[a, b, c]`, each number as [`tidy`] writes it.
+/// `[a, b, c]`, each number as [`tidy_json`] writes it.
 fn list_text(values: &[f64]) -> String {
     let items: Vec<String> = values.iter().map(|&x| number_text(x)).collect();
     format!("[{}]", items.join(", "))
 }
 
 fn number_text(x: f64) -> String {
-    tidy(x).to_string()
+    tidy_json(x).to_string()
 }
 
 fn fresh_document(scene: &Scene) -> Value {
@@ -692,7 +692,7 @@ fn fresh_document(scene: &Scene) -> Value {
                 v["rotation"] = numbers(pose.rotation.to_array());
             }
             if (pose.scale - 1.0).abs() > 1e-12 {
-                v["scale"] = tidy(pose.scale);
+                v["scale"] = tidy_json(pose.scale);
             }
             if (o.front - DVec3::Z).length() > 1e-12 {
                 v["front"] = serde_json::json!(numbers(o.front.to_array()));
@@ -720,18 +720,7 @@ fn file_pose(object: &Object) -> Similarity {
 }
 
 fn numbers<const N: usize>(values: [f64; N]) -> Value {
-    Value::Array(values.into_iter().map(tidy).collect())
-}
-
-/// A number for a file: rounded to a nanometre (`super::tidy`); whole numbers are written
-/// without a fraction.
-fn tidy(x: f64) -> Value {
-    let rounded = super::tidy(x);
-    if rounded.fract() == 0.0 && rounded.abs() < 1e15 {
-        Value::from(rounded as i64)
-    } else {
-        Value::from(rounded)
-    }
+    Value::Array(values.into_iter().map(tidy_json).collect())
 }
 
 #[cfg(test)]

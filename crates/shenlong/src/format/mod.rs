@@ -32,6 +32,18 @@ pub fn tidy(x: f64) -> f64 {
     }
 }
 
+/// A number as the scene files write it: rounded by [`tidy`]; whole numbers without a
+/// fraction.
+#[must_use]
+pub fn tidy_json(x: f64) -> serde_json::Value {
+    let rounded = tidy(x);
+    if rounded.fract() == 0.0 && rounded.abs() < 1e15 {
+        serde_json::Value::from(rounded as i64)
+    } else {
+        serde_json::Value::from(rounded)
+    }
+}
+
 /// The deepest nesting of lists and objects a JSON file may have (scene JSON, glTF, ProcTHOR
 /// houses and asset databases). Real files nest a dozen levels at most; the limit keeps
 /// every tree built from a file (and every answer that wraps it) well within what

@@ -188,6 +188,16 @@ impl Object {
         self.pose
     }
 
+    /// Whether this object's pose differs from `other`'s beyond rounding: what counts as
+    /// a move for the edit history and for the editor's `moved` list.
+    #[must_use]
+    pub fn pose_differs(&self, other: &Object) -> bool {
+        let (p, q) = (self.pose, other.pose);
+        (p.translation - q.translation).length() > 1e-12
+            || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-15
+            || (p.scale - q.scale).abs() > 1e-12
+    }
+
     /// The local points whose image bounds the object: the 8 box corners or the mesh
     /// points.
     pub fn local_points(&self) -> Vec<DVec3> {
