@@ -83,9 +83,14 @@ impl Reader<'_> {
                 }
                 _ => false,
             });
+        // Where it is taken from ("the cups off the table") is never where it goes.
+        let source = matches!(post, Some((Post::Relation(Relation::Off, _), _)));
         let describes = !rest_of_destination
             && post.as_ref().is_some_and(|(_, p_end)| {
-                self.clause_goes_on(*p_end) || self.verb_takes_no_place(start) || destination
+                source
+                    || self.clause_goes_on(*p_end)
+                    || self.verb_takes_no_place(start)
+                    || destination
             });
         // A relation after a noun the modifiers before it already pick among ("the left
         // stool next to the chair") is where it goes, unless it clearly describes.

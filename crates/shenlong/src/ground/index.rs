@@ -20,10 +20,27 @@ pub(crate) enum Tier {
     Alias,
     /// Its category, or the last words of its name (`lamp` for 'floor lamp').
     Category,
+    /// The end of a closed compound that the lexicon says it is (`book` for 'textbook',
+    /// `chair` for 'armchair'): as good as [`Tier::Category`] where the best an object
+    /// is named is by category ("the book" with a 'textbook' and an 'exercise book' means
+    /// either), but not beside objects named by it ("the left chair" with 'chair',
+    /// 'chair 2' and an 'armchair' picks between the chairs).
+    Compound,
     /// A synonym of its name or category (`couch` for 'sofa').
     Synonym,
     /// A broader category (`seat` for 'armchair').
     Hypernym,
+}
+
+/// How a broader word `hyper` names an object called `kind`: as its category where `kind`
+/// is a closed compound ending in it ('textbook' is a book as 'exercise book' is, and
+/// 'armchair' a chair as 'desk chair' is), else as a hypernym.
+fn hypernym_tier(kind: &str, hyper: &str) -> Tier {
+    let closed = !kind.contains(' ') && !hyper.contains(' ');
+    match kind.strip_suffix(hyper) {
+        Some(first) if closed && first.len() >= 3 && hyper.len() >= 3 => Tier::Compound,
+        _ => Tier::Hypernym,
+    }
 }
 
 /// What a posting names: a group of objects that share every phrase but their own names
@@ -366,7 +383,7 @@ impl Builder {
                 for &h in &concept.hypernyms {
                     let hyper = lexicon.concept(h);
                     for s in std::iter::once(&hyper.term).chain(&hyper.synonyms) {
-                        self.add(s, target, Tier::Hypernym, via);
+                        self.add(s, target, hypernym_tier(kind, s), via);
                     }
                 }
             }
@@ -447,13 +464,18 @@ impl NameIndex {
         // An object's own name is the best tier there is.
         let mut named: Vec<(u32, Via)> = self.names.named(phrase).map(|o| (o, Via::Name)).collect();
         let tier = if named.is_empty() {
-            list.iter().map(|p| p.tier).min()?
+            match list.iter().map(|p| p.tier).min()? {
+                Tier::Compound => Tier::Category,
+                t => t,
+            }
         } else {
             Tier::Name
         };
         // (object, via) of every posting at that tier, then in scene order; an object
-        // named twice keeps the way that came first (its own name first).
-        for p in list.iter().filter(|p| p.tier == tier) {
+        // named twice keeps the way that came first (its own name first). Closed
+        // compounds count with their category.
+        let at = |t: Tier| t == tier || (tier == Tier::Category && t == Tier::Compound);
+        for p in list.iter().filter(|p| at(p.tier)) {
             named.extend(self.objects_of(p.target).iter().map(|&o| (o, p.via)));
         }
         named.sort_by_key(|&(o, _)| o);
@@ -469,13 +491,20 @@ impl NameIndex {
     /// Every object a normalised phrase names literally — by name, alias or category, the
     /// best tiers — when it names any that way: what modifiers pick among (`the smallest
     /// barrel` compares 'barrel', 'barrel 2' and 'small barrel').
-    pub fn lookup_literal(&self, phrase: &str) -> Vec<usize> {
+    /// Closed compounds (`armchair` for "chair") count only when `compounds`: when the
+    /// phrase names nothing better than a category.
+    pub fn lookup_literal(&self, phrase: &str, compounds: bool) -> Vec<usize> {
+        let best = if compounds {
+            Tier::Compound
+        } else {
+            Tier::Category
+        };
         let mut out: Vec<usize> = self
             .terms
             .get(phrase)
             .into_iter()
             .flatten()
-            .filter(|p| p.tier <= Tier::Category)
+            .filter(|p| p.tier <= best)
             .flat_map(|p| self.objects_of(p.target).iter().map(|&o| o as usize))
             .chain(self.names.named(phrase).map(|o| o as usize))
             .collect();

@@ -800,7 +800,9 @@ impl<'a> Reader<'a> {
                 format!("\"{written}\" is the name written differently"),
             ),
             Tier::Alias => (ReasonKind::Alias, format!("\"{written}\" is an alias")),
-            Tier::Category => (ReasonKind::Category, format!("a '{via}' is a {text}")),
+            Tier::Category | Tier::Compound => {
+                (ReasonKind::Category, format!("a '{via}' is a {text}"))
+            }
             Tier::Synonym => (
                 ReasonKind::Synonym,
                 format!("\"{text}\" is a synonym of '{via}'"),
@@ -810,8 +812,8 @@ impl<'a> Reader<'a> {
                 format!("a '{via}' is a kind of {text}"),
             ),
         };
-        let mut literal = self.g.index.lookup_literal(&text);
-        if literal.is_empty() || tier > Tier::Category {
+        let mut literal = self.g.index.lookup_literal(&text, tier >= Tier::Category);
+        if literal.is_empty() || tier > Tier::Compound {
             literal = objects.clone();
         }
         Head {
@@ -1233,6 +1235,10 @@ impl<'a> Reader<'a> {
             },
         )?;
         if let Some((p, p_end)) = post {
+            let p_kind = match &p {
+                Post::Relation(r, _) => Some(*r),
+                _ => None,
+            };
             if !modified {
                 objects = head.literal.clone();
             }
@@ -1264,7 +1270,11 @@ impl<'a> Reader<'a> {
                     "\"{words}\" picked {}",
                     error::list(&self.names(&objects))
                 )));
-                end = p_end;
+                // Where it is taken from stays in the instruction: it is also where the
+                // object leaves ("take X1 off X2").
+                if !matches!(p_kind, Some(Relation::Off)) {
+                    end = p_end;
+                }
             }
         }
         objects = self.pick_by_premodifiers(
@@ -1707,6 +1717,9 @@ impl<'a> Reader<'a> {
             ("farthest" | "furthest", "from", _) => (Relation::Farthest, 2),
             ("farthest" | "furthest", "away", "from") => (Relation::Farthest, 3),
             ("on" | "onto" | "upon" | "atop", _, _) => (Relation::On, 1),
+            // Where a thing is taken from is where it rests: "the cups off the table".
+            ("off", "of", _) => (Relation::Off, 2),
+            ("off", _, _) => (Relation::Off, 1),
             ("under" | "below" | "beneath" | "underneath", _, _) => (Relation::Under, 1),
             ("above" | "over", _, _) => (Relation::Above, 1),
             ("beside" | "by" | "near" | "alongside" | "nearby" | "at", _, _) => (Relation::Near, 1),

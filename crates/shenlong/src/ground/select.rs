@@ -23,6 +23,9 @@ pub(crate) const NEAR_LIMIT: f64 = 1.5;
 pub(crate) enum Relation {
     /// Resting on it (`the book on the side table`).
     On,
+    /// Resting on it, said as where it is taken from (`take the cups off the table`):
+    /// never where it goes, so it always picks or checks.
+    Off,
     /// Carrying it (`the desk with the lamp on it`).
     Carries,
     /// Inside its box (`the apple in the fridge`).
@@ -52,7 +55,10 @@ impl Relation {
     /// `on`, `under`, `behind` …), as opposed to only picking (`nearest`, `carrying`).
     #[must_use]
     pub fn can_be_a_destination(self) -> bool {
-        !matches!(self, Self::Nearest | Self::Farthest | Self::Carries)
+        !matches!(
+            self,
+            Self::Nearest | Self::Farthest | Self::Carries | Self::Off
+        )
     }
 }
 
@@ -272,7 +278,7 @@ pub(crate) fn by_relation(
     }
     if matches!(
         relation,
-        Relation::On | Relation::Under | Relation::Carries | Relation::Inside
+        Relation::On | Relation::Off | Relation::Under | Relation::Carries | Relation::Inside
     ) {
         // Membership relations: all that stand in it, when that is the number wanted.
         return (fits.len() == need || need == usize::MAX)
@@ -308,7 +314,7 @@ fn relation_key(
     (t, tb): (usize, &Aabb),
 ) -> Option<f64> {
     let key = match relation {
-        Relation::On => rests_on(scene, (c, cb), (t, tb)).then_some(0.0)?,
+        Relation::On | Relation::Off => rests_on(scene, (c, cb), (t, tb)).then_some(0.0)?,
         Relation::Carries => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
         Relation::Inside => {
             let p = cb.center();

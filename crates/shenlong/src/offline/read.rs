@@ -956,9 +956,10 @@ impl<'a> Reader<'a> {
         self.last_subjects = subjects.to_vec();
         self.last_targets = targets.to_vec();
         let near = match (relation, targets) {
-            (Relation::NextTo | Relation::NextToOn(_) | Relation::Side(..), &[t, ..]) => {
-                Some(Near::Beside(t))
-            }
+            (
+                Relation::NextTo | Relation::NextToOn(_) | Relation::Side(..) | Relation::Against,
+                &[t, ..],
+            ) => Some(Near::Beside(t)),
             (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
             _ => None,
         };
@@ -1309,7 +1310,7 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     (&["close", "to"], RelKind::Fixed(Relation::NextTo)),
     (&["near", "to"], RelKind::Fixed(Relation::NextTo)),
     (&["adjacent", "to"], RelKind::Fixed(Relation::NextTo)),
-    (&["up", "against"], RelKind::Fixed(Relation::NextTo)),
+    (&["up", "against"], RelKind::Fixed(Relation::Against)),
     (&["halfway", "between"], RelKind::Fixed(Relation::Between)),
     (&["away", "from"], RelKind::Away),
     (&["further", "from"], RelKind::Away),
@@ -1332,7 +1333,7 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     (&["near"], RelKind::Fixed(Relation::NextTo)),
     (&["nearby"], RelKind::Fixed(Relation::NextTo)),
     (&["alongside"], RelKind::Fixed(Relation::NextTo)),
-    (&["against"], RelKind::Fixed(Relation::NextTo)),
+    (&["against"], RelKind::Fixed(Relation::Against)),
     (&["under"], RelKind::Fixed(Relation::Under)),
     (&["underneath"], RelKind::Fixed(Relation::Under)),
     (&["below"], RelKind::Fixed(Relation::Under)),

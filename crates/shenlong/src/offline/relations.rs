@@ -21,8 +21,12 @@ pub(crate) enum Step {
 /// The steps so far, per variable.
 pub(crate) type Steps = BTreeMap<usize, Vec<Step>>;
 
-/// `X{k}.attribute` where earlier clauses left it: shifted by their translations.
+/// `X{k}.attribute` where earlier clauses left it: its points shifted by their
+/// translations (its size is its size wherever it is).
 pub(crate) fn boxed(k: usize, attribute: &str, steps: &Steps) -> Expr {
+    if attribute == "size" {
+        return var(k, attribute);
+    }
     let moves: Vec<Expr> = steps
         .get(&k)
         .into_iter()
@@ -63,6 +67,10 @@ pub(crate) enum Relation {
     /// else changed, when they overlap across that axis; else against its nearest face
     /// (`all the way to X2`, `right up to X2`).
     UpTo,
+    /// As [`Relation::UpTo`] but touching (`against X2`, `flush against X2`, `until it
+    /// touches X2`): a person who says "against" means contact, and touching is not
+    /// colliding.
+    Against,
     /// Between two targets.
     Between,
     /// Away from by an amount.
@@ -103,7 +111,7 @@ pub(crate) fn vector(
 ) -> Option<Expr> {
     let t = *targets.first()?;
     let b = |attribute: &str| boxed(t, attribute, steps);
-    let a = |attribute: &str| var(s, attribute);
+    let a = |attribute: &str| boxed(s, attribute, steps);
     let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
     let level = match level {
         Level::Floor => scaled_axis(sub(floor.clone(), dot(a("min"), axis(1))), 1),
@@ -138,13 +146,14 @@ pub(crate) fn vector(
             };
             sum([along_axis, centre(other), level])
         }
-        Relation::NextTo => next_to(s, t, steps, level, var(s, "center")),
+        Relation::NextTo => next_to(s, t, steps, level, boxed(s, "center", steps), GAP),
         Relation::NextToOn(surface) => next_to(
             s,
             t,
             steps,
             on_surface_level(s, t, surface, steps),
             boxed(surface, "center", steps),
+            GAP,
         ),
         Relation::BetweenOn(surface) => {
             let c = boxed(*targets.get(1)?, "center", steps);
@@ -153,7 +162,8 @@ pub(crate) fn vector(
             sum([along(mid.clone(), 0), along(mid, 2), level])
         }
         Relation::To => sum([centre(0), centre(2), level]),
-        Relation::UpTo => up_to(s, t, steps),
+        Relation::UpTo => up_to(s, t, steps, GAP),
+        Relation::Against => up_to(s, t, steps, 0.0),
         Relation::Between => {
             let c = boxed(*targets.get(1)?, "center", steps);
             let mid = sub(div(add(b("center"), c), num(2.0)), a("center"));
@@ -173,7 +183,7 @@ pub(crate) fn vector(
         Relation::Off => {
             // Beside the target, on the floor.
             let down = scaled_axis(sub(floor.clone(), dot(a("min"), axis(1))), 1);
-            let beside = next_to(s, t, steps, num(0.0), var(s, "center"));
+            let beside = next_to(s, t, steps, num(0.0), boxed(s, "center", steps), GAP);
             add(beside, down)
         }
         Relation::OtherSide => {
@@ -200,7 +210,7 @@ fn on_surface_level(s: usize, t: usize, surface: usize, steps: &Steps) -> Expr {
             dot(boxed(surface, "max", steps), axis(1)),
         ],
     );
-    scaled_axis(sub(bottom, dot(var(s, "min"), axis(1))), 1)
+    scaled_axis(sub(bottom, dot(boxed(s, "min", steps), axis(1))), 1)
 }
 
 /// Several objects put on one surface, side by side in the order given, centred on it
@@ -221,10 +231,13 @@ pub(crate) fn side_by_side(subjects: &[usize], k: usize, t: usize, steps: &Steps
             sub(dot(b("center"), axis(e)), div(total, num(2.0))),
             add(before, div(width(k), num(2.0))),
         );
-        scaled_axis(sub(at, dot(var(s, "center"), axis(e))), e)
+        scaled_axis(sub(at, dot(boxed(s, "center", steps), axis(e))), e)
     };
-    let centre = |e: usize| along(sub(b("center"), var(s, "center")), e);
-    let up = scaled_axis(sub(dot(b("max"), axis(1)), dot(var(s, "min"), axis(1))), 1);
+    let centre = |e: usize| along(sub(b("center"), boxed(s, "center", steps)), e);
+    let up = scaled_axis(
+        sub(dot(b("max"), axis(1)), dot(boxed(s, "min", steps), axis(1))),
+        1,
+    );
     // Along x when the surface is wider than deep, else along z.
     let q = step(sub(dot(b("size"), axis(0)), dot(b("size"), axis(2))));
     sum([
@@ -234,18 +247,18 @@ pub(crate) fn side_by_side(subjects: &[usize], k: usize, t: usize, steps: &Steps
     ])
 }
 
-/// The move along axis `e` that puts subject `s` [`GAP`] from the face of target `t` on
+/// The move along axis `e` that puts subject `s` `gap` from the face of target `t` on
 /// the side where `reference` lies (ties go to +).
-fn to_face(s: usize, t: usize, steps: &Steps, e: usize, reference: &Expr) -> Expr {
+fn to_face(s: usize, t: usize, steps: &Steps, e: usize, reference: &Expr, gap: f64) -> Expr {
     let b = |attribute: &str| boxed(t, attribute, steps);
-    let a = |attribute: &str| var(s, attribute);
+    let a = |attribute: &str| boxed(s, attribute, steps);
     let p = step(dot(sub(reference.clone(), b("center")), axis(e)));
     let plus = sub(
-        add(dot(b("max"), axis(e)), num(GAP)),
+        add(dot(b("max"), axis(e)), num(gap)),
         dot(a("min"), axis(e)),
     );
     let minus = sub(
-        sub(dot(b("min"), axis(e)), num(GAP)),
+        sub(dot(b("min"), axis(e)), num(gap)),
         dot(a("max"), axis(e)),
     );
     mul(
@@ -255,11 +268,11 @@ fn to_face(s: usize, t: usize, steps: &Steps, e: usize, reference: &Expr) -> Exp
 }
 
 /// Straight toward the target, along the horizontal axis they are apart on (in the
-/// target's proportions, as [`next_to`] chooses), until [`GAP`] from its face.
-fn up_to(s: usize, t: usize, steps: &Steps) -> Expr {
+/// target's proportions, as [`next_to`] chooses), until `gap` from its face.
+fn up_to(s: usize, t: usize, steps: &Steps, gap: f64) -> Expr {
     let b = |attribute: &str| boxed(t, attribute, steps);
-    let a = |attribute: &str| var(s, attribute);
-    let side = |e: usize| to_face(s, t, steps, e, &a("center"));
+    let a = |attribute: &str| boxed(s, attribute, steps);
+    let side = |e: usize| to_face(s, t, steps, e, &a("center"), gap);
     let dx = call("abs", vec![dot(sub(a("center"), b("center")), axis(0))]);
     let dz = call("abs", vec![dot(sub(a("center"), b("center")), axis(2))]);
     let q = step(sub(
@@ -287,21 +300,21 @@ fn up_to(s: usize, t: usize, steps: &Steps) -> Expr {
         mul(across.clone(), straight),
         mul(
             sub(num(1.0), across),
-            next_to(s, t, steps, num(0.0), a("center")),
+            next_to(s, t, steps, num(0.0), a("center"), gap),
         ),
     )
 }
 
 /// Against the face of the target nearest the object: its x faces when the object lies
 /// more to the side than in front or behind (in the target's own proportions), else its z
-/// faces; on each axis the face on the object's side (ties go to +); 5 cm gap; centred
+/// faces; on each axis the face on the object's side (ties go to +); `gap` from it; centred
 /// along that face; `level` added. Which face is chosen from where `reference` lies (the
 /// object's centre, or the centre of the surface both stand on).
-fn next_to(s: usize, t: usize, steps: &Steps, level: Expr, reference: Expr) -> Expr {
+fn next_to(s: usize, t: usize, steps: &Steps, level: Expr, reference: Expr, gap: f64) -> Expr {
     let b = |attribute: &str| boxed(t, attribute, steps);
-    let a = |attribute: &str| var(s, attribute);
+    let a = |attribute: &str| boxed(s, attribute, steps);
     let centre = |axis_index: usize| along(sub(b("center"), a("center")), axis_index);
-    let side = |e: usize| to_face(s, t, steps, e, &reference);
+    let side = |e: usize| to_face(s, t, steps, e, &reference, gap);
     let dx = call(
         "abs",
         vec![dot(sub(reference.clone(), b("center")), axis(0))],

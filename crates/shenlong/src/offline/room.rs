@@ -5,8 +5,9 @@ use super::amounts::FAR_METRES;
 use super::build::*;
 use crate::expr::Expr;
 
-/// Clearance kept from walls, in metres.
-pub const CLEARANCE: f64 = 0.02;
+/// Clearance kept from walls, in metres: none, as "against the wall" means touching it
+/// (and touching is not colliding).
+pub const CLEARANCE: f64 = 0.0;
 
 /// A place in the room.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -139,11 +139,11 @@ fn vague_amounts_have_documented_defaults() {
     // "a lot" is 1 m or up to the wall: the ottoman (x from −1.5) can go 1 m left.
     let (b, a) = run("living_room", "move the ottoman a lot to the left");
     assert!(close(moved(&b, &a, "ottoman"), [-1.0, 0.0, 0.0]));
-    // The floor lamp is 0.38 m from the left wall: "way over" stops 2 cm short of it.
+    // The floor lamp is 0.38 m from the left wall: "way over" stops against it.
     let (_, a) = run("living_room", "move the floor lamp way over to the left");
-    assert!((aabb(&a, "floor lamp").min.x + 2.98).abs() < 1e-9);
+    assert!((aabb(&a, "floor lamp").min.x + 3.0).abs() < 1e-9);
     let (_, a) = run("living_room", "push the ottoman all the way to the left");
-    assert!((aabb(&a, "ottoman").min.x + 2.98).abs() < 1e-9);
+    assert!((aabb(&a, "ottoman").min.x + 3.0).abs() < 1e-9);
 }
 
 #[test]
@@ -231,13 +231,13 @@ fn places_in_the_room() {
     let (_, a) = run("living_room", "push the plant into the back left corner");
     let b = aabb(&a, "plant");
     assert!(
-        (b.min.x + 2.98).abs() < 1e-9 && (b.min.z + 2.48).abs() < 1e-9,
+        (b.min.x + 3.0).abs() < 1e-9 && (b.min.z + 2.5).abs() < 1e-9,
         "{b:?}"
     );
     let (_, a) = run("living_room", "put the ottoman against the wall");
-    assert!((aabb(&a, "ottoman").min.x + 2.98).abs() < 1e-9);
+    assert!((aabb(&a, "ottoman").min.x + 3.0).abs() < 1e-9);
     let (_, a) = run("living_room", "move the ottoman to the back of the room");
-    assert!((aabb(&a, "ottoman").min.z + 2.48).abs() < 1e-9);
+    assert!((aabb(&a, "ottoman").min.z + 2.5).abs() < 1e-9);
 }
 
 #[test]
