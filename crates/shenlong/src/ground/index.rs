@@ -30,6 +30,10 @@ pub(crate) enum Tier {
     Synonym,
     /// A broader category (`seat` for 'armchair').
     Hypernym,
+    /// A word of its name the lexicon does not know, said alone (`the fern` for
+    /// 'Plant_Fern', `the till` for 'Till_POS'): a variety or a trade word people call
+    /// the object by. The weakest tier: only where nothing names the phrase otherwise.
+    NameWord,
 }
 
 /// How a broader word `hyper` names an object called `kind`: as its category where `kind`
@@ -41,6 +45,22 @@ fn hypernym_tier(kind: &str, hyper: &str) -> Tier {
         Some(first) if closed && first.len() >= 3 && hyper.len() >= 3 => Tier::Compound,
         _ => Tier::Hypernym,
     }
+}
+
+/// Whether a word of a name, unknown to the lexicon, can stand alone for the object: a
+/// word of three letters or more that is no colour, size, side or part of the room
+/// (which describe or place, never name).
+fn own_word(lexicon: &Lexicon, w: &str) -> bool {
+    use super::words;
+    w.len() >= 3
+        && w.chars().all(|c| c.is_ascii_alphabetic())
+        && !lexicon.knows(w)
+        && lexicon.singulars(w).iter().all(|s| !lexicon.knows(s))
+        && !words::is_colour(w)
+        && words::size_word(w).is_none()
+        && words::side_word(w).is_none()
+        && !words::is_place_noun(w)
+        && !words::is_determiner(w)
 }
 
 /// What a posting names: a group of objects that share every phrase but their own names
@@ -388,6 +408,14 @@ impl Builder {
                 }
             }
         }
+        // Words of the name the lexicon does not know: what people may call it by.
+        for kind in std::iter::once(&base.to_string()).chain(id.other.as_ref()) {
+            for w in kind.split(' ') {
+                if own_word(lexicon, w) {
+                    self.add(w, target, Tier::NameWord, Via::Name);
+                }
+            }
+        }
         descriptors.retain(|d| d.chars().any(char::is_alphabetic));
         self.index
             .descriptor_words
@@ -513,10 +541,22 @@ impl NameIndex {
         out
     }
 
+    /// The instance number of an object's name (`2` for `SM_Chair_02`).
+    #[must_use]
+    pub fn number(&self, object: usize) -> Option<u32> {
+        self.numbers.get(object).copied().flatten()
+    }
+
     /// The objects a name and an instance number name (`wood chair 1` for
     /// `Chair_Wood.001`, whose name reads as "wood chair"), when that is not a name itself.
+    /// By its kind too (`stool 2` for `Stool_Bar.002`) when every object of that kind has
+    /// a number: then the numbers are how they are told apart.
     pub fn numbered(&self, base: &str, number: u32) -> Option<Vec<usize>> {
-        let hit = self.lookup(base).filter(|h| h.tier == Tier::Name)?;
+        let hit = self.lookup(base).filter(|h| {
+            h.tier == Tier::Name
+                || (h.tier == Tier::Category
+                    && h.objects.iter().all(|&o| self.numbers[o].is_some()))
+        })?;
         let out: Vec<usize> = hit
             .objects
             .into_iter()

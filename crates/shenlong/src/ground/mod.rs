@@ -694,7 +694,11 @@ impl<'a> Reader<'a> {
             });
             // A plural reads as the plural of a name before it reads as a synonym that
             // happens to be written the same ("eggs" among WordNet's words for an egg).
-            let direct = index.lookup(&phrase);
+            // A possessive written without its apostrophe ("the teachers chair") reads as
+            // the name it is one letter from.
+            let direct = index
+                .lookup(&phrase)
+                .or_else(|| self.possessive_name(&pieces[..len]));
             let plural = self
                 .g
                 .lexicon
@@ -709,6 +713,12 @@ impl<'a> Reader<'a> {
                 (_, Some((singular, hit))) => Some((hit, true, Some(singular))),
                 _ => None,
             };
+            // A word of a name said alone is the object only where no noun follows it
+            // ("the dining chair" is no 'DiningTable', "the coffee grinder" no
+            // 'CoffeeMachine'), and only as written ("stick" is no typo of 'Books_Stack').
+            let chosen = chosen.filter(|(hit, _, _)| {
+                hit.tier != Tier::NameWord || (typo.is_none() && !self.noun_at(ends[len - 1]))
+            });
             if let Some((hit, plural, singular)) = chosen {
                 let via = hit.via.to_string();
                 let text = singular.unwrap_or(phrase);
@@ -810,6 +820,10 @@ impl<'a> Reader<'a> {
             Tier::Hypernym => (
                 ReasonKind::Hypernym,
                 format!("a '{via}' is a kind of {text}"),
+            ),
+            Tier::NameWord => (
+                ReasonKind::Variant,
+                format!("\"{text}\" is a word of the name '{via}'"),
             ),
         };
         let mut literal = self.g.index.lookup_literal(&text, tier >= Tier::Category);
@@ -979,6 +993,35 @@ impl<'a> Reader<'a> {
                 Some(Kind::Punct('%' | '°'))
             ),
         }
+    }
+
+    /// The hit of a name read with a possessive's `s` dropped from one word before the
+    /// last ("teachers chair" for 'teacher chair'), at the name or category tier only.
+    fn possessive_name(&self, pieces: &[&str]) -> Option<index::Hit<'_>> {
+        if pieces.len() < 2 {
+            return None;
+        }
+        (0..pieces.len() - 1).find_map(|i| {
+            let stem = pieces[i].strip_suffix('s').filter(|s| s.len() >= 3)?;
+            let mut words: Vec<&str> = pieces.to_vec();
+            words[i] = stem;
+            self.g
+                .index
+                .lookup(&words.join(" "))
+                .filter(|h| h.tier <= Tier::Category)
+        })
+    }
+
+    /// Whether token `k` is a noun: one the lexicon knows (or the plural of one), or a word
+    /// of an object's name.
+    fn noun_at(&self, k: usize) -> bool {
+        let Some(w) = self.word(k).filter(|w| !w.is_empty()) else {
+            return false;
+        };
+        let lexicon = self.g.lexicon;
+        lexicon.knows(w)
+            || lexicon.singulars(w).iter().any(|s| lexicon.knows(s))
+            || self.g.index.lookup(w).is_some()
     }
 
     fn head_follows(&self, k: usize) -> bool {
@@ -1343,6 +1386,30 @@ impl<'a> Reader<'a> {
         let (start, end) = (range.start, range.end);
         let phrase = self.span_text(&(start..end));
         if let Some(o) = ordinal {
+            // Numbered 1 to n (`SM_Chair_01` … `SM_Chair_04`): "the second chair" is the
+            // one numbered 2, as its name says.
+            let mut numbers: Vec<Option<u32>> =
+                objects.iter().map(|&x| self.g.index.number(x)).collect();
+            numbers.sort_unstable();
+            let counted = numbers
+                .iter()
+                .enumerate()
+                .all(|(k, n)| *n == u32::try_from(k + 1).ok());
+            if objects.len() > 1 && counted {
+                let picked = objects
+                    .iter()
+                    .copied()
+                    .find(|&x| self.g.index.number(x) == u32::try_from(o).ok());
+                if let Some(picked) = picked {
+                    objects = vec![picked];
+                    reasons.push(modifier(&format!(
+                        "\"{}\" picked {}, numbered {o} of 1 to {}",
+                        ordinal_word(o),
+                        self.name(picked),
+                        numbers.len()
+                    )));
+                }
+            }
             if objects.len() > 1 {
                 return Err(GroundError::NoPick {
                     reason: format!(

@@ -73,6 +73,13 @@ pub(crate) fn tokenize(query: &str) -> Vec<Token> {
                 }
             }
         } else {
+            // A typo of a word the reader knows is read as that word ("degress",
+            // "foward"); real words never are.
+            let w = if is_a_word(&w) {
+                w
+            } else {
+                correct(&w).map_or(w, str::to_string)
+            };
             tokens.push(Token::Word(w));
         }
     };
@@ -309,6 +316,17 @@ const KNOWN: &[&str] = &[
     "around",
 ];
 
+/// Whether a word is one the reader or the lexicon knows as it is (a verb, a direction, a
+/// unit, an object noun): never read as a typo of another ("stick" is not "stack").
+fn is_a_word(w: &str) -> bool {
+    verb(w).is_some()
+        || direction(w).is_some()
+        || length_unit(w).is_some()
+        || angle_unit(w).is_some()
+        || number_word(w).is_some()
+        || crate::ground::Lexicon::builtin().knows(w)
+}
+
 /// The known word one edit (insertion, deletion, substitution, swap of neighbours) from a
 /// word of four letters or more, when exactly one is.
 pub(crate) fn correct(w: &str) -> Option<&'static str> {
@@ -328,9 +346,17 @@ pub(crate) fn correct(w: &str) -> Option<&'static str> {
             strsim::osa_distance(w, k) == 1
         }
     };
-    let mut near = KNOWN.iter().filter(close);
-    let first = near.next()?;
-    near.next().is_none().then_some(*first)
+    let near: Vec<&str> = KNOWN.iter().filter(close).copied().collect();
+    match near.as_slice() {
+        [one] => Some(one),
+        // Typing rarely gets the first letter wrong: "foward" is "forward", not "toward".
+        _ => {
+            let first = w.chars().next();
+            let mut same = near.iter().filter(|k| k.chars().next() == first);
+            let one = same.next()?;
+            same.next().is_none().then_some(*one)
+        }
+    }
 }
 
 /// Real words one edit from a known word, which must never be read as its typo ("light
@@ -381,5 +407,11 @@ mod tests {
         assert_eq!(correct("love"), None);
         assert_eq!(correct("clockwsie"), Some("clockwise"));
         assert_eq!(correct("forwrad"), Some("forward"));
+        assert_eq!(correct("foward"), Some("forward"));
+        assert_eq!(correct("degress"), Some("degrees"));
+        assert_eq!(
+            tokenize("turn X1 90 degress")[3],
+            Token::Word("degrees".into())
+        );
     }
 }
