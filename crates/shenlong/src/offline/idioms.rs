@@ -7,6 +7,9 @@
 //! | `30 cm towards the back wall`, `half a metre toward the front of the room`, `towards the right wall until it hits something` | `30 cm back`, `half a metre forward`, `right until it hits something` (an amount along the direction of that wall) |
 //! | `all the way to X2`, `all the way up to X2`, `right up to X2`, `up to X2` | straight toward X2 until 5 cm from it (`upto X2`) |
 //! | `flush against the left wall`, `flush with X2` | `against …` |
+//! | `right up against X2` | `up against X2` (`right` says how close, not where) |
+//! | `until it touches X2`, `until it's flush against X2`, `till it hits X2`, `until they meet X2` | `against X2` (with a direction before it: along that direction, checked) |
+//! | `all the way to the left wall`, `all the way back to the wall` | `against the left wall`, `against the back wall` |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
 
 use super::amounts;
@@ -27,6 +30,9 @@ fn side_direction(w: &str) -> Option<&'static str> {
 /// Reads the clause's idioms as the constructs they stand for.
 pub(crate) fn rewrite(c: &mut Clause) {
     towards_a_wall_by_an_amount(c);
+    all_the_way_to_a_wall(c);
+    right_up_against(c);
+    until_touching(c);
     all_the_way_to(c);
     flush(c);
     out_from(c);
@@ -118,5 +124,74 @@ fn out_from(c: &mut Clause) {
             c.mark(i + 2..i + words.len());
             return;
         }
+    }
+}
+
+/// `all the way (DIR) to the (SIDE) wall` → `against the SIDE wall`, the side from the
+/// direction where the wall has none (`all the way back to the wall`).
+fn all_the_way_to_a_wall(c: &mut Clause) {
+    let Some(i) = c.find(&["all", "the", "way"]) else {
+        return;
+    };
+    let mut k = i + 3;
+    let direction = c.word(k).and_then(side_direction);
+    if direction.is_some() || c.words_at(k, &["over"]) || c.words_at(k, &["across"]) {
+        k += 1;
+    }
+    if !c.words_at(k, &["to", "the"]) {
+        return;
+    }
+    let side = c.word(k + 2).and_then(side_direction);
+    let wall = if side.is_some() { k + 3 } else { k + 2 };
+    if !c.words_at(wall, &["wall"]) {
+        return;
+    }
+    let Some(side) = side.or(direction) else {
+        return;
+    };
+    // The words become `against the SIDE wall` in the last four places before `wall`'s
+    // end; the rest is read.
+    c.mark(i..wall - 3);
+    for (at, word) in [(wall - 3, "against"), (wall - 2, "the"), (wall - 1, side)] {
+        c.replace(at, word);
+    }
+}
+
+/// `right up against X2` → `up against X2`.
+fn right_up_against(c: &mut Clause) {
+    if let Some(i) = c.find(&["right", "up", "against"]) {
+        c.mark(i..i + 1);
+    }
+}
+
+/// `until it touches X2`, `until it's flush against X2`, `till it hits X2` → `against X2`.
+fn until_touching(c: &mut Clause) {
+    let one_of =
+        |c: &Clause, k: usize, options: &[&str]| options.iter().any(|w| c.words_at(k, &[w]));
+    let Some(i) = (0..c.len()).find(|&i| one_of(c, i, &["until", "till", "til"])) else {
+        return;
+    };
+    let mut k = i + 1;
+    if one_of(c, k, &["it", "they"]) {
+        k += 1;
+        if one_of(c, k, &["is", "are"]) {
+            k += 1;
+        }
+    } else if one_of(c, k, &["it's", "its", "they're"]) {
+        k += 1;
+    }
+    if c.words_at(k, &["flush"]) {
+        k += 1;
+    }
+    let touching = [
+        "against", "touches", "touching", "touch", "hits", "reaches", "meets", "with",
+    ];
+    if k == i + 1 || !one_of(c, k, &touching) {
+        return;
+    }
+    let target = k + 1 + usize::from(c.words_at(k + 1, &["the"]));
+    if matches!(c.token(target), Some(super::words::Token::Variable(_))) {
+        c.mark(i..k);
+        c.replace(k, "against");
     }
 }

@@ -119,6 +119,54 @@ impl<'s> Known<'s> {
         Some(runs(scene, boxes, object)[k]).filter(|d| d.is_finite())
     }
 
+    /// Whether target `t` lies straight along horizontal axis `e` with `sign` from
+    /// subject `s`, so that moving that way makes them touch: ahead of it (or touching)
+    /// and overlapping it across. Nothing known: taken as so.
+    ///
+    /// # Errors
+    /// One line saying why not.
+    pub(crate) fn straight_ahead(
+        &self,
+        s: usize,
+        t: usize,
+        e: usize,
+        sign: f64,
+    ) -> Result<(), String> {
+        let Some((scene, objects)) = self.scene else {
+            return Ok(());
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return Ok(());
+        };
+        let (sa, sb) = (scene.objects[a].world_aabb(), scene.objects[b].world_aabb());
+        let ahead = if sign > 0.0 {
+            sb.min[e] - sa.max[e]
+        } else {
+            sa.min[e] - sb.max[e]
+        };
+        let across = 2 - e;
+        let overlap = sa.max[across].min(sb.max[across]) - sa.min[across].max(sb.min[across]);
+        let way = match (e, sign > 0.0) {
+            (0, false) => "left",
+            (0, true) => "right",
+            (_, false) => "back",
+            (_, true) => "forward",
+        };
+        if ahead < -1e-6 {
+            return Err(format!(
+                "'{}' is not {way} of '{}': moving it {way} never reaches it",
+                scene.objects[b].name, scene.objects[a].name
+            ));
+        }
+        if overlap <= 1e-6 {
+            return Err(format!(
+                "'{}' is not straight {way} of '{}': moving it {way} passes it by",
+                scene.objects[b].name, scene.objects[a].name
+            ));
+        }
+        Ok(())
+    }
+
     /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
     /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
     /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the

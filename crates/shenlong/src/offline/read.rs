@@ -769,6 +769,19 @@ impl<'a> Reader<'a> {
             }
             let targets: Vec<usize> = r.targets.iter().map(|(_, v)| *v).collect();
             let relation = match r.kind {
+                // "slide X1 right until it touches X2", "push X1 left against X2": along
+                // that direction, when X2 lies straight that way.
+                RelKind::Fixed(Relation::Against) => {
+                    match self.direction_before(c, r.range.start) {
+                        Some((e, sign)) => {
+                            for &s in &subjects {
+                                self.facts.known.straight_ahead(s, targets[0], e, sign)?;
+                            }
+                            Relation::AgainstAlong(e, sign)
+                        }
+                        None => Relation::Against,
+                    }
+                }
                 RelKind::Fixed(rel) => rel,
                 RelKind::Away => {
                     Relation::Away(length_value(amounts::length(c, true)).unwrap_or(DEFAULT_METRES))
@@ -896,6 +909,24 @@ impl<'a> Reader<'a> {
         Ok(out)
     }
 
+    /// The one horizontal direction word before `end` not read yet (`right`, `to the
+    /// left`, `forward`), read; `None` when there is none or more than one.
+    fn direction_before(&self, c: &mut Clause, end: usize) -> Option<(usize, f64)> {
+        let found: Vec<(usize, (usize, f64))> = (0..end)
+            .filter(|&i| c.free(i))
+            .filter_map(|i| Some((i, words::direction(c.word(i)?)?)))
+            .collect();
+        match found.as_slice() {
+            [(i, d)] if d.0 != 1 => {
+                let (i, d) = (*i, *d);
+                c.mark(i..i + 1);
+                mark_to_the(c, i);
+                Some(d)
+            }
+            _ => None,
+        }
+    }
+
     /// The move of variable `s` along axis `e` (with `sign`) by `amount`.
     fn along(
         &self,
@@ -957,7 +988,11 @@ impl<'a> Reader<'a> {
         self.last_targets = targets.to_vec();
         let near = match (relation, targets) {
             (
-                Relation::NextTo | Relation::NextToOn(_) | Relation::Side(..) | Relation::Against,
+                Relation::NextTo
+                | Relation::NextToOn(_)
+                | Relation::Side(..)
+                | Relation::Against
+                | Relation::AgainstAlong(..),
                 &[t, ..],
             ) => Some(Near::Beside(t)),
             (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),

@@ -71,6 +71,9 @@ pub(crate) enum Relation {
     /// touches X2`): a person who says "against" means contact, and touching is not
     /// colliding.
     Against,
+    /// Along (axis, sign) until touching the target (`slide X1 right until it touches
+    /// X2`): the reader has checked that the target lies straight that way.
+    AgainstAlong(usize, f64),
     /// Between two targets.
     Between,
     /// Away from by an amount.
@@ -164,6 +167,14 @@ pub(crate) fn vector(
         Relation::To => sum([centre(0), centre(2), level]),
         Relation::UpTo => up_to(s, t, steps, GAP),
         Relation::Against => up_to(s, t, steps, 0.0),
+        Relation::AgainstAlong(e, sign) => {
+            let gap = if sign > 0.0 {
+                sub(dot(b("min"), axis(e)), dot(a("max"), axis(e)))
+            } else {
+                sub(dot(b("max"), axis(e)), dot(a("min"), axis(e)))
+            };
+            scaled_axis(gap, e)
+        }
         Relation::Between => {
             let c = boxed(*targets.get(1)?, "center", steps);
             let mid = sub(div(add(b("center"), c), num(2.0)), a("center"));

@@ -478,3 +478,30 @@ fn possessives_without_apostrophes_and_typos_of_the_readers_words() {
             < 1e-6
     );
 }
+
+#[test]
+fn until_it_touches_and_all_the_way_to_a_wall() {
+    let s = study();
+    let a = run(
+        &s,
+        "slide the reading chair left until it touches the wardrobe",
+    );
+    only_moved(&s, &a, &[("Chair_Reading", [-0.3, 0.0, 0.0])]);
+    let a = run(
+        &s,
+        "slide the reading chair to the left until it's flush against the wardrobe",
+    );
+    only_moved(&s, &a, &[("Chair_Reading", [-0.3, 0.0, 0.0])]);
+    let a = run(&s, "push the reading chair right up against the wardrobe");
+    only_moved(&s, &a, &[("Chair_Reading", [-0.3, 0.0, 0.0])]);
+    // The wardrobe is not to the chair's right: refused, never moved the other way.
+    refused(
+        &s,
+        "slide the reading chair right until it touches the wardrobe",
+        &["Wardrobe", "never reaches"],
+    );
+    let a = run(&s, "push the pouf all the way to the left wall");
+    only_moved(&s, &a, &[("Pouf", [-2.75, 0.0, 0.0])]);
+    let a = run(&s, "slide the pouf all the way back to the wall");
+    only_moved(&s, &a, &[("Pouf", [0.0, 0.0, -2.75])]);
+}
