@@ -210,6 +210,10 @@ mod tests {
         assert_eq!(r("sofa").base, "sofa");
         assert_eq!(r("chair 3").number, Some(3));
         assert_eq!(r("chair 3").base, "chair");
+        // A code (one letter, then digits) is one word, not a letter and an instance
+        // number.
+        let a5 = r("Notebook_A5");
+        assert_eq!((a5.base.as_str(), a5.number), ("a5 notebook", None));
     }
 
     #[test]

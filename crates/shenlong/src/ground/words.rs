@@ -111,10 +111,22 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
 pub fn normalize(name: &str) -> String {
     let mut spaced = String::with_capacity(name.len() + 4);
     let mut prev: Option<char> = None;
+    // Letters since the word began: a single letter before digits is a code (`A5`).
+    let mut letters = 0usize;
     for c in name.trim().chars() {
         let split_camel = prev.is_some_and(|p| p.is_lowercase()) && c.is_uppercase();
-        let split_digit = prev.is_some_and(|p| p.is_alphabetic()) && c.is_ascii_digit()
-            || prev.is_some_and(|p| p.is_ascii_digit()) && c.is_alphabetic();
+        let split_digit =
+            prev.is_some_and(|p| p.is_alphabetic()) && c.is_ascii_digit() && letters != 1
+                || prev.is_some_and(|p| p.is_ascii_digit()) && c.is_alphabetic();
+        if c.is_alphabetic() {
+            letters = if split_camel || prev.is_some_and(|p| !p.is_alphabetic()) {
+                1
+            } else {
+                letters + 1
+            };
+        } else if !c.is_ascii_digit() {
+            letters = 0;
+        }
         if split_camel || split_digit {
             spaced.push(' ');
         }

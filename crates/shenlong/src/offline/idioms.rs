@@ -10,6 +10,7 @@
 //! | `right up against X2` | `up against X2` (`right` says how close, not where) |
 //! | `until it touches X2`, `until it's flush against X2`, `till it hits X2`, `until they meet X2` | `against X2` (with a direction before it: along that direction, checked) |
 //! | `all the way to the left wall`, `all the way back to the wall` | `against the left wall`, `against the back wall` |
+//! | `point X1 at X2`, `aim X1 at X2`, `so it points at X2`, `pointing towards X2` | `turn X1 face X2`, `so it faces X2`, `facing X2` |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
 
 use super::amounts;
@@ -33,6 +34,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     all_the_way_to_a_wall(c);
     right_up_against(c);
     until_touching(c);
+    pointing(c);
     all_the_way_to(c);
     flush(c);
     out_from(c);
@@ -193,5 +195,43 @@ fn until_touching(c: &mut Clause) {
     if matches!(c.token(target), Some(super::words::Token::Variable(_))) {
         c.mark(i..k);
         c.replace(k, "against");
+    }
+}
+
+/// Pointing is facing: `point X1 at X2` / `aim X1 towards X2` → `turn X1 face X2`; `points
+/// at`, `pointing at`, `point at` → `faces`, `facing`, `face`.
+fn pointing(c: &mut Clause) {
+    let at = ["at", "towards", "toward"];
+    let one_of =
+        |c: &Clause, k: usize, options: &[&str]| options.iter().any(|w| c.words_at(k, &[w]));
+    for i in 0..c.len() {
+        let Some(w) = c.word(i).filter(|_| c.free(i)) else {
+            continue;
+        };
+        let facing = match w {
+            "point" | "aim" => "face",
+            "points" | "aims" => "faces",
+            "pointing" | "aiming" | "pointed" | "aimed" => "facing",
+            _ => continue,
+        };
+        if one_of(c, i + 1, &at) {
+            // `faces at X2` reads as `faces the X2`: the article is what the reader of
+            // facing skips before its target.
+            c.replace(i, facing);
+            c.replace(i + 1, "the");
+            return;
+        }
+        // "point X1 (and X2) at X2": the verb, its objects, then where.
+        let mut k = i + 1;
+        while matches!(c.token(k), Some(super::words::Token::Variable(_)))
+            || c.words_at(k, &["and"])
+        {
+            k += 1;
+        }
+        if k > i + 1 && i == 0 && one_of(c, k, &at) {
+            c.replace(i, "turn");
+            c.replace(k, "face");
+            return;
+        }
     }
 }
