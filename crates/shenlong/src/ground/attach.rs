@@ -84,7 +84,13 @@ impl Reader<'_> {
                 _ => false,
             });
         // Where it is taken from ("the cups off the table") is never where it goes.
-        let source = matches!(post, Some((Post::Relation(Relation::Off, _), _)));
+        let source = matches!(
+            post,
+            Some((
+                Post::Relation(Relation::Off | Relation::From, _) | Post::FromObject(_),
+                _
+            ))
+        );
         let describes = !rest_of_destination
             && post.as_ref().is_some_and(|(_, p_end)| {
                 source
@@ -208,6 +214,10 @@ impl Reader<'_> {
                 let picked = select::nth(self.scene, &objects, o, direction)
                     .ok_or_else(|| self.too_close(&at, &objects, words))?;
                 objects = vec![picked];
+            }
+            Post::FromObject(t) => {
+                objects = select::by_relation(self.scene, &objects, Relation::From, &[t], wanted)
+                    .ok_or_else(|| self.not_there(head, &objects, text))?;
             }
             Post::Relation(relation, targets) => {
                 objects = select::by_relation(self.scene, &objects, relation, &targets, wanted)

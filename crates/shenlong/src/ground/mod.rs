@@ -176,6 +176,9 @@ enum Post {
     Side(words::Axis, f64),
     Middle,
     From(Direction),
+    /// `from X`: an order from it after an ordinal ("the first chair from the window"),
+    /// else where it is taken from ("the mug from the back counter").
+    FromObject(usize),
     Relation(Relation, Vec<usize>),
     /// A place in the room: "in the corner", "in the middle of the room", "on the wall".
     Room(select::RoomPlace),
@@ -1264,6 +1267,13 @@ impl<'a> Reader<'a> {
         } else {
             None
         };
+        let post = post.map(|(p, p_end)| match p {
+            Post::FromObject(t) if ordinal.is_some() => {
+                let c = self.scene.objects[t].world_aabb().center();
+                (Post::From(Direction::From(c)), p_end)
+            }
+            p => (p, p_end),
+        });
         let picks = (objects.len() != wanted && !group) || ordinal.is_some() || head.generic;
         let selectors_first = !sides.is_empty() || !sizes.is_empty() || middle;
         let post = self.attach(
@@ -1663,7 +1673,8 @@ impl<'a> Reader<'a> {
         if w(j) == "from" {
             if w(j + 1) == "the" {
                 if let Some((axis, sign)) = words::side_word(w(j + 2)) {
-                    if w(j + 3) != "of" {
+                    // "from the left", not "from the left table".
+                    if w(j + 3) != "of" && !self.head_follows(j + 3) {
                         let mut end = j + 3;
                         if matches!(w(end), "side" | "end" | "wall") {
                             end += 1;
@@ -1674,8 +1685,7 @@ impl<'a> Reader<'a> {
             }
             if let Some((targets, end)) = self.nested_np(j + 1, bound)? {
                 if let [one] = targets.as_slice() {
-                    let c = self.scene.objects[*one].world_aabb().center();
-                    return Ok(Some((Post::From(Direction::From(c)), end)));
+                    return Ok(Some((Post::FromObject(*one), end)));
                 }
             }
             return Ok(None);

@@ -26,6 +26,9 @@ pub(crate) enum Relation {
     /// Resting on it, said as where it is taken from (`take the cups off the table`):
     /// never where it goes, so it always picks or checks.
     Off,
+    /// Resting on it or inside it, said as where it comes from (`the mug from the back
+    /// counter`, `the milk from the fridge`): never where it goes.
+    From,
     /// Carrying it (`the desk with the lamp on it`).
     Carries,
     /// Inside its box (`the apple in the fridge`).
@@ -57,7 +60,7 @@ impl Relation {
     pub fn can_be_a_destination(self) -> bool {
         !matches!(
             self,
-            Self::Nearest | Self::Farthest | Self::Carries | Self::Off
+            Self::Nearest | Self::Farthest | Self::Carries | Self::Off | Self::From
         )
     }
 }
@@ -278,7 +281,12 @@ pub(crate) fn by_relation(
     }
     if matches!(
         relation,
-        Relation::On | Relation::Off | Relation::Under | Relation::Carries | Relation::Inside
+        Relation::On
+            | Relation::Off
+            | Relation::From
+            | Relation::Under
+            | Relation::Carries
+            | Relation::Inside
     ) {
         // Membership relations: all that stand in it, when that is the number wanted.
         return (fits.len() == need || need == usize::MAX)
@@ -299,6 +307,12 @@ pub(crate) fn by_relation(
     Some(fits[..need].iter().map(|f| f.0).collect())
 }
 
+/// Whether box `a`'s centre is inside box `b`.
+fn inside(a: &Aabb, b: &Aabb) -> bool {
+    let p = a.center();
+    p.cmpge(b.min).all() && p.cmple(b.max).all()
+}
+
 /// Whether `upper` rests on `lower`: its support, or its bottom on the other's top over it.
 fn rests_on(scene: &Scene, (upper, ub): (usize, &Aabb), (lower, lb): (usize, &Aabb)) -> bool {
     scene.objects[upper].support == Some(lower)
@@ -316,10 +330,8 @@ fn relation_key(
     let key = match relation {
         Relation::On | Relation::Off => rests_on(scene, (c, cb), (t, tb)).then_some(0.0)?,
         Relation::Carries => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
-        Relation::Inside => {
-            let p = cb.center();
-            (p.cmpge(tb.min).all() && p.cmple(tb.max).all()).then_some(0.0)?
-        }
+        Relation::Inside => inside(cb, tb).then_some(0.0)?,
+        Relation::From => (rests_on(scene, (c, cb), (t, tb)) || inside(cb, tb)).then_some(0.0)?,
         Relation::Under => (footprint_gap(cb, tb) <= 0.0
             && cb.center().y < tb.center().y
             && scene.objects[c].support != Some(t))

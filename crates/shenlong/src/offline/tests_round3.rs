@@ -505,3 +505,22 @@ fn until_it_touches_and_all_the_way_to_a_wall() {
     let a = run(&s, "slide the pouf all the way back to the wall");
     only_moved(&s, &a, &[("Pouf", [0.0, 0.0, -2.75])]);
 }
+
+#[test]
+fn where_a_thing_comes_from_says_which() {
+    let s = study();
+    let a = run(&s, "put the cup from the left table on the pouf");
+    let i = s.find("Cup.000").unwrap();
+    assert!((a.objects[i].world_aabb().min.y - 0.4).abs() < 1e-6);
+    for other in ["Cup.001", "Cup.002"] {
+        assert_eq!(moved(&s, &a, other), DVec3::ZERO);
+    }
+    refused(
+        &s,
+        "put the cup from the right table on the pouf",
+        &["Cup.001", "Cup.002"],
+    );
+    // After an ordinal, "from" is still where the counting starts.
+    let a = run(&s, "move the first cup from the left 10 cm back");
+    only_moved(&s, &a, &[("Cup.000", [0.0, 0.0, -0.1])]);
+}
