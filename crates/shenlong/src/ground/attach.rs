@@ -91,9 +91,12 @@ impl Reader<'_> {
                 _
             ))
         );
+        // "the thing on the cupboard", "everything on the shelf": a generic noun says
+        // nothing of which without its modifier, so the modifier is never a destination.
         let describes = !rest_of_destination
             && post.as_ref().is_some_and(|(_, p_end)| {
                 source
+                    || head.generic
                     || self.clause_goes_on(*p_end)
                     || self.verb_takes_no_place(start)
                     || destination

@@ -773,7 +773,16 @@ impl<'a> Reader<'a> {
             }
         }
         let w = self.words[k].as_deref().unwrap_or("");
-        if matches!(w, "everything" | "things" | "stuff" | "items" | "objects") {
+        // "the thing on the cupboard" is one object; "everything on the shelf", "whatever's
+        // on top of the bookcase" all that the modifier names.
+        let plural = match w {
+            "everything" | "things" | "stuff" | "items" | "objects" | "whatever" | "whatever's" => {
+                true
+            }
+            "thing" | "item" | "object" => false,
+            _ => return None,
+        };
+        {
             let all: Vec<usize> = (0..self.scene.objects.len()).collect();
             return Some(Head {
                 range: k..k + 1,
@@ -781,7 +790,7 @@ impl<'a> Reader<'a> {
                 objects: all,
                 generic: true,
                 tier: Tier::Category,
-                plural: true,
+                plural,
                 text: "thing".into(),
                 reason: Reason {
                     kind: ReasonKind::Group,
@@ -790,7 +799,6 @@ impl<'a> Reader<'a> {
                 typo: None,
             });
         }
-        None
     }
 
     #[allow(clippy::too_many_arguments)]

@@ -524,3 +524,21 @@ fn where_a_thing_comes_from_says_which() {
     let a = run(&s, "move the first cup from the left 10 cm back");
     only_moved(&s, &a, &[("Cup.000", [0.0, 0.0, -0.1])]);
 }
+
+#[test]
+fn a_thing_is_what_its_modifier_names() {
+    let s = study();
+    let a = run(&s, "move the thing on the shelf 10 cm left");
+    only_moved(&s, &a, &[("Novel", [-0.1, 0.0, 0.0])]);
+    let a = run(&s, "move whatever's on the shelf onto the pouf");
+    let i = s.find("Novel").unwrap();
+    assert!((a.objects[i].world_aabb().min.y - 0.4).abs() < 1e-6);
+    // Two things on the desk: which is not said.
+    refused(
+        &s,
+        "move the thing on the teacher desk 10 cm left",
+        &["Textbook", "Book_Exercise"],
+    );
+    // With no modifier, a thing is nothing in particular.
+    refused(&s, "move the thing 10 cm left", &[]);
+}
