@@ -298,12 +298,12 @@ _scene = "ue_loft_studio"
 # couch z[-2.925,-1.975] +0.3 -> z[-2.625,-1.675]; rug starts at z -1.6
 Q(S, "move", "hey can you move SM_Couch_01 30cm forward", mv("SM_Couch_01", [0, 0, 0.3]))
 # blue mug x[-0.35,-0.25] -0.1 -> x[-0.45,-0.35], still on the table (x >= -0.6)
-Q(S, "move", "move the blue mug 10 cm to the left pls", mv("Mug_Blue", [-0.1, 0, 0]))
+Q(S, "move", "move the bleu mug 10 cm to the left pls", mv("Mug_Blue", [-0.1, 0, 0]))
 # shelf R z[0.1,1.1] -0.4 -> z[-0.3,0.7], the vase rides along
 Q(S, "move", "could you move the right shelf unit 40 cm towards the back wall",
   *carry("ShelfUnit_R", [0, 0, -0.4]))
 # table x[-0.6,0.6] +0.15 -> x[-0.45,0.75], centre 0.15 still over the rug; mugs + gamepad ride along
-Q(S, "move", "move the coffee table 15cm right thx", *carry("CoffeeTable_Walnut", [0.15, 0, 0]))
+Q(S, "move", "move the cofee table 15cm right thx", *carry("CoffeeTable_Walnut", [0.15, 0, 0]))
 # lamp .002 x[1.3,1.7] +0.3048 -> x[1.6048,2.0048]
 Q(S, "move", "move Lamp_Floor.002 a foot to the right", mv("Lamp_Floor.002", [FT, 0, 0], 0.02))
 # recliner z[-1.325,-0.475] -0.25 -> z[-1.575,-0.725]
@@ -311,7 +311,7 @@ Q(S, "move", "budge the recliner 25 cm back", mv("SM_Recliner_01", [0, 0, -0.25]
 # crate 03 x[-2.25,-1.75] +0.3 -> x[-1.95,-1.45]; left speaker starts at x -1.425
 Q(S, "move", "move BP_Crate_03 30 cm to the right", mv("BP_Crate_03", [0.3, 0, 0]))
 # vase z[0.525,0.675] +0.2 -> z[0.725,0.875], still on the shelf top (z <= 1.1)
-Q(S, "move", "slide the green vase 20 cm forward", mv("Vase_Green", [0, 0, 0.2]))
+Q(S, "move", "slide the green vase 20 cm foward", mv("Vase_Green", [0, 0, 0.2]))
 # left speaker x[-1.425,-1.175] -0.1 -> x[-1.525,-1.275]; crate 03 ends at x -1.75
 Q(S, "move", "move the left speaker 10 cm to the left", mv("SM_Speaker_L", [-0.1, 0, 0]))
 # console x[-0.9,0.9] -0.2 -> x[-1.1,0.7] (left speaker starts -1.175), the TV rides along
@@ -321,7 +321,7 @@ Q(S, "move", "move Books_Stack.001 10cm back", mv("Books_Stack.001", [0, 0, -0.1
 # lamp .001 z[-2.8,-2.4] +0.2 -> z[-2.6,-2.2]; couch starts at x -1.1 (lamp ends -1.3)
 Q(S, "move", "I'd like Lamp_Floor.001 moved 20 cm forward", mv("Lamp_Floor.001", [0, 0, 0.2]))
 # -- rotations / scale
-Q(S, "turn", "turn the beanbag 90 degrees clockwise as seen from above", rot("Beanbag_Grey", -90), still("Beanbag_Grey"))
+Q(S, "turn", "turn the beanbag 90 degress clockwise as seen from above", rot("Beanbag_Grey", -90), still("Beanbag_Grey"))
 # recliner 0.85 square at 90+45 deg -> half 0.601: x[-2.801,-1.599] z[-1.501,-0.299]; side table starts z -0.025
 Q(S, "turn", "rotate SM_Recliner_01 45 degrees counterclockwise", rot("SM_Recliner_01", 45), still("SM_Recliner_01"))
 # gamepad 0.16x0.1 turned 90 -> x[0,0.1] z[-1.13,-0.97]; still on the table, clear of the mugs
@@ -329,7 +329,7 @@ Q(S, "turn", "rotate the gamepad 90°", rot("Controller_Gamepad", 90, True), sti
 Q(S, "turn", "would you mind turning the recliner 90 degrees clockwise as seen from above",
   rot("SM_Recliner_01", -90), still("SM_Recliner_01"))
 # ficus x1.2 -> 0.66 x 1.56: x[3.17,3.83] z[-2.83,-2.17]
-Q(S, "scale", "make the ficus 20% bigger", scl("Plant_Ficus.003", 1.2), still("Plant_Ficus.003"))
+Q(S, "scale", "make the ficus 20% biger pls", scl("Plant_Ficus.003", 1.2), still("Plant_Ficus.003"))
 # -- holds
 # table -0.3 -> x[-0.9,0.3], centre -0.3 still over the rug x[-1,1]; recliner ends at x -1.775
 Q(C, "hold", "move the coffee table 30 cm to the left but leave the rug alone",
@@ -345,7 +345,7 @@ Q(C, "hold", "move the media console 20cm right but leave the TV where it is",
 Q(C, "hold", "move the couch 15 cm to the left but don't touch the floor lamps",
   mv("SM_Couch_01", [-0.15, 0, 0]), unch(["Lamp_Floor.001", "Lamp_Floor.002"]))
 # -- multi / swaps
-Q(C, "multi", "swap the blue mug and the red mug", *swap("Mug_Blue", "Mug_Red"))
+Q(C, "multi", "swap the blue mug and the red mug thx", *swap("Mug_Blue", "Mug_Red"))
 # couch +0.2 -> centre (0,-2.25); recliner centre (-2.2,-0.9) -> yaw 121.5 deg: half 0.584,
 #   x[-2.784,-1.616] z[-1.484,-0.316]
 Q(C, "multi", "move the couch 20 cm forward and turn the recliner to face it",
@@ -353,9 +353,9 @@ Q(C, "multi", "move the couch 20 cm forward and turn the recliner to face it",
 Q(C, "multi", "move the left floor lamp 20 cm left and the right one 20 cm right",
   mv("Lamp_Floor.001", [-0.2, 0, 0]), mv("Lamp_Floor.002", [0.2, 0, 0]))
 # crates z[2.35,2.85] +0.1 -> z[2.45,2.95]; the front wall is at 3
-Q(C, "multi", "move all the crates 10cm forward",
+Q(C, "multi", "move all teh crates 10cm forward",
   *[mv(n, [0, 0, 0.1]) for n in ("BP_Crate_01", "BP_Crate_02", "BP_Crate_03", "BP_Crate_04")])
-Q(C, "multi", "swap the two floor lamps", *swap("Lamp_Floor.001", "Lamp_Floor.002"))
+Q(C, "multi", "could you swap the two floor lamps?", *swap("Lamp_Floor.001", "Lamp_Floor.002"))
 # beanbag -0.5 -> centre (1.1,2.0); TV centre (0,2.8): yaw -54 deg, half 0.489 -> x[0.611,1.589]
 #   z[1.511,2.489]; console starts z 2.525, right speaker z 2.675
 Q(C, "multi", "move the beanbag 50 cm left and turn it to face the TV",
@@ -366,21 +366,21 @@ Q(C, "multi", "swap Vase_Green and Books_Stack.001", *swap("Vase_Green", "Books_
 Q(C, "multi", "rotate the beanbag 45 degrees and move it 30 cm toward the door",
   rot("Beanbag_Grey", 45, True), mv("Beanbag_Grey", [0.3, 0, 0]))
 # -- placements / vague amounts
-Q(F, "vague", "scoot the recliner a tad to the right", dr("SM_Recliner_01", "+x", 0.01))
+Q(F, "vague", "scoot the recliner a tad to the rigth", dr("SM_Recliner_01", "+x", 0.01))
 # beanbag -0.6096 -> x[0.64,1.34]; console starts at z 2.525 (no overlap in z)
 Q(F, "vague", "move the beanbag a couple of feet to the left", mv("Beanbag_Grey", [-2 * FT, 0, 0], 0.15))
 # blue (-0.3,-0.9) to red (0.35,-0.75): 0.667 apart; "a little closer" = at least 2 cm closer
 Q(F, "vague", "push the blue mug a little closer to the red one",
   dist("Mug_Blue", "Mug_Red", 0.1, 0.647), top("Mug_Blue", "CoffeeTable_Walnut"))
-Q(F, "vague", "move the couch a bit forward", dr("SM_Couch_01", "+z", 0.03))
+Q(F, "vague", "hey move the couch a bit forward", dr("SM_Couch_01", "+z", 0.03))
 Q(F, "vague", "could you slide the coffee table a touch to the left",
   dr("CoffeeTable_Walnut", "-x", 0.01), *tops("CoffeeTable_Walnut"))
 # shelf R z max 1.1, the door (same x) starts at z 1.55
 Q(F, "vague", "shift the right shelf unit a smidge forward", dr("ShelfUnit_R", "+z", 0.01), *tops("ShelfUnit_R"))
 Q(F, "place", "put the candle on top of the media console", top("Candle_01", "SM_MediaConsole_01"))
-Q(F, "place", "put the gamepad on the recliner", top("Controller_Gamepad", "SM_Recliner_01"))
-Q(F, "place", "park the beanbag next to the couch", nxt("Beanbag_Grey", "SM_Couch_01"))
-Q(F, "place", "put the green vase on the coffee table", top("Vase_Green", "CoffeeTable_Walnut"))
+Q(F, "place", "put the gamepad on the recliner pls", top("Controller_Gamepad", "SM_Recliner_01"))
+Q(F, "place", "park the beanbag next to the cocuh", nxt("Beanbag_Grey", "SM_Couch_01"))
+Q(F, "place", "would you mind putting the green vase on the coffee table?", top("Vase_Green", "CoffeeTable_Walnut"))
 Q(F, "place", "put the blue mug on the side table next to the candle",
   top("Mug_Blue", "SideTable_Metal"), nxt("Mug_Blue", "Candle_01"))
 # crate 04 down to the floor beside crate 03 (next_to needs the heights to overlap)
@@ -414,7 +414,7 @@ Q(CF, "combo", "put Candle_01 on the right shelf unit next to the vase and nudge
 # -- relations, walls, corners, flush
 Q(H, "rel", "scoot the beanbag 20 cm toward the door", mv("Beanbag_Grey", [0.2, 0, 0]))
 # recliner centre (-2.2,-0.9) to door (3.975,2.0): yaw 64.8 deg, half 0.566 -> x[-2.77,-1.63] z[-1.47,-0.33]
-Q(H, "turn", "turn the recliner to face the door", faces("SM_Recliner_01", "Door_Entrance"), still("SM_Recliner_01"))
+Q(H, "turn", "turn the reclinr to face the door", faces("SM_Recliner_01", "Door_Entrance"), still("SM_Recliner_01"))
 # table -90 about its pivot (0,-0.9): 0.6 x 1.2 -> x[-0.3,0.3] z[-1.5,-0.3], still on the rug
 #   blue rel (-0.3,0) -> (0,-0.3): delta (0.3,0,-0.3); red rel (0.35,0.15) -> (-0.15,0.35): delta (-0.5,0,0.2)
 #   gamepad rel (0.05,-0.15) -> (0.15,0.05): delta (0.1,0,0.2)
@@ -441,33 +441,33 @@ Q(H, "wall", "push the second crate forward till it hits the wall", mv("BP_Crate
 # lamp .001 x min -1.7 -> -4 (-2.3), z min -2.8 -> -3 (-0.2); nothing in between
 Q(H, "wall", "tuck Lamp_Floor.001 into the back left corner", mv("Lamp_Floor.001", [-2.3, 0, -0.2], 0.03), IB)
 # couch z min -2.925 -> -3
-Q(H, "wall", "push the couch back flush against the wall", mv("SM_Couch_01", [0, 0, -0.075], 0.02), IB)
+Q(H, "wall", "push the couch back flush against the wall, thanks!", mv("SM_Couch_01", [0, 0, -0.075], 0.02), IB)
 # beanbag z max 2.35 -> right speaker face 2.675 (x overlap [1.25,1.425]): +0.325
 Q(H, "wall", "slide the beanbag forward until it's flush against the right speaker",
   mv("Beanbag_Grey", [0, 0, 0.325], 0.03))
 # -- refusals
-Q(H, "refuse", "move the mug 10cm to the right", ref(["Mug_Blue", "Mug_Red", "Mug_White"]))
+Q(H, "refuse", "hey move the mug 10cm to the right", ref(["Mug_Blue", "Mug_Red", "Mug_White"]))
 Q(H, "refuse", "put the blue mug next to the lamp", ref(["Lamp_Floor.001", "Lamp_Floor.002"]))
 Q(H, "refuse", "move the crate 20 cm back pls", ref(["BP_Crate_01", "BP_Crate_02", "BP_Crate_03", "BP_Crate_04"]))
 Q(H, "refuse", "nudge the floor lamp a bit closer to the couch", ref(["Lamp_Floor.001", "Lamp_Floor.002"]))
 Q(H, "refuse", "turn the speaker to face the couch", ref(["SM_Speaker_L", "SM_Speaker_R"]))
 Q(H, "refuse", "put the gamepad on the shelf unit", ref(["ShelfUnit_L", "ShelfUnit_R"]))
 Q(H, "refuse", "push the piano against the wall", ref([]))
-Q(H, "refuse", "move the curtains 30cm left", ref([]))
+Q(H, "refuse", "move the curtians 30cm left", ref([]))
 Q(H, "refuse", "could you put the mug on the side table", ref(["Mug_Blue", "Mug_Red", "Mug_White"]))
 
 # ================================================================ (b) meeting room
 _scene = "meeting_room_8"
 # chair 3 x[0.75,1.25] +0.2 -> x[0.95,1.45]; chair 4 starts at z -0.25 (chair 3 ends -0.75)
-Q(S, "move", "move chair 3 20cm to the right", mv("chair 3", [0.2, 0, 0]))
+Q(S, "move", "moev chair 3 20cm to the right", mv("chair 3", [0.2, 0, 0]))
 # whiteboard x[0.2,1.8] -0.5 -> x[-0.3,1.3]
 Q(S, "move", "can you move the whiteboard 50 cm to the left? thanks", mv("whiteboard", [-0.5, 0, 0]))
 # credenza z[-1.8,-0.2] -0.3 -> z[-2.1,-0.5], coffee machine and cups ride along
 Q(S, "move", "move the credenza 30 cm toward the back wall", *carry("credenza", [0, 0, -0.3]))
 # jug x[0.425,0.575] +0.2 -> x[0.625,0.775]; glasses 2/3 are at z +-0.35
-Q(S, "move", "move the water jug 20 cm to the right", mv("water jug", [0.2, 0, 0]))
+Q(S, "move", "move the water jug 20 cm to the rihgt", mv("water jug", [0.2, 0, 0]))
 # plant z[-2.9,-2.4] +0.4 -> z[-2.5,-2.0]
-Q(S, "move", "move the plant 40cm forward", mv("plant", [0, 0, 0.4]))
+Q(S, "move", "could you move the plant 40cm forward", mv("plant", [0, 0, 0.4]))
 # laptop 2 x[-1.17,-0.83] +0.1 -> x[-1.07,-0.73]; the phone (z <= 0.125) is clear
 Q(S, "move", "move laptop 2 10 cm to the right", mv("laptop 2", [0.1, 0, 0]))
 # table z[-0.6,0.6] -0.1 -> z[-0.7,0.5]; chairs 1-3 start at z -0.75
@@ -475,14 +475,14 @@ Q(S, "move", "pls move the meeting table 10cm back", *carry("meeting table", [0,
 # stool 1 x[2.95,3.35] -0.3 -> x[2.65,3.05]
 Q(S, "move", "move stool 1 30 cm to the left", mv("stool 1", [-0.3, 0, 0]))
 # coat stand z[0.95,1.45] -0.5 -> z[0.45,0.95]; chair 4 ends at x 2.2
-Q(S, "move", "move the coat stand 50 cm back", mv("coat stand", [0, 0, -0.5]))
+Q(S, "move", "move the coatstand 50 cm back", mv("coat stand", [0, 0, -0.5]))
 # waste bin x[-2.35,-2.05] +0.3048 -> x[-2.045,-1.745]
 Q(S, "move", "move the waste bin 1 ft to the right", mv("waste bin", [FT, 0, 0], 0.02))
 # stool 1 (the one in the corner) x[2.95,3.35] -0.2 -> x[2.75,3.15]
 Q(H, "rel", "move the stool in the corner 20cm to the left", mv("stool 1", [-0.2, 0, 0]))
 # -- rotations / scale
 Q(S, "turn", "rotate chair 8 90 degrees clockwise as seen from above", rot("chair 8", -90), still("chair 8"))
-Q(S, "turn", "turn chair 2 180 degrees", rot("chair 2", 180, True), still("chair 2"))
+Q(S, "turn", "turn chair 2 180 degrees pls", rot("chair 2", 180, True), still("chair 2"))
 # plant x1.25 -> 0.625: x[-3.4625,-2.8375] z[-2.9625,-2.3375]
 Q(S, "scale", "scale the plant up by 25%", scl("plant", 1.25), still("plant"))
 # chair 8 at 90+45 deg: half 0.354 -> x[-2.304,-1.596] z[-0.354,0.354]; the table starts at x -1.5
@@ -503,7 +503,7 @@ Q(C, "hold", "move the meeting table 15 cm to the left, but the chairs stay put"
 Q(C, "hold", "move the credenza 20cm forward but keep the coffee machine where it is",
   *carry("credenza", [0, 0, 0.2], hold=("coffee machine",)), unch(["coffee machine"]))
 # -- multi / swaps
-Q(C, "multi", "swap chair 4 and chair 8", *swap("chair 4", "chair 8"))
+Q(C, "multi", "swap chair 4 and chiar 8", *swap("chair 4", "chair 8"))
 # chairs 1-3 z[-1.25,-0.75] -0.2 -> z[-1.45,-0.95]
 Q(C, "multi", "move chairs 1, 2 and 3 back 20cm",
   mv("chair 1", [0, 0, -0.2]), mv("chair 2", [0, 0, -0.2]), mv("chair 3", [0, 0, -0.2]))
@@ -516,7 +516,7 @@ Q(C, "multi", "rotate chair 5 and chair 7 by 180 degrees",
 Q(C, "multi", "move stool 2 half a metre right and turn it 90 degrees",
   mv("stool 2", [0.5, 0, 0]), rot("stool 2", 90, True))
 # whiteboard -> x[0.5,2.1]; bin -> x[-2.05,-1.75]
-Q(C, "multi", "move the whiteboard 30cm right and the waste bin 30cm right too",
+Q(C, "multi", "move the whitebaord 30cm right and the waste bin 30cm right too",
   mv("whiteboard", [0.3, 0, 0]), mv("waste bin", [0.3, 0, 0]))
 # laptop 1 (0,-0.35) <-> laptop 2 (-1,0.35)
 Q(C, "multi", "swap laptop 1 and laptop 2", *swap("laptop 1", "laptop 2"))
@@ -534,7 +534,7 @@ Q(F, "vague", "move the whiteboard a couple of feet to the left", mv("whiteboard
 Q(F, "vague", "nudge the water jug a tad closer to glass 2",
   dist("water jug", "glass 2", 0.1, 0.605), top("water jug", "meeting table"))
 Q(F, "vague", "move chair 4 a little further from the table", dr("chair 4", "+x", 0.03))
-Q(F, "place", "put laptop 1 on the credenza", top("laptop 1", "credenza"))
+Q(F, "place", "put laptop 1 on the credneza", top("laptop 1", "credenza"))
 Q(F, "place", "take the coffee machine and put it on the meeting table", top("coffee machine", "meeting table"))
 Q(F, "place", "hey can you put stool 2 next to the coat stand", nxt("stool 2", "coat stand"))
 # coat stand z[0.95,1.45] + ~0.61 -> z[1.56,2.06]; stool 1 starts at z 2.45
@@ -545,7 +545,7 @@ Q(CF, "combo", "pull chair 1 out a bit and turn it to face the tv",
   dr("chair 1", "-z", 0.03), faces("chair 1", "tv"))
 Q(CF, "combo", "put laptop 1 on the credenza and slide chair 2 a bit further from the table",
   top("laptop 1", "credenza"), dr("chair 2", "-z", 0.03))
-Q(CF, "combo", "put all the glasses on the credenza",
+Q(CF, "combo", "put all the glasses on the credenza thx",
   top("glass 1", "credenza"), top("glass 2", "credenza"), top("glass 3", "credenza"))
 # toward the whiteboard: -z (pure) or along (0.35,-0.94); chairs 1-3 are 0.15 behind the table
 Q(CF, "combo", "move the meeting table a bit toward the whiteboard but don't move any of the chairs",
@@ -565,11 +565,11 @@ Q(CF, "combo", "move the whiteboard a bit to the right and put the waste bin nex
 Q(H, "rel", "move the chair opposite chair 2 20 cm to the right", mv("chair 6", [0.2, 0, 0]))
 Q(H, "rel", "slide the laptop at chair 7's seat 10 cm to the right", mv("laptop 2", [0.1, 0, 0]))
 # chair 6 z[0.75,1.25] -0.15 -> z[0.6,1.1]: touching the table edge
-Q(H, "wall", "push chair 6 in 15 cm", mv("chair 6", [0, 0, -0.15], 0.02))
+Q(H, "wall", "push chair 6 in 15 cm pls", mv("chair 6", [0, 0, -0.15], 0.02))
 # chairs 1-3 z max -0.75 -> table edge -0.6
 Q(H, "wall", "push the three chairs along the back side of the table in until they touch it",
   mv("chair 1", [0, 0, 0.15], 0.02), mv("chair 2", [0, 0, 0.15], 0.02), mv("chair 3", [0, 0, 0.15], 0.02))
-Q(H, "place", "move glass 3 next to laptop 1", top("glass 3", "meeting table"), nxt("glass 3", "laptop 1"))
+Q(H, "place", "move glass 3 next to laptop 1 please", top("glass 3", "meeting table"), nxt("glass 3", "laptop 1"))
 # table centre (0,0) is free: machine x[-0.15,0.15] z[-0.175,0.175]; laptop 1 ends z -0.23
 Q(H, "place", "put the coffee machine in the middle of the meeting table",
   top("coffee machine", "meeting table"), at("coffee machine", [0, 0.74, 0], 0.15))
@@ -600,29 +600,29 @@ Q(H, "refuse", "hey move chair 9 closer to the table", ref([]))
 # ================================================================ (c) bike shop
 _scene = "bike_shop"
 # bike 2 x[-0.1,0.5] +0.2 -> x[0.1,0.7]; bike 3 starts at 0.9
-Q(S, "move", "move bike 2 20cm to the right", mv("bike 2", [0.2, 0, 0]))
+Q(S, "move", "move bike 2 20cm to the right thx", mv("bike 2", [0.2, 0, 0]))
 # stand x[2.2,2.8] -0.3 -> x[1.9,2.5]; the bench ends at 1.7
 Q(S, "move", "move the repair stand 30 cm to the left", mv("repair stand", [-0.3, 0, 0]))
 # shelf z[-1,0.6] -0.4 -> z[-1.4,0.2] with both helmets
-Q(S, "move", "move the helmet shelf 40cm back", *carry("helmet shelf", [0, 0, -0.4]))
+Q(S, "move", "move the helmet shelf 40cm bak", *carry("helmet shelf", [0, 0, -0.4]))
 # pump x[-0.625,-0.375] -0.3 -> x[-0.925,-0.675]
 Q(S, "move", "could you move the floor pump 30 cm to the left", mv("floor pump", [-0.3, 0, 0]))
 # counter x[-2.9,-2.3] +0.2 -> x[-2.7,-2.1] with till, card reader, red helmet; bike 1 starts -1.1
-Q(S, "move", "move the counter 20cm to the right", *carry("counter", [0.2, 0, 0]))
+Q(S, "move", "move the countr 20cm to the right", *carry("counter", [0.2, 0, 0]))
 # till z[0.825,1.175] -0.1 -> z[0.725,1.075]; the card reader ends at z 0.525
 Q(S, "move", "move the till 10 cm back", mv("till", [0, 0, -0.1]))
 # rack z[1.2,2.4] +0.3 -> z[1.5,2.7]
-Q(S, "move", "move the tyre rack 30cm forward", mv("tyre rack", [0, 0, 0.3]))
+Q(S, "move", "move the tire rack 30cm forward", mv("tyre rack", [0, 0, 0.3]))
 # bin x[-3.375,-3.025] +0.5 -> x[-2.875,-2.525]; sign board starts at -1.8
 Q(S, "move", "move the trash bin half a metre to the right", mv("trash bin", [0.5, 0, 0]))
 # wheel x[-0.01,0.61] +0.05 -> x[0.04,0.66]; the tray starts at 0.8
-Q(S, "move", "move the spare wheel 5 cm to the right", mv("spare wheel", [0.05, 0, 0]))
+Q(S, "move", "move the spare wheel 5 cm to the rigth", mv("spare wheel", [0.05, 0, 0]))
 # lube x[1.42,1.48] -0.1 -> x[1.32,1.38] at z[-2.53,-2.47]; tray ends z -2.55
 Q(S, "move", "move the lube bottle 10 cm to the left", mv("lube bottle", [-0.1, 0, 0]))
 # mat x[-0.25,1.25] -0.3048 -> x[-0.5548,0.9452]; sign board ends at -1.2
 Q(S, "move", "move the mat 1 ft to the left", mv("floor mat", [-FT, 0, 0], 0.02))
 # box 3 z[-2.8,-2.4] +0.3 -> z[-2.5,-2.1]
-Q(S, "move", "move cardboard box 3 30cm forward", mv("cardboard box 3", [0, 0, 0.3]))
+Q(S, "move", "move cardbord box 3 30cm forward", mv("cardboard box 3", [0, 0, 0.3]))
 # -- rotations / scale
 # sign 0.6x0.5 turned -> 0.5x0.6: x[-1.75,-1.25] z[2.1,2.7]
 Q(S, "turn", "rotate the sign board 90 degrees clockwise as seen from above", rot("sign board", -90), still("sign board"))
@@ -649,7 +649,7 @@ Q(C, "hold", "shift the service bench 10 cm left, but leave the torque wrench wh
 Q(C, "hold", "move the counter 15 cm right but don't move the till",
   *carry("counter", [0.15, 0, 0], hold=("till",)), unch(["till"]))
 # -- multi / swaps
-Q(C, "multi", "swap bike 1 and bike 3", *swap("bike 1", "bike 3"))
+Q(C, "multi", "pls swap bike 1 and bike 3", *swap("bike 1", "bike 3"))
 # blue -> z[-0.55,-0.25], black -> z[0.15,0.45]; shelf ends at z 0.6
 Q(C, "multi", "move the blue helmet and the black helmet 10cm forward",
   mv("blue helmet", [0, 0, 0.1]), mv("black helmet", [0, 0, 0.1]))
@@ -674,7 +674,7 @@ Q(C, "multi", "move cardboard box 1 and cardboard box 3 10cm forward",
 Q(F, "vague", "nudge the lube bottle a smidge to the left", dr("lube bottle", "-x", 0.01))
 Q(F, "place", "haul the floor pump over next to the repair stand", nxt("floor pump", "repair stand"))
 Q(F, "vague", "scoot bike 2 a little back", dr("bike 2", "-z", 0.03))
-Q(F, "place", "put the lube bottle on the counter", top("lube bottle", "counter"))
+Q(F, "place", "put the lube botle on the counter", top("lube bottle", "counter"))
 Q(F, "place", "put the card reader on the service bench next to the parts tray",
   top("card reader", "service bench"), nxt("card reader", "parts tray"))
 # bin x[-3.375,-3.025] + ~0.61 -> x[-2.76,-2.41]
@@ -684,7 +684,7 @@ Q(F, "place", "set the red helmet down on the floor next to the counter",
   floor("red helmet"), nxt("red helmet", "counter"))
 Q(F, "place", "put the black helmet on the counter", top("black helmet", "counter"))
 Q(F, "vague", "move the sign board a bit to the left", dr("sign board", "-x", 0.03))
-Q(F, "place", "put the torque wrench on the counter", top("torque wrench", "counter"))
+Q(F, "place", "put the torque wrench on the counter, thx", top("torque wrench", "counter"))
 Q(F, "vague", "could you move bike 1 a bit to the left", dr("bike 1", "-x", 0.03))
 # -- compositional with vague parts
 Q(CF, "combo", "put the parts tray on the counter and scoot bike 1 a bit to the left",

@@ -430,10 +430,10 @@ def simulate(q, stem, d, objs):
         if c["check"] in PLACE and c["object"] not in placed:
             placed.append(c["object"])
     for n in placed:
-        if driven(n):
-            # carried by a support that moves: its checks are read on where it was carried to
+        if driven(n) and place_ok(st, n, checks, strict=False):
+            # carried by a support that moves and still meets its checks where it was carried to
             continue
-        if place_ok(st0, n, checks, strict=False) and not any(c["check"] in ("moved", "direction", "rotated", "faces", "scaled") and c["object"] == n for c in checks):
+        if not driven(n) and place_ok(st0, n, checks, strict=False) and not any(c["check"] in ("moved", "direction", "rotated", "faces", "scaled") and c["object"] == n for c in checks):
             warn(f"{q['id']}: {n} already meets its placement checks at the start")
         w = witness(st, n, checks, bounds, on_sim)
         if w is None:

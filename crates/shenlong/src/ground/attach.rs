@@ -97,6 +97,7 @@ impl Reader<'_> {
             && post.as_ref().is_some_and(|(_, p_end)| {
                 source
                     || head.generic
+                    || super::hold::cue_before(&self.tokens, start)
                     || self.clause_goes_on(*p_end)
                     || self.verb_takes_no_place(start)
                     || destination

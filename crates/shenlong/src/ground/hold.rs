@@ -131,6 +131,16 @@ fn token_range(tokens: &[Token], span: &Range<usize>) -> Option<Range<usize>> {
     (start < end).then_some(start..end)
 }
 
+/// Whether a cue that holds a phrase in place ends right before token `start` (`don't
+/// move`, `keep`, `leave`, `not`): what follows is named to stay, so a relation after it
+/// says which, never where it goes (`… but leave the cup on it where it is`).
+pub(crate) fn cue_before(tokens: &[Token], start: usize) -> bool {
+    let words: Vec<&str> = tokens.iter().map(|t| t.word().unwrap_or("")).collect();
+    BEFORE
+        .iter()
+        .any(|(cue, _)| start >= cue.len() && phrase_at(&words, start - cue.len(), cue))
+}
+
 /// The phrases the instruction holds in place, a list held by one cue included ("leave
 /// the bin and the left side table where they are").
 pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {

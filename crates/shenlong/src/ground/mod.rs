@@ -204,6 +204,9 @@ struct Reader<'a> {
     /// Per token: the typo it was corrected from.
     typos: Vec<Option<String>>,
     consumed: Vec<bool>,
+    /// The objects of the last phrase grounded: what "it" after a relation word means
+    /// (`… not the lamp on it`).
+    antecedent: Vec<usize>,
 }
 
 impl Grounder {
@@ -481,6 +484,7 @@ impl<'a> Reader<'a> {
             words,
             typos: vec![None; n],
             consumed: vec![false; n],
+            antecedent: Vec::new(),
         };
         reader.correct_typos();
         reader
@@ -616,6 +620,7 @@ impl<'a> Reader<'a> {
             objects: np.objects.clone(),
             reasons: np.reasons.clone(),
         });
+        self.antecedent.clone_from(&np.objects);
         nps.push(np);
     }
 
@@ -1351,6 +1356,27 @@ impl<'a> Reader<'a> {
             &mut reasons,
             &phrase_so_far(end),
         )?;
+        // "everything on the right nightstand but not the nightstand itself": the one
+        // named before, or what the objects named before stand on.
+        if objects.len() > 1 && self.is_word(end, &["itself", "themselves"]) {
+            let mentioned: Vec<usize> = bound
+                .iter()
+                .flat_map(|&b| [Some(b), self.scene.objects[b].support])
+                .flatten()
+                .collect();
+            let kept: Vec<usize> = objects
+                .iter()
+                .copied()
+                .filter(|o| mentioned.contains(o))
+                .collect();
+            if !kept.is_empty() {
+                reasons.push(modifier(&format!(
+                    "\"itself\": {}, named before",
+                    error::list(&self.names(&kept))
+                )));
+                objects = kept;
+            }
+        }
         // "all the chairs except the front-left one", "every chair but chair 3".
         if mode == Mode::Main && matches!(count, Count::All) && !head.generic {
             if let Some((excluded, e_end)) = self.exclusion(end, &objects, &head.text, bound)? {
@@ -1826,6 +1852,15 @@ impl<'a> Reader<'a> {
     ) -> Result<Option<(Vec<usize>, usize)>, GroundError> {
         if let Some(Kind::Quoted(name)) = self.tokens.get(j).map(|t| &t.kind) {
             return Ok(self.scene.find(name).map(|i| (vec![i], j + 1)));
+        }
+        // "the lamp on it": the object named last ("them": the objects).
+        let pronoun = match self.word(j) {
+            Some("it") => self.antecedent.len() == 1,
+            Some("them") => self.antecedent.len() > 1,
+            _ => false,
+        };
+        if pronoun {
+            return Ok(Some((self.antecedent.clone(), j + 1)));
         }
         // Skip the determiner and modifiers to the head.
         let mut h = j;

@@ -542,3 +542,30 @@ fn a_thing_is_what_its_modifier_names() {
     // With no modifier, a thing is nothing in particular.
     refused(&s, "move the thing 10 cm left", &[]);
 }
+
+#[test]
+fn it_and_itself_in_what_must_stay() {
+    let s = study();
+    // "the cup on it": the one on the table just named, of three cups; held, so the
+    // table cannot move from under it.
+    refused(
+        &s,
+        "move the left table 60 cm to the right but leave the cup on it where it is",
+        &["Cup.000", "Table_L"],
+    );
+    // Moved less, the table still holds the cup where it is.
+    let a = run(
+        &s,
+        "move the left table 10 cm to the right but leave the cup on it where it is",
+    );
+    only_moved(&s, &a, &[("Table_L", [0.1, 0.0, 0.0])]);
+    let a = run(
+        &s,
+        "move everything on the right table 5cm forward but not the table itself",
+    );
+    only_moved(
+        &s,
+        &a,
+        &[("Cup.001", [0.0, 0.0, 0.05]), ("Cup.002", [0.0, 0.0, 0.05])],
+    );
+}
