@@ -787,23 +787,21 @@ impl<'a> Reader<'a> {
             "thing" | "item" | "object" => false,
             _ => return None,
         };
-        {
-            let all: Vec<usize> = (0..self.scene.objects.len()).collect();
-            return Some(Head {
-                range: k..k + 1,
-                literal: all.clone(),
-                objects: all,
-                generic: true,
-                tier: Tier::Category,
-                plural,
-                text: "thing".into(),
-                reason: Reason {
-                    kind: ReasonKind::Group,
-                    detail: format!("\"{w}\": the objects the modifier names"),
-                },
-                typo: None,
-            });
-        }
+        let all: Vec<usize> = (0..self.scene.objects.len()).collect();
+        Some(Head {
+            range: k..k + 1,
+            literal: all.clone(),
+            objects: all,
+            generic: true,
+            tier: Tier::Category,
+            plural,
+            text: "thing".into(),
+            reason: Reason {
+                kind: ReasonKind::Group,
+                detail: format!("\"{w}\": the objects the modifier names"),
+            },
+            typo: None,
+        })
     }
 
     #[allow(clippy::too_many_arguments)]
