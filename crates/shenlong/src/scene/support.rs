@@ -77,12 +77,17 @@ pub fn detect_around(
     }
 }
 
+/// How high above the floor a top must be to carry anything, in metres: a rug 1 cm thick
+/// carries the coffee table standing on it (moving the rug moves the table, as people
+/// expect), a decal with no thickness carries nothing.
+const CARRYING_TOP: f64 = 1e-3;
+
 /// Whether box `a` rests on box `b` by the rule of [`detect`]: its bottom within
-/// [`SUPPORT_GAP`] of `b`'s top, above the floor, reaching above that top, its centre over
-/// `b`'s footprint.
+/// [`SUPPORT_GAP`] of `b`'s top, that top above the floor (by [`CARRYING_TOP`]), `a`
+/// reaching above it, its centre over `b`'s footprint.
 fn rests(scene: &Scene, a: &Aabb, b: &Aabb) -> bool {
     let centre = a.center();
-    a.min.y > scene.floor() + SUPPORT_GAP
+    b.max.y > scene.floor() + CARRYING_TOP
         && (a.min.y - b.max.y).abs() <= SUPPORT_GAP
         && a.max.y > b.max.y + 1e-3
         && centre.x >= b.min.x
@@ -94,7 +99,7 @@ fn rests(scene: &Scene, a: &Aabb, b: &Aabb) -> bool {
 /// What object `i` rests on, by the rule of [`detect`].
 fn support_of(scene: &Scene, boxes: &[Aabb], grid: &FloorGrid, i: usize) -> Option<usize> {
     let a = &boxes[i];
-    if a.min.y <= scene.floor() + SUPPORT_GAP {
+    if a.min.y <= scene.floor() + CARRYING_TOP {
         return None;
     }
     let mut best: Option<(usize, f64, f64)> = None;

@@ -49,6 +49,22 @@ fn supports_are_detected_from_geometry() {
 }
 
 #[test]
+fn a_rug_carries_what_stands_on_it_and_the_floor_carries_nothing() {
+    let mut s = Scene::new("lounge");
+    let rug = s.push_box("rug", [2.4, 0.01, 1.6], [0.0, 0.0, 0.0]);
+    let table = s.push_box("coffee table", [1.2, 0.42, 0.6], [0.0, 0.01, 0.0]);
+    let mug = s.push_box("mug", [0.1, 0.1, 0.1], [0.0, 0.43, 0.0]);
+    let decal = s.push_box("decal", [1.0, 0.0, 1.0], [2.0, 0.0, 0.0]);
+    let chair = s.push_box("chair", [0.5, 0.9, 0.5], [2.0, 0.0, 0.0]);
+    s.detect_supports();
+    assert_eq!(s.objects[table].support, Some(rug));
+    assert_eq!(s.objects[mug].support, Some(table));
+    assert_eq!(s.objects[chair].support, None, "a decal with no thickness carries nothing");
+    assert_eq!(s.objects[decal].support, None);
+    assert_eq!(s.carried_by(rug), vec![table, mug]);
+}
+
+#[test]
 fn translation_moves_the_pivot_and_carries_what_rests_on_it() {
     let mut s = workshop();
     let m = Multivector::translator(DVec3::new(1.0, 0.0, 0.0));
