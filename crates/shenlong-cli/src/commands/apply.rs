@@ -48,7 +48,10 @@ pub fn run(args: Args) -> Result<()> {
     super::write_edit(
         &file,
         before.as_ref(),
-        args.output.as_deref(),
+        super::Output {
+            path: args.output.as_deref(),
+            usd_layer: false,
+        },
         args.tdw.as_deref(),
     )?;
     Ok(())

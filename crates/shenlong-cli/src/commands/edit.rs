@@ -47,6 +47,11 @@ pub struct Args {
     /// Also write the edit as ThreeDWorld commands to this file.
     #[arg(long, value_name = "FILE")]
     tdw: Option<PathBuf>,
+    /// For a USD stage: write OUT (a .usda) as a layer over the input — its sublayer — that
+    /// holds only `over`s of the edited prims, USD's non-destructive way; the input is
+    /// never written.
+    #[arg(long, requires = "output")]
+    usd_layer: bool,
     #[command(flatten)]
     translator: super::TranslatorArgs,
     #[command(flatten)]
@@ -96,7 +101,10 @@ pub fn run(args: Args) -> Result<()> {
     super::write_edit(
         &file,
         before.as_ref(),
-        args.output.as_deref(),
+        super::Output {
+            path: args.output.as_deref(),
+            usd_layer: args.usd_layer,
+        },
         args.tdw.as_deref(),
     )?;
     if let (Some(prepared), Some(path)) = (json_file, args.json.as_deref()) {

@@ -33,10 +33,20 @@ pub fn load_scene(spec: &str) -> Result<SceneFile> {
 /// the input's format; then, with `tdw`, the edit from `before` (the scene as it was,
 /// needed only then) as ThreeDWorld commands. The commands are rendered before anything
 /// is written.
+/// Where an edited scene goes: a file (by its extension), stdout without one; for a USD
+/// stage, optionally as a layer over the input.
+#[derive(Clone, Copy, Default)]
+pub struct Output<'a> {
+    /// The file; stdout when `None`.
+    pub path: Option<&'a Path>,
+    /// Write a USD layer over the input instead of the whole stage.
+    pub usd_layer: bool,
+}
+
 pub fn write_edit(
     file: &SceneFile,
     before: Option<&shenlong::scene::Scene>,
-    output: Option<&Path>,
+    output: Output<'_>,
     tdw: Option<&Path>,
 ) -> Result<()> {
     let commands = tdw.zip(before).map(|(path, before)| {
@@ -46,7 +56,8 @@ pub fn write_edit(
             shenlong::format::pretty::to_string(&serde_json::Value::Array(list)),
         )
     });
-    match output {
+    match output.path {
+        Some(path) if output.usd_layer => file.save_usd_layer(path)?,
         Some(path) => file.save(path)?,
         None => {
             let format = match &file.path {

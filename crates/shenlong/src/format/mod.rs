@@ -16,6 +16,8 @@ pub mod pretty;
 pub mod procthor;
 mod resources;
 pub mod tdw;
+#[cfg(feature = "usd")]
+pub mod usd;
 
 use crate::scene::Scene;
 use std::fmt;
@@ -134,6 +136,12 @@ pub enum Format {
     Glb,
     /// ThreeDWorld commands placing the objects (`.tdw.json`, write only).
     TdwCommands,
+    /// A USD stage as text (`.usda`).
+    Usda,
+    /// A USD stage as a binary crate (`.usdc`, `.usd`).
+    Usdc,
+    /// A USD package (`.usdz`, read only).
+    Usdz,
 }
 
 fn name_ends_with(path: &Path, suffix: &str) -> bool {
@@ -159,8 +167,11 @@ impl Format {
             ))),
             "gltf" => Ok(Format::Gltf),
             "glb" => Ok(Format::Glb),
+            "usda" => Ok(Format::Usda),
+            "usdc" | "usd" => Ok(Format::Usdc),
+            "usdz" => Ok(Format::Usdz),
             other => Err(FormatError::new(format!(
-                "{}: unknown scene format '.{other}': use .json, .gltf or .glb",
+                "{}: unknown scene format '.{other}': use .json, .gltf, .glb, .usda, .usdc or .usdz",
                 path.display()
             ))),
         }
@@ -176,6 +187,9 @@ pub enum Document {
     SceneJson(json::JsonDocument),
     /// A glTF document.
     Gltf(Box<gltf::GltfDocument>),
+    /// A USD stage.
+    #[cfg(feature = "usd")]
+    Usd(Box<usd::UsdDocument>),
 }
 
 /// A scene and the document it was read from.
@@ -232,6 +246,20 @@ impl SceneFile {
                     path: Some(path.to_path_buf()),
                 })
             }
+            #[cfg(feature = "usd")]
+            Format::Usda | Format::Usdc | Format::Usdz => {
+                let (scene, document) = usd::read(path).map_err(|e| e.in_file(path))?;
+                Ok(Self {
+                    scene,
+                    document: Document::Usd(Box::new(document)),
+                    path: Some(path.to_path_buf()),
+                })
+            }
+            #[cfg(not(feature = "usd"))]
+            Format::Usda | Format::Usdc | Format::Usdz => Err(FormatError::new(format!(
+                "{}: this build of Shenlong reads no USD (built without the `usd` feature)",
+                path.display()
+            ))),
         }
     }
 
@@ -276,7 +304,7 @@ impl SceneFile {
             Format::SceneJson => {
                 let original = match &self.document {
                     Document::SceneJson(v) => Some(v),
-                    Document::None | Document::Gltf(_) => None,
+                    _ => None,
                 };
                 Ok(json::write(&self.scene, original).into_bytes())
             }
@@ -304,7 +332,57 @@ impl SceneFile {
                 }
                 gltf::write(&self.scene, document)
             }
+            Format::Usda | Format::Usdc | Format::Usdz => self.usd_bytes(format),
         }
+    }
+
+    /// The edited stage in a USD container.
+    #[cfg(feature = "usd")]
+    fn usd_bytes(&self, format: Format) -> Result<Vec<u8>, FormatError> {
+        let Document::Usd(document) = &self.document else {
+            return Err(FormatError::new(
+                "writing USD needs a USD source: Shenlong edits the prims of an existing stage",
+            ));
+        };
+        let container = match format {
+            Format::Usda => usd::UsdContainer::Usda,
+            Format::Usdc => usd::UsdContainer::Usdc,
+            _ => usd::UsdContainer::Usdz,
+        };
+        usd::write(&self.scene, document, container)
+    }
+
+    #[cfg(not(feature = "usd"))]
+    fn usd_bytes(&self, _format: Format) -> Result<Vec<u8>, FormatError> {
+        Err(FormatError::new(
+            "this build of Shenlong writes no USD (built without the `usd` feature)",
+        ))
+    }
+
+    /// Writes the edit as a USD layer at `path` (`.usda`) that sublayers the stage it was
+    /// read from and holds only `over`s of the edited prims — USD's non-destructive way —
+    /// atomically.
+    ///
+    /// # Errors
+    /// The scene was not read from a USD stage, `path` is no `.usda`, or it cannot be
+    /// written.
+    #[cfg(feature = "usd")]
+    pub fn save_usd_layer(&self, path: &Path) -> Result<(), FormatError> {
+        let Document::Usd(document) = &self.document else {
+            return Err(FormatError::new(
+                "a USD layer is written over a USD stage: the scene was not read from one",
+            ));
+        };
+        if Format::from_path(path)? != Format::Usda {
+            return Err(FormatError::new(format!(
+                "{}: a layer is written as .usda",
+                path.display()
+            )));
+        }
+        let sublayer = usd::sublayer_path(&document.source, path)?;
+        let bytes = usd::write_layer(&self.scene, document, &sublayer)?;
+        crate::io::write_atomic(path, &bytes)
+            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
     }
 
     /// Writes the scene to `path` (format by extension) atomically: on any error the

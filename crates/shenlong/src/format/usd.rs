@@ -1,0 +1,1066 @@
+//! USD stages (`.usda`, `.usdc`, `.usdz`), read and written with the `openusd` crate: a
+//! stage as a scene of separate objects whose transforms Shenlong edits, everything else
+//! kept exactly.
+//!
+//! - **Objects** are the prims of kind `component` where the stage uses model kinds; else
+//!   the prims directly under the default prim (or under the root when none is set) — each
+//!   one that has geometry below it.
+//! - **Boxes** come from geometry: `Mesh` (and every point-based prim's) `points`, the
+//!   extents of `Cube` (`size`), `Sphere` (`radius`), `Cylinder`, `Cone` and `Capsule`
+//!   (`radius`, `height`, `axis`), else an authored `extent`; each through the full
+//!   `xformOp` stack of the prim and every ancestor (translate, rotate, orient, scale,
+//!   transform, `!invert!`, `!resetXformStack!`), at the default time.
+//! - **Frame**: Shenlong's is Y-up metres (SPEC §1). A stage's `upAxis` (Y or Z) and
+//!   `metersPerUnit` (USD's fallback, 0.01, when unauthored) map it there exactly: a Z-up
+//!   point `(x, y, z)` is `(x, z, −y)`, times metres per unit; and back on writing.
+//! - **Writing** changes only the edited prims' transforms: each gets the op stack
+//!   `xformOp:translate:shenlong`, `xformOp:orient:shenlong`, `xformOp:scale:shenlong` (or
+//!   `xformOp:transform:shenlong` when its new local transform is no translate·rotate·scale)
+//!   as its `xformOpOrder`; every other prim, attribute, material, variant and metadata is
+//!   kept. Written as `.usda` or `.usdc`; or, with [`write_layer`], as a `.usda` layer that
+//!   sublayers the input and holds only `over`s of the edited prims.
+//! - **Files** other than the input (sublayers, references, payloads) are read only from
+//!   inside the input's folder ([`FolderResolver`]); a `.usda` nested deeper than
+//!   [`super::MAX_JSON_DEPTH`] levels and any file over [`MAX_USD_BYTES`] are refused.
+
+use super::FormatError;
+use crate::scene::{Object, Pivot, Scene, Shape};
+use glam::{DMat4, DQuat, DVec3};
+use openusd::ar::{self, Asset, DefaultResolver, Resolver, ResolvedPath};
+use openusd::sdf::{self, Value};
+use openusd::usd::{Prim, Stage};
+use std::path::{Path, PathBuf};
+
+/// The largest USD file read, and the largest file a stage may pull in.
+pub const MAX_USD_BYTES: u64 = 1 << 30;
+
+/// The most objects a stage may give (as many as a glTF scene).
+const MAX_OBJECTS: usize = 1_000_000;
+
+/// Which way is up in a stage.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UpAxis {
+    /// +Y, as Shenlong's frame.
+    Y,
+    /// +Z: a point `(x, y, z)` is Shenlong's `(x, z, −y)`.
+    Z,
+}
+
+/// How a stage maps to Shenlong's frame: its up axis and metres per unit.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct StageFrame {
+    /// The stage's `upAxis`.
+    pub up: UpAxis,
+    /// The stage's `metersPerUnit`.
+    pub meters_per_unit: f64,
+}
+
+impl StageFrame {
+    /// The matrix taking stage coordinates to Shenlong's (a rotation and a uniform scale).
+    #[must_use]
+    pub fn to_shenlong(self) -> DMat4 {
+        let turn = match self.up {
+            UpAxis::Y => DMat4::IDENTITY,
+            // (x, y, z) → (x, z, −y): −90° about +X.
+            UpAxis::Z => DMat4::from_rotation_x(-std::f64::consts::FRAC_PI_2),
+        };
+        DMat4::from_scale(DVec3::splat(self.meters_per_unit)) * turn
+    }
+}
+
+/// The file a stage came from.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum UsdContainer {
+    /// Text.
+    Usda,
+    /// Binary crate.
+    Usdc,
+    /// A zip package.
+    Usdz,
+}
+
+/// One object of a stage: its prim and its transforms before the edit (stage units,
+/// column vectors).
+#[derive(Clone, Debug)]
+pub struct UsdObject {
+    /// The prim's path (`/World/Table`).
+    pub path: String,
+    /// Its local-to-world transform.
+    pub world: DMat4,
+    /// Its parent's local-to-world transform (identity for a root prim, or where the prim
+    /// resets the transform stack).
+    pub parent_world: DMat4,
+    /// The object (index into the objects) nearest above it, if any: its motion moves this
+    /// one's parent.
+    pub ancestor: Option<usize>,
+}
+
+/// What writing a stage back needs: where it came from and its objects' prims.
+#[derive(Clone, Debug)]
+pub struct UsdDocument {
+    /// The file read.
+    pub source: PathBuf,
+    /// Its container.
+    pub container: UsdContainer,
+    /// Its frame.
+    pub frame: StageFrame,
+    /// Its default prim, if set.
+    pub default_prim: Option<String>,
+    /// The objects, in the scene's order.
+    pub objects: Vec<UsdObject>,
+}
+
+/// A resolver that reads only inside one folder: sublayers, references and payloads that
+/// climb out of it (`../`, an absolute path elsewhere, a link out) or are no regular file
+/// of at most [`MAX_USD_BYTES`] resolve to nothing, as glTF URIs do.
+pub struct FolderResolver {
+    root: PathBuf,
+    inner: DefaultResolver,
+}
+
+impl FolderResolver {
+    /// A resolver for the files inside `folder`.
+    ///
+    /// # Errors
+    /// When the folder cannot be found.
+    pub fn new(folder: &Path) -> std::io::Result<Self> {
+        let folder = if folder.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            folder
+        };
+        let root = folder.canonicalize()?;
+        Ok(Self {
+            inner: DefaultResolver::with_search_paths([root.clone()]),
+            root,
+        })
+    }
+
+    /// Whether a resolved path is a regular file inside the folder (a file inside a
+    /// package: its package).
+    fn inside(&self, resolved: &ResolvedPath) -> bool {
+        let text = resolved.to_string_lossy();
+        let outer = ar::split_package_relative_path_outer(&text)
+            .map_or_else(|| text.to_string(), |(package, _)| package);
+        let Ok(real) = Path::new(&outer).canonicalize() else {
+            return false;
+        };
+        real.starts_with(&self.root)
+            && std::fs::metadata(&real).is_ok_and(|m| m.is_file() && m.len() <= MAX_USD_BYTES)
+    }
+}
+
+impl Resolver for FolderResolver {
+    fn create_identifier(&self, asset_path: &str, anchor: Option<&ResolvedPath>) -> String {
+        self.inner.create_identifier(asset_path, anchor)
+    }
+
+    fn resolve(&self, asset_path: &str) -> Option<ResolvedPath> {
+        self.inner.resolve(asset_path).filter(|r| self.inside(r))
+    }
+
+    fn resolve_for_new_asset(&self, _asset_path: &str) -> Option<ResolvedPath> {
+        None
+    }
+
+    fn open_asset(&self, resolved_path: &ResolvedPath) -> std::io::Result<Box<dyn Asset>> {
+        if !self.inside(resolved_path) {
+            return Err(std::io::Error::new(
+                std::io::ErrorKind::PermissionDenied,
+                "outside the stage's folder",
+            ));
+        }
+        self.inner.open_asset(resolved_path)
+    }
+
+    fn identity(&self) -> String {
+        format!("shenlong-folder:{}", self.root.display())
+    }
+}
+
+fn err(message: impl Into<String>) -> FormatError {
+    FormatError::new(message)
+}
+
+/// The container a path's extension names.
+fn container_of(path: &Path) -> Result<UsdContainer, FormatError> {
+    let ext = path
+        .extension()
+        .and_then(|e| e.to_str())
+        .map(str::to_ascii_lowercase)
+        .unwrap_or_default();
+    match ext.as_str() {
+        "usda" => Ok(UsdContainer::Usda),
+        "usdc" | "usd" => Ok(UsdContainer::Usdc),
+        "usdz" => Ok(UsdContainer::Usdz),
+        other => Err(err(format!("'.{other}' is no USD file"))),
+    }
+}
+
+/// Refuses text nested deeper than [`super::MAX_JSON_DEPTH`] levels of `{ [ (` (outside
+/// strings), before the parser sees it, saying where.
+fn check_nesting(text: &str) -> Result<(), FormatError> {
+    let (mut depth, mut line) = (0usize, 1usize);
+    let mut quote: Option<char> = None;
+    let mut escaped = false;
+    for c in text.chars() {
+        if c == '\n' {
+            line += 1;
+        }
+        if let Some(q) = quote {
+            if escaped {
+                escaped = false;
+            } else if c == '\\' {
+                escaped = true;
+            } else if c == q {
+                quote = None;
+            }
+            continue;
+        }
+        match c {
+            '"' | '\'' => quote = Some(c),
+            '{' | '[' | '(' => {
+                depth += 1;
+                if depth > super::MAX_JSON_DEPTH {
+                    return Err(err(format!(
+                        "nesting deeper than {} levels at line {line}",
+                        super::MAX_JSON_DEPTH
+                    )));
+                }
+            }
+            '}' | ']' | ')' => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    Ok(())
+}
+
+/// Opens a stage, reading only inside its folder.
+fn open_stage(path: &Path) -> Result<Stage, FormatError> {
+    let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot read it: {e}")))?;
+    if !meta.is_file() {
+        return Err(err("not a regular file"));
+    }
+    if meta.len() > MAX_USD_BYTES {
+        return Err(err(format!(
+            "larger than {} MiB",
+            MAX_USD_BYTES >> 20
+        )));
+    }
+    if container_of(path)? == UsdContainer::Usda {
+        let text = std::fs::read_to_string(path).map_err(|e| err(format!("cannot read it: {e}")))?;
+        check_nesting(&text)?;
+    }
+    let folder = path.parent().unwrap_or(Path::new("."));
+    let resolver =
+        FolderResolver::new(folder).map_err(|e| err(format!("cannot read its folder: {e}")))?;
+    let real = path
+        .canonicalize()
+        .map_err(|e| err(format!("cannot read it: {e}")))?;
+    Stage::builder()
+        .resolver(resolver)
+        .open(&real.to_string_lossy())
+        .map_err(|e| err(one_line(&format!("not a USD stage Shenlong can read: {e:#}"))))
+}
+
+/// The first line of a message, at most 300 characters.
+fn one_line(message: &str) -> String {
+    let line = message.lines().next().unwrap_or_default();
+    line.chars().take(300).collect()
+}
+
+/// The stage's frame from its metadata.
+fn frame_of(stage: &Stage) -> Result<StageFrame, FormatError> {
+    let up = match stage.stage_metadata("upAxis").ok().flatten() {
+        Some(Value::Token(t)) if t.as_str() == "Z" => UpAxis::Z,
+        Some(Value::String(t)) if t == "Z" => UpAxis::Z,
+        None => UpAxis::Y,
+        Some(Value::Token(t)) if t.as_str() == "Y" => UpAxis::Y,
+        Some(Value::String(t)) if t == "Y" => UpAxis::Y,
+        Some(other) => {
+            return Err(err(format!(
+                "upAxis {other:?} is neither \"Y\" nor \"Z\""
+            )))
+        }
+    };
+    let meters_per_unit = match stage.stage_metadata("metersPerUnit").ok().flatten() {
+        None => 0.01,
+        Some(v) => scalar(&v).ok_or_else(|| err("metersPerUnit is not a number"))?,
+    };
+    if !(meters_per_unit.is_finite() && meters_per_unit > 0.0) {
+        return Err(err(format!(
+            "metersPerUnit {meters_per_unit} is not a positive number"
+        )));
+    }
+    Ok(StageFrame {
+        up,
+        meters_per_unit,
+    })
+}
+
+fn scalar(v: &Value) -> Option<f64> {
+    match v {
+        Value::Double(d) => Some(*d),
+        Value::Float(f) => Some(f64::from(*f)),
+        Value::Half(h) => Some(f64::from(h.to_f32())),
+        Value::Int(i) => Some(f64::from(*i)),
+        Value::Int64(i) => Some(*i as f64),
+        _ => None,
+    }
+}
+
+fn vec3(v: &Value) -> Option<DVec3> {
+    match v {
+        Value::Vec3d(a) => Some(DVec3::new(a.x, a.y, a.z)),
+        Value::Vec3f(a) => Some(DVec3::new(a.x.into(), a.y.into(), a.z.into())),
+        Value::Vec3h(a) => Some(DVec3::new(
+            a.x.to_f32().into(),
+            a.y.to_f32().into(),
+            a.z.to_f32().into(),
+        )),
+        _ => None,
+    }
+}
+
+fn quat(v: &Value) -> Option<DQuat> {
+    let q = match v {
+        Value::Quatd(q) => DQuat::from_xyzw(q.x, q.y, q.z, q.w),
+        Value::Quatf(q) => DQuat::from_xyzw(q.x.into(), q.y.into(), q.z.into(), q.w.into()),
+        Value::Quath(q) => DQuat::from_xyzw(
+            q.x.to_f32().into(),
+            q.y.to_f32().into(),
+            q.z.to_f32().into(),
+            q.w.to_f32().into(),
+        ),
+        _ => return None,
+    };
+    (q.length() > 0.0).then(|| q.normalize())
+}
+
+/// A USD matrix (row-major, row vectors) as Shenlong's (column vectors).
+fn matrix(m: &openusd::gf::Matrix4d) -> DMat4 {
+    DMat4::from_cols_array(&m.0)
+}
+
+/// Shenlong's matrix as USD's.
+fn to_usd_matrix(m: DMat4) -> openusd::gf::Matrix4d {
+    openusd::gf::Matrix4d(m.to_cols_array())
+}
+
+/// An attribute's default value.
+fn attr(prim: &Prim, name: &str) -> Option<Value> {
+    prim.attribute(name).get::<Value>().ok().flatten()
+}
+
+/// The order of a prim's transform ops, as authored.
+fn op_order(prim: &Prim) -> Vec<String> {
+    match attr(prim, "xformOpOrder") {
+        Some(Value::TokenVec(v)) => v.into_iter().map(|t| t.as_str().to_string()).collect(),
+        Some(Value::StringVec(v)) => v,
+        Some(Value::TokenListOp(op)) => op
+            .flatten()
+            .into_iter()
+            .map(|t| t.as_str().to_string())
+            .collect(),
+        _ => Vec::new(),
+    }
+}
+
+/// One op's matrix (column vectors).
+fn op_matrix(prim: &Prim, op: &str) -> Result<DMat4, FormatError> {
+    let (inverted, name) = match op.strip_prefix("!invert!") {
+        Some(rest) => (true, rest),
+        None => (false, op),
+    };
+    let Some(value) = attr(prim, name) else {
+        return Ok(DMat4::IDENTITY);
+    };
+    let kind = name
+        .strip_prefix("xformOp:")
+        .and_then(|k| k.split(':').next())
+        .unwrap_or_default();
+    let angle = |v: &Value| scalar(v).unwrap_or(0.0).to_radians();
+    let m = match kind {
+        "translate" => DMat4::from_translation(vec3(&value).unwrap_or(DVec3::ZERO)),
+        "translateX" => DMat4::from_translation(DVec3::X * scalar(&value).unwrap_or(0.0)),
+        "translateY" => DMat4::from_translation(DVec3::Y * scalar(&value).unwrap_or(0.0)),
+        "translateZ" => DMat4::from_translation(DVec3::Z * scalar(&value).unwrap_or(0.0)),
+        "scale" => DMat4::from_scale(vec3(&value).unwrap_or(DVec3::ONE)),
+        "scaleX" => DMat4::from_scale(DVec3::new(scalar(&value).unwrap_or(1.0), 1.0, 1.0)),
+        "scaleY" => DMat4::from_scale(DVec3::new(1.0, scalar(&value).unwrap_or(1.0), 1.0)),
+        "scaleZ" => DMat4::from_scale(DVec3::new(1.0, 1.0, scalar(&value).unwrap_or(1.0))),
+        "rotateX" => DMat4::from_rotation_x(angle(&value)),
+        "rotateY" => DMat4::from_rotation_y(angle(&value)),
+        "rotateZ" => DMat4::from_rotation_z(angle(&value)),
+        "orient" => DMat4::from_quat(quat(&value).unwrap_or(DQuat::IDENTITY)),
+        "transform" => match &value {
+            Value::Matrix4d(m) => matrix(m),
+            _ => DMat4::IDENTITY,
+        },
+        k if k.starts_with("rotate") && k.len() == 9 => {
+            let v = vec3(&value).unwrap_or(DVec3::ZERO);
+            let r = |axis: char| match axis {
+                'X' => DMat4::from_rotation_x(v.x.to_radians()),
+                'Y' => DMat4::from_rotation_y(v.y.to_radians()),
+                _ => DMat4::from_rotation_z(v.z.to_radians()),
+            };
+            // `rotateXYZ` turns about X first, then Y, then Z.
+            let axes: Vec<char> = k[6..].chars().collect();
+            r(axes[2]) * r(axes[1]) * r(axes[0])
+        }
+        _ => DMat4::IDENTITY,
+    };
+    if !m.is_finite() {
+        return Err(err(format!(
+            "{}: the transform op {name} is not finite",
+            prim.path()
+        )));
+    }
+    if inverted {
+        if m.determinant().abs() < 1e-300 {
+            return Err(err(format!(
+                "{}: the inverted op {name} cannot be inverted",
+                prim.path()
+            )));
+        }
+        Ok(m.inverse())
+    } else {
+        Ok(m)
+    }
+}
+
+/// A prim's local transform, and whether it resets the transform stack.
+fn local_transform(prim: &Prim) -> Result<(DMat4, bool), FormatError> {
+    let order = op_order(prim);
+    let resets = order.first().is_some_and(|o| o == "!resetXformStack!");
+    // The first op listed is the outermost: M = op0 · op1 · … (column vectors).
+    let mut m = DMat4::IDENTITY;
+    for op in order.iter().filter(|o| *o != "!resetXformStack!") {
+        m *= op_matrix(prim, op)?;
+    }
+    Ok((m, resets))
+}
+
+/// The points a gprim's geometry spans, in its own space: its points, or the corners of
+/// its extent.
+fn geometry_points(prim: &Prim, type_name: &str) -> Vec<DVec3> {
+    let corners = |lo: DVec3, hi: DVec3| -> Vec<DVec3> {
+        (0..8)
+            .map(|k| {
+                DVec3::new(
+                    if k & 1 == 0 { lo.x } else { hi.x },
+                    if k & 2 == 0 { lo.y } else { hi.y },
+                    if k & 4 == 0 { lo.z } else { hi.z },
+                )
+            })
+            .collect()
+    };
+    let number = |name: &str, default: f64| attr(prim, name).and_then(|v| scalar(&v)).unwrap_or(default);
+    let axis = || match attr(prim, "axis") {
+        Some(Value::Token(t)) => t.as_str().to_string(),
+        Some(Value::String(s)) => s,
+        _ => "Z".to_string(),
+    };
+    let upright = |r: f64, half: f64| {
+        let (lo, hi) = match axis().as_str() {
+            "X" => (DVec3::new(-half, -r, -r), DVec3::new(half, r, r)),
+            "Y" => (DVec3::new(-r, -half, -r), DVec3::new(r, half, r)),
+            _ => (DVec3::new(-r, -r, -half), DVec3::new(r, r, half)),
+        };
+        corners(lo, hi)
+    };
+    match type_name {
+        "Cube" => {
+            let h = number("size", 2.0) / 2.0;
+            corners(DVec3::splat(-h), DVec3::splat(h))
+        }
+        "Sphere" => {
+            let r = number("radius", 1.0);
+            corners(DVec3::splat(-r), DVec3::splat(r))
+        }
+        "Cylinder" | "Cone" => upright(number("radius", 1.0), number("height", 2.0) / 2.0),
+        "Capsule" => {
+            let r = number("radius", 0.5);
+            upright(r, number("height", 1.0) / 2.0 + r)
+        }
+        _ => {
+            let points: Vec<DVec3> = match attr(prim, "points") {
+                Some(Value::Vec3fVec(v)) => v
+                    .iter()
+                    .map(|p| DVec3::new(p.x.into(), p.y.into(), p.z.into()))
+                    .collect(),
+                Some(Value::Vec3dVec(v)) => v.iter().map(|p| DVec3::new(p.x, p.y, p.z)).collect(),
+                _ => Vec::new(),
+            };
+            if !points.is_empty() {
+                return points;
+            }
+            match attr(prim, "extent") {
+                Some(Value::Vec3fVec(v)) if v.len() == 2 => corners(
+                    DVec3::new(v[0].x.into(), v[0].y.into(), v[0].z.into()),
+                    DVec3::new(v[1].x.into(), v[1].y.into(), v[1].z.into()),
+                ),
+                _ => Vec::new(),
+            }
+        }
+    }
+}
+
+/// A prim and its local-to-world transform, for the walk.
+struct Visit {
+    prim: Prim,
+    world: DMat4,
+    /// The object (index) this prim belongs to, if any.
+    object: Option<usize>,
+}
+
+/// Whether a prim is a model of kind `component` (or a kind derived from it).
+fn is_component(prim: &Prim) -> bool {
+    prim.kind()
+        .ok()
+        .flatten()
+        .is_some_and(|k| k.as_str() == "component")
+}
+
+/// Reads a stage as a scene: objects with their world boxes in Shenlong's frame.
+///
+/// # Errors
+/// A file that is no USD stage Shenlong can read, nests too deep or is too large; a
+/// stage whose `upAxis` or `metersPerUnit` is unusable; one with no object.
+pub fn read(path: &Path) -> Result<(Scene, UsdDocument), FormatError> {
+    let container = container_of(path)?;
+    let stage = open_stage(path)?;
+    let frame = frame_of(&stage)?;
+    let default_prim = stage.default_prim().map(|t| t.as_str().to_string());
+    let root = match &default_prim {
+        Some(name) => stage.prim(format!("/{name}").as_str()),
+        None => stage.prim(sdf::Path::abs_root()),
+    };
+    let uses_kinds = uses_component_kinds(&stage)?;
+    let to_shenlong = frame.to_shenlong();
+    let mut objects: Vec<UsdObject> = Vec::new();
+    let mut points: Vec<Vec<DVec3>> = Vec::new();
+    // Parents before children, on an explicit stack: no recursion however deep.
+    let mut stack: Vec<Visit> = Vec::new();
+    let start_world = if default_prim.is_some() {
+        world_of(&stage, &root)?
+    } else {
+        DMat4::IDENTITY
+    };
+    let children = |p: &Prim| -> Result<Vec<Prim>, FormatError> {
+        p.children()
+            .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))
+    };
+    for child in children(&root)?.into_iter().rev() {
+        stack.push(Visit {
+            prim: child,
+            world: start_world,
+            object: None,
+        });
+    }
+    while let Some(Visit {
+        prim,
+        world: parent_world,
+        object,
+    }) = stack.pop()
+    {
+        if !prim.is_active().unwrap_or(true) {
+            continue;
+        }
+        let (local, resets) = local_transform(&prim)?;
+        let parent_world = if resets { DMat4::IDENTITY } else { parent_world };
+        let world = parent_world * local;
+        let type_name = prim
+            .type_name()
+            .ok()
+            .flatten()
+            .map(|t| t.as_str().to_string())
+            .unwrap_or_default();
+        let starts_object = if uses_kinds {
+            is_component(&prim)
+        } else {
+            object.is_none() && is_transformable(&type_name)
+        };
+        let object = if starts_object {
+            if objects.len() >= MAX_OBJECTS {
+                return Err(err(format!("more than {MAX_OBJECTS} objects")));
+            }
+            objects.push(UsdObject {
+                path: prim.path().to_string(),
+                world,
+                parent_world,
+                ancestor: object,
+            });
+            points.push(Vec::new());
+            Some(objects.len() - 1)
+        } else {
+            object
+        };
+        if let Some(o) = object {
+            if !matches!(type_name.as_str(), "Xform" | "Scope" | "") {
+                let shenlong = to_shenlong * world;
+                points[o].extend(
+                    geometry_points(&prim, &type_name)
+                        .into_iter()
+                        .map(|p| shenlong.transform_point3(p)),
+                );
+            }
+        }
+        for child in children(&prim)?.into_iter().rev() {
+            stack.push(Visit {
+                prim: child,
+                world,
+                object,
+            });
+        }
+    }
+    scene_of(path, container, frame, default_prim, objects, points)
+}
+
+/// Whether a prim of this type can carry a transform (an object's root).
+fn is_transformable(type_name: &str) -> bool {
+    !matches!(
+        type_name,
+        "" | "Scope"
+            | "Material"
+            | "Shader"
+            | "NodeGraph"
+            | "GeomSubset"
+            | "Camera"
+            | "DistantLight"
+            | "DomeLight"
+            | "RectLight"
+            | "SphereLight"
+            | "DiskLight"
+            | "CylinderLight"
+            | "RenderSettings"
+            | "RenderProduct"
+            | "RenderVar"
+    )
+}
+
+/// Whether any prim of the stage has kind `component` (the stage uses model kinds).
+fn uses_component_kinds(stage: &Stage) -> Result<bool, FormatError> {
+    let mut stack = vec![stage.prim(sdf::Path::abs_root())];
+    while let Some(p) = stack.pop() {
+        if is_component(&p) {
+            return Ok(true);
+        }
+        // Models sit near the top: a component is never under a gprim.
+        stack.extend(
+            p.children()
+                .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?
+                .into_iter()
+                .filter(|c| {
+                    c.kind().ok().flatten().is_some()
+                        || c.type_name()
+                            .ok()
+                            .flatten()
+                            .is_some_and(|t| matches!(t.as_str(), "Xform" | "Scope" | ""))
+                }),
+        );
+    }
+    Ok(false)
+}
+
+/// The local-to-world transform of a prim, from the root down.
+fn world_of(stage: &Stage, prim: &Prim) -> Result<DMat4, FormatError> {
+    let mut chain: Vec<Prim> = Vec::new();
+    let mut path = prim.path().clone();
+    loop {
+        chain.push(stage.prim(path.clone()));
+        match path.parent() {
+            Some(parent) if parent != sdf::Path::abs_root() => path = parent,
+            _ => break,
+        }
+    }
+    let mut world = DMat4::IDENTITY;
+    for p in chain.iter().rev() {
+        let (local, resets) = local_transform(p)?;
+        world = if resets { local } else { world * local };
+    }
+    Ok(world)
+}
+
+/// The scene of the objects found: each with its points, its name its prim's.
+fn scene_of(
+    path: &Path,
+    container: UsdContainer,
+    frame: StageFrame,
+    default_prim: Option<String>,
+    objects: Vec<UsdObject>,
+    points: Vec<Vec<DVec3>>,
+) -> Result<(Scene, UsdDocument), FormatError> {
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
+    let mut scene = Scene::new(stem);
+    let mut kept: Vec<UsdObject> = Vec::new();
+    for (object, pts) in objects.into_iter().zip(points) {
+        if pts.is_empty() || pts.iter().any(|p| !p.is_finite()) {
+            continue;
+        }
+        let leaf = object.path.rsplit('/').next().unwrap_or_default().to_string();
+        let name = if scene.find(&leaf).is_some() {
+            object.path.clone()
+        } else {
+            leaf
+        };
+        let o = Object::new(
+            name,
+            Shape::Points { points: pts },
+            cga::Similarity::IDENTITY,
+            Pivot::BottomCenter,
+        )
+        .map_err(|e| err(format!("{}: {e}", object.path)))?;
+        scene.objects.push(o);
+        kept.push(object);
+    }
+    if scene.objects.is_empty() {
+        return Err(err(
+            "no object: no prim with geometry under the default prim (or the root)",
+        ));
+    }
+    // Ancestors are indices among all the objects found; map them to the kept ones.
+    let document = UsdDocument {
+        source: path.to_path_buf(),
+        container,
+        frame,
+        default_prim,
+        objects: reindex(kept),
+    };
+    Ok((scene, document))
+}
+
+/// Each object's nearest object ancestor, found again among the kept objects by path.
+fn reindex(mut objects: Vec<UsdObject>) -> Vec<UsdObject> {
+    let paths: Vec<String> = objects.iter().map(|o| o.path.clone()).collect();
+    for o in &mut objects {
+        o.ancestor = paths
+            .iter()
+            .enumerate()
+            .filter(|(_, p)| o.path.starts_with(&format!("{p}/")))
+            .max_by_key(|(_, p)| p.len())
+            .map(|(k, _)| k);
+    }
+    objects
+}
+
+/// The new local transform of each object that moved (stage units, column vectors).
+fn new_locals(scene: &Scene, document: &UsdDocument) -> Result<Vec<Option<DMat4>>, FormatError> {
+    if scene.objects.len() != document.objects.len() {
+        return Err(err("the scene's objects no longer match the stage's prims"));
+    }
+    let c = document.frame.to_shenlong();
+    let c_inv = c.inverse();
+    // Each object's world motion, in stage units.
+    let deltas: Vec<Option<DMat4>> = scene
+        .objects
+        .iter()
+        .map(|o| {
+            let s = o.similarity();
+            let moved = s.translation.length() > 0.0
+                || !s.rotation.abs_diff_eq(DQuat::IDENTITY, 0.0)
+                || s.scale != 1.0;
+            moved.then(|| {
+                c_inv
+                    * DMat4::from_scale_rotation_translation(
+                        DVec3::splat(s.scale),
+                        s.rotation,
+                        s.translation,
+                    )
+                    * c
+            })
+        })
+        .collect();
+    let mut out = vec![None; deltas.len()];
+    for (k, object) in document.objects.iter().enumerate() {
+        let parent_delta = object.ancestor.and_then(|a| deltas[a]);
+        if deltas[k].is_none() && parent_delta.is_none() {
+            continue;
+        }
+        let new_world = deltas[k].unwrap_or(DMat4::IDENTITY) * object.world;
+        let new_parent = parent_delta.unwrap_or(DMat4::IDENTITY) * object.parent_world;
+        if new_parent.determinant().abs() < 1e-300 {
+            return Err(err(format!(
+                "{}: its parent's transform cannot be inverted",
+                object.path
+            )));
+        }
+        let local = new_parent.inverse() * new_world;
+        let old_local = object.parent_world.inverse() * object.world;
+        if !local.abs_diff_eq(old_local, 1e-12 * (1.0 + old_local.abs().to_cols_array().iter().cloned().fold(0.0, f64::max))) {
+            out[k] = Some(local);
+        }
+    }
+    Ok(out)
+}
+
+/// The ops that write a local transform: translate, orient, scale when it is one; else
+/// one matrix.
+fn ops_for(local: DMat4) -> Vec<(String, &'static str, Value)> {
+    let (scale, rotation, translation) = local.to_scale_rotation_translation();
+    let rebuilt = DMat4::from_scale_rotation_translation(scale, rotation, translation);
+    let size = 1.0 + local.abs().to_cols_array().iter().cloned().fold(0.0, f64::max);
+    if scale.min_element() > 0.0 && rebuilt.abs_diff_eq(local, 1e-9 * size) {
+        vec![
+            (
+                "xformOp:translate:shenlong".to_string(),
+                "double3",
+                Value::Vec3d(openusd::gf::Vec3d {
+                    x: translation.x,
+                    y: translation.y,
+                    z: translation.z,
+                }),
+            ),
+            (
+                "xformOp:orient:shenlong".to_string(),
+                "quatd",
+                Value::Quatd(openusd::gf::Quatd {
+                    w: rotation.w,
+                    x: rotation.x,
+                    y: rotation.y,
+                    z: rotation.z,
+                }),
+            ),
+            (
+                "xformOp:scale:shenlong".to_string(),
+                "double3",
+                Value::Vec3d(openusd::gf::Vec3d {
+                    x: scale.x,
+                    y: scale.y,
+                    z: scale.z,
+                }),
+            ),
+        ]
+    } else {
+        vec![(
+            "xformOp:transform:shenlong".to_string(),
+            "matrix4d",
+            Value::Matrix4d(to_usd_matrix(local)),
+        )]
+    }
+}
+
+/// The edited stage's root layer in `container` (`.usda` text or `.usdc`): the edited
+/// prims' new op stacks authored on it, everything else as it was. An unchanged `.usda`
+/// written as `.usda` gives the original bytes.
+///
+/// # Errors
+/// The stage cannot be read again, an op cannot be authored, or the layer not written.
+pub fn write(
+    scene: &Scene,
+    document: &UsdDocument,
+    container: UsdContainer,
+) -> Result<Vec<u8>, FormatError> {
+    let locals = new_locals(scene, document)?;
+    if locals.iter().all(Option::is_none) && container == document.container {
+        return std::fs::read(&document.source).map_err(|e| err(format!("cannot read the source again: {e}")));
+    }
+    let id = match container {
+        UsdContainer::Usda => "usda",
+        UsdContainer::Usdc => "usdc",
+        UsdContainer::Usdz => {
+            return Err(err(
+                "writing .usdz is not supported: write the edit to a .usda or .usdc file",
+            ))
+        }
+    };
+    let stage = open_stage(&document.source)?;
+    for (object, local) in document.objects.iter().zip(&locals) {
+        let Some(local) = local else { continue };
+        author(&stage, &object.path, *local)?;
+    }
+    let format = sdf::LayerRegistry::find_by_id(id).ok_or_else(|| err(format!("no {id} writer")))?;
+    let mut buf = std::io::Cursor::new(Vec::new());
+    format
+        .write(stage.root_layer().data(), &mut buf)
+        .map_err(|e| err(one_line(&format!("cannot write the stage: {e:#}"))))?;
+    Ok(buf.into_inner())
+}
+
+/// Authors a prim's new local transform on the stage's edit target (its root layer).
+fn author(stage: &Stage, path: &str, local: DMat4) -> Result<(), FormatError> {
+    let prim = stage.prim(path);
+    let ops = ops_for(local);
+    for (name, type_name, value) in &ops {
+        prim.create_attribute(name.as_str(), *type_name)
+            .and_then(|a| a.set_custom(false))
+            .and_then(|a| a.set(value.clone()))
+            .map_err(|e| err(one_line(&format!("{path}: cannot author {name}: {e}"))))?;
+    }
+    let order: Vec<openusd::tf::Token> = ops.iter().map(|(n, _, _)| n.as_str().into()).collect();
+    prim.create_attribute("xformOpOrder", "token[]")
+        .and_then(|a| a.set_custom(false))
+        .and_then(|a| a.set_variability(sdf::Variability::Uniform))
+        .and_then(|a| a.set(Value::TokenVec(order)))
+        .map_err(|e| err(one_line(&format!("{path}: cannot author xformOpOrder: {e}"))))?;
+    Ok(())
+}
+
+/// The edit as a `.usda` layer that sublayers the input (by `sublayer`, the path written
+/// for it) and holds only `over`s of the edited prims with their new op stacks, and the
+/// stage metadata a root layer must carry (`upAxis`, `metersPerUnit`, `defaultPrim`).
+///
+/// # Errors
+/// As [`write`].
+pub fn write_layer(
+    scene: &Scene,
+    document: &UsdDocument,
+    sublayer: &str,
+) -> Result<Vec<u8>, FormatError> {
+    let locals = new_locals(scene, document)?;
+    let mut text = String::from("#usda 1.0\n(\n");
+    text.push_str("    doc = \"An edit by Shenlong, over the layer below\"\n");
+    if let Some(d) = &document.default_prim {
+        text.push_str(&format!("    defaultPrim = \"{}\"\n", escape(d)));
+    }
+    text.push_str(&format!(
+        "    metersPerUnit = {}\n",
+        number(document.frame.meters_per_unit)
+    ));
+    text.push_str(&format!(
+        "    subLayers = [\n        @{}@\n    ]\n",
+        sublayer.replace('@', "")
+    ));
+    text.push_str(&format!(
+        "    upAxis = \"{}\"\n)\n",
+        match document.frame.up {
+            UpAxis::Y => "Y",
+            UpAxis::Z => "Z",
+        }
+    ));
+    // A tree of `over`s: each edited prim under the overs of its ancestors.
+    let mut tree = OverTree::default();
+    for (object, local) in document.objects.iter().zip(&locals) {
+        if let Some(local) = local {
+            tree.insert(&object.path, ops_for(*local));
+        }
+    }
+    tree.write(&mut text);
+    Ok(text.into_bytes())
+}
+
+/// How a layer written at `layer` names the stage it sublayers (`source`): `./name` beside
+/// it, else the source's absolute path.
+///
+/// # Errors
+/// The layer would replace its own source, or the source cannot be found.
+pub fn sublayer_path(source: &Path, layer: &Path) -> Result<String, FormatError> {
+    let real = source
+        .canonicalize()
+        .map_err(|e| err(format!("cannot find {}: {e}", source.display())))?;
+    let folder = layer.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let layer_folder = folder
+        .canonicalize()
+        .map_err(|e| err(format!("cannot find the folder {}: {e}", folder.display())))?;
+    let name = layer.file_name().map(|n| layer_folder.join(n));
+    if name.as_deref() == Some(real.as_path()) {
+        return Err(err(
+            "a layer over a stage cannot replace the stage itself: write it to another file",
+        ));
+    }
+    Ok(match (real.parent(), real.file_name().and_then(|n| n.to_str())) {
+        (Some(parent), Some(file)) if parent == layer_folder => format!("./{file}"),
+        _ => real.to_string_lossy().into_owned(),
+    })
+}
+
+/// Prims of an override layer, by name, each with the ops authored on it.
+#[derive(Default)]
+struct OverTree {
+    children: Vec<(String, OverTree)>,
+    ops: Vec<(String, &'static str, Value)>,
+}
+
+impl OverTree {
+    fn insert(&mut self, path: &str, ops: Vec<(String, &'static str, Value)>) {
+        let mut node = self;
+        for name in path.split('/').filter(|s| !s.is_empty()) {
+            let k = match node.children.iter().position(|(n, _)| n == name) {
+                Some(k) => k,
+                None => {
+                    node.children.push((name.to_string(), OverTree::default()));
+                    node.children.len() - 1
+                }
+            };
+            node = &mut node.children[k].1;
+        }
+        node.ops = ops;
+    }
+
+    /// The tree as text, without recursion: a stack of (node, depth, closing).
+    fn write(&self, out: &mut String) {
+        enum Step<'a> {
+            Open(&'a str, &'a OverTree, usize),
+            Close(usize),
+        }
+        let mut stack: Vec<Step<'_>> = self
+            .children
+            .iter()
+            .rev()
+            .map(|(n, t)| Step::Open(n, t, 0))
+            .collect();
+        while let Some(step) = stack.pop() {
+            match step {
+                Step::Open(name, node, depth) => {
+                    let pad = "    ".repeat(depth);
+                    out.push_str(&format!("\n{pad}over \"{}\"\n{pad}{{\n", escape(name)));
+                    for (op, type_name, value) in &node.ops {
+                        out.push_str(&format!("{pad}    {type_name} {op} = {}\n", usda_value(value)));
+                    }
+                    if !node.ops.is_empty() {
+                        let order: Vec<String> =
+                            node.ops.iter().map(|(n, _, _)| format!("\"{n}\"")).collect();
+                        out.push_str(&format!(
+                            "{pad}    uniform token[] xformOpOrder = [{}]\n",
+                            order.join(", ")
+                        ));
+                    }
+                    stack.push(Step::Close(depth));
+                    for (n, t) in node.children.iter().rev() {
+                        stack.push(Step::Open(n, t, depth + 1));
+                    }
+                }
+                Step::Close(depth) => {
+                    out.push_str(&format!("{}}}\n", "    ".repeat(depth)));
+                }
+            }
+        }
+    }
+}
+
+/// A string for a usda quoted string.
+fn escape(s: &str) -> String {
+    s.replace('\\', "\\\\").replace('"', "\\\"")
+}
+
+/// A number as usda writes it: shortest round-trip form.
+fn number(x: f64) -> String {
+    let s = format!("{x:?}");
+    s.strip_suffix(".0").map_or(s.clone(), str::to_string)
+}
+
+/// An op's value as usda text.
+fn usda_value(v: &Value) -> String {
+    match v {
+        Value::Vec3d(a) => format!("({}, {}, {})", number(a.x), number(a.y), number(a.z)),
+        Value::Quatd(q) => format!(
+            "({}, {}, {}, {})",
+            number(q.w),
+            number(q.x),
+            number(q.y),
+            number(q.z)
+        ),
+        Value::Matrix4d(m) => {
+            let rows: Vec<String> = m
+                .0
+                .chunks(4)
+                .map(|r| format!("({}, {}, {}, {})", number(r[0]), number(r[1]), number(r[2]), number(r[3])))
+                .collect();
+            format!("( {} )", rows.join(", "))
+        }
+        _ => String::new(),
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,154 @@
+//! USD stages read and written: frames, op stacks, geometry, the layer, limits.
+
+use super::*;
+
+fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
+    let p = dir.join(name);
+    std::fs::write(&p, text).unwrap();
+    p
+}
+
+const ROOM_Z_UP_CM: &str = r#"#usda 1.0
+(
+    defaultPrim = "World"
+    metersPerUnit = 0.01
+    upAxis = "Z"
+)
+
+def Xform "World"
+{
+    def Xform "Table"
+    {
+        double3 xformOp:translate = (100, 0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+
+        def Cube "Top"
+        {
+            double size = 80
+            double3 xformOp:translate = (0, 0, 40)
+            uniform token[] xformOpOrder = ["xformOp:translate"]
+        }
+    }
+
+    def Xform "Shelf"
+    {
+        double3 xformOp:translate = (-200, 0, 0)
+        float xformOp:rotateZ = 90
+        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateZ"]
+
+        def Mesh "Body"
+        {
+            point3f[] points = [(-50, -10, 0), (50, -10, 0), (50, 10, 0), (-50, 10, 0), (-50, -10, 180), (50, -10, 180), (50, 10, 180), (-50, 10, 180)]
+            int[] faceVertexCounts = [4]
+            int[] faceVertexIndices = [0, 1, 2, 3]
+        }
+    }
+
+    def Scope "Looks"
+    {
+    }
+}
+"#;
+
+#[test]
+fn a_z_up_centimetre_stage_reads_as_y_up_metres() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
+    let (scene, document) = read(&path).unwrap();
+    assert_eq!(document.frame.up, UpAxis::Z);
+    assert_eq!(document.default_prim.as_deref(), Some("World"));
+    let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
+    assert_eq!(names, ["Table", "Shelf"]);
+    // The table's top: an 80 cm cube centred 40 cm up at x = 100 cm.
+    let table = scene.objects[0].world_aabb();
+    assert!((table.min - DVec3::new(0.6, 0.0, -0.4)).length() < 1e-9, "{table:?}");
+    assert!((table.max - DVec3::new(1.4, 0.8, 0.4)).length() < 1e-9, "{table:?}");
+    // The shelf, turned 90° about up: 1 m long along −z… its 20 cm depth along x.
+    let shelf = scene.objects[1].world_aabb();
+    assert!((shelf.size() - DVec3::new(0.2, 1.8, 1.0)).length() < 1e-9, "{shelf:?}");
+    assert!((shelf.center().x + 2.0).abs() < 1e-9);
+}
+
+#[test]
+fn an_edit_changes_only_the_moved_prims_op_stack() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
+    let (mut scene, document) = read(&path).unwrap();
+    // Unchanged: the original bytes.
+    assert_eq!(
+        super::write(&scene, &document, UsdContainer::Usda).unwrap(),
+        ROOM_Z_UP_CM.as_bytes()
+    );
+    // 0.5 m right (+x in both frames) and 0.3 m forward (Shenlong +z is the stage's −y).
+    let m = cga::Multivector::translator(DVec3::new(0.5, 0.0, 0.3));
+    scene.apply(1, &m, false).unwrap();
+    let bytes = super::write(&scene, &document, UsdContainer::Usda).unwrap();
+    let out = write(dir.path(), "out.usda", std::str::from_utf8(&bytes).unwrap());
+    let (again, _) = read(&out).unwrap();
+    let before = scene.objects[1].world_aabb();
+    let after = again.objects[1].world_aabb();
+    assert!((after.min - before.min).length() < 1e-9, "{before:?} {after:?}");
+    assert!((again.objects[0].world_aabb().min - scene.objects[0].world_aabb().min).length() < 1e-12);
+    let text = String::from_utf8(bytes).unwrap();
+    assert!(text.contains("xformOp:translate:shenlong"), "{text}");
+    assert!(text.contains("upAxis = \"Z\""), "{text}");
+    assert!(text.contains("def Scope \"Looks\""), "{text}");
+}
+
+#[test]
+fn the_layer_holds_only_overs_of_what_moved() {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
+    let (mut scene, document) = read(&path).unwrap();
+    scene
+        .apply(0, &cga::Multivector::translator(DVec3::new(-1.0, 0.0, 0.0)), false)
+        .unwrap();
+    let layer = dir.path().join("edit.usda");
+    let sub = sublayer_path(&path, &layer).unwrap();
+    assert_eq!(sub, "./room.usda");
+    let bytes = write_layer(&scene, &document, &sub).unwrap();
+    let text = std::str::from_utf8(&bytes).unwrap();
+    assert!(text.contains("over \"Table\""), "{text}");
+    assert!(!text.contains("Shelf"), "{text}");
+    std::fs::write(&layer, &bytes).unwrap();
+    let (composed, _) = read(&layer).unwrap();
+    let moved = composed.objects[0].world_aabb();
+    assert!((moved.min.x - (0.6 - 1.0)).abs() < 1e-9, "{moved:?}");
+    // Never over its own source.
+    assert!(sublayer_path(&path, &path).is_err());
+}
+
+#[test]
+fn references_out_of_the_folder_and_deep_nesting_are_refused() {
+    let dir = tempfile::tempdir().unwrap();
+    let inner = dir.path().join("inner");
+    std::fs::create_dir(&inner).unwrap();
+    write(dir.path(), "secret.usda", ROOM_Z_UP_CM);
+    let escaping = write(
+        &inner,
+        "room.usda",
+        "#usda 1.0\n(\n    subLayers = [@../secret.usda@]\n)\n",
+    );
+    let e = read(&escaping).map(|_| ()).unwrap_err().to_string();
+    assert!(!e.is_empty() && !e.contains('\n'), "{e}");
+    let deep = format!("#usda 1.0\n{}", "(".repeat(200));
+    let deep = write(dir.path(), "deep.usda", &deep);
+    let e = read(&deep).map(|_| ()).unwrap_err().to_string();
+    assert!(e.contains("nesting deeper than"), "{e}");
+}
+
+#[test]
+fn a_local_transform_that_is_no_trs_is_written_as_a_matrix() {
+    let shear = DMat4::from_cols_array(&[
+        1.0, 0.0, 0.0, 0.0, 0.5, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 1.0,
+    ]);
+    let ops = ops_for(shear);
+    assert_eq!(ops.len(), 1);
+    assert_eq!(ops[0].0, "xformOp:transform:shenlong");
+    let trs = DMat4::from_scale_rotation_translation(
+        DVec3::splat(2.0),
+        DQuat::from_rotation_y(0.3),
+        DVec3::new(1.0, 2.0, 3.0),
+    );
+    assert_eq!(ops_for(trs).len(), 3);
+}
