@@ -116,6 +116,8 @@ pub struct UsdDocument {
 pub struct FolderResolver {
     root: PathBuf,
     inner: DefaultResolver,
+    /// The asset paths refused, for the error that names them.
+    refused: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
 }
 
 impl FolderResolver {
@@ -133,7 +135,14 @@ impl FolderResolver {
         Ok(Self {
             inner: DefaultResolver::with_search_paths([root.clone()]),
             root,
+            refused: std::sync::Arc::default(),
         })
+    }
+
+    /// The list the resolver adds each refused asset path to.
+    #[must_use]
+    pub fn refusals(&self) -> std::sync::Arc<std::sync::Mutex<Vec<String>>> {
+        self.refused.clone()
     }
 
     /// Whether a resolved path is a regular file inside the folder (a file inside a
@@ -156,7 +165,15 @@ impl Resolver for FolderResolver {
     }
 
     fn resolve(&self, asset_path: &str) -> Option<ResolvedPath> {
-        self.inner.resolve(asset_path).filter(|r| self.inside(r))
+        let resolved = self.inner.resolve(asset_path)?;
+        if self.inside(&resolved) {
+            Some(resolved)
+        } else {
+            if let Ok(mut list) = self.refused.lock() {
+                list.push(asset_path.to_string());
+            }
+            None
+        }
     }
 
     fn resolve_for_new_asset(&self, _asset_path: &str) -> Option<ResolvedPath> {
@@ -254,13 +271,29 @@ fn open_stage(path: &Path) -> Result<Stage, FormatError> {
     let folder = path.parent().unwrap_or(Path::new("."));
     let resolver =
         FolderResolver::new(folder).map_err(|e| err(format!("cannot read its folder: {e}")))?;
+    let refused = resolver.refusals();
     let real = path
         .canonicalize()
         .map_err(|e| err(format!("cannot read it: {e}")))?;
-    Stage::builder()
+    let stage = Stage::builder()
         .resolver(resolver)
         .open(&real.to_string_lossy())
-        .map_err(|e| err(one_line(&format!("not a USD stage Shenlong can read: {e:#}"))))
+        .map_err(|e| err(one_line(&format!("not a USD stage Shenlong can read: {e:#}"))))?;
+    // Composition is lazy: walk the stage once so every arc is resolved now.
+    let mut stack = vec![stage.prim(sdf::Path::abs_root())];
+    while let Some(p) = stack.pop() {
+        stack.extend(p.children().map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?);
+        if refused.lock().is_ok_and(|l| !l.is_empty()) {
+            break;
+        }
+    }
+    if let Some(first) = refused.lock().ok().and_then(|l| l.first().cloned()) {
+        return Err(err(format!(
+            "'{}' is outside the stage's folder; only files inside it are read",
+            first.chars().take(200).collect::<String>()
+        )));
+    }
+    Ok(stage)
 }
 
 /// The first line of a message, at most 300 characters.
