@@ -111,7 +111,7 @@ impl PyScene {
 
 #[pymethods]
 impl PyScene {
-    /// Reads a scene file (`.json`, `.gltf`, `.glb`).
+    /// Reads a scene file (`.json`, `.gltf`, `.glb`, `.usda`, `.usdc`, `.usdz`).
     #[staticmethod]
     fn load(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
         detached(py, move || {

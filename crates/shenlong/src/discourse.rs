@@ -319,7 +319,10 @@ mod tests {
             "move it"
         );
         assert_eq!(core_of("pls move the bin if you can"), "move the bin");
-        assert_eq!(core_of("put the laptop on the cabinet for now"), "put the laptop on the cabinet");
+        assert_eq!(
+            core_of("put the laptop on the cabinet for now"),
+            "put the laptop on the cabinet"
+        );
         assert_eq!(core_of("i'd like the lamp moved"), "the lamp moved");
         assert_eq!(core_of("ty in advance"), "");
         assert_eq!(

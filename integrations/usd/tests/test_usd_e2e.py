@@ -248,6 +248,60 @@ class UsdEndToEnd(unittest.TestCase):
         self.assertAlmostEqual(vase["position"][0], 2.0, places=6)
         self.assertAlmostEqual(vase["position"][2], -1.0, places=6)
 
+    def test_component_models_are_the_objects(self):
+        src = os.path.join(self.dir, "office.usda")
+        out = os.path.join(self.dir, "office_edited.usda")
+        stage = Usd.Stage.CreateNew(src)
+        UsdGeom.SetStageUpAxis(stage, UsdGeom.Tokens.y)
+        UsdGeom.SetStageMetersPerUnit(stage, 1.0)
+        world = UsdGeom.Xform.Define(stage, "/World")
+        stage.SetDefaultPrim(world.GetPrim())
+        Usd.ModelAPI(world.GetPrim()).SetKind("assembly")
+        group = UsdGeom.Xform.Define(stage, "/World/Furniture")
+        Usd.ModelAPI(group.GetPrim()).SetKind("group")
+        group.AddTranslateOp().Set(Gf.Vec3d(1.0, 0, 0))
+        for name, x in (("Chair", -1.0), ("Desk", 1.0)):
+            x_form = UsdGeom.Xform.Define(stage, f"/World/Furniture/{name}")
+            Usd.ModelAPI(x_form.GetPrim()).SetKind("component")
+            x_form.AddTranslateOp().Set(Gf.Vec3d(x, 0, 0))
+            add_box_mesh(stage, f"/World/Furniture/{name}/Geo", (-0.3, 0, -0.3), (0.3, 0.8, 0.3))
+        stage.GetRootLayer().Save()
+        before = Usd.Stage.Open(src)
+        r = shenlong("edit", src, "move the chair 0.5 m to the left", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        after = Usd.Stage.Open(out)
+        blo, _ = world_box(before, "/World/Furniture/Chair")
+        alo, _ = world_box(after, "/World/Furniture/Chair")
+        self.assertLess(abs((alo[0] - blo[0]) + 0.5), TOL_M)
+        self.assertEqual(
+            values(before, {"/World/Furniture/Chair"}), values(after, {"/World/Furniture/Chair"})
+        )
+
+    def test_a_usdz_package_is_read_and_its_edit_written_as_usda(self):
+        from pxr import UsdUtils
+
+        src = os.path.join(self.dir, "room.usda")
+        living_room_z_up_cm(src)
+        pkg = os.path.join(self.dir, "room.usdz")
+        self.assertTrue(UsdUtils.CreateNewUsdzPackage(Sdf.AssetPath(src), pkg))
+        out = os.path.join(self.dir, "from_usdz.usda")
+        r = shenlong("edit", pkg, "move the vase 30 cm to the right", "-o", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        before, after = Usd.Stage.Open(pkg), Usd.Stage.Open(out)
+        blo, _ = world_box(before, "/World/Vase")
+        alo, _ = world_box(after, "/World/Vase")
+        self.assertLess(abs((alo[0] - blo[0]) - 30.0), TOL_M * 100)
+
+    def test_a_scene_json_converts_to_a_stage_usd_core_reads(self):
+        out = os.path.join(self.dir, "living_room.usda")
+        r = shenlong("convert", "example:living_room", out)
+        self.assertEqual(r.returncode, 0, r.stderr)
+        stage = Usd.Stage.Open(out)
+        self.assertEqual(UsdGeom.GetStageUpAxis(stage), UsdGeom.Tokens.y)
+        lo, hi = world_box(stage, "/World/sofa")
+        self.assertLess(abs((hi[0] - lo[0]) - 2.2), TOL_M)
+        self.assertLess(abs(lo[1]), TOL_M)
+
 
 if __name__ == "__main__":
     unittest.main()

@@ -18,7 +18,7 @@ use std::path::PathBuf;
 
 Then open the address in a browser. API: GET /api/scene, POST /api/edit
 {\"instruction\"}, POST /api/undo, POST /api/redo, GET /api/history,
-GET /api/export?format=json|glb|gltf|tdw, POST /api/apply {\"object\", \"expr\"}.")]
+GET /api/export?format=json|glb|gltf|usda|tdw, POST /api/apply {\"object\", \"expr\"}.")]
 pub struct Args {
     /// The scene (a file or example:NAME).
     scene: String,

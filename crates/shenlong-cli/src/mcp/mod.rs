@@ -101,8 +101,8 @@ pub struct RenderRequest {
 #[derive(Debug, Deserialize, schemars::JsonSchema)]
 #[serde(deny_unknown_fields)]
 pub struct ExportRequest {
-    /// `json` (Shenlong scene JSON), `gltf`, `glb` (only for a scene read from glTF) or
-    /// `tdw` (ThreeDWorld commands).
+    /// `json` (Shenlong scene JSON), `gltf`, `glb` (only for a scene read from glTF),
+    /// `usda` (only for a scene read from a USD stage) or `tdw` (ThreeDWorld commands).
     pub format: ExportFormat,
 }
 
@@ -116,6 +116,9 @@ pub enum ExportFormat {
     Gltf,
     /// Binary glTF (the source must be GLB).
     Glb,
+    /// USD as text (the source must be a USD stage: the original with the moved prims'
+    /// transforms rewritten).
+    Usda,
     /// ThreeDWorld commands placing every object.
     Tdw,
 }
@@ -412,7 +415,7 @@ impl ShenlongMcp {
 
     /// The scene in a format, as content.
     #[tool(
-        description = "The scene as a file's content: json (Shenlong scene JSON), gltf or glb (for a scene read from glTF/GLB: the original with the moved nodes rewritten), or tdw (ThreeDWorld commands). Text formats come as text, glb as a base64 resource.",
+        description = "The scene as a file's content: json (Shenlong scene JSON), gltf or glb (for a scene read from glTF/GLB: the original with the moved nodes rewritten), usda (for a scene read from a USD stage: the root layer with the moved prims' transforms rewritten), or tdw (ThreeDWorld commands). Text formats come as text, glb as a base64 resource.",
         annotations(read_only_hint = true)
     )]
     async fn export(
@@ -423,6 +426,7 @@ impl ShenlongMcp {
             ExportFormat::Json => (Format::SceneJson, "application/json", "json"),
             ExportFormat::Gltf => (Format::Gltf, "model/gltf+json", "gltf"),
             ExportFormat::Glb => (Format::Glb, "model/gltf-binary", "glb"),
+            ExportFormat::Usda => (Format::Usda, "model/vnd.usda", "usda"),
             ExportFormat::Tdw => (Format::TdwCommands, "application/json", "tdw.json"),
         };
         let bytes = self

@@ -764,7 +764,7 @@ async fn export(
         .collect();
     if let Some((k, _)) = pairs.iter().find(|(k, _)| k != "format") {
         return Err(bad(format!(
-            "unknown query parameter '{k}': use format=json|glb|gltf|tdw"
+            "unknown query parameter '{k}': use format=json|glb|gltf|usda|tdw"
         )));
     }
     if formats.len() > 1 {
@@ -777,10 +777,11 @@ async fn export(
         "json" => (Format::SceneJson, "application/json", "json"),
         "glb" => (Format::Glb, "model/gltf-binary", "glb"),
         "gltf" => (Format::Gltf, "model/gltf+json", "gltf"),
+        "usda" => (Format::Usda, "model/vnd.usda", "usda"),
         "tdw" => (Format::TdwCommands, "application/json", "tdw.json"),
         other => {
             return Err(bad(format!(
-                "unknown format '{other}': use json, glb, gltf or tdw"
+                "unknown format '{other}': use json, glb, gltf, usda or tdw"
             )))
         }
     };

@@ -340,9 +340,13 @@ impl SceneFile {
     #[cfg(feature = "usd")]
     fn usd_bytes(&self, format: Format) -> Result<Vec<u8>, FormatError> {
         let Document::Usd(document) = &self.document else {
-            return Err(FormatError::new(
-                "writing USD needs a USD source: Shenlong edits the prims of an existing stage",
-            ));
+            // A scene from elsewhere: a new stage of boxes.
+            return match format {
+                Format::Usda => Ok(usd::write_new(&self.scene)),
+                _ => Err(FormatError::new(
+                    "a scene read from no USD stage is written as a new .usda",
+                )),
+            };
         };
         let container = match format {
             Format::Usda => usd::UsdContainer::Usda,

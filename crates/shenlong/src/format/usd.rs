@@ -26,7 +26,7 @@
 use super::FormatError;
 use crate::scene::{Object, Pivot, Scene, Shape};
 use glam::{DMat4, DQuat, DVec3};
-use openusd::ar::{self, Asset, DefaultResolver, Resolver, ResolvedPath};
+use openusd::ar::{self, Asset, DefaultResolver, ResolvedPath, Resolver};
 use openusd::sdf::{self, Value};
 use openusd::usd::{Prim, Stage};
 use std::path::{Path, PathBuf};
@@ -93,6 +93,8 @@ pub struct UsdObject {
     /// The object (index into the objects) nearest above it, if any: its motion moves this
     /// one's parent.
     pub ancestor: Option<usize>,
+    /// The name Shenlong wrote for it (`shenlong:name`), when the stage is one it made.
+    pub name: Option<String>,
 }
 
 /// What writing a stage back needs: where it came from and its objects' prims.
@@ -259,13 +261,11 @@ fn open_stage(path: &Path) -> Result<Stage, FormatError> {
         return Err(err("not a regular file"));
     }
     if meta.len() > MAX_USD_BYTES {
-        return Err(err(format!(
-            "larger than {} MiB",
-            MAX_USD_BYTES >> 20
-        )));
+        return Err(err(format!("larger than {} MiB", MAX_USD_BYTES >> 20)));
     }
     if container_of(path)? == UsdContainer::Usda {
-        let text = std::fs::read_to_string(path).map_err(|e| err(format!("cannot read it: {e}")))?;
+        let text =
+            std::fs::read_to_string(path).map_err(|e| err(format!("cannot read it: {e}")))?;
         check_nesting(&text)?;
     }
     let folder = path.parent().unwrap_or(Path::new("."));
@@ -278,11 +278,18 @@ fn open_stage(path: &Path) -> Result<Stage, FormatError> {
     let stage = Stage::builder()
         .resolver(resolver)
         .open(&real.to_string_lossy())
-        .map_err(|e| err(one_line(&format!("not a USD stage Shenlong can read: {e:#}"))))?;
+        .map_err(|e| {
+            err(one_line(&format!(
+                "not a USD stage Shenlong can read: {e:#}"
+            )))
+        })?;
     // Composition is lazy: walk the stage once so every arc is resolved now.
     let mut stack = vec![stage.prim(sdf::Path::abs_root())];
     while let Some(p) = stack.pop() {
-        stack.extend(p.children().map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?);
+        stack.extend(
+            p.children()
+                .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?,
+        );
         if refused.lock().is_ok_and(|l| !l.is_empty()) {
             break;
         }
@@ -310,11 +317,7 @@ fn frame_of(stage: &Stage) -> Result<StageFrame, FormatError> {
         None => UpAxis::Y,
         Some(Value::Token(t)) if t.as_str() == "Y" => UpAxis::Y,
         Some(Value::String(t)) if t == "Y" => UpAxis::Y,
-        Some(other) => {
-            return Err(err(format!(
-                "upAxis {other:?} is neither \"Y\" nor \"Z\""
-            )))
-        }
+        Some(other) => return Err(err(format!("upAxis {other:?} is neither \"Y\" nor \"Z\""))),
     };
     let meters_per_unit = match stage.stage_metadata("metersPerUnit").ok().flatten() {
         None => 0.01,
@@ -488,7 +491,8 @@ fn geometry_points(prim: &Prim, type_name: &str) -> Vec<DVec3> {
             })
             .collect()
     };
-    let number = |name: &str, default: f64| attr(prim, name).and_then(|v| scalar(&v)).unwrap_or(default);
+    let number =
+        |name: &str, default: f64| attr(prim, name).and_then(|v| scalar(&v)).unwrap_or(default);
     let axis = || match attr(prim, "axis") {
         Some(Value::Token(t)) => t.as_str().to_string(),
         Some(Value::String(s)) => s,
@@ -601,7 +605,11 @@ pub fn read(path: &Path) -> Result<(Scene, UsdDocument), FormatError> {
             continue;
         }
         let (local, resets) = local_transform(&prim)?;
-        let parent_world = if resets { DMat4::IDENTITY } else { parent_world };
+        let parent_world = if resets {
+            DMat4::IDENTITY
+        } else {
+            parent_world
+        };
         let world = parent_world * local;
         let type_name = prim
             .type_name()
@@ -623,6 +631,10 @@ pub fn read(path: &Path) -> Result<(Scene, UsdDocument), FormatError> {
                 world,
                 parent_world,
                 ancestor: object,
+                name: match attr(&prim, "shenlong:name") {
+                    Some(Value::String(n)) if !n.trim().is_empty() => Some(n),
+                    _ => None,
+                },
             });
             points.push(Vec::new());
             Some(objects.len() - 1)
@@ -731,7 +743,14 @@ fn scene_of(
         if pts.is_empty() || pts.iter().any(|p| !p.is_finite()) {
             continue;
         }
-        let leaf = object.path.rsplit('/').next().unwrap_or_default().to_string();
+        let leaf = object.name.clone().unwrap_or_else(|| {
+            object
+                .path
+                .rsplit('/')
+                .next()
+                .unwrap_or_default()
+                .to_string()
+        });
         let name = if scene.find(&leaf).is_some() {
             object.path.clone()
         } else {
@@ -820,7 +839,17 @@ fn new_locals(scene: &Scene, document: &UsdDocument) -> Result<Vec<Option<DMat4>
         }
         let local = new_parent.inverse() * new_world;
         let old_local = object.parent_world.inverse() * object.world;
-        if !local.abs_diff_eq(old_local, 1e-12 * (1.0 + old_local.abs().to_cols_array().iter().cloned().fold(0.0, f64::max))) {
+        if !local.abs_diff_eq(
+            old_local,
+            1e-12
+                * (1.0
+                    + old_local
+                        .abs()
+                        .to_cols_array()
+                        .iter()
+                        .cloned()
+                        .fold(0.0, f64::max)),
+        ) {
             out[k] = Some(local);
         }
     }
@@ -832,7 +861,13 @@ fn new_locals(scene: &Scene, document: &UsdDocument) -> Result<Vec<Option<DMat4>
 fn ops_for(local: DMat4) -> Vec<(String, &'static str, Value)> {
     let (scale, rotation, translation) = local.to_scale_rotation_translation();
     let rebuilt = DMat4::from_scale_rotation_translation(scale, rotation, translation);
-    let size = 1.0 + local.abs().to_cols_array().iter().cloned().fold(0.0, f64::max);
+    let size = 1.0
+        + local
+            .abs()
+            .to_cols_array()
+            .iter()
+            .cloned()
+            .fold(0.0, f64::max);
     if scale.min_element() > 0.0 && rebuilt.abs_diff_eq(local, 1e-9 * size) {
         vec![
             (
@@ -886,7 +921,8 @@ pub fn write(
 ) -> Result<Vec<u8>, FormatError> {
     let locals = new_locals(scene, document)?;
     if locals.iter().all(Option::is_none) && container == document.container {
-        return std::fs::read(&document.source).map_err(|e| err(format!("cannot read the source again: {e}")));
+        return std::fs::read(&document.source)
+            .map_err(|e| err(format!("cannot read the source again: {e}")));
     }
     let id = match container {
         UsdContainer::Usda => "usda",
@@ -902,7 +938,8 @@ pub fn write(
         let Some(local) = local else { continue };
         author(&stage, &object.path, *local)?;
     }
-    let format = sdf::LayerRegistry::find_by_id(id).ok_or_else(|| err(format!("no {id} writer")))?;
+    let format =
+        sdf::LayerRegistry::find_by_id(id).ok_or_else(|| err(format!("no {id} writer")))?;
     let mut buf = std::io::Cursor::new(Vec::new());
     format
         .write(stage.root_layer().data(), &mut buf)
@@ -925,7 +962,11 @@ fn author(stage: &Stage, path: &str, local: DMat4) -> Result<(), FormatError> {
         .and_then(|a| a.set_custom(false))
         .and_then(|a| a.set_variability(sdf::Variability::Uniform))
         .and_then(|a| a.set(Value::TokenVec(order)))
-        .map_err(|e| err(one_line(&format!("{path}: cannot author xformOpOrder: {e}"))))?;
+        .map_err(|e| {
+            err(one_line(&format!(
+                "{path}: cannot author xformOpOrder: {e}"
+            )))
+        })?;
     Ok(())
 }
 
@@ -981,7 +1022,10 @@ pub fn sublayer_path(source: &Path, layer: &Path) -> Result<String, FormatError>
     let real = source
         .canonicalize()
         .map_err(|e| err(format!("cannot find {}: {e}", source.display())))?;
-    let folder = layer.parent().filter(|p| !p.as_os_str().is_empty()).unwrap_or(Path::new("."));
+    let folder = layer
+        .parent()
+        .filter(|p| !p.as_os_str().is_empty())
+        .unwrap_or(Path::new("."));
     let layer_folder = folder
         .canonicalize()
         .map_err(|e| err(format!("cannot find the folder {}: {e}", folder.display())))?;
@@ -991,10 +1035,79 @@ pub fn sublayer_path(source: &Path, layer: &Path) -> Result<String, FormatError>
             "a layer over a stage cannot replace the stage itself: write it to another file",
         ));
     }
-    Ok(match (real.parent(), real.file_name().and_then(|n| n.to_str())) {
-        (Some(parent), Some(file)) if parent == layer_folder => format!("./{file}"),
-        _ => real.to_string_lossy().into_owned(),
-    })
+    Ok(
+        match (real.parent(), real.file_name().and_then(|n| n.to_str())) {
+            (Some(parent), Some(file)) if parent == layer_folder => format!("./{file}"),
+            _ => real.to_string_lossy().into_owned(),
+        },
+    )
+}
+
+/// A new `.usda` stage of the scene, for a scene read from no USD stage (`shenlong
+/// convert room.json room.usda`): Y-up, metres, under the default prim `/World`, each
+/// object an `Xform` at its pivot with its turn and scale, holding a `Cube` of its box (a
+/// box of points — a glTF mesh — as its world box). Prim names are the objects' names
+/// made identifiers (`coffee table` → `coffee_table`, unique).
+#[must_use]
+pub fn write_new(scene: &Scene) -> Vec<u8> {
+    let mut text = String::from(
+        "#usda 1.0\n(\n    defaultPrim = \"World\"\n    doc = \"Written by Shenlong\"\n    metersPerUnit = 1\n    upAxis = \"Y\"\n)\n\ndef Xform \"World\"\n{\n",
+    );
+    let mut used: Vec<String> = Vec::new();
+    for object in &scene.objects {
+        let name = identifier(&object.name, &used);
+        used.push(name.clone());
+        let (pose, size, lift) = match &object.shape {
+            Shape::Box { size } => (object.similarity(), *size, size.y / 2.0),
+            Shape::Points { .. } => {
+                let b = object.world_aabb();
+                let bottom = DVec3::new(b.center().x, b.min.y, b.center().z);
+                (
+                    cga::Similarity {
+                        translation: bottom,
+                        rotation: DQuat::IDENTITY,
+                        scale: 1.0,
+                    },
+                    b.size(),
+                    b.size().y / 2.0,
+                )
+            }
+        };
+        let t = pose.translation;
+        let q = pose.rotation;
+        text.push_str(&format!(
+            "    def Xform \"{name}\"\n    {{\n        custom string shenlong:name = \"{}\"\n        double3 xformOp:translate = ({}, {}, {})\n        quatd xformOp:orient = ({}, {}, {}, {})\n        double3 xformOp:scale = ({s}, {s}, {s})\n        uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:orient\", \"xformOp:scale\"]\n\n",
+            escape(&object.name),
+            number(t.x), number(t.y), number(t.z),
+            number(q.w), number(q.x), number(q.y), number(q.z),
+            s = number(pose.scale),
+        ));
+        text.push_str(&format!(
+            "        def Cube \"Box\"\n        {{\n            double size = 1\n            double3 xformOp:translate = (0, {}, 0)\n            double3 xformOp:scale = ({}, {}, {})\n            uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:scale\"]\n        }}\n    }}\n\n",
+            number(lift), number(size.x), number(size.y), number(size.z),
+        ));
+    }
+    text.push_str("}\n");
+    text.into_bytes()
+}
+
+/// A name as a USD prim name: letters, digits and `_`, not starting with a digit, unique
+/// among `used`.
+fn identifier(name: &str, used: &[String]) -> String {
+    let mut base: String = name
+        .chars()
+        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+        .collect();
+    if base.is_empty() || base.starts_with(|c: char| c.is_ascii_digit()) {
+        base.insert(0, '_');
+    }
+    let mut candidate = base.clone();
+    let mut k = 2;
+    while used.iter().any(|u| u == &candidate) {
+        candidate = format!("{base}_{k}");
+        k += 1;
+    }
+    candidate
 }
 
 /// Prims of an override layer, by name, each with the ops authored on it.
@@ -1038,11 +1151,17 @@ impl OverTree {
                     let pad = "    ".repeat(depth);
                     out.push_str(&format!("\n{pad}over \"{}\"\n{pad}{{\n", escape(name)));
                     for (op, type_name, value) in &node.ops {
-                        out.push_str(&format!("{pad}    {type_name} {op} = {}\n", usda_value(value)));
+                        out.push_str(&format!(
+                            "{pad}    {type_name} {op} = {}\n",
+                            usda_value(value)
+                        ));
                     }
                     if !node.ops.is_empty() {
-                        let order: Vec<String> =
-                            node.ops.iter().map(|(n, _, _)| format!("\"{n}\"")).collect();
+                        let order: Vec<String> = node
+                            .ops
+                            .iter()
+                            .map(|(n, _, _)| format!("\"{n}\""))
+                            .collect();
                         out.push_str(&format!(
                             "{pad}    uniform token[] xformOpOrder = [{}]\n",
                             order.join(", ")
@@ -1084,11 +1203,18 @@ fn usda_value(v: &Value) -> String {
             number(q.z)
         ),
         Value::Matrix4d(m) => {
-            let rows: Vec<String> = m
-                .0
-                .chunks(4)
-                .map(|r| format!("({}, {}, {}, {})", number(r[0]), number(r[1]), number(r[2]), number(r[3])))
-                .collect();
+            let rows: Vec<String> =
+                m.0.chunks(4)
+                    .map(|r| {
+                        format!(
+                            "({}, {}, {}, {})",
+                            number(r[0]),
+                            number(r[1]),
+                            number(r[2]),
+                            number(r[3])
+                        )
+                    })
+                    .collect();
             format!("( {} )", rows.join(", "))
         }
         _ => String::new(),

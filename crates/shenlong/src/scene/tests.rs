@@ -59,7 +59,10 @@ fn a_rug_carries_what_stands_on_it_and_the_floor_carries_nothing() {
     s.detect_supports();
     assert_eq!(s.objects[table].support, Some(rug));
     assert_eq!(s.objects[mug].support, Some(table));
-    assert_eq!(s.objects[chair].support, None, "a decal with no thickness carries nothing");
+    assert_eq!(
+        s.objects[chair].support, None,
+        "a decal with no thickness carries nothing"
+    );
     assert_eq!(s.objects[decal].support, None);
     assert_eq!(s.carried_by(rug), vec![table, mug]);
 }

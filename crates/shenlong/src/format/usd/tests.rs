@@ -61,11 +61,20 @@ fn a_z_up_centimetre_stage_reads_as_y_up_metres() {
     assert_eq!(names, ["Table", "Shelf"]);
     // The table's top: an 80 cm cube centred 40 cm up at x = 100 cm.
     let table = scene.objects[0].world_aabb();
-    assert!((table.min - DVec3::new(0.6, 0.0, -0.4)).length() < 1e-9, "{table:?}");
-    assert!((table.max - DVec3::new(1.4, 0.8, 0.4)).length() < 1e-9, "{table:?}");
+    assert!(
+        (table.min - DVec3::new(0.6, 0.0, -0.4)).length() < 1e-9,
+        "{table:?}"
+    );
+    assert!(
+        (table.max - DVec3::new(1.4, 0.8, 0.4)).length() < 1e-9,
+        "{table:?}"
+    );
     // The shelf, turned 90° about up: 1 m long along −z… its 20 cm depth along x.
     let shelf = scene.objects[1].world_aabb();
-    assert!((shelf.size() - DVec3::new(0.2, 1.8, 1.0)).length() < 1e-9, "{shelf:?}");
+    assert!(
+        (shelf.size() - DVec3::new(0.2, 1.8, 1.0)).length() < 1e-9,
+        "{shelf:?}"
+    );
     assert!((shelf.center().x + 2.0).abs() < 1e-9);
 }
 
@@ -87,8 +96,13 @@ fn an_edit_changes_only_the_moved_prims_op_stack() {
     let (again, _) = read(&out).unwrap();
     let before = scene.objects[1].world_aabb();
     let after = again.objects[1].world_aabb();
-    assert!((after.min - before.min).length() < 1e-9, "{before:?} {after:?}");
-    assert!((again.objects[0].world_aabb().min - scene.objects[0].world_aabb().min).length() < 1e-12);
+    assert!(
+        (after.min - before.min).length() < 1e-9,
+        "{before:?} {after:?}"
+    );
+    assert!(
+        (again.objects[0].world_aabb().min - scene.objects[0].world_aabb().min).length() < 1e-12
+    );
     let text = String::from_utf8(bytes).unwrap();
     assert!(text.contains("xformOp:translate:shenlong"), "{text}");
     assert!(text.contains("upAxis = \"Z\""), "{text}");
@@ -101,7 +115,11 @@ fn the_layer_holds_only_overs_of_what_moved() {
     let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
     let (mut scene, document) = read(&path).unwrap();
     scene
-        .apply(0, &cga::Multivector::translator(DVec3::new(-1.0, 0.0, 0.0)), false)
+        .apply(
+            0,
+            &cga::Multivector::translator(DVec3::new(-1.0, 0.0, 0.0)),
+            false,
+        )
         .unwrap();
     let layer = dir.path().join("edit.usda");
     let sub = sublayer_path(&path, &layer).unwrap();
@@ -130,7 +148,10 @@ fn references_out_of_the_folder_and_deep_nesting_are_refused() {
         "#usda 1.0\n(\n    subLayers = [@../secret.usda@]\n)\n",
     );
     let e = read(&escaping).map(|_| ()).unwrap_err().to_string();
-    assert!(e.contains("secret.usda' is outside the stage's folder"), "{e}");
+    assert!(
+        e.contains("secret.usda' is outside the stage's folder"),
+        "{e}"
+    );
     let absolute = write(
         &inner,
         "abs.usda",
@@ -161,4 +182,26 @@ fn a_local_transform_that_is_no_trs_is_written_as_a_matrix() {
         DVec3::new(1.0, 2.0, 3.0),
     );
     assert_eq!(ops_for(trs).len(), 3);
+}
+
+#[test]
+fn a_scene_from_elsewhere_is_written_as_a_new_stage_and_read_back() {
+    let scene = crate::examples::build("living_room").unwrap();
+    let dir = tempfile::tempdir().unwrap();
+    let path = dir.path().join("lr.usda");
+    std::fs::write(&path, write_new(&scene)).unwrap();
+    let (again, document) = read(&path).unwrap();
+    assert_eq!(document.frame.up, UpAxis::Y);
+    assert_eq!(again.objects.len(), scene.objects.len());
+    for (a, b) in scene.objects.iter().zip(&again.objects) {
+        assert_eq!(a.name, b.name);
+        let (x, y) = (a.world_aabb(), b.world_aabb());
+        assert!(
+            (x.min - y.min).length() < 1e-9 && (x.max - y.max).length() < 1e-9,
+            "{}",
+            a.name
+        );
+    }
+    assert_eq!(identifier("2 chairs", &[]), "_2_chairs");
+    assert_eq!(identifier("a-b", &["a_b".to_string()]), "a_b_2");
 }
