@@ -236,3 +236,49 @@ def test_bench_writes_the_cli_folder_and_resumes(tmp_path):
         shenlong.bench(suite, tmp_path / "x", shard=(3, 2))
     with pytest.raises(shenlong.EditError, match="unknown system"):
         shenlong.bench(suite, tmp_path / "y", system="cga,matrix")
+
+
+USD_ROOM = """#usda 1.0
+(
+    defaultPrim = "World"
+    metersPerUnit = 0.01
+    upAxis = "Z"
+)
+
+def Xform "World"
+{
+    def Xform "Table"
+    {
+        def Cube "Top"
+        {
+            double size = 80
+            double3 xformOp:translate = (0, 0, 40)
+            uniform token[] xformOpOrder = ["xformOp:translate"]
+        }
+    }
+
+    def Cube "Vase"
+    {
+        double size = 20
+        double3 xformOp:translate = (200, 0, 10)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+    }
+}
+"""
+
+
+def test_a_usd_stage_is_read_edited_and_saved(tmp_path):
+    src = tmp_path / "room.usda"
+    src.write_text(USD_ROOM)
+    scene = shenlong.Scene.load(str(src))
+    assert sorted(o["name"] for o in scene.objects()) == ["Table", "Vase"]
+    # A Z-up centimetre stage in Shenlong's Y-up metres: the table is 0.8 m tall.
+    assert math.isclose(obj(scene, "Table")["world_box"]["max"][1], 0.8, abs_tol=1e-9)
+    scene.edit("put the vase on the table", llm="offline", system="cga", collide=True)
+    vase = obj(scene, "Vase")
+    assert math.isclose(vase["world_box"]["min"][1], 0.8, abs_tol=1e-6)
+    out = tmp_path / "edited.usda"
+    scene.save(str(out))
+    again = shenlong.Scene.load(str(out))
+    assert math.isclose(obj(again, "Vase")["world_box"]["min"][1], 0.8, abs_tol=1e-6)
+    assert 'upAxis = "Z"' in out.read_text()
