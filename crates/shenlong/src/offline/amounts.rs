@@ -1,5 +1,6 @@
-//! Amounts: lengths, angles and scale factors, written as numbers with units, spoken
-//! compounds ("a metre and a half") or vague words ("a bit") with documented defaults.
+//! Amounts: lengths and angles, written as numbers with units, spoken compounds ("a metre
+//! and a half") or vague words ("a bit") with documented defaults; the numbers and vague
+//! words scale factors are read from too ([`super::scale`]).
 
 use super::clause::Clause;
 use super::words::{angle_unit, length_unit, number_word, Token};
@@ -82,7 +83,7 @@ pub(crate) fn until_blocked(c: &mut Clause) -> bool {
 }
 
 /// The small-amount phrases, longest first; each counts as a bit.
-const BIT: &[&[&str]] = &[
+pub(super) const BIT: &[&[&str]] = &[
     &["just", "a", "little", "bit"],
     &["a", "tiny", "bit"],
     &["a", "little", "bit"],
@@ -124,7 +125,7 @@ const GOOD_BIT: &[&[&str]] = &[
 ];
 
 /// The large-amount phrases.
-const FAR: &[&[&str]] = &[
+pub(super) const FAR: &[&[&str]] = &[
     &["a", "long", "way"],
     &["a", "good", "way"],
     &["way", "over"],
@@ -136,7 +137,7 @@ const FAR: &[&[&str]] = &[
 
 /// A number at token `i`, spoken or written, and how many tokens it takes: `2`, `two`,
 /// `one and a half`, `two and a half`, `half`, `a quarter of`, `three quarters of`.
-fn number_at(c: &Clause, i: usize) -> Option<(f64, usize)> {
+pub(super) fn number_at(c: &Clause, i: usize) -> Option<(f64, usize)> {
     let base = match c.token(i)? {
         Token::Number(n) => *n,
         Token::Word(w) => number_word(w)?,
@@ -167,7 +168,7 @@ fn number_at(c: &Clause, i: usize) -> Option<(f64, usize)> {
 
 /// A fraction word at `i` and its length: `half a`, `a half`, `a quarter of a`, `a third
 /// of`.
-fn fraction_at(c: &Clause, i: usize) -> Option<(f64, usize)> {
+pub(super) fn fraction_at(c: &Clause, i: usize) -> Option<(f64, usize)> {
     for (words, value) in [
         (&["half", "a"][..], 0.5),
         (&["half", "an"][..], 0.5),
@@ -267,6 +268,11 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
             }
         }
     }
+    vague_length(c)
+}
+
+/// A vague length ("a good bit", "a bit", "a tiny bit", "a lot"), its words read.
+fn vague_length(c: &mut Clause) -> Option<Length> {
     for i in 0..c.len() {
         for words in GOOD_BIT {
             if c.free(i) && c.words_at(i, words) {
@@ -342,179 +348,4 @@ pub(crate) fn angle(c: &mut Clause) -> Option<f64> {
         }
     }
     None
-}
-
-/// Whether the clause asks to make the object smaller (`smaller`, `shrink`, `down`,
-/// `reduce`) or larger.
-fn shrinking(c: &Clause) -> Option<bool> {
-    for i in 0..c.len() {
-        match c.word(i) {
-            Some(
-                "smaller" | "shrink" | "shrunk" | "reduce" | "decrease" | "down" | "less"
-                | "tinier" | "halve",
-            ) => return Some(true),
-            Some(
-                "bigger" | "larger" | "grow" | "enlarge" | "up" | "increase" | "magnify" | "taller"
-                | "double" | "triple",
-            ) => return Some(false),
-            _ => {}
-        }
-    }
-    None
-}
-
-/// The size words of a scale clause that carry no number of their own, read once the
-/// factor is known.
-const SIZE_WORDS: &[&str] = &[
-    "smaller", "bigger", "larger", "taller", "tinier", "shrink", "grow", "enlarge", "reduce",
-    "decrease", "increase", "magnify", "down", "up", "size", "its", "of", "in", "original",
-    "current", "as", "big", "large", "small", "the", "scale", "resize", "make", "it", "them",
-];
-
-/// Finds a scale factor: `by 1.5`, `20 percent smaller`, `down by 20 %`, `to 80 % of its
-/// size`, `half as big`, `twice the size`, `by a third`, `three times bigger`, `a bit
-/// smaller`, `bigger` (documented defaults in docs/offline.md).
-pub(crate) fn scale(c: &mut Clause) -> Option<f64> {
-    let shrink = shrinking(c);
-    let down = shrink == Some(true);
-    // "double the size of X1", "halve it": the verb is the factor, unless a number says
-    // otherwise.
-    let verb_factor = (0..c.len()).find_map(|i| match c.word(i) {
-        Some("double") => Some(2.0),
-        Some("triple") => Some(3.0),
-        Some("halve") => Some(0.5),
-        _ => None,
-    });
-    let mut factor = None;
-    for i in 0..c.len() {
-        if !c.free(i) {
-            continue;
-        }
-        // N percent.
-        if let Some((n, len)) = number_at(c, i) {
-            if c.word(i + len) == Some("percent") {
-                let to = i > 0 && c.word(i - 1) == Some("to");
-                c.mark(i..i + len + 1);
-                if to {
-                    c.mark(i - 1..i);
-                }
-                c.mark_by(i);
-                factor = Some(if to {
-                    n / 100.0
-                } else if down {
-                    1.0 - n / 100.0
-                } else {
-                    1.0 + n / 100.0
-                });
-                break;
-            }
-            // "three times bigger", "3 times as big", "3 times smaller".
-            if c.word(i + len) == Some("times") || c.word(i + len) == Some("x") {
-                c.mark(i..i + len + 1);
-                factor = Some(if down { 1.0 / n } else { n });
-                break;
-            }
-            if c.words_at(i + len, &["as"]) {
-                c.mark(i..i + len);
-                factor = Some(n);
-                break;
-            }
-        }
-        // "by a factor of N".
-        if c.words_at(i, &["a", "factor", "of"]) || c.words_at(i, &["factor", "of"]) {
-            let len = if c.words_at(i, &["a"]) { 3 } else { 2 };
-            if let Some((n, l)) = number_at(c, i + len) {
-                c.mark(i..i + len + l);
-                c.mark_by(i);
-                factor = Some(if down && n > 1.0 { 1.0 / n } else { n });
-                break;
-            }
-        }
-        for (words, f) in [
-            (&["twice"][..], 2.0),
-            (&["double"][..], 2.0),
-            (&["thrice"][..], 3.0),
-            (&["triple"][..], 3.0),
-            (&["halve"][..], 0.5),
-        ] {
-            if c.words_at(i, words) {
-                c.mark(i..i + words.len());
-                factor = Some(f);
-            }
-        }
-        if factor.is_some() {
-            break;
-        }
-        // "by half", "by a third", "to half its size", "to a third of its size", "half as
-        // big", "half the size".
-        if let Some((f, len)) = fraction_at(c, i) {
-            let to = i > 0 && c.word(i - 1) == Some("to");
-            let by = i > 0 && c.word(i - 1) == Some("by");
-            let as_big = c.words_at(i + len, &["as"])
-                || c.words_at(i + len, &["the", "size"])
-                || c.words_at(i + len, &["its", "size"])
-                || c.words_at(i + len, &["of", "its"]);
-            c.mark(i..i + len);
-            if to || by {
-                c.mark(i - 1..i);
-            }
-            factor = Some(if to || as_big || (!by && shrink.is_none()) {
-                f
-            } else if down {
-                1.0 - f
-            } else {
-                1.0 + f
-            });
-            break;
-        }
-        // "by 1.5", "scale it 2", "to 0.8".
-        if let Some((n, len)) = number_at(c, i) {
-            if n > 0.0 && matches!(c.token(i), Some(Token::Number(_))) {
-                c.mark(i..i + len);
-                c.mark_by(i);
-                if i > 0 && c.word(i - 1) == Some("to") {
-                    c.mark(i - 1..i);
-                }
-                factor = Some(if down && n > 1.0 { 1.0 / n } else { n });
-                break;
-            }
-        }
-    }
-    let factor = match factor.or(verb_factor) {
-        Some(f) => f,
-        None => {
-            // No number: a vague change with documented defaults.
-            let bit = (0..c.len()).any(|i| BIT.iter().any(|w| c.free(i) && c.words_at(i, w)));
-            let much = (0..c.len()).any(|i| {
-                c.free(i)
-                    && (c.words_at(i, &["much"])
-                        || c.words_at(i, &["a", "lot"])
-                        || c.words_at(i, &["way"]))
-            });
-            for i in 0..c.len() {
-                for w in BIT.iter().chain(FAR) {
-                    if c.free(i) && c.words_at(i, w) {
-                        c.mark(i..i + w.len());
-                    }
-                }
-            }
-            match (shrink?, bit, much) {
-                (true, true, _) => 0.9,
-                (false, true, _) => 1.1,
-                (true, _, true) => 0.5,
-                (false, _, true) => 2.0,
-                (true, false, false) => 0.8,
-                (false, false, false) => 1.25,
-            }
-        }
-    };
-    // The size words are read now: "20 percent smaller", "twice as big".
-    for i in 0..c.len() {
-        if let Some(w) = c.word(i) {
-            if c.free(i) && SIZE_WORDS.contains(&w) {
-                c.mark(i..i + 1);
-            }
-        }
-    }
-    (factor > 0.0 && factor.is_finite()).then_some(factor)
 }

@@ -242,178 +242,248 @@ fn breaks(w: &str) -> bool {
     matches!(w, "and" | "then" | "afterwards" | "finally")
 }
 
+/// The word at `k` of `tokens`, if it is one.
+fn word(tokens: &[Token], k: usize) -> Option<&str> {
+    match tokens.get(k) {
+        Some(Token::Word(w)) => Some(w.as_str()),
+        _ => None,
+    }
+}
+
+/// The words of `tokens`, anything else as an empty word.
+fn words_of(tokens: &[Token]) -> Vec<&str> {
+    tokens
+        .iter()
+        .map(|t| match t {
+            Token::Word(w) => w.as_str(),
+            _ => "",
+        })
+        .collect()
+}
+
+/// Whether a variable stands next to position `i` in direction `step` (±1), past articles
+/// and `both`.
+fn var_near(tokens: &[Token], i: usize, step: isize) -> bool {
+    let mut k = i as isize + step;
+    while k >= 0 && (k as usize) < tokens.len() {
+        match &tokens[k as usize] {
+            Token::Variable(_) => return true,
+            Token::Word(w) if matches!(w.as_str(), "the" | "a" | "an" | "both") => k += step,
+            _ => return false,
+        }
+    }
+    false
+}
+
+/// Whether a direction word stands next to position `i` in direction `step` (±1), past
+/// `to`, `the`, `towards`.
+fn direction_near(tokens: &[Token], i: usize, step: isize) -> bool {
+    let mut k = i as isize + step;
+    while k >= 0 && (k as usize) < tokens.len() {
+        match &tokens[k as usize] {
+            Token::Word(w) if words::direction(w).is_some() => return true,
+            Token::Word(w) if matches!(w.as_str(), "to" | "the" | "towards" | "toward") => {
+                k += step
+            }
+            _ => return false,
+        }
+    }
+    false
+}
+
+/// The words that may stand before a list of subjects, beside verbs and fillers ("could
+/// you have both X1 and X2 …", "line up X1, X2 and X3").
+const BEFORE_SUBJECTS: &[&str] = &[
+    "both",
+    "have",
+    "all",
+    "of",
+    "positions",
+    "position",
+    "places",
+    "place",
+    "up",
+    "could",
+    "can",
+    "would",
+    "will",
+    "you",
+    "let's",
+    "lets",
+    "i'd",
+    "like",
+    "want",
+    "i",
+    "please",
+    "need",
+    "go",
+    "ahead",
+    "pick",
+    "each",
+    "line",
+    "arrange",
+    "align",
+];
+
+/// Whether the clause so far (`current`) is a verb and a list of subjects begun: only
+/// verbs, fillers, the words of [`BEFORE_SUBJECTS`] and variables.
+fn only_subjects(current: &[Token]) -> bool {
+    current.iter().all(|t| match t {
+        Token::Variable(_) | Token::Separator => true,
+        Token::Word(w) => {
+            words::verb(w).is_some()
+                || crate::discourse::filler(w)
+                || BEFORE_SUBJECTS.contains(&w.as_str())
+                || words::correct(w).is_some_and(|c| words::verb(c).is_some())
+        }
+        Token::Number(_) => false,
+    })
+}
+
+/// Whether the `and` or comma at `i` joins two objects of one list (`X1 and X2` as
+/// subjects, `between X2 and X3`, `swap X1 and X2`) in the clause so far, `current`.
+fn joins_objects(tokens: &[Token], i: usize, current: &[Token]) -> bool {
+    let list_mark = word(tokens, i) == Some("and")
+        || (matches!(tokens[i], Token::Separator) && word(tokens, i + 1) != Some("then"));
+    if !(list_mark && var_near(tokens, i, -1) && var_near(tokens, i, 1)) {
+        return false;
+    }
+    let list_context = current.iter().any(|t| {
+        matches!(
+            t,
+            Token::Word(w) if matches!(
+                w.as_str(),
+                "between" | "swap" | "exchange" | "switch" | "interchange" | "trade"
+            )
+        )
+    });
+    // After the verb only articles and variables so far: a list of subjects.
+    list_context || only_subjects(current)
+}
+
+/// Whether the token at `i` stays inside the clause so far (`current`): an `and` or comma
+/// joining two objects, an `and` joining two directions (`forward and to the right`) or
+/// an amount (`a metre and a half`).
+fn stays_inside(tokens: &[Token], i: usize, current: &[Token]) -> bool {
+    let is_and = word(tokens, i) == Some("and");
+    joins_objects(tokens, i, current)
+        || is_and && direction_near(tokens, i, -1) && direction_near(tokens, i, 1)
+        || is_and
+            && word(tokens, i + 1) == Some("a")
+            && matches!(word(tokens, i + 2), Some("half" | "quarter"))
+}
+
+/// Whether the token at `i` is a comma that neither ends the clause nor is kept: before a
+/// qualifier of the turn or the amount ("a half turn, clockwise as seen from above", "20
+/// cm, roughly"), or after a view that begins the clause so far, `current` ("from a bird's
+/// eye view, turn …").
+fn dropped_comma(tokens: &[Token], i: usize, current: &[Token]) -> bool {
+    if !matches!(tokens[i], Token::Separator) {
+        return false;
+    }
+    let qualifier = matches!(
+        word(tokens, i + 1),
+        Some(
+            "clockwise"
+                | "counterclockwise"
+                | "anticlockwise"
+                | "roughly"
+                | "approximately"
+                | "more"
+        )
+    ) && !matches!(word(tokens, i + 2), Some(w) if words::verb(w).is_some());
+    let view_after = {
+        let rest: Vec<&str> = (i + 1..tokens.len())
+            .map(|k| word(tokens, k).unwrap_or(""))
+            .collect();
+        super::view::view_at(&rest, 0).is_some()
+    };
+    let so_far = words_of(current);
+    let view_before = !so_far.is_empty()
+        && super::view::view_at(&so_far, 0).is_some_and(|(n, _)| n == so_far.len());
+    qualifier || view_after || view_before
+}
+
+/// How many tokens the clause break at `i` takes (a comma, `and`, `then`, `afterwards`,
+/// `finally`: 1; `after that`: 2), or `None` where no clause ends.
+fn break_at(tokens: &[Token], i: usize) -> Option<usize> {
+    if word(tokens, i) == Some("after") && word(tokens, i + 1) == Some("that") {
+        return Some(2);
+    }
+    (matches!(tokens[i], Token::Separator) || word(tokens, i).is_some_and(breaks)).then_some(1)
+}
+
 /// Splits tokens into clauses. `and` stays inside a clause when it joins two objects
 /// (`X1 and X2` as subjects, `between X2 and X3`, `swap X1 and X2`), two directions
 /// (`forward and to the right`, `down and left`) or an amount (`a metre and a half`).
 pub(crate) fn split(tokens: &[Token]) -> Vec<Clause> {
-    let word = |k: usize| match tokens.get(k) {
-        Some(Token::Word(w)) => Some(w.as_str()),
-        _ => None,
-    };
-    let var_near = |i: usize, step: isize| -> bool {
-        let mut k = i as isize + step;
-        while k >= 0 && (k as usize) < tokens.len() {
-            match &tokens[k as usize] {
-                Token::Variable(_) => return true,
-                Token::Word(w) if matches!(w.as_str(), "the" | "a" | "an" | "both") => k += step,
-                _ => return false,
-            }
-        }
-        false
-    };
-    let direction_near = |i: usize, step: isize| -> bool {
-        let mut k = i as isize + step;
-        while k >= 0 && (k as usize) < tokens.len() {
-            match &tokens[k as usize] {
-                Token::Word(w) if words::direction(w).is_some() => return true,
-                Token::Word(w) if matches!(w.as_str(), "to" | "the" | "towards" | "toward") => {
-                    k += step
-                }
-                _ => return false,
-            }
-        }
-        false
-    };
     let mut out: Vec<Vec<Token>> = vec![Vec::new()];
     let mut i = 0;
     while i < tokens.len() {
-        let t = &tokens[i];
-        let is_and = word(i) == Some("and");
         let current = out.last().expect("one clause at least");
-        let current_words: Vec<&str> = current
-            .iter()
-            .filter_map(|t| match t {
-                Token::Word(w) => Some(w.as_str()),
-                _ => None,
-            })
-            .collect();
-        let list_mark = is_and || (matches!(t, Token::Separator) && word(i + 1) != Some("then"));
-        if list_mark && var_near(i, -1) && var_near(i, 1) {
-            let list_context = current_words.iter().any(|w| {
-                matches!(
-                    *w,
-                    "between" | "swap" | "exchange" | "switch" | "interchange" | "trade"
-                )
-            });
-            // After the verb only articles and variables so far: a list of subjects.
-            let only_subjects = current.iter().all(|t| match t {
-                Token::Variable(_) | Token::Separator => true,
-                Token::Word(w) => {
-                    words::verb(w).is_some()
-                        || crate::discourse::filler(w)
-                        || matches!(
-                            w.as_str(),
-                            "both"
-                                | "have"
-                                | "all"
-                                | "of"
-                                | "positions"
-                                | "position"
-                                | "places"
-                                | "place"
-                                | "up"
-                                | "could"
-                                | "can"
-                                | "would"
-                                | "will"
-                                | "you"
-                                | "let's"
-                                | "lets"
-                                | "i'd"
-                                | "like"
-                                | "want"
-                                | "i"
-                                | "please"
-                                | "need"
-                                | "go"
-                                | "ahead"
-                                | "pick"
-                                | "each"
-                                | "line"
-                                | "arrange"
-                                | "align"
-                        )
-                        || words::correct(w).is_some_and(|c| words::verb(c).is_some())
-                }
-                Token::Number(_) => false,
-            });
-            if list_context || only_subjects {
-                out.last_mut().expect("one clause").push(t.clone());
-                i += 1;
-                continue;
-            }
-        }
-        if is_and && direction_near(i, -1) && direction_near(i, 1) {
-            out.last_mut().expect("one clause").push(t.clone());
+        if stays_inside(tokens, i, current) {
+            out.last_mut().expect("one clause").push(tokens[i].clone());
             i += 1;
-            continue;
-        }
-        if is_and && word(i + 1) == Some("a") && matches!(word(i + 2), Some("half" | "quarter")) {
-            out.last_mut().expect("one clause").push(t.clone());
+        } else if dropped_comma(tokens, i, current) {
             i += 1;
-            continue;
-        }
-        // "a half turn, clockwise as seen from above": a comma before a qualifier of the
-        // turn (or of the amount: "20 cm, roughly") does not start a clause.
-        if matches!(t, Token::Separator)
-            && matches!(
-                word(i + 1),
-                Some(
-                    "clockwise"
-                        | "counterclockwise"
-                        | "anticlockwise"
-                        | "roughly"
-                        | "approximately"
-                        | "more"
-                )
-            )
-            && !matches!(word(i + 2), Some(w) if words::verb(w).is_some())
-            || matches!(t, Token::Separator) && {
-                let rest: Vec<&str> = (i + 1..tokens.len())
-                    .map(|k| word(k).unwrap_or(""))
-                    .collect();
-                super::view::view_at(&rest, 0).is_some()
-            }
-        {
-            i += 1;
-            continue;
-        }
-        // "from a bird's eye view, turn …": a view before the comma belongs to the turn.
-        if matches!(t, Token::Separator) {
-            let so_far: Vec<&str> = out
-                .last()
-                .map(|c| {
-                    c.iter()
-                        .map(|t| match t {
-                            Token::Word(w) => w.as_str(),
-                            _ => "",
-                        })
-                        .collect()
-                })
-                .unwrap_or_default();
-            if !so_far.is_empty()
-                && super::view::view_at(&so_far, 0).is_some_and(|(n, _)| n == so_far.len())
-            {
-                i += 1;
-                continue;
-            }
-        }
-        let after_that = word(i) == Some("after") && word(i + 1) == Some("that");
-        let is_break = matches!(t, Token::Separator) || word(i).is_some_and(breaks) || after_that;
-        if is_break {
-            // "after that", "and then": one break.
-            if word(i) == Some("after") && word(i + 1) == Some("that") {
-                i += 1;
-            }
+        } else if let Some(n) = break_at(tokens, i) {
             out.push(Vec::new());
+            i += n;
+        } else {
+            out.last_mut().expect("one clause").push(tokens[i].clone());
             i += 1;
-            continue;
         }
-        out.last_mut().expect("one clause").push(t.clone());
-        i += 1;
     }
     out.into_iter()
         .filter(|c| !c.is_empty())
         .map(Clause::new)
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::words::tokenize;
+    use super::split;
+
+    /// The clauses of `text`, as their words.
+    fn clauses(text: &str) -> Vec<String> {
+        split(&tokenize(text)).iter().map(|c| c.text()).collect()
+    }
+
+    #[test]
+    fn clauses_end_at_and_then_commas_and_after_that() {
+        assert_eq!(
+            clauses("move X1 left and then turn it, after that lift X2").len(),
+            3
+        );
+        assert_eq!(clauses("move X1 left. Finally lift X2").len(), 2);
+    }
+
+    #[test]
+    fn and_stays_inside_for_lists_directions_and_amounts() {
+        for text in [
+            "move X1 and X2 to the left",
+            "put X1 between X2 and X3",
+            "swap X1 and X2",
+            "line up X1, X2 and X3",
+            "move X1 forward and to the right",
+            "move X1 a metre and a half left",
+        ] {
+            assert_eq!(clauses(text).len(), 1, "{text}: {:?}", clauses(text));
+        }
+        // After a move, "and X2" starts a clause of its own.
+        assert_eq!(clauses("move X1 left and X2 right").len(), 2);
+    }
+
+    #[test]
+    fn a_comma_before_a_qualifier_or_after_a_view_is_dropped() {
+        for text in [
+            "turn X1 a half turn, clockwise as seen from above",
+            "move X1 20 cm to the left, roughly",
+            "from a bird's eye view, turn X1 clockwise",
+        ] {
+            let c = clauses(text);
+            assert_eq!(c.len(), 1, "{text}: {c:?}");
+        }
+    }
 }

@@ -15,7 +15,7 @@
 
 use super::amounts;
 use super::clause::Clause;
-use super::read::is_room_word;
+use super::room_place::is_room_word;
 
 /// The side of a room a word names, as the direction word the reader knows.
 fn side_direction(w: &str) -> Option<&'static str> {

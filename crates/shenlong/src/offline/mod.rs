@@ -5,11 +5,19 @@
 //! - [`words`]: tokens, and the closed word lists (verbs, directions, units, fillers), with
 //!   one-letter typos of verbs and directions corrected;
 //! - [`clause`]: clauses split at `and`, `then`, commas, each recording which words it read;
-//! - [`amounts`]: lengths, angles and scale factors — numbers, spoken compounds, vague
-//!   amounts with documented defaults, both directions of every relative change;
-//! - [`relations`]: relations to other objects, from their boxes only;
-//! - [`room`]: the room's centre, corners, walls and floor;
-//! - [`read`]: one clause's verb, subjects and meaning; every word must be read.
+//! - [`idioms`]: phrases read as another construct of the reader says it;
+//! - [`amounts`]: lengths and angles — numbers, spoken compounds, vague amounts with
+//!   documented defaults;
+//! - [`read`]: one clause's verb and subjects, every word of it read, and the stage its
+//!   verb says:
+//!   - [`relate`]: a move to a relation with other objects (what the relation is, its
+//!     subjects and targets), written by [`relations`] from their boxes only;
+//!   - [`room_place`]: a move to a place in the room, written by [`room`];
+//!   - [`shift`]: a move by directions and an amount;
+//!   - [`rotate`]: turns, facing and straightening;
+//!   - [`scale`]: scale factors, both directions of every relative change;
+//!   - [`arrange`]: swaps, rows and alignments;
+//!   - [`repeat`]: "do the same for X2", reversed or mirrored.
 //!
 //! Answers are expression trees ([`crate::expr::Expr`]) written with only `X_i.min/.max/
 //! .center/.size`, `room`, `e1 e2 e3`, `T`, `R`, `D` — never the scene's numbers but for a
@@ -17,12 +25,21 @@
 //! An instruction any word of which is unread is refused, quoting the unread words.
 
 pub mod amounts;
+mod arrange;
 mod build;
 mod clause;
 mod idioms;
 mod read;
+mod relate;
 mod relations;
+mod repeat;
 mod room;
+mod room_place;
+mod rotate;
+mod scale;
+mod shift;
+#[cfg(test)]
+mod testing;
 mod view;
 mod words;
 

@@ -122,7 +122,6 @@ pub(crate) fn vector(
         Level::Surface(y) => on_surface_level(s, t, y, steps),
         Level::Under(d) => add(along(sub(b("min"), a("min")), 1), scaled_axis(num(-d), 1)),
     };
-    let gap = num(GAP);
     Some(match relation {
         Relation::On => sum([
             scaled_axis(sub(dot(b("max"), axis(1)), dot(a("min"), axis(1))), 1),
@@ -134,21 +133,7 @@ pub(crate) fn vector(
             centre(0),
             centre(2),
         ]),
-        Relation::Side(e, sign) => {
-            let other = 2 - e;
-            let along_axis = if sign > 0.0 {
-                scaled_axis(
-                    sub(add(dot(b("max"), axis(e)), gap), dot(a("min"), axis(e))),
-                    e,
-                )
-            } else {
-                scaled_axis(
-                    sub(sub(dot(b("min"), axis(e)), gap), dot(a("max"), axis(e))),
-                    e,
-                )
-            };
-            sum([along_axis, centre(other), level])
-        }
+        Relation::Side(e, sign) => side(s, t, steps, e, sign, level),
         Relation::NextTo => next_to(s, t, steps, level, boxed(s, "center", steps), GAP),
         Relation::NextToOn(surface) => next_to(
             s,
@@ -197,17 +182,46 @@ pub(crate) fn vector(
             let beside = next_to(s, t, steps, num(0.0), boxed(s, "center", steps), GAP);
             add(beside, down)
         }
-        Relation::OtherSide => {
-            let d = sub(b("center"), a("center"));
-            let dx = call("abs", vec![dot(d.clone(), axis(0))]);
-            let dz = call("abs", vec![dot(d.clone(), axis(2))]);
-            let q = step(sub(dx, dz));
-            add(
-                mul(q.clone(), mul(num(2.0), along(d.clone(), 0))),
-                mul(sub(num(1.0), q), mul(num(2.0), along(d, 2))),
-            )
-        }
+        Relation::OtherSide => other_side(s, t, steps),
     })
+}
+
+/// Against the face of target `t` on side (axis `e`, `sign`), [`GAP`] from it, centred on
+/// it across, standing on `level`.
+fn side(s: usize, t: usize, steps: &Steps, e: usize, sign: f64, level: Expr) -> Expr {
+    let b = |attribute: &str| boxed(t, attribute, steps);
+    let a = |attribute: &str| boxed(s, attribute, steps);
+    let gap = num(GAP);
+    let other = 2 - e;
+    let along_axis = if sign > 0.0 {
+        scaled_axis(
+            sub(add(dot(b("max"), axis(e)), gap), dot(a("min"), axis(e))),
+            e,
+        )
+    } else {
+        scaled_axis(
+            sub(sub(dot(b("min"), axis(e)), gap), dot(a("max"), axis(e))),
+            e,
+        )
+    };
+    sum([
+        along_axis,
+        along(sub(b("center"), a("center")), other),
+        level,
+    ])
+}
+
+/// Mirrored through target `t`, along the horizontal axis subject `s` is offset from it
+/// most.
+fn other_side(s: usize, t: usize, steps: &Steps) -> Expr {
+    let d = sub(boxed(t, "center", steps), boxed(s, "center", steps));
+    let dx = call("abs", vec![dot(d.clone(), axis(0))]);
+    let dz = call("abs", vec![dot(d.clone(), axis(2))]);
+    let q = step(sub(dx, dz));
+    add(
+        mul(q.clone(), mul(num(2.0), along(d.clone(), 0))),
+        mul(sub(num(1.0), q), mul(num(2.0), along(d, 2))),
+    )
 }
 
 /// The vertical move that sets subject `s` on `surface` beside `t`, which rests on it: at

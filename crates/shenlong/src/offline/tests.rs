@@ -328,7 +328,7 @@ fn nothing_is_acted_on_from_a_partial_reading() {
         "rotate the ottoman a smidgeon",
         "make the coffee table prettier",
         "move the sofa left by eleventy cm",
-        "move the ottoman left-ish then whatever",
+        "move the ottoman left-ish then wiggle it",
         "take the vase",
     ] {
         let m = refused("living_room", instruction);

@@ -1,0 +1,188 @@
+//! Arrangements of several objects: swapping two ("swap X1 and X2", "have X1 and X2 trade
+//! places"), lining several up in a row ("line up X1, X2 and X3"), and aligning objects
+//! with another along an axis ("align X1 with X2 along the z axis").
+
+use super::build::*;
+use super::clause::Clause;
+use super::read::{not_read, Produced, Reader};
+use super::relations::{boxed, Step, GAP};
+use super::words::Token;
+
+/// The axis named by "along the x axis" (for align), its words read.
+fn named_axis(c: &mut Clause) -> Option<usize> {
+    let i = c.find(&["axis"])?;
+    let a = match c.word(i.checked_sub(1)?)? {
+        "x" | "e1" => 0,
+        "y" | "e2" => 1,
+        "z" | "e3" => 2,
+        _ => return None,
+    };
+    c.mark(i - 1..i + 1);
+    for k in (i.saturating_sub(3)..i - 1).rev() {
+        if matches!(c.word(k), Some("along" | "the" | "on" | "in")) {
+            c.mark(k..k + 1);
+        }
+    }
+    Some(a)
+}
+
+impl Reader<'_> {
+    /// "swap X1 and X2": each goes to the other's place, centred where it stood, on its
+    /// floor level.
+    pub(super) fn swap(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+        let vars = c.variables();
+        if vars.len() < 2 {
+            return Err(not_read(text, text));
+        }
+        for i in 0..c.len() {
+            if matches!(
+                c.word(i),
+                Some(
+                    "positions"
+                        | "position"
+                        | "places"
+                        | "place"
+                        | "spots"
+                        | "of"
+                        | "with"
+                        | "and"
+                        | "around"
+                        | "over"
+                        | "round"
+                )
+            ) {
+                c.mark(i..i + 1);
+            }
+        }
+        let (a, b) = (vars[0].1, vars[1].1);
+        c.mark(vars[0].0..vars[0].0 + 1);
+        c.mark(vars[1].0..vars[1].0 + 1);
+        self.last_subjects = vec![a, b];
+        let to = |from: usize, to: usize| {
+            sum([
+                along(sub(var(to, "center"), var(from, "center")), 0),
+                along(sub(var(to, "center"), var(from, "center")), 2),
+                along(sub(var(to, "min"), var(from, "min")), 1),
+            ])
+        };
+        Ok(vec![
+            (a, Step::Translate(to(a, b))),
+            (b, Step::Translate(to(b, a))),
+        ])
+    }
+
+    /// "align X1 with X2" (along x, or the axis named): centred on X2 along that axis.
+    /// With no `with` and several objects, a row ([`Reader::row`]).
+    pub(super) fn align(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+        let axis_named = named_axis(c);
+        let with = c.find(&["with"]).or_else(|| c.find(&["to"]));
+        let vars = c.variables();
+        if with.is_none() && vars.len() >= 2 {
+            return Ok(self.row(c, &vars));
+        }
+        let with = with.ok_or_else(|| not_read(text, text))?;
+        c.mark(with..with + 1);
+        let (tpos, target) = c
+            .variable_after(with + 1)
+            .ok_or_else(|| not_read(text, text))?;
+        c.mark(tpos..tpos + 1);
+        let subjects = self.subjects(c, Some(with));
+        if subjects.is_empty() {
+            return Err(not_read(text, text));
+        }
+        self.last_subjects = subjects.clone();
+        let e = axis_named.unwrap_or(0);
+        Ok(subjects
+            .iter()
+            .map(|&s| {
+                (
+                    s,
+                    Step::Translate(along(
+                        sub(boxed(target, "center", &self.steps), var(s, "center")),
+                        e,
+                    )),
+                )
+            })
+            .collect())
+    }
+
+    /// "line up X1, X2 and X3", "arrange them in a row": each of `vars` (the variables with
+    /// their positions) after the first goes right of the one before, [`GAP`] from it,
+    /// level with and centred on the first.
+    fn row(&mut self, c: &mut Clause, vars: &[(usize, usize)]) -> Produced {
+        for i in 0..c.len() {
+            if matches!(
+                c.word(i),
+                Some("and" | "in" | "a" | "row" | "line" | "next" | "to" | "each" | "other")
+            ) || matches!(c.token(i), Some(Token::Separator))
+            {
+                c.mark(i..i + 1);
+            }
+        }
+        let row: Vec<usize> = vars.iter().map(|(_, v)| *v).collect();
+        for (i, _) in vars {
+            c.mark(*i..*i + 1);
+        }
+        self.last_subjects = row.clone();
+        let mut local = self.steps.clone();
+        let mut out = Vec::new();
+        for pair in row.windows(2) {
+            let (prev, s, first) = (pair[0], pair[1], row[0]);
+            let v = sum([
+                scaled_axis(
+                    sub(
+                        add(dot(boxed(prev, "max", &local), axis(0)), num(GAP)),
+                        dot(var(s, "min"), axis(0)),
+                    ),
+                    0,
+                ),
+                along(sub(boxed(first, "center", &local), var(s, "center")), 2),
+                along(sub(boxed(first, "min", &local), var(s, "min")), 1),
+            ]);
+            local.entry(s).or_default().push(Step::Translate(v.clone()));
+            out.push((s, Step::Translate(v)));
+        }
+        out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{close, moves, standing, Box3};
+    use super::GAP;
+
+    fn three() -> [Box3; 3] {
+        [
+            standing([0.4, 0.5, 0.4], -1.0, 1.0),
+            standing([0.6, 0.8, 0.2], 1.0, -1.0),
+            standing([0.2, 0.3, 0.2], 2.0, 0.5),
+        ]
+    }
+
+    #[test]
+    fn a_swap_exchanges_the_places() {
+        let m = moves("swap X1 and X2", &three());
+        assert!(close(m[0], [2.0, 0.0, -2.0]));
+        assert!(close(m[1], [-2.0, 0.0, 2.0]));
+        assert!(close(m[2], [0.0; 3]));
+    }
+
+    #[test]
+    fn a_row_goes_right_of_the_first_level_and_centred_with_it() {
+        let m = moves("line up X1, X2 and X3", &three());
+        assert!(close(m[0], [0.0; 3]));
+        // X2's left face GAP right of X1's right face (−0.8), centred on X1 along z.
+        assert!(close(m[1], [-0.8 + GAP + 0.3 - 1.0, 0.0, 2.0]));
+        // X3 GAP right of X2 where X2 went (its right face at −0.15).
+        let x2_right = -0.8 + GAP + 0.6;
+        assert!(close(m[2], [x2_right + GAP + 0.1 - 2.0, 0.0, 0.5]));
+    }
+
+    #[test]
+    fn aligning_centres_along_the_axis_named() {
+        let m = moves("align X1 with X2", &three());
+        assert!(close(m[0], [2.0, 0.0, 0.0]));
+        let m = moves("align X1 with X2 along the z axis", &three());
+        assert!(close(m[0], [0.0, 0.0, -2.0]));
+    }
+}

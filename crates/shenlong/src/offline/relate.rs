@@ -1,0 +1,512 @@
+//! Moves to a relation with other objects: finding the relation phrase ("next to X2", "on
+//! top of X2", "between X2 and X3", "a bit closer to X2", "next to it"), its subjects and
+//! targets, and what it means here — "against X2" along a direction said before it ("slide
+//! X1 right until it touches X2"), a small thing "to" a table goes on it, "on X2 next to
+//! X3" is one place on X2, several things "on X2" go side by side — then each subject's
+//! vector, placed as a person would ([`Reader::vector`]).
+
+use super::amounts::{self, Length, DEFAULT_METRES};
+use super::clause::Clause;
+use super::read::{not_read, Produced, Reader};
+use super::relations::{self, Level, Relation, Step};
+use super::room;
+use crate::expr::Expr;
+use crate::translate::Near;
+use std::ops::Range;
+
+/// How a relation's amount is read.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub(super) enum RelKind {
+    /// A relation with no amount.
+    Fixed(Relation),
+    /// Away from the target by the amount named ([`DEFAULT_METRES`] with none).
+    Away,
+    /// Closer to the target by the amount named (halfway with none).
+    Closer,
+}
+
+/// A relation phrase found in a clause.
+pub(super) struct Found {
+    /// How its amount is read.
+    kind: RelKind,
+    /// The marker and any articles up to the first target.
+    range: Range<usize>,
+    /// The targets: (position, variable), two for `between X2 and X3`.
+    targets: Vec<(usize, usize)>,
+}
+
+/// The relation markers, longest first.
+const MARKERS: &[(&[&str], RelKind)] = &[
+    (
+        &["to", "the", "other", "side", "of"],
+        RelKind::Fixed(Relation::OtherSide),
+    ),
+    (
+        &["on", "the", "other", "side", "of"],
+        RelKind::Fixed(Relation::OtherSide),
+    ),
+    (
+        &["the", "other", "side", "of"],
+        RelKind::Fixed(Relation::OtherSide),
+    ),
+    (&["further", "away", "from"], RelKind::Away),
+    (&["farther", "away", "from"], RelKind::Away),
+    (
+        &["to", "the", "left", "of"],
+        RelKind::Fixed(Relation::Side(0, -1.0)),
+    ),
+    (
+        &["to", "the", "right", "of"],
+        RelKind::Fixed(Relation::Side(0, 1.0)),
+    ),
+    (
+        &["on", "the", "left", "of"],
+        RelKind::Fixed(Relation::Side(0, -1.0)),
+    ),
+    (
+        &["on", "the", "right", "of"],
+        RelKind::Fixed(Relation::Side(0, 1.0)),
+    ),
+    (
+        &["at", "the", "back", "of"],
+        RelKind::Fixed(Relation::Side(2, -1.0)),
+    ),
+    (
+        &["at", "the", "front", "of"],
+        RelKind::Fixed(Relation::Side(2, 1.0)),
+    ),
+    (
+        &["in", "front", "of"],
+        RelKind::Fixed(Relation::Side(2, 1.0)),
+    ),
+    (
+        &["in", "back", "of"],
+        RelKind::Fixed(Relation::Side(2, -1.0)),
+    ),
+    (&["on", "top", "of"], RelKind::Fixed(Relation::On)),
+    (&["on", "to"], RelKind::Fixed(Relation::On)),
+    (&["next", "to"], RelKind::Fixed(Relation::NextTo)),
+    (&["close", "to"], RelKind::Fixed(Relation::NextTo)),
+    (&["near", "to"], RelKind::Fixed(Relation::NextTo)),
+    (&["adjacent", "to"], RelKind::Fixed(Relation::NextTo)),
+    (&["up", "against"], RelKind::Fixed(Relation::Against)),
+    (&["halfway", "between"], RelKind::Fixed(Relation::Between)),
+    (&["away", "from"], RelKind::Away),
+    (&["further", "from"], RelKind::Away),
+    (&["farther", "from"], RelKind::Away),
+    (&["closer", "to"], RelKind::Closer),
+    (&["nearer", "to"], RelKind::Closer),
+    (&["off", "of"], RelKind::Fixed(Relation::Off)),
+    (&["left", "of"], RelKind::Fixed(Relation::Side(0, -1.0))),
+    (&["right", "of"], RelKind::Fixed(Relation::Side(0, 1.0))),
+    (&["back", "of"], RelKind::Fixed(Relation::Side(2, -1.0))),
+    (&["onto"], RelKind::Fixed(Relation::On)),
+    (&["atop"], RelKind::Fixed(Relation::On)),
+    (&["upon"], RelKind::Fixed(Relation::On)),
+    (&["over"], RelKind::Fixed(Relation::On)),
+    (&["above"], RelKind::Fixed(Relation::On)),
+    (&["on"], RelKind::Fixed(Relation::On)),
+    (&["beside"], RelKind::Fixed(Relation::NextTo)),
+    (&["besides"], RelKind::Fixed(Relation::NextTo)),
+    (&["by"], RelKind::Fixed(Relation::NextTo)),
+    (&["near"], RelKind::Fixed(Relation::NextTo)),
+    (&["nearby"], RelKind::Fixed(Relation::NextTo)),
+    (&["alongside"], RelKind::Fixed(Relation::NextTo)),
+    (&["against"], RelKind::Fixed(Relation::Against)),
+    (&["under"], RelKind::Fixed(Relation::Under)),
+    (&["underneath"], RelKind::Fixed(Relation::Under)),
+    (&["below"], RelKind::Fixed(Relation::Under)),
+    (&["beneath"], RelKind::Fixed(Relation::Under)),
+    (&["behind"], RelKind::Fixed(Relation::Side(2, -1.0))),
+    (&["between"], RelKind::Fixed(Relation::Between)),
+    (&["opposite"], RelKind::Fixed(Relation::OtherSide)),
+    (&["off"], RelKind::Fixed(Relation::Off)),
+    (&["closer"], RelKind::Closer),
+    (&["nearer"], RelKind::Closer),
+    (&["toward"], RelKind::Closer),
+    (&["towards"], RelKind::Closer),
+    (&["into"], RelKind::Fixed(Relation::To)),
+    (&["inside"], RelKind::Fixed(Relation::To)),
+    (&["in"], RelKind::Fixed(Relation::To)),
+    (&["to"], RelKind::Fixed(Relation::To)),
+    (&["upto"], RelKind::Fixed(Relation::UpTo)),
+    (&["at"], RelKind::Fixed(Relation::To)),
+];
+
+/// The first relation marker followed by an object (two for `between X2 and X3`).
+pub(super) fn find_relation(c: &Clause) -> Option<Found> {
+    let mut best: Option<Found> = None;
+    for (words, kind) in MARKERS {
+        for i in 0..c.len() {
+            if !c.words_at(i, words) {
+                continue;
+            }
+            let after = i + words.len();
+            let Some((t, v)) = c.variable_after(after) else {
+                continue;
+            };
+            let mut targets = vec![(t, v)];
+            let mut end = t + 1;
+            if *kind == RelKind::Fixed(Relation::Between) {
+                let and = (end..c.len()).find(|&k| c.words_at(k, &["and"]))?;
+                let (t2, v2) = c.variable_after(and + 1)?;
+                targets.push((t2, v2));
+                end = t2 + 1;
+            }
+            // Articles between the marker and the object are read with it.
+            let found = Found {
+                kind: *kind,
+                range: i..after.max(t).min(end),
+                targets,
+            };
+            if best.as_ref().is_none_or(|b| i < b.range.start) {
+                best = Some(found);
+            }
+            break;
+        }
+    }
+    let mut f = best?;
+    // The range covers the marker and any articles up to the first target.
+    let first_target = f.targets[0].0;
+    f.range = f.range.start..first_target;
+    Some(f)
+}
+
+/// The length a relation's amount names, in metres (`far`: [`amounts::FAR_METRES`]).
+fn length_value(l: Option<Length>) -> Option<f64> {
+    match l {
+        Some(Length::Metres(m)) => Some(m),
+        Some(Length::Far) => Some(amounts::FAR_METRES),
+        _ => None,
+    }
+}
+
+/// Marks the relation phrase read: its marker, its targets, and a particle before it
+/// ("up onto", "back to", "over to").
+fn mark_relation(c: &mut Clause, r: &Found) {
+    c.mark(r.range.clone());
+    for &(i, _) in &r.targets {
+        c.mark(i..i + 1);
+    }
+    if r.range.start > 0 {
+        let p = r.range.start - 1;
+        if matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across")) && c.free(p) {
+            c.mark(p..p + 1);
+        }
+    }
+}
+
+/// What `on X2` combined with a second relation on the same surface means ("on X2 next
+/// to X3", "on X2 to the left of X3", "on X2 between X3 and X4"), with `surface` X2.
+fn on_surface(surface: usize, second: &Found) -> Option<Relation> {
+    match (second.kind, second.targets.len()) {
+        (RelKind::Fixed(Relation::NextTo), 1) => Some(Relation::NextToOn(surface)),
+        (RelKind::Fixed(side @ Relation::Side(..)), 1) => Some(side),
+        (RelKind::Fixed(Relation::Between), 2) => Some(Relation::BetweenOn(surface)),
+        _ => None,
+    }
+}
+
+impl Reader<'_> {
+    /// A relation whose object is a pronoun for the objects named before ("next to it",
+    /// "on top of them"): the words' range, and those objects.
+    pub(super) fn pronoun_relation(&self, c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
+        if self.last_subjects.is_empty() {
+            return None;
+        }
+        for (words, _) in MARKERS {
+            for i in 0..c.len() {
+                if c.words_at(i, words)
+                    && matches!(c.word(i + words.len()), Some("it" | "them"))
+                    && c.free(i + words.len())
+                {
+                    return Some((i..i + words.len() + 1, self.last_subjects.clone()));
+                }
+            }
+        }
+        None
+    }
+
+    /// "move X2 next to it": the subjects (the variables before the phrase `r`) moved
+    /// into the relation with `targets`, the objects named before.
+    pub(super) fn relate_to_pronoun(
+        &mut self,
+        c: &mut Clause,
+        r: Range<usize>,
+        targets: &[usize],
+        text: &str,
+    ) -> Result<Produced, String> {
+        c.mark(r.clone());
+        let subjects = self.subjects(c, Some(r.start));
+        if subjects.is_empty() || targets.iter().any(|t| subjects.contains(t)) {
+            return Err(not_read(text, text));
+        }
+        let kind = MARKERS
+            .iter()
+            .find(|(w, _)| c.words_at_any(r.start, w))
+            .map(|(_, k)| *k);
+        let relation = match kind {
+            Some(RelKind::Fixed(rel)) => rel,
+            Some(RelKind::Away) => Relation::Away(DEFAULT_METRES),
+            Some(RelKind::Closer) | None => Relation::Closer(None),
+        };
+        self.each(&subjects, relation, targets, text)
+    }
+
+    /// The subjects (the variables before the phrase) moved into the relation `r` names.
+    pub(super) fn relate(
+        &mut self,
+        c: &mut Clause,
+        r: Found,
+        text: &str,
+    ) -> Result<Produced, String> {
+        let subjects = self.subjects(c, Some(r.range.start));
+        if subjects.is_empty() {
+            return Err(not_read(text, text));
+        }
+        mark_relation(c, &r);
+        let targets: Vec<usize> = r.targets.iter().map(|(_, v)| *v).collect();
+        let relation = self.relation(c, &r, &subjects, &targets)?;
+        // "on X2 next to X3", "on X2 to the left of X3": one destination, beside X3 on the
+        // surface X2.
+        if relation == Relation::On && targets.len() == 1 {
+            if let Some(second) = find_relation(c) {
+                if let Some(rel) = on_surface(targets[0], &second) {
+                    // The marker, the targets and what joins them ("and").
+                    let last = second.targets.last().map_or(0, |&(i, _)| i);
+                    c.mark(second.range.start..last + 1);
+                    let on: Vec<usize> = second.targets.iter().map(|&(_, v)| v).collect();
+                    return self.each(&subjects, rel, &on, text);
+                }
+            }
+        }
+        if relation == Relation::On && subjects.len() > 1 {
+            // "put the mug and the bowl on the dresser": side by side on it.
+            self.last_subjects = subjects.clone();
+            return Ok(subjects
+                .iter()
+                .enumerate()
+                .map(|(k, &s)| {
+                    let v = relations::side_by_side(&subjects, k, targets[0], &self.steps);
+                    (s, Step::Translate(v))
+                })
+                .collect());
+        }
+        self.each(&subjects, relation, &targets, text)
+    }
+
+    /// The relation phrase `r` means here, its amount read: "against X2" after a direction
+    /// is along it (refused when X2 does not lie straight that way), and a small thing
+    /// "to" or "at" one target goes on it ("bring the bowl to the table").
+    ///
+    /// # Errors
+    /// The target of "against" along a direction does not lie straight that way.
+    fn relation(
+        &self,
+        c: &mut Clause,
+        r: &Found,
+        subjects: &[usize],
+        targets: &[usize],
+    ) -> Result<Relation, String> {
+        let relation = match r.kind {
+            // "slide X1 right until it touches X2", "push X1 left against X2": along
+            // that direction, when X2 lies straight that way.
+            RelKind::Fixed(Relation::Against) => match self.direction_before(c, r.range.start) {
+                Some((e, sign)) => {
+                    for &s in subjects {
+                        self.facts.known.straight_ahead(s, targets[0], e, sign)?;
+                    }
+                    Relation::AgainstAlong(e, sign)
+                }
+                None => Relation::Against,
+            },
+            RelKind::Fixed(rel) => rel,
+            RelKind::Away => {
+                Relation::Away(length_value(amounts::length(c, true)).unwrap_or(DEFAULT_METRES))
+            }
+            RelKind::Closer => Relation::Closer(length_value(amounts::length(c, true))),
+        };
+        // "bring the bowl to the table": a small thing goes on the table's top.
+        let to_word = c
+            .word(r.range.start)
+            .is_some_and(|w| matches!(w, "to" | "at"));
+        let small = |s: usize| self.facts.known.small_onto(s, targets[0]);
+        Ok(
+            if relation == Relation::To
+                && to_word
+                && targets.len() == 1
+                && subjects.iter().all(|&s| small(s))
+            {
+                Relation::On
+            } else {
+                relation
+            },
+        )
+    }
+
+    /// Each subject moved into `relation` with `targets`, remembered as what later
+    /// clauses' "it" and "them" mean and as what each was put beside or between.
+    fn each(
+        &mut self,
+        subjects: &[usize],
+        relation: Relation,
+        targets: &[usize],
+        text: &str,
+    ) -> Result<Produced, String> {
+        self.last_subjects = subjects.to_vec();
+        self.last_targets = targets.to_vec();
+        let near = match (relation, targets) {
+            (
+                Relation::NextTo
+                | Relation::NextToOn(_)
+                | Relation::Side(..)
+                | Relation::Against
+                | Relation::AgainstAlong(..),
+                &[t, ..],
+            ) => Some(Near::Beside(t)),
+            (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
+            _ => None,
+        };
+        subjects
+            .iter()
+            .map(|&s| {
+                let v = self.vector(relation, s, targets, text)?;
+                match near {
+                    Some(n) => self.near.insert(s, n),
+                    None => self.near.remove(&s),
+                };
+                Ok((s, Step::Translate(v)))
+            })
+            .collect()
+    }
+
+    /// The vector that takes subject `s` into `relation` with `targets`, placed as a
+    /// person would: beside a target that rests on a surface, on a side of it where the
+    /// subject fits on that surface; on the floor where the subject is floor furniture
+    /// and the target stands higher, or the target hangs on a wall.
+    ///
+    /// # Errors
+    /// Beside a target on a surface, no side of it where the subject fits on the surface;
+    /// or the words of `text` not read.
+    fn vector(
+        &self,
+        relation: Relation,
+        s: usize,
+        targets: &[usize],
+        text: &str,
+    ) -> Result<Expr, String> {
+        let floor = room::floor(self.facts.known.room);
+        let t = *targets.first().ok_or_else(|| not_read(text, text))?;
+        // Where an earlier clause moved the target, the scene's numbers no longer say
+        // where it is.
+        let unmoved = |v: usize| !self.steps.contains_key(&v);
+        let as_is = unmoved(t);
+        let known = self.facts.known;
+        let mut level = Level::Target;
+        let relation = match relation {
+            Relation::NextTo if as_is => match known.side_on_support(s, t)? {
+                Some(side) => {
+                    let d = known.float_above_support(t);
+                    if d > 0.0 {
+                        level = Level::Under(d);
+                    }
+                    side
+                }
+                None => relation,
+            },
+            Relation::NextToOn(y) if as_is && unmoved(y) => {
+                level = Level::Surface(y);
+                known.side_on_surface(s, t, y)?.unwrap_or(relation)
+            }
+            Relation::BetweenOn(y) if targets.iter().chain([&y]).all(|&v| unmoved(v)) => {
+                let w = *targets.get(1).ok_or_else(|| not_read(text, text))?;
+                known.between_on(s, t, w, y)?;
+                relation
+            }
+            r => r,
+        };
+        let beside = matches!(
+            relation,
+            Relation::NextTo | Relation::Side(..) | Relation::To | Relation::Between
+        );
+        if beside && as_is && known.grounded_beside(s, t) {
+            level = Level::Floor;
+        }
+        relations::vector(relation, s, targets, &self.steps, &floor, level)
+            .ok_or_else(|| not_read(text, text))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::testing::{close, moves, on, outcome, standing};
+    use super::super::GAP;
+
+    /// A table (X2) with a mug (X1) on the floor to its left, a vase (X3) on the table,
+    /// and a chair (X4) in front of it.
+    fn table() -> Vec<super::super::testing::Box3> {
+        vec![
+            standing([0.1, 0.1, 0.1], -1.0, 0.0),
+            standing([1.0, 0.75, 0.6], 0.0, 0.0),
+            on([0.2, 0.3, 0.2], 0.2, 0.75, 0.1),
+            standing([0.5, 0.9, 0.5], 0.0, 1.5),
+        ]
+    }
+
+    #[test]
+    fn on_under_next_to_and_a_side() {
+        let m = |q: &str| moves(q, &table())[0];
+        assert!(close(m("put X1 on X2"), [1.0, 0.75, 0.0]));
+        assert!(close(m("put X1 on top of X2"), [1.0, 0.75, 0.0]));
+        assert!(close(m("put X1 under X2"), [1.0, 0.0, 0.0]));
+        // Next to: the table's face nearest the mug, GAP from it, centred along it.
+        let next = m("put X1 next to X2");
+        assert!(close(next, [-0.5 - GAP - (-0.95), 0.0, 0.0]), "{next}");
+        let right = m("put X1 to the right of X2");
+        assert!(close(right, [0.5 + GAP - (-1.05), 0.0, 0.0]), "{right}");
+    }
+
+    #[test]
+    fn a_small_thing_to_a_table_goes_on_it_and_a_chair_to_its_place() {
+        let m = moves("bring X1 to X2", &table());
+        assert!(close(m[0], [1.0, 0.75, 0.0]));
+        // The chair is not small beside the table: to its place on the floor.
+        let m = moves("move X4 to X2", &table());
+        assert!(close(m[3], [0.0, 0.0, -1.5]));
+    }
+
+    #[test]
+    fn on_a_surface_next_to_something_on_it() {
+        // On the table, beside the vase: the vase's face towards the table's centre (−x),
+        // GAP from it, at the vase's level.
+        let m = moves("put X1 on X2 next to X3", &table());
+        assert!(close(m[0], [0.1 - GAP - (-0.95), 0.75, 0.1]), "{}", m[0]);
+    }
+
+    #[test]
+    fn several_on_one_surface_go_side_by_side() {
+        let m = moves("put X1 and X3 on X2", &table());
+        // Along x (the table is wider than deep), centred: total 0.1 + GAP + 0.2.
+        let total = 0.1 + GAP + 0.2;
+        assert!(
+            close(m[0], [-total / 2.0 + 0.05 + 1.0, 0.75, 0.0]),
+            "{}",
+            m[0]
+        );
+        let x3 = -total / 2.0 + 0.1 + GAP + 0.1;
+        assert!(close(m[2], [x3 - 0.2, 0.0, -0.1]), "{}", m[2]);
+    }
+
+    #[test]
+    fn against_along_a_direction_and_next_to_it() {
+        // Without a scene nothing is known of where it lies: taken as straight.
+        let m = moves("slide X1 right until it touches X2", &table());
+        assert!(close(m[0], [-0.5 - (-0.95), 0.0, 0.0]), "{}", m[0]);
+        // A pronoun for the last subject: "next to it".
+        let m = moves("move X1 30 cm left and put X4 next to it", &table());
+        // X1 went to x −1.3; the chair (z 1.5) lies more in front of it than to its side
+        // in X1's proportions: against X1's front face, centred on it.
+        assert!(close(m[3], [-1.3, 0.0, 0.05 + GAP - 1.25]), "{}", m[3]);
+        assert!(outcome("put X1 next to it", &table(), true).is_err());
+    }
+}
