@@ -11,6 +11,7 @@
 //! | `until it touches X2`, `until it's flush against X2`, `till it hits X2`, `until they meet X2` | `against X2` (with a direction before it: along that direction, checked) |
 //! | `all the way to the left wall`, `all the way back to the wall` | `against the left wall`, `against the back wall` |
 //! | `point X1 at X2`, `aim X1 at X2`, `so it points at X2`, `pointing towards X2` | `turn X1 face X2`, `so it faces X2`, `facing X2` |
+//! | `X1 needs to go 2 feet left`, `X1 should be moved …`, `X1 has to move …` | `X1 2 feet left` (a move: the objects named, then where) |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
 
 use super::amounts;
@@ -35,6 +36,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     right_up_against(c);
     until_touching(c);
     pointing(c);
+    needs_to_go(c);
     all_the_way_to(c);
     flush(c);
     out_from(c);
@@ -233,5 +235,34 @@ fn pointing(c: &mut Clause) {
             c.replace(k, "face");
             return;
         }
+    }
+}
+
+/// `X1 needs to go …`, `X1 should be moved …`, `X1 has to move …`: the words after the
+/// objects that say they are to move, read; the clause is then a move of the objects.
+fn needs_to_go(c: &mut Clause) {
+    let modal = [
+        "needs", "need", "has", "have", "should", "must", "ought", "wants", "want", "can",
+        "could",
+    ];
+    for i in 1..c.len() {
+        let after_objects = matches!(c.token(i - 1), Some(super::words::Token::Variable(_)));
+        if !after_objects || !modal.iter().any(|m| c.words_at(i, &[m])) {
+            continue;
+        }
+        let mut k = i + 1;
+        if c.words_at(k, &["to"]) {
+            k += 1;
+        }
+        let moved = ["moved", "shifted", "pushed", "placed", "put", "slid", "nudged"];
+        let end = if c.words_at(k, &["go"]) || c.words_at(k, &["move"]) {
+            k + 1
+        } else if c.words_at(k, &["be"]) && moved.iter().any(|m| c.words_at(k + 1, &[m])) {
+            k + 2
+        } else {
+            continue;
+        };
+        c.mark(i..end);
+        return;
     }
 }

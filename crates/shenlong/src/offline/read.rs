@@ -187,6 +187,8 @@ impl<'a> Reader<'a> {
         }
         let produced = if let Some(repeated) = self.repeat(c) {
             repeated
+        } else if self.topic(c) {
+            return Ok(());
         } else {
             self.read(c)?
         };
@@ -195,6 +197,30 @@ impl<'a> Reader<'a> {
             return Err(not_read(&unread.join(" "), &c.text()));
         }
         self.record(produced)
+    }
+
+    /// A topic ("Cushion_Blue: move it 15 cm right"): a clause of objects named alone,
+    /// what "it" and "them" mean next; read, it is `true`.
+    fn topic(&mut self, c: &mut Clause) -> bool {
+        let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
+        let topic: Vec<usize> = free
+            .iter()
+            .filter_map(|&i| match c.token(i) {
+                Some(Token::Variable(v)) => Some(*v),
+                _ => None,
+            })
+            .collect();
+        let only_objects = free
+            .iter()
+            .all(|&i| matches!(c.token(i), Some(Token::Variable(_))) || c.words_at(i, &["and"]));
+        if topic.is_empty() || !only_objects {
+            return false;
+        }
+        for &i in &free {
+            c.mark(i..i + 1);
+        }
+        self.last_subjects = topic;
+        true
     }
 
     /// Records a clause's steps, and the first variable's as what "do the same" repeats.

@@ -569,3 +569,16 @@ fn it_and_itself_in_what_must_stay() {
         &[("Cup.001", [0.0, 0.0, 0.05]), ("Cup.002", [0.0, 0.0, 0.05])],
     );
 }
+
+#[test]
+fn a_topic_and_a_need_to_move_are_read_as_moves() {
+    let s = study();
+    let a = run(&s, "Pouf: move it 15 cm to the right");
+    only_moved(&s, &a, &[("Pouf", [0.15, 0.0, 0.0])]);
+    let a = run(&s, "the pouf needs to go 2 feet to the left");
+    only_moved(&s, &a, &[("Pouf", [-0.6096, 0.0, 0.0])]);
+    let a = run(&s, "the pouf should be moved 20 cm back");
+    only_moved(&s, &a, &[("Pouf", [0.0, 0.0, -0.2])]);
+    // Named alone, nothing is said to happen to them.
+    refused(&s, "the pouf, the novel", &[]);
+}
