@@ -11,6 +11,7 @@
 use super::error::{self, GroundError};
 use super::select::{self, Direction, Relation};
 use super::{words, Head, Post, Reader};
+use words::Kind;
 
 /// What the words before a post-modifier have decided.
 #[derive(Clone, Copy, Debug)]
@@ -250,5 +251,168 @@ impl Reader<'_> {
                 )
             },
         }
+    }
+
+    /// Whether a verb that puts an object somewhere stands right before token `k`
+    /// (`put`, `move`, `place` — not `turn`, `take` or `swap`, which take no place).
+    fn placing_verb_before(&self, k: usize) -> bool {
+        k > 0
+            && self.word(k - 1).is_some_and(|w| {
+                words::is_verb(w)
+                    && !words::turns_or_scales(w)
+                    && !matches!(
+                        w,
+                        "make"
+                            | "swap"
+                            | "switch"
+                            | "exchange"
+                            | "interchange"
+                            | "align"
+                            | "line"
+                            | "take"
+                            | "grab"
+                            | "pick"
+                            | "fetch"
+                    )
+            })
+    }
+
+    /// Whether the clause goes on after token `k` with an amount, a direction or a place
+    /// of its own: then a modifier before `k` describes the object rather than saying
+    /// where it goes.
+    fn clause_goes_on(&self, k: usize) -> bool {
+        let place_or_amount = |w: &str| {
+            words::side_word(w).is_some()
+                || words::count_word(w).is_some()
+                || matches!(
+                    w,
+                    "up" | "down"
+                        | "upward"
+                        | "upwards"
+                        | "downward"
+                        | "downwards"
+                        | "forward"
+                        | "forwards"
+                        | "backward"
+                        | "backwards"
+                        | "ahead"
+                        | "clockwise"
+                        | "counterclockwise"
+                        | "anticlockwise"
+                        | "around"
+                        | "degrees"
+                        | "away"
+                        | "closer"
+                        | "nearer"
+                        | "half"
+                        | "twice"
+                )
+        };
+        for t in &self.tokens[k.min(self.tokens.len())..] {
+            match &t.kind {
+                Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
+                Kind::Number(_) => return true,
+                Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
+                Kind::Word(w) if place_or_amount(w) => return true,
+                _ => {}
+            }
+        }
+        false
+    }
+
+    /// Whether the verb of the clause before token `k` takes no place to put the object
+    /// (`rotate`, `scale`, `lift`): then `the tv on the stand` describes the tv.
+    fn verb_takes_no_place(&self, k: usize) -> bool {
+        for t in self.tokens[..k.min(self.tokens.len())].iter().rev() {
+            match &t.kind {
+                Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
+                Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
+                Kind::Word(w) if words::is_verb(w) => {
+                    return words::turns_or_scales(w)
+                        || matches!(w.as_str(), "lift" | "raise" | "lower" | "elevate");
+                }
+                _ => {}
+            }
+        }
+        false
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::{means, refused, with_reader};
+
+    #[test]
+    fn the_clause_around_a_modifier_is_read() {
+        with_reader("living_room", "put the book on the side table", |r| {
+            assert!(r.placing_verb_before(1));
+            assert!(!r.clause_goes_on(7));
+            assert!(!r.verb_takes_no_place(1));
+        });
+        with_reader(
+            "living_room",
+            "rotate the tv on the tv stand 30 degrees",
+            |r| {
+                assert!(!r.placing_verb_before(1));
+                assert!(r.clause_goes_on(7));
+                assert!(r.verb_takes_no_place(1));
+            },
+        );
+        // A clause ends at "and": what follows is not its amount.
+        with_reader(
+            "living_room",
+            "move the book on the table and 2 chairs",
+            |r| {
+                assert!(!r.clause_goes_on(6));
+            },
+        );
+    }
+
+    #[test]
+    fn a_relation_is_a_destination_when_the_noun_is_already_one_object() {
+        // One remote: "on the side table" is where it goes, and both are bound.
+        means(
+            "living_room",
+            "put the remote on the side table",
+            &[&["remote control"], &["side table"]],
+        );
+        // With no amount or place after it, it is where the book goes.
+        means(
+            "living_room",
+            "put the book on the side table",
+            &[&["book"], &["side table"]],
+        );
+    }
+
+    #[test]
+    fn a_description_of_a_single_object_is_not_a_destination() {
+        // The tv is the only tv: "on the tv stand" describes it, and the stand is not bound.
+        means(
+            "living_room",
+            "rotate the tv on the tv stand 30 degrees",
+            &[&["tv"]],
+        );
+        // One book, and the clause goes on ("left"): "on the coffee table" describes it.
+        means(
+            "living_room",
+            "move the book on the coffee table left",
+            &[&["book"]],
+        );
+        // A description that does not hold is refused.
+        refused(
+            "living_room",
+            "move the book on the side table 10 cm left",
+            &["book", "side table"],
+        );
+    }
+
+    #[test]
+    fn after_a_verb_of_placing_a_relation_that_would_pick_is_refused() {
+        // Two speakers: "next to the sofa" is where a speaker goes, not which.
+        refused(
+            "living_room",
+            "put the speaker next to the sofa",
+            &["speaker", "speaker 2"],
+        );
     }
 }

@@ -298,25 +298,15 @@ impl Builder {
         id: &Identifier,
         lexicon: &Lexicon,
     ) -> u32 {
-        let aliases: Vec<String> = object.labels.aliases.iter().map(|a| normalize(a)).collect();
-        let category = object.labels.category.as_ref().map(|c| {
-            let c = normalize(c);
-            split_number(&c).0.to_string()
-        });
-        let attributes: Vec<String> = object
-            .labels
-            .attributes
-            .iter()
-            .map(|a| normalize(a))
-            .collect();
+        let labels = Labels::of(object);
         let key = GroupKey {
             written: written.to_string(),
             kind: id.base.clone(),
             other: id.other.clone(),
             side: id.side,
-            aliases: aliases.clone(),
-            category: category.clone(),
-            attributes: attributes.clone(),
+            aliases: labels.aliases.clone(),
+            category: labels.category.clone(),
+            attributes: labels.attributes.clone(),
         };
         if let Some(&g) = self.group_ids.get(&key) {
             return g;
@@ -326,22 +316,62 @@ impl Builder {
         self.group_ids.insert(key, g);
         let target = Target(g);
 
+        let mut descriptors: FxHashSet<Box<str>> = FxHashSet::default();
+        self.add_names(target, written, id, &mut descriptors);
+        let mut kinds = self.add_kinds(target, id, &labels);
+        self.add_tails(target, &mut kinds, &mut descriptors);
+        for attribute in &labels.attributes {
+            for w in attribute.split(' ') {
+                descriptors.insert(w.into());
+                self.index.attribute_words.insert(w.into());
+            }
+        }
+        self.add_lexicon(target, &kinds, lexicon);
+        self.add_name_words(target, id, lexicon);
+        descriptors.retain(|d| d.chars().any(char::is_alphabetic));
+        self.index
+            .descriptor_words
+            .extend(descriptors.iter().cloned());
+        self.index.groups[g as usize].descriptors = descriptors;
+        g
+    }
+
+    /// A group's own names: as written and as read (`base`), without spaces, and with the
+    /// side its name says (`SideTable_L` is "the left side table").
+    fn add_names(
+        &mut self,
+        target: Target,
+        written: &str,
+        id: &Identifier,
+        descriptors: &mut FxHashSet<Box<str>>,
+    ) {
         let base = id.base.as_str();
         self.add(written, target, Tier::Name, Via::Name);
         self.add(base, target, Tier::Name, Via::Name);
         for b in [written, base] {
             let list = self.index.compact.entry(compact(b).into()).or_default();
-            if list.last() != Some(&g) {
-                list.push(g);
+            if list.last() != Some(&target.0) {
+                list.push(target.0);
             }
         }
-        let mut descriptors: FxHashSet<Box<str>> = FxHashSet::default();
         if let Some(side) = id.side {
             // `SideTable_L` is "the left side table" by its name.
             let via = self.via(base);
             self.add(&format!("{} {base}", side.word()), target, Tier::Name, via);
             descriptors.insert(side.word().into());
         }
+    }
+
+    /// What a group is called besides its name — the other order of its name, its aliases,
+    /// its category, what its container holds — added; returns every kind it is called
+    /// (each with whether it is a whole name, not the end of one).
+    fn add_kinds(
+        &mut self,
+        target: Target,
+        id: &Identifier,
+        labels: &Labels,
+    ) -> Vec<(String, bool)> {
+        let base = id.base.as_str();
         let mut kinds: Vec<(String, bool)> = vec![(base.to_string(), true)];
         if let Some(other) = &id.other {
             // Both orders of the name are objects (`Lamp_Table`): it answers to both.
@@ -349,28 +379,36 @@ impl Builder {
             self.add(other, target, Tier::Category, via);
             kinds.push((other.clone(), true));
         }
-        for a in &aliases {
+        for a in &labels.aliases {
             let via = self.via(a);
             self.add(a, target, Tier::Alias, via);
             kinds.push((split_number(a).0.to_string(), true));
         }
-        if let Some(c) = &category {
+        if let Some(c) = &labels.category {
             let via = self.via(c);
             self.add(c, target, Tier::Category, via);
             kinds.push((c.clone(), true));
         }
         // A container is named by what it holds: 'shampoo bottle' is "the shampoo",
         // 'soap dispenser' "the soap", 'red wine bottle' "the red wine".
-        {
-            let w: Vec<&str> = base.split(' ').collect();
-            if w.len() >= 2 && CONTAINERS.contains(&w[w.len() - 1]) {
-                let content = w[..w.len() - 1].join(" ");
-                let via = self.via(base);
-                self.add(&content, target, Tier::Category, via);
-            }
+        let w: Vec<&str> = base.split(' ').collect();
+        if w.len() >= 2 && CONTAINERS.contains(&w[w.len() - 1]) {
+            let content = w[..w.len() - 1].join(" ");
+            let via = self.via(base);
+            self.add(&content, target, Tier::Category, via);
         }
-        // The last words of a name are its kind: 'floor lamp' is a lamp, 'red wine
-        // bottle' a wine bottle and a bottle.
+        kinds
+    }
+
+    /// The last words of each kind, as categories: 'floor lamp' is a lamp, 'red wine
+    /// bottle' a wine bottle and a bottle. They join `kinds` (not as whole names), and
+    /// every word of a kind describes the group.
+    fn add_tails(
+        &mut self,
+        target: Target,
+        kinds: &mut Vec<(String, bool)>,
+        descriptors: &mut FxHashSet<Box<str>>,
+    ) {
         for (kind, _) in kinds.clone() {
             let w: Vec<&str> = kind.split(' ').collect();
             let via = self.via(&kind);
@@ -381,14 +419,11 @@ impl Builder {
             }
             descriptors.extend(w.iter().map(|&s| Box::<str>::from(s)));
         }
-        for attribute in &attributes {
-            for w in attribute.split(' ') {
-                descriptors.insert(w.into());
-                self.index.attribute_words.insert(w.into());
-            }
-        }
-        // Lexicon: synonyms of what the object is called, and its hypernyms.
-        for (kind, whole) in &kinds {
+    }
+
+    /// Lexicon: synonyms of what the group is called, and its hypernyms.
+    fn add_lexicon(&mut self, target: Target, kinds: &[(String, bool)], lexicon: &Lexicon) {
+        for (kind, whole) in kinds {
             let via = self.via(kind);
             for &c in lexicon.concepts_of(kind) {
                 let concept = lexicon.concept(c);
@@ -408,20 +443,44 @@ impl Builder {
                 }
             }
         }
-        // Words of the name the lexicon does not know: what people may call it by.
-        for kind in std::iter::once(&base.to_string()).chain(id.other.as_ref()) {
+    }
+
+    /// Words of the name the lexicon does not know: what people may call it by.
+    fn add_name_words(&mut self, target: Target, id: &Identifier, lexicon: &Lexicon) {
+        for kind in std::iter::once(&id.base).chain(id.other.as_ref()) {
             for w in kind.split(' ') {
                 if own_word(lexicon, w) {
                     self.add(w, target, Tier::NameWord, Via::Name);
                 }
             }
         }
-        descriptors.retain(|d| d.chars().any(char::is_alphabetic));
-        self.index
-            .descriptor_words
-            .extend(descriptors.iter().cloned());
-        self.index.groups[g as usize].descriptors = descriptors;
-        g
+    }
+}
+
+/// An object's labels, normalised: aliases, category (without an instance number) and
+/// attributes.
+struct Labels {
+    aliases: Vec<String>,
+    category: Option<String>,
+    attributes: Vec<String>,
+}
+
+impl Labels {
+    /// The labels of `object`.
+    fn of(object: &crate::scene::Object) -> Self {
+        Self {
+            aliases: object.labels.aliases.iter().map(|a| normalize(a)).collect(),
+            category: object.labels.category.as_ref().map(|c| {
+                let c = normalize(c);
+                split_number(&c).0.to_string()
+            }),
+            attributes: object
+                .labels
+                .attributes
+                .iter()
+                .map(|a| normalize(a))
+                .collect(),
+        }
     }
 }
 
@@ -610,5 +669,106 @@ impl NameIndex {
             }
         }
         out
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::{means, scene};
+    use super::*;
+
+    /// The index of a built-in scene.
+    fn index(name: &str) -> (Scene, NameIndex) {
+        let s = scene(name);
+        let index = NameIndex::new(&s, Lexicon::builtin());
+        (s, index)
+    }
+
+    /// The names of the objects a phrase names, and at what tier.
+    fn lookup(scene: &Scene, index: &NameIndex, phrase: &str) -> Option<(Tier, Vec<String>)> {
+        let hit = index.lookup(phrase)?;
+        let names = hit
+            .objects
+            .iter()
+            .map(|&o| scene.objects[o].name.clone())
+            .collect();
+        Some((hit.tier, names))
+    }
+
+    #[test]
+    fn a_group_is_named_by_its_name_kinds_and_lexicon() {
+        let (s, index) = index("living_room");
+        let name = |n: &str| vec![n.to_string()];
+        assert_eq!(lookup(&s, &index, "sofa"), Some((Tier::Name, name("sofa"))));
+        // The last words of a name are its kind.
+        assert_eq!(
+            lookup(&s, &index, "lamp"),
+            Some((
+                Tier::Category,
+                vec!["floor lamp".into(), "table lamp".into()]
+            ))
+        );
+        // A synonym, and a broader category.
+        assert_eq!(
+            lookup(&s, &index, "couch"),
+            Some((Tier::Synonym, name("sofa")))
+        );
+        assert_eq!(
+            lookup(&s, &index, "television"),
+            Some((Tier::Synonym, name("tv")))
+        );
+        assert_eq!(lookup(&s, &index, "piano"), None);
+        // Numbered alike: one group, two objects.
+        assert_eq!(
+            lookup(&s, &index, "speaker").map(|h| h.1),
+            Some(vec!["speaker".into(), "speaker 2".into()])
+        );
+        assert_eq!(
+            index.lookup_compact("coffeetable").map(|o| o.len()),
+            Some(1)
+        );
+        let table = s.find("coffee table").unwrap();
+        assert!(index.describes(table, "coffee") && !index.describes(table, "side"));
+    }
+
+    #[test]
+    fn a_category_and_aliases_name_the_objects_of_a_scene_file() {
+        let text = r#"{"objects": [
+            {"name": "obj_17", "category": "armchair", "color": "red", "size": [1, 1, 1], "position": [-1, 0, 0]},
+            {"name": "Big Bertha", "aliases": ["the beast", "speaker"], "size": [1, 1, 1], "position": [0, 0, 3]}
+        ]}"#;
+        let s = crate::format::json::read(text, "t").unwrap().scene;
+        let index = NameIndex::new(&s, Lexicon::builtin());
+        assert_eq!(
+            lookup(&s, &index, "armchair"),
+            Some((Tier::Category, vec!["obj_17".into()]))
+        );
+        assert_eq!(
+            lookup(&s, &index, "speaker"),
+            Some((Tier::Alias, vec!["Big Bertha".into()]))
+        );
+        assert!(index.attribute_words.contains("red"));
+        assert!(index.describes(0, "red"));
+    }
+
+    #[test]
+    fn containers_are_named_by_what_they_hold() {
+        means(
+            "bathroom",
+            "move the shampoo 10 cm left",
+            &[&["shampoo bottle"]],
+        );
+        means(
+            "bathroom",
+            "move the soap 10 cm left",
+            &[&["soap dispenser"]],
+        );
+        means(
+            "wine_cellar",
+            "move the red wine 10 cm left",
+            &[&["red wine bottle"]],
+        );
+        // Not every compound: the living room's 'tv stand' is not "the tv" when a tv exists.
+        means("living_room", "move the tv 10 cm left", &[&["tv"]]);
     }
 }

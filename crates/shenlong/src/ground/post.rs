@@ -1,0 +1,387 @@
+//! Post-modifiers: the words after a head that may say which object it is — a side or
+//! the middle (`the speaker on the right`), the floor, a place in the room (`the chair in
+//! the corner`), an order from a side or an object (`the second chair from the window`),
+//! what it carries (`the table with the lamp on it`), or a relation to other objects
+//! (`the book on the side table`, `the lamp nearest the sofa`), whose objects are read as
+//! a noun phrase of their own.
+//!
+//! This stage only reads the words and the objects they name; whether they pick, describe
+//! or say where the object goes is [`attach`](super::attach)'s to decide.
+
+use super::select::{self, Direction, Relation};
+use super::{words, GroundError, Mode, Post, Reader, MAX_TARGETS};
+use words::Kind;
+
+impl Reader<'_> {
+    /// A modifier after the noun at token `k`: `on the left`, `on the right wall`, `in the
+    /// middle`, `from the window`, `nearest the sofa`, `on the side table`, `that is next
+    /// to the bed`, `with the lamp on it`.
+    pub(super) fn post_modifier(
+        &self,
+        k: usize,
+        bound: &[usize],
+    ) -> Result<Option<(Post, usize)>, GroundError> {
+        let mut j = k;
+        while j < self.tokens.len()
+            && self.word(j).is_some_and(words::is_relative_filler)
+            && self.relation_at(j).is_none()
+        {
+            j += 1;
+        }
+        if let Some(place) = self.side_place_at(j) {
+            return Ok(Some(place));
+        }
+        if let Some(room) = self.room_place_at(j) {
+            return Ok(Some(room));
+        }
+        let w = self.word(j).unwrap_or("");
+        if w == "from" {
+            return self.origin_at(j, bound);
+        }
+        // with the lamp (on it), that has the clock on it, holding the vase.
+        if matches!(
+            w,
+            "with" | "has" | "holds" | "holding" | "carrying" | "having"
+        ) {
+            return self.carrying_at(j, bound);
+        }
+        if let Some((relation, after)) = self.relation_at(j) {
+            if let Some((targets, end)) = self.nested_np(after, bound)? {
+                return Ok(Some((Post::Relation(relation, targets), end)));
+            }
+        }
+        Ok(None)
+    }
+
+    /// The floor, a side or the middle at token `j`, and where it ends: `on the floor`, `on
+    /// the left`, `on the far right`, `on the left-hand side`, `on the right wall`, `at the
+    /// front`, `in the middle`.
+    fn side_place_at(&self, j: usize) -> Option<(Post, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        if matches!(w(j), "on" | "at")
+            && w(j + 1) == "the"
+            && matches!(w(j + 2), "floor" | "ground")
+        {
+            return Some((Post::Floor, j + 3));
+        }
+        // ("to the left" is a direction, not a place: it is not read here.)
+        if !(matches!(w(j), "on" | "at" | "in" | "against" | "along") && w(j + 1) == "the") {
+            return None;
+        }
+        let mut s = j + 2;
+        if w(s) == "far" || w(s) == "very" {
+            s += 1;
+        }
+        if let Some((axis, sign)) = words::side_word(w(s)) {
+            // "at the left desk" names a desk, "in the back left corner" a place; "on
+            // the left" is a side.
+            let next = w(s + 1);
+            let names_a_place = |word: &str| matches!(word, "corner" | "corners");
+            let corner = names_a_place(next)
+                || (words::side_word(next).is_some() && names_a_place(w(s + 2)));
+            if next != "of" && self.head_at(s + 1).is_none() && !corner {
+                let mut end = s + 1;
+                if matches!(w(end), "side" | "end" | "wall") {
+                    end += 1;
+                } else if w(end) == "hand" && w(end + 1) == "side" {
+                    end += 2;
+                }
+                return Some((Post::Side(axis, sign), end));
+            }
+        }
+        if matches!(w(s), "middle" | "center" | "centre") && w(s + 1) != "of" {
+            return Some((Post::Middle, s + 1));
+        }
+        None
+    }
+
+    /// `from the left` (an order from a side) or `from` an object (an order from it, or
+    /// where it is taken from) at token `j`, the word `from`.
+    fn origin_at(&self, j: usize, bound: &[usize]) -> Result<Option<(Post, usize)>, GroundError> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        if w(j + 1) == "the" {
+            if let Some((axis, sign)) = words::side_word(w(j + 2)) {
+                // "from the left", not "from the left table".
+                if w(j + 3) != "of" && !self.head_follows(j + 3) {
+                    let mut end = j + 3;
+                    if matches!(w(end), "side" | "end" | "wall") {
+                        end += 1;
+                    }
+                    return Ok(Some((Post::From(Direction::Side(axis, sign)), end)));
+                }
+            }
+        }
+        if let Some((targets, end)) = self.nested_np(j + 1, bound)? {
+            if let [one] = targets.as_slice() {
+                return Ok(Some((Post::FromObject(*one), end)));
+            }
+        }
+        Ok(None)
+    }
+
+    /// What an object carries, after `with`, `has`, `holding`… at token `j`: `with the lamp
+    /// on it`, `that has the clock on top`.
+    fn carrying_at(&self, j: usize, bound: &[usize]) -> Result<Option<(Post, usize)>, GroundError> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        let Some((targets, mut end)) = self.nested_np(j + 1, bound)? else {
+            return Ok(None);
+        };
+        for tail in [
+            &["on", "top", "of", "it"][..],
+            &["on", "top"],
+            &["on", "it"],
+            &["in", "it"],
+            &["on"],
+        ] {
+            if tail.iter().enumerate().all(|(t, x)| w(end + t) == *x)
+                && (tail.len() > 1 || matches!(w(end + 1), "it" | ""))
+            {
+                end += tail.len();
+                break;
+            }
+        }
+        Ok(Some((Post::Relation(Relation::Carries, targets), end)))
+    }
+
+    /// A place in the room after a noun, and where it ends: `in the (back left) corner`,
+    /// `in the middle of the room` (or of the kitchen, …), `on the wall`.
+    fn room_place_at(&self, j: usize) -> Option<(Post, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        if !(matches!(w(j), "in" | "at" | "on" | "against") && w(j + 1) == "the") {
+            return None;
+        }
+        let mut s = j + 2;
+        let (mut x, mut z) = (None, None);
+        while let Some(parts) = words::side_parts(w(s)) {
+            for (axis, sign) in parts {
+                match axis {
+                    words::Axis::X => x = Some(sign),
+                    words::Axis::Z => z = Some(sign),
+                    words::Axis::Y => return None,
+                }
+            }
+            s += 1;
+        }
+        match w(s) {
+            "corner" if matches!(w(j), "in" | "at") => {
+                Some((Post::Room(select::RoomPlace::Corner(x, z)), s + 1))
+            }
+            "middle" | "centre" | "center"
+                if x.is_none() && z.is_none() && w(s + 1) == "of" && w(s + 2) == "the" =>
+            {
+                let room = w(s + 3);
+                let names_room = self.g.lexicon.concepts_of(room).iter().any(|&c| {
+                    let concept = self.g.lexicon.concept(c);
+                    concept.term == "room"
+                        || concept
+                            .hypernyms
+                            .iter()
+                            .any(|&h| self.g.lexicon.concept(h).term == "room")
+                });
+                (room == "room" || names_room)
+                    .then_some((Post::Room(select::RoomPlace::Middle), s + 4))
+            }
+            "wall" if x.is_none() && z.is_none() && matches!(w(j), "on" | "against") => {
+                Some((Post::Room(select::RoomPlace::Wall), s + 1))
+            }
+            _ => None,
+        }
+    }
+
+    /// A relation word group at `j` and where its object starts.
+    fn relation_at(&self, j: usize) -> Option<(Relation, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        let four = (w(j), w(j + 1), w(j + 2), w(j + 3));
+        let by_four = match four {
+            ("to" | "on" | "at", "the", "left", "of") => Some(Relation::LeftOf),
+            ("to" | "on" | "at", "the", "right", "of") => Some(Relation::RightOf),
+            ("at" | "on" | "in", "the", "back" | "rear", "of") => Some(Relation::Behind),
+            ("at" | "on" | "in", "the", "front", "of") => Some(Relation::InFront),
+            _ => None,
+        };
+        if let Some(r) = by_four {
+            return Some((r, j + 4));
+        }
+        let (r, len) = match (w(j), w(j + 1), w(j + 2)) {
+            ("on", "top", "of") => (Relation::On, 3),
+            ("in", "front", "of") => (Relation::InFront, 3),
+            ("in", "back", "of") => (Relation::Behind, 3),
+            ("left", "of", _) => (Relation::LeftOf, 2),
+            ("right", "of", _) => (Relation::RightOf, 2),
+            ("next", "to", _) => (Relation::Near, 2),
+            ("close", "to", _) => (Relation::Near, 2),
+            ("near", "to", _) => (Relation::Near, 2),
+            ("nearest", "to", _) | ("closest", "to", _) => (Relation::Nearest, 2),
+            ("farthest" | "furthest", "from", _) => (Relation::Farthest, 2),
+            ("farthest" | "furthest", "away", "from") => (Relation::Farthest, 3),
+            ("on" | "onto" | "upon" | "atop", _, _) => (Relation::On, 1),
+            // Where a thing is taken from is where it rests: "the cups off the table".
+            ("off", "of", _) => (Relation::Off, 2),
+            ("off", _, _) => (Relation::Off, 1),
+            ("under" | "below" | "beneath" | "underneath", _, _) => (Relation::Under, 1),
+            ("above" | "over", _, _) => (Relation::Above, 1),
+            ("beside" | "by" | "near" | "alongside" | "nearby" | "at", _, _) => (Relation::Near, 1),
+            ("nearest" | "closest", _, _) => (Relation::Nearest, 1),
+            ("behind", _, _) => (Relation::Behind, 1),
+            ("in" | "inside" | "within", _, _) => (Relation::Inside, 1),
+            _ => return None,
+        };
+        Some((r, j + len))
+    }
+
+    /// The other object(s) of a modifier (`the side table` in `the book on the side
+    /// table`): one object, or every object a still ambiguous phrase fits (`the phone on
+    /// the chair` looks at every chair).
+    fn nested_np(
+        &self,
+        j: usize,
+        bound: &[usize],
+    ) -> Result<Option<(Vec<usize>, usize)>, GroundError> {
+        if let Some(Kind::Quoted(name)) = self.tokens.get(j).map(|t| &t.kind) {
+            return Ok(self.scene.find(name).map(|i| (vec![i], j + 1)));
+        }
+        // "the lamp on it": the object named last ("them": the objects).
+        let pronoun = match self.word(j) {
+            Some("it") => self.antecedent.len() == 1,
+            Some("them") => self.antecedent.len() > 1,
+            _ => false,
+        };
+        if pronoun {
+            return Ok(Some((self.antecedent.clone(), j + 1)));
+        }
+        // Skip the determiner and modifiers to the head.
+        let mut h = j;
+        while h < self.tokens.len() && h < j + 5 {
+            if self.head_at(h).is_some() {
+                break;
+            }
+            let w = self.word(h).unwrap_or("");
+            if !(words::is_determiner(w) || self.is_premodifier(h)) {
+                return Ok(None);
+            }
+            h += 1;
+        }
+        let Some(head) = self.head_at(h) else {
+            return Ok(None);
+        };
+        if head.generic {
+            return Ok(None);
+        }
+        let text = head.text.clone();
+        let np = self.noun_phrase(head, bound, Mode::Nested)?;
+        if np.range.start > j {
+            return Ok(None);
+        }
+        // A few fitting objects are all looked at ("the phone on the chair"); past that the
+        // phrase itself is what needs saying better.
+        if np.objects.len() > MAX_TARGETS {
+            let names = self.names(&np.objects);
+            return Err(GroundError::Ambiguous {
+                phrase: self.span_text(&np.range),
+                span: self.byte_span(&np.range),
+                example: names[2].clone(),
+                hints: self.hints(&text, &np.objects),
+                candidates: names,
+            });
+        }
+        Ok(Some((np.objects, np.range.end)))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::super::tests::{means, refused, with_reader};
+    use super::*;
+
+    /// The post-modifier of `text` at token `k`: what kind, the names of the objects it
+    /// relates to, and the token after it.
+    fn post(scene: &str, text: &str, k: usize) -> Option<(String, Vec<String>, usize)> {
+        with_reader(scene, text, |r| {
+            let (p, end) = r.post_modifier(k, &[]).unwrap()?;
+            let (kind, targets) = match p {
+                Post::Relation(relation, targets) => (format!("{relation:?}"), targets),
+                Post::FromObject(t) => ("FromObject".to_string(), vec![t]),
+                other => (format!("{other:?}"), Vec::new()),
+            };
+            Some((kind, r.names(&targets), end))
+        })
+    }
+
+    #[test]
+    fn sides_places_and_orders_are_read_with_their_end() {
+        let p = post("living_room", "move the speaker on the right back", 3).unwrap();
+        assert_eq!((p.0.starts_with("Side(X"), p.2), (true, 6));
+        let p = post("living_room", "move the speaker on the left-hand side", 3).unwrap();
+        assert_eq!(p.2, 7);
+        // "on the left desk" names a desk: no side.
+        assert!(post("office", "the chair at the left desk", 2)
+            .is_none_or(|p| !p.0.starts_with("Side")));
+        let p = post("dining_room", "the chair in the back left corner", 2).unwrap();
+        assert!(p.0.starts_with("Room(Corner"), "{p:?}");
+        let p = post("dining_room", "the second chair from the left", 3).unwrap();
+        assert!(p.0.starts_with("From(Side"), "{p:?}");
+    }
+
+    #[test]
+    fn relations_name_their_objects() {
+        let p = post("living_room", "move the lamp on the side table left", 3).unwrap();
+        assert_eq!(p, ("On".to_string(), vec!["side table".to_string()], 7));
+        let p = post("living_room", "the lamp that is nearest to the armchair", 2).unwrap();
+        assert_eq!(p, ("Nearest".to_string(), vec!["armchair".to_string()], 8));
+        let p = post("living_room", "the table with the vase on it", 2).unwrap();
+        assert_eq!(p, ("Carries".to_string(), vec!["vase".to_string()], 7));
+        // "the phone on the chair": every chair the phrase fits is looked at.
+        let p = post("dining_room", "the plate on the chair", 2).unwrap();
+        assert_eq!(p.1, ["chair", "chair 2", "chair 3", "chair 4"]);
+        assert!(post("living_room", "move the sofa left", 3).is_none());
+    }
+
+    #[test]
+    fn picking_by_side() {
+        means(
+            "living_room",
+            "move the speaker on the right back",
+            &[&["speaker 2"]],
+        );
+        refused(
+            "living_room",
+            "move the speaker on the floor",
+            &["speaker", "speaker 2"],
+        );
+    }
+
+    #[test]
+    fn picking_by_relation() {
+        // "the lamp on the side table" is the table lamp; "the lamp nearest the sofa" too.
+        means(
+            "living_room",
+            "move the lamp on the side table left",
+            &[&["table lamp"]],
+        );
+        means(
+            "living_room",
+            "raise the lamp nearest the armchair",
+            &[&["floor lamp"]],
+        );
+        // The four plates stand as far from the candle: nothing to pick.
+        refused(
+            "dining_room",
+            "move the plate closest to the candle left",
+            &["plate"],
+        );
+        means(
+            "dining_room",
+            "put the chair nearest the plant next to the sideboard",
+            &[&["chair 4"], &["sideboard"]],
+        );
+    }
+
+    #[test]
+    fn the_left_of_an_object_is_a_place_not_a_pick() {
+        means(
+            "bedroom",
+            "put the laundry basket to the left of the dresser",
+            &[&["laundry basket"], &["dresser"]],
+        );
+    }
+}
