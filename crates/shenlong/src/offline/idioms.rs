@@ -242,8 +242,7 @@ fn pointing(c: &mut Clause) {
 /// objects that say they are to move, read; the clause is then a move of the objects.
 fn needs_to_go(c: &mut Clause) {
     let modal = [
-        "needs", "need", "has", "have", "should", "must", "ought", "wants", "want", "can",
-        "could",
+        "needs", "need", "has", "have", "should", "must", "ought", "wants", "want", "can", "could",
     ];
     for i in 1..c.len() {
         let after_objects = matches!(c.token(i - 1), Some(super::words::Token::Variable(_)));
@@ -254,7 +253,9 @@ fn needs_to_go(c: &mut Clause) {
         if c.words_at(k, &["to"]) {
             k += 1;
         }
-        let moved = ["moved", "shifted", "pushed", "placed", "put", "slid", "nudged"];
+        let moved = [
+            "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
+        ];
         let end = if c.words_at(k, &["go"]) || c.words_at(k, &["move"]) {
             k + 1
         } else if c.words_at(k, &["be"]) && moved.iter().any(|m| c.words_at(k + 1, &[m])) {
