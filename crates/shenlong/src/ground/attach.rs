@@ -308,6 +308,11 @@ impl Reader<'_> {
                         | "twice"
                 )
         };
+        // Another destination right after ("move the mug on the shelf to the coffee
+        // table"): the modifier was not where the object goes.
+        if self.is_word(k, &["to", "onto", "into"]) {
+            return true;
+        }
         for t in &self.tokens[k.min(self.tokens.len())..] {
             match &t.kind {
                 Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,

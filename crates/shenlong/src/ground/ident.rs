@@ -110,7 +110,7 @@ fn headed(lexicon: &Lexicon, phrase: &str) -> bool {
     phrase
         .rsplit(' ')
         .next()
-        .is_some_and(|last| known(lexicon, last) && !super::words::is_place_noun(last))
+        .is_some_and(|last| known(lexicon, last) && !super::words::is_room_part(last))
 }
 
 /// Reads an object's name.
@@ -207,6 +207,9 @@ mod tests {
         // A room word is where the object is, not what it is.
         let clock = r("Clock_Wall");
         assert_eq!((clock.base.as_str(), clock.other), ("wall clock", None));
+        // A door is an object of the scene, not a part of the room.
+        assert_eq!(r("Door_Entrance").base, "entrance door");
+        assert_eq!(r("Window_Shopfront").base, "shopfront window");
         assert_eq!(r("sofa").base, "sofa");
         assert_eq!(r("chair 3").number, Some(3));
         assert_eq!(r("chair 3").base, "chair");

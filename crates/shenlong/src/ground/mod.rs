@@ -518,7 +518,11 @@ impl<'a> Reader<'a> {
             let Some(w) = self.tokens[k].word() else {
                 continue;
             };
-            if w.chars().count() < TYPO_MIN_LETTERS
+            let n = w.chars().count();
+            // Four letters: only two neighbours swapped ("bleu"), which rarely makes another
+            // word; five or more: any one edit.
+            let swap_only = n == TYPO_MIN_LETTERS - 1;
+            if n < TYPO_MIN_LETTERS - 1
                 || !w.chars().all(char::is_alphabetic)
                 || grammar_word(w)
                 || self.g.index.knows_word(w)
@@ -532,13 +536,21 @@ impl<'a> Reader<'a> {
             {
                 continue;
             }
-            let near = self.g.index.one_edit_away(w);
+            let mut near = self.g.index.one_edit_away(w);
+            if swap_only {
+                // (Of colours only: a four-letter name swapped is too often another.)
+                near.retain(|c| {
+                    words::is_colour(c)
+                        && c.chars().count() == n
+                        && strsim::hamming(w, c).is_ok_and(|d| d == 2)
+                });
+            }
             if let [one] = near.as_slice() {
                 self.typos[k] = Some(w.to_string());
                 self.words[k] = Some(one.to_string());
             } else if let Some(stem) = w
                 .strip_suffix('s')
-                .filter(|s| s.chars().count() >= TYPO_MIN_LETTERS - 1)
+                .filter(|s| !swap_only && s.chars().count() >= TYPO_MIN_LETTERS - 1)
             {
                 // A typo in a plural: "speakrs".
                 if let [one] = self.g.index.one_edit_away(stem).as_slice() {

@@ -47,6 +47,34 @@ impl Reader<'_> {
         }
         if let Some((relation, after)) = self.relation_at(j) {
             if let Some((targets, end)) = self.nested_np(after, bound)? {
+                // "the cup closest to the window" with two windows: closest to which is
+                // not said (only what rests on or in any of them is one set).
+                let measured = matches!(
+                    relation,
+                    Relation::Nearest
+                        | Relation::Farthest
+                        | Relation::LeftOf
+                        | Relation::RightOf
+                        | Relation::InFront
+                        | Relation::Behind
+                );
+                if measured && targets.len() > 1 {
+                    let range = after..end;
+                    let names = self.names(&targets);
+                    let text = self.span_text(&range);
+                    let noun = text
+                        .split(' ')
+                        .skip_while(|w| words::is_determiner(&w.to_lowercase()))
+                        .collect::<Vec<_>>()
+                        .join(" ");
+                    return Err(GroundError::Ambiguous {
+                        hints: self.hints(&noun.to_lowercase(), &targets),
+                        phrase: text,
+                        span: self.byte_span(&range),
+                        example: names[0].clone(),
+                        candidates: names,
+                    });
+                }
                 return Ok(Some((Post::Relation(relation, targets), end)));
             }
         }

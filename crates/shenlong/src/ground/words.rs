@@ -616,6 +616,13 @@ pub(crate) fn is_verb(w: &str) -> bool {
 }
 
 /// Nouns for places and amounts rather than objects: never an unknown object.
+/// Words for a part of the room itself (its floor, walls, corners, sides), which no
+/// object's name is headed by: `Clock_Wall` is a wall clock. Doors and windows are places
+/// too ([`is_place_noun`]) but also objects of a scene (`Door_Entrance`).
+pub(crate) fn is_room_part(w: &str) -> bool {
+    is_place_noun(w) && !matches!(w, "window" | "windows" | "door" | "doors" | "doorway")
+}
+
 pub(crate) fn is_place_noun(w: &str) -> bool {
     matches!(
         w,

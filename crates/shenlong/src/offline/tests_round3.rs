@@ -582,3 +582,50 @@ fn a_topic_and_a_need_to_move_are_read_as_moves() {
     // Named alone, nothing is said to happen to them.
     refused(&s, "the pouf, the novel", &[]);
 }
+
+/// A loft exported from an engine: a door and two windows as objects, mugs on two shelves.
+fn loft() -> Scene {
+    let mut s = Scene::new("loft");
+    s.bounds = Some(Aabb {
+        min: DVec3::new(-4.0, 0.0, -3.0),
+        max: DVec3::new(4.0, 3.0, 3.0),
+    });
+    for (name, size, at) in [
+        ("Door_Entrance", [1.0, 2.1, 0.1], [3.0, 0.0, 2.95]),
+        ("Window_Street", [1.5, 1.2, 0.1], [-2.0, 1.0, -2.95]),
+        ("Window_Yard", [1.5, 1.2, 0.1], [2.0, 1.0, -2.95]),
+        ("Beanbag_Grey", [0.8, 0.6, 0.8], [0.0, 0.0, 0.0]),
+        ("ShelfUnit_L", [1.0, 1.2, 0.4], [-3.0, 0.0, 0.0]),
+        ("ShelfUnit_R", [1.0, 1.2, 0.4], [3.0, 0.0, 0.0]),
+        ("Mug_Blue", [0.1, 0.1, 0.1], [-3.0, 1.2, 0.0]),
+        ("Mug_Red", [0.1, 0.1, 0.1], [2.8, 1.2, 0.0]),
+        ("Table_Coffee", [1.0, 0.45, 0.6], [0.0, 0.0, 1.5]),
+    ] {
+        s.push_box(name, size, at);
+    }
+    s.detect_supports();
+    s
+}
+
+#[test]
+fn doors_and_windows_are_objects_and_typos_of_glue_words_and_colours_are_read() {
+    let s = loft();
+    // "towards the door": along the line to the door's centre, seen from above.
+    let a = run(&s, "scoot the beanbag 20 cm toward the door");
+    let d = moved(&s, &a, "Beanbag_Grey");
+    let to_door = DVec3::new(3.0, 0.0, 2.95 + 0.05 - 0.4).normalize();
+    assert!((d - to_door * 0.2).length() < 0.02, "{d:?}");
+    // "bleu" is blue (a colour, two letters swapped); "teh" is the.
+    let a = run(&s, "move the bleu mug 10 cm to teh left");
+    only_moved(&s, &a, &[("Mug_Blue", [-0.1, 0.0, 0.0])]);
+    // Another destination follows: "on the shelf" says which mug.
+    let a = run(&s, "move the mug on the left shelf to the coffee table");
+    let i = s.find("Mug_Blue").unwrap();
+    assert!((a.objects[i].world_aabb().min.y - 0.45).abs() < 1e-6);
+    // Closest to which window is not said.
+    refused(
+        &s,
+        "move the mug closest to the window 5 cm left",
+        &["Window_Street", "Window_Yard"],
+    );
+}

@@ -75,7 +75,9 @@ pub(crate) fn tokenize(query: &str) -> Vec<Token> {
         } else {
             // A typo of a word the reader knows is read as that word ("degress",
             // "foward"); real words never are.
-            let w = if is_a_word(&w) {
+            let w = if let Some(fixed) = function_word_typo(&w) {
+                fixed.to_string()
+            } else if is_a_word(&w) {
                 w
             } else {
                 correct(&w).map_or(w, str::to_string)
@@ -316,6 +318,19 @@ const KNOWN: &[&str] = &[
     "around",
 ];
 
+/// The classic typos of the words that glue a sentence (`teh`, `adn`): swaps no other
+/// word is spelt as.
+fn function_word_typo(w: &str) -> Option<&'static str> {
+    Some(match w {
+        "teh" | "hte" => "the",
+        "adn" | "nad" => "and",
+        "taht" => "that",
+        "wiht" | "wtih" => "with",
+        "nto" => "not",
+        _ => return None,
+    })
+}
+
 /// Whether a word is one the reader or the lexicon knows as it is (a verb, a direction, a
 /// unit, an object noun): never read as a typo of another ("stick" is not "stack").
 fn is_a_word(w: &str) -> bool {
@@ -409,6 +424,7 @@ mod tests {
         assert_eq!(correct("forwrad"), Some("forward"));
         assert_eq!(correct("foward"), Some("forward"));
         assert_eq!(correct("degress"), Some("degrees"));
+        assert_eq!(tokenize("to teh left")[1], Token::Word("the".into()));
         assert_eq!(
             tokenize("turn X1 90 degress")[3],
             Token::Word("degrees".into())

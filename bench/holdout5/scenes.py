@@ -1,0 +1,1 @@
+# scratch: scene definitions (merged into build.py later)
