@@ -131,6 +131,11 @@ fn out_from(c: &mut Clause) {
     }
 }
 
+/// Whether one of `options` stands unread at `k`.
+fn one_of(c: &Clause, k: usize, options: &[&str]) -> bool {
+    options.iter().any(|w| c.words_at(k, &[w]))
+}
+
 /// `all the way (DIR) to the (SIDE) wall` → `against the SIDE wall`, the side from the
 /// direction where the wall has none (`all the way back to the wall`).
 fn all_the_way_to_a_wall(c: &mut Clause) {
@@ -170,8 +175,6 @@ fn right_up_against(c: &mut Clause) {
 
 /// `until it touches X2`, `until it's flush against X2`, `till it hits X2` → `against X2`.
 fn until_touching(c: &mut Clause) {
-    let one_of =
-        |c: &Clause, k: usize, options: &[&str]| options.iter().any(|w| c.words_at(k, &[w]));
     let Some(i) = (0..c.len()).find(|&i| one_of(c, i, &["until", "till", "til"])) else {
         return;
     };
@@ -204,8 +207,6 @@ fn until_touching(c: &mut Clause) {
 /// at`, `pointing at`, `point at` → `faces`, `facing`, `face`.
 fn pointing(c: &mut Clause) {
     let at = ["at", "towards", "toward"];
-    let one_of =
-        |c: &Clause, k: usize, options: &[&str]| options.iter().any(|w| c.words_at(k, &[w]));
     for i in 0..c.len() {
         let Some(w) = c.word(i).filter(|_| c.free(i)) else {
             continue;
@@ -230,7 +231,9 @@ fn pointing(c: &mut Clause) {
         {
             k += 1;
         }
-        if k > i + 1 && i == 0 && one_of(c, k, &at) {
+        // (The verb first: only discourse read before it.)
+        let first = (0..i).all(|j| !c.free(j));
+        if k > i + 1 && first && one_of(c, k, &at) {
             c.replace(i, "turn");
             c.replace(k, "face");
             return;

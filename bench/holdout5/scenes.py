@@ -1,1 +1,0 @@
-# scratch: scene definitions (merged into build.py later)
