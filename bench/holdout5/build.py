@@ -733,6 +733,204 @@ Q(H, "put the fish tank next to the vending machine", ref([]), refuse=("missing"
 Q(H, "move the chair in the front row 10 cm back", ref(FRONT), refuse=("ambiguous", ["chair"]))
 Q(H, "move the coffee table 30 cm forward", ref([]), refuse=("missing", "coffee"))
 
+# ================================================================ (c) home office
+_scene = "home_office"
+DESK_TOP = ["laptop", "monitor", "white mug", "phone", "desk lamp", "blue book"]
+# free spots worked out from the boxes in the comments above:
+#   desk: between the laptop (x <= 0.17) and the white mug (x >= 0.405), in front of the monitor
+#         (z >= -2.25): a book 0.17 x 0.24 at x[0.2,0.37] z[-2.06,-1.82]
+#   coffee table x[-0.1,1.1] z[0.6,1.2]: left strip x[-0.1,0.115], right strip x[0.845,1.1],
+#         front strip z[1.03,1.2]
+# ---- simple
+# desk x[-0.9,0.7] with everything on it; the waste basket ends at x -0.95
+Q(S, "move the desk 10cm to the left", *carry("desk", [-0.1, 0, 0]))
+# chair x[0,0.6] z[-1.65,-1.05]
+Q(S, "move the office chair 30 cm to the right", mv("office chair", [0.3, 0, 0]))
+Q(S, "rotate the armchair 90 degrees counter-clockwise", rot("armchair", 90), still("armchair"))
+# table x[-0.3,0.9] with book, plate, mug; still over the rug (x >= -0.5)
+Q(S, "could you move the coffee table 20cm to the left", *carry("coffee table", [-0.2, 0, 0]))
+# lamp z[-0.675,-0.325]; the window hangs at y >= 1 and x >= 2.4
+Q(S, "move the floor lamp 30 cm back", mv("floor lamp", [0, 0, -0.3]))
+Q(S, "move the waste basket 20cm forward", mv("waste basket", [0, 0, 0.2]))
+# 0.18 x 0.225 x 0.18: x[-2.415,-2.235], inside the shelf top
+Q(S, "scale the succulent up 1.5x", scl("succulent", 1.5), still("succulent"))
+# printer z[-2.3,-1.9], still on the cabinet (z <= -1.9)
+Q(S, "move the printer 10 cm forward", mv("printer", [0, 0, 0.1]))
+# guest chair x[-1.25,-0.75]; the office chair starts at x -0.3
+Q(S, "I'd like the guest chair moved 30cm to the right", mv("guest chair", [0.3, 0, 0]))
+# sofa x[-0.5,1.3]
+Q(S, "move the sofa 10 cm to the left", mv("sofa", [-0.1, 0, 0]))
+# faces +x -> +z, same box
+Q(S, "turn the guest chair 90° clockwise seen from above", rot("guest chair", -90), still("guest chair"))
+# laptop x[-0.12,0.22]
+Q(S, "move the laptop 5 cm to the right", mv("laptop", [0.05, 0, 0]))
+# side table z[1.025,1.475] with the small plate; the armchair ends at z 1.0
+Q(S, "the side table needs to go 20 cm back", *carry("side table", [0, 0, -0.2]))
+
+# ---- compositional
+# laptop x[-0.27,0.07] (phone ends at -0.41); mug x[0.505,0.595] z[-1.995,-1.905]
+Q(C, "move the laptop 10 cm to the left and the white mug 10 cm to the right",
+  mv("laptop", [-0.1, 0, 0]), mv("white mug", [0.1, 0, 0]))
+Q(C, "swap the phone and the white mug", *swap("phone", "white mug"))
+# armchair z[0,0.8] (floor lamp ends at -0.025); side table z[1.025,1.475]
+Q(C, "move the armchair 20 cm back and the side table 20 cm back too",
+  mv("armchair", [0, 0, -0.2]), *carry("side table", [0, 0, -0.2]))
+# white x[0.355,0.445]; black x[0.705,0.795] (plate ends at 0.63)
+Q(C, "move both mugs 5 cm to the left", mv("white mug", [-0.05, 0, 0]), mv("black mug", [-0.05, 0, 0]))
+# cabinet x[1.175,1.625] with the printer; basket x[-1.45,-1.15]
+Q(C, "move the filing cabinet 20 cm to the right, printer included, and the waste basket 20 cm to the left",
+  *carry("filing cabinet", [0.2, 0, 0]), mv("waste basket", [-0.2, 0, 0]))
+Q(C, "turn the office chair 180 degrees and move it 20 cm to the left",
+  rot("office chair", 180, True), mv("office chair", [-0.2, 0, 0]))
+# rug z[0.1,1.5] carrying the coffee table and what is on it; sofa x[-0.3,1.5] (side table from 1.875)
+Q(C, "move the rug 10 cm back and the sofa 10 cm to the right",
+  *carry("rug", [0, 0, -0.1]), mv("sofa", [0.1, 0, 0]))
+# book x[0.065,0.235]; mug x[0.805,0.895]
+Q(C, "move the green book 5 cm to the left and the black mug 5 cm to the right",
+  mv("green book", [-0.05, 0, 0]), mv("black mug", [0.05, 0, 0]))
+# lamp square: same box; z[-2.35,-2.15]
+Q(C, "rotate the desk lamp 90 degrees and move it 10 cm forward",
+  rot("desk lamp", 90, True), mv("desk lamp", [0, 0, 0.1]))
+# red book z[-1.02,-0.78]; succulent z[-0.51,-0.39] (shelf ends at -0.35)
+Q(C, "move the red book and the succulent 10cm forward",
+  mv("red book", [0, 0, 0.1]), mv("succulent", [0, 0, 0.1]))
+# chair at (-1.1,-1.0), then to the door (-1.6,2.475): yaw -8.2, half 0.283
+Q(C, "move the guest chair 20cm to the right and turn it to face the door",
+  mv("guest chair", [0.2, 0, 0]), faces("guest chair", "door"))
+# phone x[-0.59,-0.51]; laptop x[-0.07,0.27]
+Q(C, "would you mind moving the phone 10 cm left and the laptop 10 cm right",
+  mv("phone", [-0.1, 0, 0]), mv("laptop", [0.1, 0, 0]))
+# monitor x[-0.4,0.2] (lamp ends at -0.55); blue book z[-2.37,-2.13]
+Q(C, "move the monitor 10 cm to the left and the blue book 5 cm forward",
+  mv("monitor", [-0.1, 0, 0]), mv("blue book", [0, 0, 0.05]))
+
+# ---- fuzzy
+# mug centre (0.45,-1.95) -> laptop (0,-2.0): line (-0.994,-0.110); laptop ends at x 0.17
+Q(F, "move the white mug a bit closer to the laptop", dr("white mug", "-x", 0.03),
+  ans=[[D("white mug", [-0.03, 0, 0])], [D("white mug", [-0.15, 0, 0])], [D("white mug", [-0.149, 0, -0.0166])]])
+Q(F, "put the blue book on the coffee table", top("blue book", "coffee table"),
+  ans=[[TO("blue book", [0.98, 0.43, 0.9])]])
+Q(F, "nudge the floor lamp a tad to the left", dr("floor lamp", "-x", 0.01))
+# sofa x max 1.4 -> side table 1.875
+Q(F, "could you push the sofa a little to the right", dr("sofa", "+x", 0.03))
+# the plate on the coffee table = dinner plate; the black mug starts at x 0.755
+Q(F, "slide the plate on the coffee table a smidge to the right", dr("dinner plate", "+x", 0.01))
+# chair (-1.3,-1.0) -> bookshelf (-2.325,-0.8): line (-0.981,0.192)
+Q(F, "move the guest chair a little closer to the bookshelf", dr("guest chair", "-x", 0.03),
+  ans=[[D("guest chair", [-0.03, 0, 0])], [D("guest chair", [-0.15, 0, 0])], [D("guest chair", [-0.147, 0, 0.029])]])
+# basket x max -0.95 -> desk -0.8
+Q(F, "scoot the waste basket a couple of inches to the right", dr("waste basket", "+x", 0.03),
+  gen={"waste basket": 0.1})
+# black mug beside the small plate: x[1.9,1.99] z[1.405,1.495]
+Q(F, "put the black mug on the side table", top("black mug", "side table"),
+  ans=[[TO("black mug", [1.945, 0.55, 1.45])]])
+# monitor x max 0.3 -> blue book 0.515
+Q(F, "nudge the monitor slightly to the right", dr("monitor", "+x", 0.01))
+Q(F, "move the office chair a tiny bit to the left", dr("office chair", "-x", 0.01))
+# phone on the coffee table's left strip: x[-0.04,0.04] z[0.82,0.98]
+Q(F, "put the phone on the coffee table", top("phone", "coffee table"),
+  ans=[[TO("phone", [0.0, 0.43, 0.9])]])
+Q(F, "move the small plate a touch forward", dr("small plate", "+z", 0.01))
+# coffee table z max 1.2 -> sofa 1.6
+Q(F, "push the coffee table a bit closer to the sofa", dr("coffee table", "+z", 0.03),
+  *tops("coffee table"))
+Q(F, "move the mug a bit to the left", ref(["white mug", "black mug"]), refuse=("ambiguous", ["mug"]))
+Q(F, "move the book 10 cm to the right", ref(["red book", "green book", "blue book"]),
+  refuse=("ambiguous", ["book"]))
+
+# ---- compositional fuzzy
+Q(CF, "move the laptop a bit to the left and the mug on the desk a tad to the right",
+  dr("laptop", "-x", 0.03), dr("white mug", "+x", 0.01))
+# desk x max 0.8 -> filing cabinet 0.975; the monitor (centre x 0) stays over the desk
+Q(CF, "could you push the desk a bit to the right, but don't move the monitor",
+  dr("desk", "+x", 0.03), *tops("desk", hold=("monitor",)), unch(["monitor"]))
+# green book to the desk spot; coffee table left (still on the rug)
+Q(CF, "put the green book on the desk and move the coffee table a little to the left",
+  top("green book", "desk"), dr("coffee table", "-x", 0.03), top("dinner plate", "coffee table"),
+  top("black mug", "coffee table"),
+  ans=[[TO("green book", [0.285, 0.75, -1.94]), D("coffee table", [-0.03, 0, 0])],
+       [D("coffee table", [-0.15, 0, 0]), TO("green book", [0.285, 0.75, -1.94])]])
+# armchair back: floor lamp ends at z -0.025 (room 0.225)
+Q(CF, "nudge the sofa a tad right and the armchair a bit back",
+  dr("sofa", "+x", 0.01), dr("armchair", "-z", 0.03))
+# chair (-1.3,-1.0) -> desk centre (0,-2.15): yaw ~131.5; after +0.15: ~135; half <= 0.354
+Q(CF, "scoot the guest chair a little to the right and turn it to face the desk",
+  dr("guest chair", "+x", 0.03), faces("guest chair", "desk"),
+  ans=[[D("guest chair", [0.03, 0, 0]), FACE("guest chair", "desk")],
+       [FACE("guest chair", "desk"), D("guest chair", [0.15, 0, 0])]])
+# the phone may only go 6 cm forward before it hangs over the edge (z <= -1.8)
+Q(CF, "move the desk lamp a little to the right and the phone a tad forward",
+  dr("desk lamp", "+x", 0.03), dr("phone", "+z", 0.01), gen={"phone": 0.06})
+# the rug moves; the coffee table and what is on it stay
+Q(CF, "move the rug a bit to the left, but leave the coffee table where it is",
+  dr("rug", "-x", 0.03), unch(["coffee table", "green book", "dinner plate", "black mug"]))
+# small plate on the desk spot x[0.195,0.375] z[-2.03,-1.85]; side table -z (armchair ends at 1.0)
+Q(CF, "put the small plate on the desk and push the side table a little closer to the armchair",
+  top("small plate", "desk"), dr("side table", "-z", 0.03),
+  ans=[[TO("small plate", [0.285, 0.75, -1.94]), D("side table", [0, 0, -0.03])],
+       [D("side table", [0, 0, -0.15]), TO("small plate", [0.285, 0.75, -1.94])]])
+Q(CF, "move the floor lamp a bit left and the waste basket a little to the left too",
+  dr("floor lamp", "-x", 0.03), dr("waste basket", "-x", 0.03))
+# printer z min -2.4 -> -2.5 at most; blue book x min 0.515 -> monitor 0.3
+Q(CF, "give the printer a tiny nudge back and move the blue book a bit to the left",
+  dr("printer", "-z", 0.01), dr("blue book", "-x", 0.03))
+Q(CF, "turn the guest chair around and slide it a little forward",
+  rot("guest chair", 180, True), dr("guest chair", "+z", 0.03))
+# red book z min -1.12: 10 cm before it overhangs the shelf (z >= -1.25 for the whole book: 0.13)
+Q(CF, "nudge the succulent a tad forward and the red book a bit back",
+  dr("succulent", "+z", 0.01), dr("red book", "-z", 0.03), gen={"red book": 0.1})
+
+# ---- hard
+# basket x max -0.95 -> desk -0.8
+Q(H, "push the waste basket right until it touches the desk", mv("waste basket", [0.15, 0, 0], 0.02),
+  touch=[("waste basket", "desk")])
+# sofa x min -0.4; the door (z[2.45,2.5], x max -1.15) is in the way first
+Q(H, "slide the sofa as far left as it will go", mv("sofa", [-0.75, 0, 0], 0.02),
+  touch=[("sofa", "door")])
+# black mug x[0.705,0.795]
+Q(H, "move the mug on the coffee table 5 cm to the left", mv("black mug", [-0.05, 0, 0]))
+# white mug on the front strip: x[0.455,0.545] z[1.055,1.145], 2.5 cm from the plate
+Q(H, "put the white mug on the coffee table next to the plate", top("white mug", "coffee table"),
+  nxt("white mug", "dinner plate"), ans=[[TO("white mug", [0.5, 0.43, 1.1])]])
+# chair (0,-1.35) -> window (2.45,-1.2): yaw 86.5 (turn -93.5), half 0.318
+Q(H, "turn the office chair to face the window", faces("office chair", "window"), still("office chair"))
+# lamp (-0.65,-2.35) -> laptop (0,-2.0): yaw 61.7, half 0.135 -> x[-0.785,-0.515] z[-2.485,-2.215]
+Q(H, "point the desk lamp at the laptop", faces("desk lamp", "laptop"), still("desk lamp"))
+# blue book x[0.415,0.585]
+Q(H, "move the book on the desk 10 cm to the left", mv("blue book", [-0.1, 0, 0]))
+# red book to the desk spot, 3 cm from the laptop
+Q(H, "take the book from the shelf and set it on the desk next to the laptop",
+  top("red book", "desk"), nxt("red book", "laptop"), ans=[[TO("red book", [0.285, 0.75, -1.94])]])
+# small plate x[0.195,0.375] z[-2.03,-1.85]: laptop (0,-2.0) to white mug (0.45,-1.95) passes it
+Q(H, "put the small plate on the desk between the laptop and the white mug",
+  top("small plate", "desk"), btw("small plate", "laptop", "white mug"),
+  ans=[[TO("small plate", [0.285, 0.75, -1.94])]])
+# the chair by the bookshelf = guest chair
+Q(H, "move the chair by the bookshelf 20 cm to the right", mv("guest chair", [0.2, 0, 0]))
+# lamp z min -0.375 -> back wall -2.5 (the filing cabinet is at x <= 1.425; the window hangs above)
+Q(H, "push the floor lamp back against the wall", mv("floor lamp", [0, 0, -2.125], 0.02), IB,
+  touch=[("floor lamp", "-z")])
+# desk x[-0.65,0.95]; laptop (centre 0) and phone (centre -0.45) stay over it
+Q(H, "move the desk 15 cm to the right but keep the laptop and the phone where they are",
+  *carry("desk", [0.15, 0, 0], hold=("laptop", "phone")), unch(["laptop", "phone"]))
+# chair (0,-1.35) -> sofa (0.5,2.05): yaw 8.4, half 0.341 -> z[-1.691,-1.009] (desk ends at -1.8)
+Q(H, "turn the office chair around so it faces the sofa", faces("office chair", "sofa"), still("office chair"))
+# coffee table z max 1.2 -> sofa 1.6; its centre (1.3) stays over the rug
+Q(H, "slide the coffee table forward until it touches the sofa",
+  *carry("coffee table", [0, 0, 0.4], tol=0.02), touch=[("coffee table", "sofa")])
+# black mug x[0.655,0.745], 2.5 cm from the plate
+Q(H, "move the black mug 10 cm toward the dinner plate", mv("black mug", [-0.1, 0, 0]))
+# chair (-1.3,-1.0) -> door (-1.6,2.475): line (-0.086,0.996): 1 ft -> (-0.026,0.304); axis (0,0.305)
+Q(H, "move the guest chair 1 ft toward the door", mv("guest chair", [-0.013, 0, 0.305], 0.03),
+  ans=[[D("guest chair", [0, 0, FT])], [D("guest chair", [-0.026, 0, 0.304])]])
+# -- refusals
+Q(H, "put the plate on the desk", ref(["dinner plate", "small plate"]), refuse=("ambiguous", ["plate"]))
+Q(H, "turn the chair to face the window", ref(["office chair", "guest chair"]), refuse=("ambiguous", ["chair"]))
+Q(H, "move the lamp 20cm to the left", ref(["desk lamp", "floor lamp"]), refuse=("ambiguous", ["lamp"]))
+Q(H, "put the phone on the nightstand", ref([]), refuse=("missing", "nightstand"))
+Q(H, "could you move the tv a bit to the left", ref([]), refuse=("missing", "tv"))
+Q(H, "move the cat bed next to the sofa", ref([]), refuse=("missing", "cat"))
+
 SUITE = {"name": "holdout5",
          "scenes": ["blender_hotel_room.json", "clinic_waiting_room.json", "home_office.json"],
          "variations": 1, "seed": 20270105, "queries": QUERIES}

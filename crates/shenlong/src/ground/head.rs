@@ -355,8 +355,17 @@ impl Reader<'_> {
             | "centimeters" | "millimetre" | "millimetres" | "millimeter" | "millimeters"
             | "units" | "unit" | "degrees" | "degree" | "deg" | "radians" | "percent" | "times"
             | "x" | "yards" | "yard" | "°" => true,
-            // "2 in to the left" is inches; "chair 2 in front of" is not.
-            "in" => !matches!(w(k + 1), "front" | "the" | "a" | "its" | "back"),
+            // "2 in to the left" is inches; "chair 2 in front of" is not, nor "chair 6 in
+            // 15 cm" (pushed in by an amount of its own) or "chair 6 in a bit".
+            "in" => {
+                !matches!(
+                    w(k + 1),
+                    "front" | "the" | "a" | "its" | "back" | "by" | "until"
+                ) && !matches!(
+                    self.tokens.get(k + 1).map(|t| &t.kind),
+                    Some(Kind::Number(_))
+                ) && !w(k + 1).is_empty()
+            }
             _ => matches!(
                 self.tokens.get(k).map(|t| &t.kind),
                 Some(Kind::Punct('%' | '°'))

@@ -77,6 +77,9 @@ pub struct Entry {
     pub near: Option<crate::translate::Near>,
 }
 
+/// How far from a table a chair may stand and still be "pushed in" to it, in metres.
+pub const TUCK_REACH: f64 = 0.6;
+
 /// What the reader knows of the bound objects, beyond their variables: all measured from
 /// the scene before the edit. Everything may be left empty (a scene with a room, unturned
 /// objects, nothing measured). What only some instructions need ("as far as it will go":
@@ -182,6 +185,47 @@ impl<'s> Known<'s> {
             ));
         }
         Ok(())
+    }
+
+    /// What variable `s` is drawn up to, as a chair to a table: the nearest object with a
+    /// bigger footprint that overlaps it across one horizontal axis and is at most
+    /// [`TUCK_REACH`] from it along the other (or reaches under it). Returned as the
+    /// direction towards it (axis, sign) and the gap to its face (0 when they touch or
+    /// overlap). `None`: nothing is near, or nothing is known.
+    pub(crate) fn drawn_up_to(&self, s: usize) -> Option<((usize, f64), f64)> {
+        let (scene, objects) = self.scene?;
+        let me = *objects.get(s)?;
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let a = boxes[me];
+        let footprint = |b: &crate::geometry::Aabb| (b.max.x - b.min.x) * (b.max.z - b.min.z);
+        let mut best: Option<((usize, f64), f64)> = None;
+        for (j, b) in boxes.iter().enumerate() {
+            if j == me || footprint(b) <= footprint(&a) || b.max.y <= a.min.y || b.min.y >= a.max.y
+            {
+                continue;
+            }
+            for e in [0usize, 2] {
+                let across = 2 - e;
+                let overlap = a.max[across].min(b.max[across]) - a.min[across].max(b.min[across]);
+                if overlap <= 0.0 {
+                    continue;
+                }
+                let sign = (b.center()[e] - a.center()[e]).signum();
+                let gap = if sign > 0.0 {
+                    b.min[e] - a.max[e]
+                } else {
+                    a.min[e] - b.max[e]
+                };
+                if gap > TUCK_REACH || sign == 0.0 {
+                    continue;
+                }
+                let gap = gap.max(0.0);
+                if best.is_none_or(|(_, g)| gap < g) {
+                    best = Some(((e, sign), gap));
+                }
+            }
+        }
+        best
     }
 
     /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the

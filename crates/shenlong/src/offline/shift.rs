@@ -66,6 +66,11 @@ impl Reader<'_> {
         let mut dirs = directions(c);
         let amount = amount(c);
         if dirs.is_empty() {
+            if let Some(tucked) = self.in_or_out(c, subjects, amount, text) {
+                return tucked;
+            }
+        }
+        if dirs.is_empty() {
             if let Some(d) = implied {
                 dirs.push(d);
             }
@@ -91,6 +96,40 @@ impl Reader<'_> {
             out.push((s, Step::Translate(sum(parts))));
         }
         Ok(out)
+    }
+
+    /// "push X1 in (a smidge)", "pull X1 out a bit", "tuck X1 in": towards or away from
+    /// what each subject is drawn up to ([`super::Known::drawn_up_to`], a chair's table),
+    /// by the amount (pushed in with none: until it touches; pulled out: a bit). `None`
+    /// when the clause says neither.
+    fn in_or_out(
+        &self,
+        c: &mut Clause,
+        subjects: &[usize],
+        amount: Option<Length>,
+        text: &str,
+    ) -> Option<Result<Produced, String>> {
+        let i = (0..c.len()).find(|&i| c.words_at(i, &["in"]) || c.words_at(i, &["out"]))?;
+        let inwards = c.words_at(i, &["in"]);
+        c.mark(i..i + 1);
+        let mut out = Vec::new();
+        for &s in subjects {
+            let Some(((e, sign), gap)) = self.facts.known.drawn_up_to(s) else {
+                return Some(Err(format!(
+                    "X{} is drawn up to nothing to push it in or pull it out from, in \"{text}\": say where",
+                    s + 1
+                )));
+            };
+            let sign = if inwards { sign } else { -sign };
+            let metres = match amount {
+                Some(Length::Metres(m)) => m,
+                None if inwards => gap,
+                None => amounts::BIT_METRES,
+                Some(_) => return Some(Err(not_read(text, text))),
+            };
+            out.push((s, Step::Translate(scaled_axis(num(sign * metres), e))));
+        }
+        Some(Ok(out))
     }
 
     /// The one horizontal direction word before `end` not read yet (`right`, `to the

@@ -629,3 +629,31 @@ fn doors_and_windows_are_objects_and_typos_of_glue_words_and_colours_are_read() 
         &["Window_Street", "Window_Yard"],
     );
 }
+
+#[test]
+fn a_chair_is_pushed_in_and_pulled_out_from_its_table() {
+    let mut s = Scene::new("meeting");
+    s.bounds = Some(Aabb {
+        min: DVec3::new(-3.0, 0.0, -3.0),
+        max: DVec3::new(3.0, 3.0, 3.0),
+    });
+    for (name, size, at) in [
+        ("table", [2.0, 0.75, 1.0], [0.0, 0.0, 0.0]),
+        ("chair 1", [0.5, 0.9, 0.5], [-0.5, 0.0, 0.95]),
+        ("chair 2", [0.5, 0.9, 0.5], [0.5, 0.0, -0.95]),
+        ("bin", [0.3, 0.4, 0.3], [2.5, 0.0, 2.5]),
+    ] {
+        s.push_box(name, size, at);
+    }
+    s.detect_supports();
+    // Chair 1 stands 0.2 m in front of the table: in until it touches, or by an amount.
+    let a = run(&s, "push chair 1 in");
+    only_moved(&s, &a, &[("chair 1", [0.0, 0.0, -0.2])]);
+    let a = run(&s, "push chair 1 in 5 cm");
+    only_moved(&s, &a, &[("chair 1", [0.0, 0.0, -0.05])]);
+    // Chair 2 is behind it: out is further back.
+    let a = run(&s, "pull chair 2 out a bit");
+    only_moved(&s, &a, &[("chair 2", [0.0, 0.0, -0.1])]);
+    // Nothing near the bin to push it in towards.
+    refused(&s, "push the bin in a bit", &["drawn up to nothing"]);
+}
