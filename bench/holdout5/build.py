@@ -372,9 +372,9 @@ Q(S, "move the kettel 10 cm back", mv("Kettle", [0, 0, -0.1]))
 # bench z[-0.75,-0.35] +0.2 -> z[-0.55,-0.15], still on the rug
 Q(S, "the bench at the foot of the bed needs to go 20cm forward", mv("Bench_BedEnd", [0, 0, 0.2]))
 # curtain z[1.55,1.85] +0.2 -> z[1.75,2.05]; the wardrobe starts at z 2.4
-Q(S, "move Curtain_R 20 cm forward", mv("Curtain_R", [0, 0, 0.2]))
+Q(S, "move Curtain_R 20 cm towards the front wall", mv("Curtain_R", [0, 0, 0.2]))
 # armchair z[0.4,1.2] -0.25 -> z[0.15,0.95]; the side table ends at z 0.125
-Q(S, "move the armchair back 25cm", mv("Armchair", [0, 0, -0.25]))
+Q(S, "move the armchair 25cm towards the back wall", mv("Armchair", [0, 0, -0.25]))
 # cup x[-2.19,-2.11] +0.05 -> x[-2.14,-2.06], still on the dresser (x <= -2.0)
 Q(S, "I'd like Cup.002 moved 5cm to the right", mv("Cup.002", [0.05, 0, 0]))
 
@@ -395,9 +395,12 @@ Q(C, "move the kettle 10 cm back and Cup.001 5 cm to the right",
 # desk lamp z[0.55,0.75]; phone z[1.2,1.4]
 Q(C, "could you move the desk lamp 10 cm forward and the hotel phone 10cm back",
   mv("Lamp_Desk", [0, 0, 0.1]), mv("Phone_Hotel", [0, 0, -0.1]))
+# towards the door: +z (door centre (-1.5,2.975) from (-1.6,1.0): line (0.051,0.999))
 # chair z[1.05,1.55]; centre (-1.6,1.3) to the window (2.475,0.5): yaw ~101 deg, half 0.293
-Q(C, "Move the desk chair 30 cm forward, then turn it to face the window",
-  mv("Chair_Desk", [0, 0, 0.3]), faces("Chair_Desk", "Window_Balcony"))
+Q(C, "Move the desk chair 30 cm towards the door, then turn it to face the window",
+  mv("Chair_Desk", [0, 0, 0.3]), faces("Chair_Desk", "Window_Balcony"),
+  ans=[[D("Chair_Desk", [0, 0, 0.3]), FACE("Chair_Desk", "Window_Balcony")],
+       [D("Chair_Desk", [0.015, 0, 0.2996]), FACE("Chair_Desk", "Window_Balcony")]])
 # L x[-0.65,-0.05], R x[0.05,0.65]
 Q(C, "move Pillow_L to the right by 5cm and Pillow_R to the left by 5cm",
   mv("Pillow_L", [0.05, 0, 0]), mv("Pillow_R", [-0.05, 0, 0]))
@@ -412,8 +415,9 @@ Q(C, "rotate the suitcase 90 degrees and move it 30 cm to the right",
   rot("Suitcase", 90, True), mv("Suitcase", [0.3, 0, 0]))
 # cups z[-1.79,-1.71] and z[-1.61,-1.53]
 Q(C, "Move Cup.001 and Cup.002 5 cm forward", mv("Cup.001", [0, 0, 0.05]), mv("Cup.002", [0, 0, 0.05]))
+# along the wall towards the desk = +z (desk centre (-2.225,1.0) from (-2.25,-1.2))
 # dresser z[-1.7,-0.3] with the TV, kettle and both cups; the desk starts at z 0.4
-Q(C, "move the dresser 20 cm forward, TV and all", *carry("Dresser", [0, 0, 0.2]))
+Q(C, "slide the dresser 20 cm along the wall towards the desk, TV and all", *carry("Dresser", [0, 0, 0.2]))
 
 # ---- fuzzy
 Q(F, "nudge the suitcse a tad to the left", dr("Suitcase", "-x", 0.01))
@@ -471,7 +475,7 @@ Q(CF, "could you move the suitcase a bit closer to the luggage rack and turn it 
 Q(CF, "move Pillow_L a tad left and Pillow_R a tad right",
   dr("Pillow_L", "-x", 0.01), dr("Pillow_R", "+x", 0.01))
 # clock on the desk at z[1.065,1.135] (phone from 1.3); chair back (-z) from z 0.75
-Q(CF, "put the alarm clock on the desk and slide Chair_Desk back a little",
+Q(CF, "put the alarm clock on the desk and slide Chair_Desk a little towards the back wall",
   top("Alarm_Clock", "Desk_Writing"), dr("Chair_Desk", "-z", 0.03),
   ans=[[TO("Alarm_Clock", [-2.2, 0.75, 1.1]), D("Chair_Desk", [0, 0, -0.03])],
        [D("Chair_Desk", [0, 0, -0.2]), TO("Alarm_Clock", [-2.2, 0.75, 1.0])]])
@@ -486,7 +490,7 @@ Q(CF, "move the bench a smidge back and the suitcase a little to the left",
 Q(CF, "nudge the wardrobe a tad to the left, and the luggage rack too",
   dr("Wardrobe", "-x", 0.01), dr("Luggage_Rack", "-x", 0.01))
 # Curtain_L back: free; Curtain_R forward: wardrobe from z 2.4
-Q(CF, "give Curtain_L a little push back and move Curtain_R a bit forward, thanks!",
+Q(CF, "open the curtains a bit: Curtain_L a little towards the back wall, Curtain_R a bit towards the front wall, thanks!",
   dr("Curtain_L", "-z", 0.03), dr("Curtain_R", "+z", 0.03))
 
 # ---- hard
@@ -565,7 +569,7 @@ Q(S, "turn chair 3 around 180°", rot("chair 3", 180, True), still("chair 3"))
 # kids table x[2.0,3.0] -0.2 -> x[1.8,2.8] with the puzzle; the kids chairs stay
 Q(S, "move the kids table 20 cm to the left", *carry("kids table", [-0.2, 0, 0]))
 # machine z[0.05,0.95] +0.5 -> z[0.55,1.45]; reception from z 2.25
-Q(S, "move the vending machine 50 cm forward", mv("vending machine", [0, 0, 0.5]))
+Q(S, "move the vending machine 50 cm towards the front wall", mv("vending machine", [0, 0, 0.5]))
 # stand x[-1.125,-0.875] +0.6 -> x[-0.525,-0.275]
 Q(S, "the umbrella stand needs to go 60 cm to the right", mv("umbrella stand", [0.6, 0, 0]))
 # rack z[-3.35,-2.85] +0.3 -> z[-3.05,-2.55]
@@ -658,7 +662,7 @@ Q(CF, "put magazine 1 on the reception desk and push side table 1 a bit to the r
   ans=[[TO("magazine 1", [1.8, 1.1, 2.6]), D("side table 1", [0.03, 0, 0])],
        [D("side table 1", [0.15, 0, 0]), TO("magazine 1", [1.8, 1.1, 2.6])]])
 # chair 11 (-2.6,-1.6) -> door (-2.0,-3.475): yaw ~162, half 0.315 -> x[-2.915,-2.285] (chair 12 from -2.25)
-Q(CF, "turn chair 11 to face the door and scoot it a little forward",
+Q(CF, "scoot chair 11 a little forward and then turn it to face the door",
   faces("chair 11", "door"), dr("chair 11", "+z", 0.03),
   ans=[[D("chair 11", [0, 0, 0.03]), FACE("chair 11", "door")],
        [FACE("chair 11", "door"), D("chair 11", [0, 0, 0.15])]])
@@ -688,11 +692,12 @@ Q(CF, "could you move the middle row of chairs a bit to the right", *[dr(c, "+x"
 Q(H, "push chair 5 right up against side table 1", mv("chair 5", [0.15, 0, 0], 0.02),
   touch=[("chair 5", "side table 1")])
 # machine z min 0.05 -> plant 2's front 2.95... plant 2 z max -2.95 (x[3.45,3.95] overlaps x[3.2,4.0])
-Q(H, "shove the vending machine as far back as it'll go", mv("vending machine", [0, 0, -3.0], 0.02),
+Q(H, "shove the vending machine along the wall as far toward the back as it'll go", mv("vending machine", [0, 0, -3.0], 0.02),
   IB, touch=[("vending machine", "plant 2")])
 # chair 3 (-1.4,0.8) is 2.55 from the tv (-1.4,3.35); chair 2 is 2.62
 Q(H, "move the chair closest to the tv 20 cm forward", mv("chair 3", [0, 0, 0.2]))
-Q(H, "move the back-left chair 30cm to the left", mv("chair 11", [-0.3, 0, 0]))
+# back row: chair 11 (-2.6,-1.6) is 1.80 from the coat rack (-3.6,-3.1), chair 12 2.19
+Q(H, "move the back-row chair closest to the coat rack 30cm to the left", mv("chair 11", [-0.3, 0, 0]))
 # magazine 2 (on side table 2) to the kids table beside the puzzle
 Q(H, "move the magazine on side table 2 onto the kids table", top("magazine 2", "kids table"),
   ans=[[TO("magazine 2", [2.17, 0.5, -1.8])]])
@@ -702,8 +707,8 @@ Q(H, "turn kids chair 1 to face the toy box", faces("kids chair 1", "toy box"), 
 Q(H, "turn chair 15 so it faces the vending machine", faces("chair 15", "vending machine"), still("chair 15"))
 # behind chair 3 = chair 8 (middle row, same column)
 Q(H, "move the chair right behind chair 3 5cm to the left", mv("chair 8", [-0.05, 0, 0]))
-# to the right of chair 12 = chair 13
-Q(H, "move the chair to the right of chair 12 10 cm back", mv("chair 13", [0, 0, -0.1]))
+# between chair 12 and chair 14 = chair 13 ("to the right of" would depend on whose right)
+Q(H, "move the chair between chair 12 and chair 14 10 cm back", mv("chair 13", [0, 0, -0.1]))
 # side table 2 x min 0.2 -> chair 15 x max 0.05; the magazine rides
 Q(H, "push side table 2 left until it touches chair 15", *carry("side table 2", [-0.15, 0, 0], tol=0.02),
   touch=[("side table 2", "chair 15")])
@@ -711,7 +716,7 @@ Q(H, "push side table 2 left until it touches chair 15", *carry("side table 2", 
 Q(H, "put kids chair 2 next to the toy box", nxt("kids chair 2", "toy box"), at("kids chair 2", [None, 0, None]),
   ans=[[TO("kids chair 2", [2.25, 0, -3.2])]])
 # rack z min -3.35 -> the back wall -3.5
-Q(H, "slide the coat rack back against the wall", mv("coat rack", [0, 0, -0.15], 0.02), IB,
+Q(H, "slide the coat rack back until it's flush with the back wall", mv("coat rack", [0, 0, -0.15], 0.02), IB,
   touch=[("coat rack", "-z")])
 # plant 1 (-3.7,3.2) -> cabinet (-1.4,3.275): line (0.9995,0.0326): 0.5 -> (0.4997,0.0163)
 Q(H, "move plant 1 half a metre toward the tv cabinet", mv("plant 1", [0.5, 0, 0.008], 0.03),
@@ -727,7 +732,7 @@ Q(H, "move the chair in front of chair 9 5 cm left", mv("chair 4", [-0.05, 0, 0]
 # -- refusals
 Q(H, "turn the kids chair to face the toy box", ref(["kids chair 1", "kids chair 2"]),
   refuse=("ambiguous", ["kids", "chair"]))
-Q(H, "move the plant next to the water cooler", ref(["plant 1", "plant 2"]), refuse=("ambiguous", ["plant"]))
+Q(H, "could you move the plant 30 cm to the left", ref(["plant 1", "plant 2"]), refuse=("ambiguous", ["plant"]))
 Q(H, "hi there, could you move the sofa 50cm to the left", ref([]), refuse=("missing", "sofa"))
 Q(H, "put the fish tank next to the vending machine", ref([]), refuse=("missing", "fish"))
 Q(H, "move the chair in the front row 10 cm back", ref(FRONT), refuse=("ambiguous", ["chair"]))
@@ -773,7 +778,7 @@ Q(C, "move the laptop 10 cm to the left and the white mug 10 cm to the right",
   mv("laptop", [-0.1, 0, 0]), mv("white mug", [0.1, 0, 0]))
 Q(C, "swap the phone and the white mug", *swap("phone", "white mug"))
 # armchair z[0,0.8] (floor lamp ends at -0.025); side table z[1.025,1.475]
-Q(C, "move the armchair 20 cm back and the side table 20 cm back too",
+Q(C, "move the armchair and the side table 20 cm towards the back wall",
   mv("armchair", [0, 0, -0.2]), *carry("side table", [0, 0, -0.2]))
 # white x[0.355,0.445]; black x[0.705,0.795] (plate ends at 0.63)
 Q(C, "move both mugs 5 cm to the left", mv("white mug", [-0.05, 0, 0]), mv("black mug", [-0.05, 0, 0]))
@@ -789,8 +794,8 @@ Q(C, "move the rug 10 cm back and the sofa 10 cm to the right",
 Q(C, "move the green book 5 cm to the left and the black mug 5 cm to the right",
   mv("green book", [-0.05, 0, 0]), mv("black mug", [0.05, 0, 0]))
 # lamp square: same box; z[-2.35,-2.15]
-Q(C, "rotate the desk lamp 90 degrees and move it 10 cm forward",
-  rot("desk lamp", 90, True), mv("desk lamp", [0, 0, 0.1]))
+Q(C, "move the desk lamp 10 cm forward and rotate it 90 degrees",
+  mv("desk lamp", [0, 0, 0.1]), rot("desk lamp", 90, True))
 # red book z[-1.02,-0.78]; succulent z[-0.51,-0.39] (shelf ends at -0.35)
 Q(C, "move the red book and the succulent 10cm forward",
   mv("red book", [0, 0, 0.1]), mv("succulent", [0, 0, 0.1]))
@@ -851,7 +856,7 @@ Q(CF, "put the green book on the desk and move the coffee table a little to the 
   ans=[[TO("green book", [0.285, 0.75, -1.94]), D("coffee table", [-0.03, 0, 0])],
        [D("coffee table", [-0.15, 0, 0]), TO("green book", [0.285, 0.75, -1.94])]])
 # armchair back: floor lamp ends at z -0.025 (room 0.225)
-Q(CF, "nudge the sofa a tad right and the armchair a bit back",
+Q(CF, "nudge the sofa a tad right and the armchair a bit towards the back of the room",
   dr("sofa", "+x", 0.01), dr("armchair", "-z", 0.03))
 # chair (-1.3,-1.0) -> desk centre (0,-2.15): yaw ~131.5; after +0.15: ~135; half <= 0.354
 Q(CF, "scoot the guest chair a little to the right and turn it to face the desk",
@@ -874,8 +879,11 @@ Q(CF, "move the floor lamp a bit left and the waste basket a little to the left 
 # printer z min -2.4 -> -2.5 at most; blue book x min 0.515 -> monitor 0.3
 Q(CF, "give the printer a tiny nudge back and move the blue book a bit to the left",
   dr("printer", "-z", 0.01), dr("blue book", "-x", 0.03))
-Q(CF, "turn the guest chair around and slide it a little forward",
-  rot("guest chair", 180, True), dr("guest chair", "+z", 0.03))
+# towards the door: +z (door centre (-1.6,2.475) from (-1.3,-1.0): line (-0.086,0.996))
+Q(CF, "turn the guest chair around and slide it a little toward the door",
+  rot("guest chair", 180, True), dr("guest chair", "+z", 0.03),
+  ans=[[YAW("guest chair", 180), D("guest chair", [0, 0, 0.03])],
+       [YAW("guest chair", -180), D("guest chair", [-0.013, 0, 0.149])]])
 # red book z min -1.12: 10 cm before it overhangs the shelf (z >= -1.25 for the whole book: 0.13)
 Q(CF, "nudge the succulent a tad forward and the red book a bit back",
   dr("succulent", "+z", 0.01), dr("red book", "-z", 0.03), gen={"red book": 0.1})
@@ -890,7 +898,7 @@ Q(H, "slide the sofa as far left as it will go", mv("sofa", [-0.75, 0, 0], 0.02)
 # black mug x[0.705,0.795]
 Q(H, "move the mug on the coffee table 5 cm to the left", mv("black mug", [-0.05, 0, 0]))
 # white mug on the front strip: x[0.455,0.545] z[1.055,1.145], 2.5 cm from the plate
-Q(H, "put the white mug on the coffee table next to the plate", top("white mug", "coffee table"),
+Q(H, "put the white mug on the coffee table next to the dinner plate", top("white mug", "coffee table"),
   nxt("white mug", "dinner plate"), ans=[[TO("white mug", [0.5, 0.43, 1.1])]])
 # chair (0,-1.35) -> window (2.45,-1.2): yaw 86.5 (turn -93.5), half 0.318
 Q(H, "turn the office chair to face the window", faces("office chair", "window"), still("office chair"))
@@ -908,7 +916,7 @@ Q(H, "put the small plate on the desk between the laptop and the white mug",
 # the chair by the bookshelf = guest chair
 Q(H, "move the chair by the bookshelf 20 cm to the right", mv("guest chair", [0.2, 0, 0]))
 # lamp z min -0.375 -> back wall -2.5 (the filing cabinet is at x <= 1.425; the window hangs above)
-Q(H, "push the floor lamp back against the wall", mv("floor lamp", [0, 0, -2.125], 0.02), IB,
+Q(H, "slide the floor lamp back until it touches the back wall", mv("floor lamp", [0, 0, -2.125], 0.02), IB,
   touch=[("floor lamp", "-z")])
 # desk x[-0.65,0.95]; laptop (centre 0) and phone (centre -0.45) stay over it
 Q(H, "move the desk 15 cm to the right but keep the laptop and the phone where they are",

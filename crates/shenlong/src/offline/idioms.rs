@@ -9,6 +9,7 @@
 //! | `flush against the left wall`, `flush with X2` | `against …` |
 //! | `right up against X2` | `up against X2` (`right` says how close, not where) |
 //! | `until it touches X2`, `until it's flush against X2`, `till it hits X2`, `until they meet X2` | `against X2` (with a direction before it: along that direction, checked) |
+//! | `forward till it hits the wall`, `till it reaches the back wall` | `all the way forward`, `all the way back` |
 //! | `all the way to the left wall`, `all the way back to the wall` | `against the left wall`, `against the back wall` |
 //! | `point X1 at X2`, `aim X1 at X2`, `so it points at X2`, `pointing towards X2` | `turn X1 face X2`, `so it faces X2`, `facing X2` |
 //! | `X1 needs to go 2 feet left`, `X1 should be moved …`, `X1 has to move …` | `X1 2 feet left` (a move: the objects named, then where) |
@@ -196,10 +197,26 @@ fn until_touching(c: &mut Clause) {
     if k == i + 1 || !one_of(c, k, &touching) {
         return;
     }
-    let target = k + 1 + usize::from(c.words_at(k + 1, &["the"]));
+    let article = usize::from(c.words_at(k + 1, &["the"]));
+    let target = k + 1 + article;
     if matches!(c.token(target), Some(super::words::Token::Variable(_))) {
         c.mark(i..k);
         c.replace(k, "against");
+        return;
+    }
+    // "push X1 forward till it hits the wall" (or "the back wall"): all the way that way.
+    let side = c.word(target).and_then(side_direction);
+    let wall = target + usize::from(side.is_some());
+    if c.words_at(wall, &["wall"]) && k >= i + 2 {
+        c.mark(i..k - 2);
+        for (at, word) in [(k - 2, "all"), (k - 1, "the"), (k, "way")] {
+            c.replace(at, word);
+        }
+        c.mark(k + 1..target);
+        if let Some(side) = side {
+            c.replace(target, side);
+        }
+        c.mark(wall..wall + 1);
     }
 }
 

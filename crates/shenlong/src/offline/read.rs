@@ -317,8 +317,12 @@ impl<'a> Reader<'a> {
         let verb = self.verb(c);
         // "face it" where "it" is the object turned: the one thing named as the last
         // relation's target (an object cannot face itself).
-        let other = match self.last_targets.as_slice() {
-            &[t] if !self.last_subjects.contains(&t) => Some(t),
+        // Else, when the clause names its own object ("move X1 forward and turn X2 to face
+        // it"), the one object the last clause moved.
+        let named: Vec<usize> = c.variables().iter().map(|&(_, v)| v).collect();
+        let other = match (self.last_targets.as_slice(), self.last_subjects.as_slice()) {
+            (&[t], _) if !self.last_subjects.contains(&t) => Some(t),
+            (_, &[s]) if !named.is_empty() && !named.contains(&s) => Some(s),
             _ => None,
         };
         let facing = find_facing(c, other);

@@ -630,8 +630,8 @@ fn doors_and_windows_are_objects_and_typos_of_glue_words_and_colours_are_read() 
     );
 }
 
-#[test]
-fn a_chair_is_pushed_in_and_pulled_out_from_its_table() {
+/// A table with two chairs drawn up to it, a bin in a corner and a whiteboard.
+fn meeting() -> Scene {
     let mut s = Scene::new("meeting");
     s.bounds = Some(Aabb {
         min: DVec3::new(-3.0, 0.0, -3.0),
@@ -642,10 +642,17 @@ fn a_chair_is_pushed_in_and_pulled_out_from_its_table() {
         ("chair 1", [0.5, 0.9, 0.5], [-0.5, 0.0, 0.95]),
         ("chair 2", [0.5, 0.9, 0.5], [0.5, 0.0, -0.95]),
         ("bin", [0.3, 0.4, 0.3], [2.5, 0.0, 2.5]),
+        ("whiteboard", [1.6, 1.0, 0.05], [0.0, 1.0, -2.97]),
     ] {
         s.push_box(name, size, at);
     }
     s.detect_supports();
+    s
+}
+
+#[test]
+fn a_chair_is_pushed_in_and_pulled_out_from_its_table() {
+    let s = meeting();
     // Chair 1 stands 0.2 m in front of the table: in until it touches, or by an amount.
     let a = run(&s, "push chair 1 in");
     only_moved(&s, &a, &[("chair 1", [0.0, 0.0, -0.2])]);
@@ -656,4 +663,30 @@ fn a_chair_is_pushed_in_and_pulled_out_from_its_table() {
     only_moved(&s, &a, &[("chair 2", [0.0, 0.0, -0.1])]);
     // Nothing near the bin to push it in towards.
     refused(&s, "push the bin in a bit", &["drawn up to nothing"]);
+}
+
+#[test]
+fn face_it_after_another_move_and_what_none_of_a_group_may_do() {
+    let s = meeting();
+    // "it": the one object the last clause moved, when this clause names its own.
+    let a = run(
+        &s,
+        "move chair 1 20 cm to the right and turn chair 2 to face it",
+    );
+    let i = s.find("chair 2").unwrap();
+    let turned = a.objects[i].similarity().rotation;
+    let front = turned * DVec3::Z;
+    let to_chair_1 = DVec3::new(-0.5 + 0.2 - 0.5, 0.0, 0.95 + 0.95).normalize();
+    assert!(front.dot(to_chair_1) > 0.999, "{front:?}");
+    // "till it hits the wall": all the way that way.
+    let a = run(&s, "push the bin back till it hits the wall");
+    let b = a.objects[s.find("bin").unwrap()].world_aabb();
+    assert!((b.min.z + 3.0).abs() < 1e-9, "{b:?}");
+    // "don't move any of the chairs": every chair held; the table cannot then slide
+    // into them.
+    let a = run(
+        &s,
+        "move the table 5 cm to the left but don't move any of the chairs",
+    );
+    only_moved(&s, &a, &[("table", [-0.05, 0.0, 0.0])]);
 }
