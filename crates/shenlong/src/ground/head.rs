@@ -326,7 +326,20 @@ impl Reader<'_> {
             }
             None => return None,
         };
-        let mut objects = pool.clone();
+        // "the blue mug … the red one": one of the mugs — the kind the last phrase named
+        // (the last word of its head), not only the blue ones its own name picked.
+        let kind = text.rsplit(' ').next().unwrap_or_default().to_string();
+        let wider = if kind != text {
+            self.g.index.lookup_literal(&kind, true)
+        } else {
+            Vec::new()
+        };
+        let (mut objects, text) =
+            if wider.len() > pool.len() && pool.iter().all(|o| wider.contains(o)) {
+                (wider, kind)
+            } else {
+                (pool.clone(), text)
+            };
         if other {
             objects.retain(|o| !bound.contains(o));
         }

@@ -690,3 +690,15 @@ fn face_it_after_another_move_and_what_none_of_a_group_may_do() {
     );
     only_moved(&s, &a, &[("table", [-0.05, 0.0, 0.0])]);
 }
+
+#[test]
+fn the_red_one_after_the_blue_mug_is_the_red_mug() {
+    let s = loft();
+    let a = run(&s, "put the blue mug next to the red one");
+    let (b, r) = (
+        a.objects[s.find("Mug_Blue").unwrap()].world_aabb(),
+        a.objects[s.find("Mug_Red").unwrap()].world_aabb(),
+    );
+    assert!(b.center().distance(r.center()) < 0.3, "{b:?} {r:?}");
+    assert_eq!(moved(&s, &a, "Mug_Red"), DVec3::ZERO);
+}
