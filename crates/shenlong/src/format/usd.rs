@@ -739,6 +739,9 @@ fn scene_of(
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
     let mut scene = Scene::new(stem);
     let mut kept: Vec<UsdObject> = Vec::new();
+    // Names taken so far, compared as the scene compares them (case-insensitively): one
+    // hash look-up per object, not a scan of the scene.
+    let mut taken: rustc_hash::FxHashSet<String> = rustc_hash::FxHashSet::default();
     for (object, pts) in objects.into_iter().zip(points) {
         if pts.is_empty() || pts.iter().any(|p| !p.is_finite()) {
             continue;
@@ -751,11 +754,12 @@ fn scene_of(
                 .unwrap_or_default()
                 .to_string()
         });
-        let name = if scene.find(&leaf).is_some() {
+        let name = if taken.contains(&leaf.to_lowercase()) {
             object.path.clone()
         } else {
             leaf
         };
+        taken.insert(name.to_lowercase());
         let o = Object::new(
             name,
             Shape::Points { points: pts },
@@ -782,16 +786,24 @@ fn scene_of(
     Ok((scene, document))
 }
 
-/// Each object's nearest object ancestor, found again among the kept objects by path.
+/// Each object's nearest object ancestor, found again among the kept objects by path:
+/// each path's parents looked up in a map (the cost of the depth, not of the scene).
 fn reindex(mut objects: Vec<UsdObject>) -> Vec<UsdObject> {
-    let paths: Vec<String> = objects.iter().map(|o| o.path.clone()).collect();
+    let by_path: rustc_hash::FxHashMap<String, usize> = objects
+        .iter()
+        .enumerate()
+        .map(|(k, o)| (o.path.clone(), k))
+        .collect();
     for o in &mut objects {
-        o.ancestor = paths
-            .iter()
-            .enumerate()
-            .filter(|(_, p)| o.path.starts_with(&format!("{p}/")))
-            .max_by_key(|(_, p)| p.len())
-            .map(|(k, _)| k);
+        let mut path = o.path.clone();
+        o.ancestor = None;
+        while let Some((parent, _)) = path.rsplit_once('/') {
+            if let Some(&k) = by_path.get(parent) {
+                o.ancestor = Some(k);
+                break;
+            }
+            path = parent.to_string();
+        }
     }
     objects
 }
