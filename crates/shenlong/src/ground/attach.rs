@@ -119,14 +119,7 @@ impl Reader<'_> {
                     && !self.clause_goes_on(*p_end)
                     && self.placing_verb_before(start)
                 {
-                    let names = self.names(objects);
-                    return Err(GroundError::Ambiguous {
-                        phrase: self.span_text(&(start..head.range.end)),
-                        span: self.byte_span(&(start..head.range.end)),
-                        example: names[0].clone(),
-                        hints: self.hints(&head.text, objects),
-                        candidates: names,
-                    });
+                    return Err(self.ambiguous(&(start..head.range.end), &head.text, objects, 0));
                 }
             }
         }

@@ -41,14 +41,7 @@ impl Reader<'_> {
             let text = head.text.clone();
             let np = self.noun_phrase(head, bound, Mode::Nested)?;
             if np.objects.len() > 1 && !plural {
-                let names = self.names(&np.objects);
-                return Err(GroundError::Ambiguous {
-                    phrase: self.span_text(&np.range),
-                    span: self.byte_span(&np.range),
-                    example: names[names.len().min(3) - 1].clone(),
-                    hints: self.hints(&text, &np.objects),
-                    candidates: names,
-                });
+                return Err(self.ambiguous(&np.range, &text, &np.objects, 2));
             }
             excluded.extend(np.objects);
             q = np.range.end;

@@ -676,6 +676,26 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// The refusal of the phrase at `range` (its head noun `noun`) that could mean each
+    /// of `objects`: named, with the candidate at position `example` (or the last) as the
+    /// one to name and [`Self::hints`] for saying which.
+    fn ambiguous(
+        &self,
+        range: &Range<usize>,
+        noun: &str,
+        objects: &[usize],
+        example: usize,
+    ) -> GroundError {
+        let names = self.names(objects);
+        GroundError::Ambiguous {
+            phrase: self.span_text(range),
+            span: self.byte_span(range),
+            example: names[example.min(names.len() - 1)].clone(),
+            hints: self.hints(noun, objects),
+            candidates: names,
+        }
+    }
+
     /// Ways to say which, with a real neighbour: `the left chair`, `the chair nearest the
     /// table`.
     fn hints(&self, head: &str, candidates: &[usize]) -> Vec<String> {

@@ -497,20 +497,13 @@ impl Reader<'_> {
         }
         let ambiguous_ok = mode == Mode::Nested && count == Count::One;
         if objects.len() != wanted && !ambiguous_ok {
-            let names = self.names(objects);
             return Err(match count {
-                Count::One => GroundError::Ambiguous {
-                    phrase,
-                    span: self.byte_span(&range),
-                    example: names[names.len().min(3) - 1].clone(),
-                    hints: self.hints(&head.text, objects),
-                    candidates: names,
-                },
+                Count::One => self.ambiguous(&range, &head.text, objects, 2),
                 _ => GroundError::Count {
                     phrase,
                     span: self.byte_span(&range),
                     wanted,
-                    found: names,
+                    found: self.names(objects),
                 },
             });
         }

@@ -60,20 +60,14 @@ impl Reader<'_> {
                 );
                 if measured && targets.len() > 1 {
                     let range = after..end;
-                    let names = self.names(&targets);
-                    let text = self.span_text(&range);
-                    let noun = text
+                    let noun = self
+                        .span_text(&range)
                         .split(' ')
                         .skip_while(|w| words::is_determiner(&w.to_lowercase()))
                         .collect::<Vec<_>>()
-                        .join(" ");
-                    return Err(GroundError::Ambiguous {
-                        hints: self.hints(&noun.to_lowercase(), &targets),
-                        phrase: text,
-                        span: self.byte_span(&range),
-                        example: names[0].clone(),
-                        candidates: names,
-                    });
+                        .join(" ")
+                        .to_lowercase();
+                    return Err(self.ambiguous(&range, &noun, &targets, 0));
                 }
                 return Ok(Some((Post::Relation(relation, targets), end)));
             }
@@ -303,14 +297,7 @@ impl Reader<'_> {
         // A few fitting objects are all looked at ("the phone on the chair"); past that the
         // phrase itself is what needs saying better.
         if np.objects.len() > MAX_TARGETS {
-            let names = self.names(&np.objects);
-            return Err(GroundError::Ambiguous {
-                phrase: self.span_text(&np.range),
-                span: self.byte_span(&np.range),
-                example: names[2].clone(),
-                hints: self.hints(&text, &np.objects),
-                candidates: names,
-            });
+            return Err(self.ambiguous(&np.range, &text, &np.objects, 2));
         }
         Ok(Some((np.objects, np.range.end)))
     }
