@@ -831,17 +831,7 @@ fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, 
     // local transform and so follow their parent.
     let mut deltas = vec![None; document.nodes.len()];
     for (object, &node) in scene.objects.iter().zip(&document.object_nodes) {
-        let s = object.similarity();
-        let moved = s.translation.length() > 0.0
-            || !s.rotation.abs_diff_eq(DQuat::IDENTITY, 0.0)
-            || s.scale != 1.0;
-        if moved {
-            deltas[node] = Some(DMat4::from_scale_rotation_translation(
-                DVec3::splat(s.scale),
-                s.rotation,
-                s.translation,
-            ));
-        }
+        deltas[node] = super::transform::world_motion(object);
     }
     if deltas.iter().all(Option::is_none) {
         return Ok(None);
@@ -866,18 +856,7 @@ fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, 
         let world = new_world[node];
         let parent_world = info.parent.map_or(DMat4::IDENTITY, |p| new_world[p]);
         let local = parent_world.inverse() * world;
-        if local.abs_diff_eq(
-            info.local,
-            1e-12
-                * (1.0
-                    + info
-                        .local
-                        .abs()
-                        .to_cols_array()
-                        .iter()
-                        .cloned()
-                        .fold(0.0, f64::max)),
-        ) {
+        if super::transform::nearly_equal(&local, &info.local, 1e-12) {
             continue;
         }
         let target = json
@@ -899,19 +878,8 @@ fn write_local(
     animated: bool,
 ) -> Result<(), FormatError> {
     let numbers = |values: &[f64]| Value::Array(values.iter().map(|&x| json_number(x)).collect());
-    let (scale, rotation, translation) = local.to_scale_rotation_translation();
-    let recomposed = DMat4::from_scale_rotation_translation(scale, rotation, translation);
-    let is_trs = recomposed.abs_diff_eq(
-        *local,
-        1e-9 * (1.0
-            + local
-                .abs()
-                .to_cols_array()
-                .iter()
-                .cloned()
-                .fold(0.0, f64::max)),
-    );
-    if node.contains_key("matrix") || !is_trs {
+    let trs = super::transform::as_trs(local);
+    let Some((scale, rotation, translation)) = trs.filter(|_| !node.contains_key("matrix")) else {
         if animated {
             return Err(FormatError::new(format!(
                 "nodes[{index}] is animated, so its transform must stay TRS, but the edit gives it a shear"
@@ -921,11 +889,11 @@ fn write_local(
             node.remove(key);
         }
         node.insert("matrix".into(), numbers(&local.to_cols_array()));
-    } else {
-        node.insert("translation".into(), numbers(&translation.to_array()));
-        node.insert("rotation".into(), numbers(&rotation.normalize().to_array()));
-        node.insert("scale".into(), numbers(&scale.to_array()));
-    }
+        return Ok(());
+    };
+    node.insert("translation".into(), numbers(&translation.to_array()));
+    node.insert("rotation".into(), numbers(&rotation.normalize().to_array()));
+    node.insert("scale".into(), numbers(&scale.to_array()));
     Ok(())
 }
 

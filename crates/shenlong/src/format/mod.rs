@@ -16,6 +16,7 @@ pub mod pretty;
 pub mod procthor;
 mod resources;
 pub mod tdw;
+mod transform;
 #[cfg(feature = "usd")]
 pub mod usd;
 

@@ -254,8 +254,15 @@ fn check_nesting(text: &str) -> Result<(), FormatError> {
     Ok(())
 }
 
-/// Opens a stage, reading only inside its folder.
-fn open_stage(path: &Path) -> Result<Stage, FormatError> {
+/// A stage opened and walked once.
+struct Opened {
+    stage: Stage,
+    /// Whether any prim of kind `component` is a model (the stage uses model kinds).
+    uses_kinds: bool,
+}
+
+/// Opens a stage, reading only inside its folder, and walks it once.
+fn open_stage(path: &Path) -> Result<Opened, FormatError> {
     let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot read it: {e}")))?;
     if !meta.is_file() {
         return Err(err("not a regular file"));
@@ -283,13 +290,26 @@ fn open_stage(path: &Path) -> Result<Stage, FormatError> {
                 "not a USD stage Shenlong can read: {e:#}"
             )))
         })?;
-    // Composition is lazy: walk the stage once so every arc is resolved now.
-    let mut stack = vec![stage.prim(sdf::Path::abs_root())];
-    while let Some(p) = stack.pop() {
-        stack.extend(
-            p.children()
-                .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?,
-        );
+    // Composition is lazy: walk the stage once so every arc is resolved now. The same
+    // walk sees whether the stage uses model kinds: a prim of kind `component` reached
+    // through prims with a kind, `Xform`s, `Scope`s or untyped prims (models sit near the
+    // top: a component is never under a gprim).
+    let mut uses_kinds = false;
+    let mut stack = vec![(stage.prim(sdf::Path::abs_root()), true)];
+    while let Some((p, on_model_path)) = stack.pop() {
+        uses_kinds |= on_model_path && is_component(&p);
+        let children = p
+            .children()
+            .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?;
+        stack.extend(children.into_iter().map(|c| {
+            let model_path = on_model_path
+                && (c.kind().ok().flatten().is_some()
+                    || c.type_name()
+                        .ok()
+                        .flatten()
+                        .is_some_and(|t| matches!(t.as_str(), "Xform" | "Scope" | "")));
+            (c, model_path)
+        }));
         if refused.lock().is_ok_and(|l| !l.is_empty()) {
             break;
         }
@@ -300,7 +320,7 @@ fn open_stage(path: &Path) -> Result<Stage, FormatError> {
             first.chars().take(200).collect::<String>()
         )));
     }
-    Ok(stage)
+    Ok(Opened { stage, uses_kinds })
 }
 
 /// The first line of a message, at most 300 characters.
@@ -566,14 +586,13 @@ fn is_component(prim: &Prim) -> bool {
 /// stage whose `upAxis` or `metersPerUnit` is unusable; one with no object.
 pub fn read(path: &Path) -> Result<(Scene, UsdDocument), FormatError> {
     let container = container_of(path)?;
-    let stage = open_stage(path)?;
+    let Opened { stage, uses_kinds } = open_stage(path)?;
     let frame = frame_of(&stage)?;
     let default_prim = stage.default_prim().map(|t| t.as_str().to_string());
     let root = match &default_prim {
         Some(name) => stage.prim(format!("/{name}").as_str()),
         None => stage.prim(sdf::Path::abs_root()),
     };
-    let uses_kinds = uses_component_kinds(&stage)?;
     let to_shenlong = frame.to_shenlong();
     let mut objects: Vec<UsdObject> = Vec::new();
     let mut points: Vec<Vec<DVec3>> = Vec::new();
@@ -682,30 +701,6 @@ fn is_transformable(type_name: &str) -> bool {
             | "RenderProduct"
             | "RenderVar"
     )
-}
-
-/// Whether any prim of the stage has kind `component` (the stage uses model kinds).
-fn uses_component_kinds(stage: &Stage) -> Result<bool, FormatError> {
-    let mut stack = vec![stage.prim(sdf::Path::abs_root())];
-    while let Some(p) = stack.pop() {
-        if is_component(&p) {
-            return Ok(true);
-        }
-        // Models sit near the top: a component is never under a gprim.
-        stack.extend(
-            p.children()
-                .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))?
-                .into_iter()
-                .filter(|c| {
-                    c.kind().ok().flatten().is_some()
-                        || c.type_name()
-                            .ok()
-                            .flatten()
-                            .is_some_and(|t| matches!(t.as_str(), "Xform" | "Scope" | ""))
-                }),
-        );
-    }
-    Ok(false)
 }
 
 /// The local-to-world transform of a prim, from the root down.
@@ -819,21 +814,7 @@ fn new_locals(scene: &Scene, document: &UsdDocument) -> Result<Vec<Option<DMat4>
     let deltas: Vec<Option<DMat4>> = scene
         .objects
         .iter()
-        .map(|o| {
-            let s = o.similarity();
-            let moved = s.translation.length() > 0.0
-                || !s.rotation.abs_diff_eq(DQuat::IDENTITY, 0.0)
-                || s.scale != 1.0;
-            moved.then(|| {
-                c_inv
-                    * DMat4::from_scale_rotation_translation(
-                        DVec3::splat(s.scale),
-                        s.rotation,
-                        s.translation,
-                    )
-                    * c
-            })
-        })
+        .map(|o| super::transform::world_motion(o).map(|m| c_inv * m * c))
         .collect();
     let mut out = vec![None; deltas.len()];
     for (k, object) in document.objects.iter().enumerate() {
@@ -851,17 +832,7 @@ fn new_locals(scene: &Scene, document: &UsdDocument) -> Result<Vec<Option<DMat4>
         }
         let local = new_parent.inverse() * new_world;
         let old_local = object.parent_world.inverse() * object.world;
-        if !local.abs_diff_eq(
-            old_local,
-            1e-12
-                * (1.0
-                    + old_local
-                        .abs()
-                        .to_cols_array()
-                        .iter()
-                        .cloned()
-                        .fold(0.0, f64::max)),
-        ) {
+        if !super::transform::nearly_equal(&local, &old_local, 1e-12) {
             out[k] = Some(local);
         }
     }
@@ -871,16 +842,8 @@ fn new_locals(scene: &Scene, document: &UsdDocument) -> Result<Vec<Option<DMat4>
 /// The ops that write a local transform: translate, orient, scale when it is one; else
 /// one matrix.
 fn ops_for(local: DMat4) -> Vec<(String, &'static str, Value)> {
-    let (scale, rotation, translation) = local.to_scale_rotation_translation();
-    let rebuilt = DMat4::from_scale_rotation_translation(scale, rotation, translation);
-    let size = 1.0
-        + local
-            .abs()
-            .to_cols_array()
-            .iter()
-            .cloned()
-            .fold(0.0, f64::max);
-    if scale.min_element() > 0.0 && rebuilt.abs_diff_eq(local, 1e-9 * size) {
+    let trs = super::transform::as_trs(&local).filter(|(scale, _, _)| scale.min_element() > 0.0);
+    if let Some((scale, rotation, translation)) = trs {
         vec![
             (
                 "xformOp:translate:shenlong".to_string(),
@@ -945,7 +908,7 @@ pub fn write(
             ))
         }
     };
-    let stage = open_stage(&document.source)?;
+    let stage = open_stage(&document.source)?.stage;
     for (object, local) in document.objects.iter().zip(&locals) {
         let Some(local) = local else { continue };
         author(&stage, &object.path, *local)?;
