@@ -266,7 +266,7 @@ fn needs_to_go(c: &mut Clause) {
     ];
     for i in 1..c.len() {
         let after_objects = matches!(c.token(i - 1), Some(super::words::Token::Variable(_)));
-        if !after_objects || !modal.iter().any(|m| c.words_at(i, &[m])) {
+        if !after_objects || !one_of(c, i, &modal) {
             continue;
         }
         let mut k = i + 1;
@@ -276,9 +276,9 @@ fn needs_to_go(c: &mut Clause) {
         let moved = [
             "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
         ];
-        let end = if c.words_at(k, &["go"]) || c.words_at(k, &["move"]) {
+        let end = if one_of(c, k, &["go", "move"]) {
             k + 1
-        } else if c.words_at(k, &["be"]) && moved.iter().any(|m| c.words_at(k + 1, &[m])) {
+        } else if c.words_at(k, &["be"]) && one_of(c, k + 1, &moved) {
             k + 2
         } else {
             continue;

@@ -77,6 +77,16 @@ pub struct Entry {
     pub near: Option<crate::translate::Near>,
 }
 
+/// How far box `b` lies ahead of box `a` along axis `e` in the direction `sign`: the gap
+/// between the facing faces (negative where they overlap along it or `b` is behind).
+fn gap_ahead(a: &crate::geometry::Aabb, b: &crate::geometry::Aabb, e: usize, sign: f64) -> f64 {
+    if sign > 0.0 {
+        b.min[e] - a.max[e]
+    } else {
+        a.min[e] - b.max[e]
+    }
+}
+
 /// How far from a table a chair may stand and still be "pushed in" to it, in metres.
 pub const TUCK_REACH: f64 = 0.6;
 
@@ -158,14 +168,10 @@ impl<'s> Known<'s> {
         let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
             return Ok(());
         };
-        let (sa, sb) = (scene.objects[a].world_aabb(), scene.objects[b].world_aabb());
-        let ahead = if sign > 0.0 {
-            sb.min[e] - sa.max[e]
-        } else {
-            sa.min[e] - sb.max[e]
-        };
-        let across = 2 - e;
-        let overlap = sa.max[across].min(sb.max[across]) - sa.min[across].max(sb.min[across]);
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let (sa, sb) = (&boxes[a], &boxes[b]);
+        let ahead = gap_ahead(sa, sb, e, sign);
+        let overlap = sa.overlap(sb)[2 - e];
         let way = match (e, sign > 0.0) {
             (0, false) => "left",
             (0, true) => "right",
@@ -197,25 +203,19 @@ impl<'s> Known<'s> {
         let me = *objects.get(s)?;
         let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
         let a = boxes[me];
-        let footprint = |b: &crate::geometry::Aabb| (b.max.x - b.min.x) * (b.max.z - b.min.z);
+        let footprint = |b: &crate::geometry::Aabb| b.size().x * b.size().z;
         let mut best: Option<((usize, f64), f64)> = None;
         for (j, b) in boxes.iter().enumerate() {
-            if j == me || footprint(b) <= footprint(&a) || b.max.y <= a.min.y || b.min.y >= a.max.y
-            {
+            let overlap = a.overlap(b);
+            if j == me || footprint(b) <= footprint(&a) || overlap.y <= 0.0 {
                 continue;
             }
             for e in [0usize, 2] {
-                let across = 2 - e;
-                let overlap = a.max[across].min(b.max[across]) - a.min[across].max(b.min[across]);
-                if overlap <= 0.0 {
+                if overlap[2 - e] <= 0.0 {
                     continue;
                 }
                 let sign = (b.center()[e] - a.center()[e]).signum();
-                let gap = if sign > 0.0 {
-                    b.min[e] - a.max[e]
-                } else {
-                    a.min[e] - b.max[e]
-                };
+                let gap = gap_ahead(&a, b, e, sign);
                 if gap > TUCK_REACH || sign == 0.0 {
                     continue;
                 }
