@@ -727,31 +727,34 @@ pub(crate) fn resolve_uri(base_dir: &Path, uri: &str) -> Result<PathBuf, String>
         base_dir
     };
     let path = base.join(&relative);
-    let (Ok(real), Ok(real_base)) = (path.canonicalize(), base.canonicalize()) else {
+    let Ok(real_base) = base.canonicalize() else {
         return Err(format!(
             "cannot find '{}' beside the glTF file",
             relative.display()
         ));
     };
-    if !real.starts_with(&real_base) {
-        return Err(format!(
+    match super::file_inside(&path, &real_base) {
+        Ok(()) => Ok(path),
+        Err(super::NotInside::Missing) => Err(format!(
+            "cannot find '{}' beside the glTF file",
+            relative.display()
+        )),
+        Err(super::NotInside::Outside) => Err(format!(
             "'{}' links outside the glTF file's folder; only files inside it are read",
             relative.display()
-        ));
-    }
-    let meta = std::fs::metadata(&real)
-        .map_err(|e| format!("cannot read '{}': {e}", relative.display()))?;
-    if !meta.is_file() {
-        return Err(format!("'{}' is not a regular file", relative.display()));
-    }
-    if meta.len() > MAX_RESOURCE_BYTES {
-        return Err(format!(
+        )),
+        Err(super::NotInside::Unreadable(e)) => {
+            Err(format!("cannot read '{}': {e}", relative.display()))
+        }
+        Err(super::NotInside::NotAFile) => {
+            Err(format!("'{}' is not a regular file", relative.display()))
+        }
+        Err(super::NotInside::TooLarge) => Err(format!(
             "'{}' is larger than {} MiB",
             relative.display(),
             MAX_RESOURCE_BYTES >> 20
-        ));
+        )),
     }
-    Ok(path)
 }
 
 /// Decodes `%XX` escapes in a relative URI.

@@ -126,6 +126,39 @@ impl fmt::Display for FormatError {
 
 impl std::error::Error for FormatError {}
 
+/// Why a file a scene points to is not read ([`file_inside`]).
+#[derive(Debug)]
+pub(crate) enum NotInside {
+    /// It does not exist (or its path cannot be resolved).
+    Missing,
+    /// It resolves (through `..` or a link) to outside the folder.
+    Outside,
+    /// Its metadata cannot be read.
+    Unreadable(std::io::Error),
+    /// A folder, device or pipe.
+    NotAFile,
+    /// Larger than [`gltf::MAX_RESOURCE_BYTES`].
+    TooLarge,
+}
+
+/// Whether `path` is a regular file inside the folder `real_base` (canonical) of at most
+/// [`gltf::MAX_RESOURCE_BYTES`]: the one check for the files other files point to (glTF
+/// buffers and images, USD sublayers, references and payloads).
+pub(crate) fn file_inside(path: &Path, real_base: &Path) -> Result<(), NotInside> {
+    let real = path.canonicalize().map_err(|_| NotInside::Missing)?;
+    if !real.starts_with(real_base) {
+        return Err(NotInside::Outside);
+    }
+    let meta = std::fs::metadata(&real).map_err(NotInside::Unreadable)?;
+    if !meta.is_file() {
+        return Err(NotInside::NotAFile);
+    }
+    if meta.len() > gltf::MAX_RESOURCE_BYTES {
+        return Err(NotInside::TooLarge);
+    }
+    Ok(())
+}
+
 /// The formats Shenlong reads and writes.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Format {

@@ -31,8 +31,9 @@ use openusd::sdf::{self, Value};
 use openusd::usd::{Prim, Stage};
 use std::path::{Path, PathBuf};
 
-/// The largest USD file read, and the largest file a stage may pull in.
-pub const MAX_USD_BYTES: u64 = 1 << 30;
+/// The largest USD file read, and the largest file a stage may pull in: the limit of
+/// every file a scene points to.
+pub const MAX_USD_BYTES: u64 = super::gltf::MAX_RESOURCE_BYTES;
 
 /// The most objects a stage may give (as many as a glTF scene).
 const MAX_OBJECTS: usize = 1_000_000;
@@ -153,11 +154,7 @@ impl FolderResolver {
         let text = resolved.to_string_lossy();
         let outer = ar::split_package_relative_path_outer(&text)
             .map_or_else(|| text.to_string(), |(package, _)| package);
-        let Ok(real) = Path::new(&outer).canonicalize() else {
-            return false;
-        };
-        real.starts_with(&self.root)
-            && std::fs::metadata(&real).is_ok_and(|m| m.is_file() && m.len() <= MAX_USD_BYTES)
+        super::file_inside(Path::new(&outer), &self.root).is_ok()
     }
 }
 
