@@ -539,11 +539,7 @@ impl<'a> Reader<'a> {
             let mut near = self.g.index.one_edit_away(w);
             if swap_only {
                 // (Of colours only: a four-letter name swapped is too often another.)
-                near.retain(|c| {
-                    words::is_colour(c)
-                        && c.chars().count() == n
-                        && strsim::hamming(w, c).is_ok_and(|d| d == 2)
-                });
+                near.retain(|c| words::is_colour(c) && words::neighbours_swapped(w, c));
             }
             if let [one] = near.as_slice() {
                 self.typos[k] = Some(w.to_string());

@@ -709,6 +709,13 @@ pub(crate) fn is_place_noun(w: &str) -> bool {
     )
 }
 
+/// Whether `b` is `a` with two neighbouring letters swapped ("moev" for move, "bleu" for
+/// blue): the one typo both readers accept on four-letter words.
+#[must_use]
+pub(crate) fn neighbours_swapped(a: &str, b: &str) -> bool {
+    strsim::osa_distance(a, b) == 1 && strsim::hamming(a, b) == Ok(2)
+}
+
 /// Colour words, which must pick something when a phrase uses them.
 pub(crate) fn is_colour(w: &str) -> bool {
     matches!(

@@ -354,9 +354,7 @@ pub(crate) fn correct(w: &str) -> Option<&'static str> {
     let close = |k: &&&str| {
         let k: &str = k;
         if n == 4 {
-            k.chars().count() == 4
-                && strsim::osa_distance(w, k) == 1
-                && strsim::hamming(w, k) == Ok(2)
+            crate::ground::words::neighbours_swapped(w, k)
         } else {
             strsim::osa_distance(w, k) == 1
         }
