@@ -80,6 +80,28 @@ fn convex_hull(mut points: Vec<DVec2>) -> Vec<DVec2> {
     hull
 }
 
+/// Whether an object stands elsewhere in `after` than in `before`: by its pose (scene JSON),
+/// or by where its points are in the world (a glTF or USD file read again after the edit,
+/// whose objects' poses start at the identity each time they are read).
+fn moved_between(before: &crate::scene::Object, after: &crate::scene::Object) -> bool {
+    let (sa, sb) = (after.similarity(), before.similarity());
+    let pose = (sa.translation - sb.translation).length() > 1e-9
+        || sa.rotation.dot(sb.rotation).abs() < 1.0 - 1e-12
+        || (sa.scale - sb.scale).abs() > 1e-12;
+    let world = |o: &crate::scene::Object| -> Vec<glam::DVec3> {
+        let s = o.similarity();
+        o.local_points()
+            .into_iter()
+            .take(16)
+            .map(|p| s.translation + s.rotation * (p * s.scale))
+            .collect()
+    };
+    let (pa, pb) = (world(after), world(before));
+    let size = 1.0 + after.world_aabb().size().length();
+    pose || pa.len() != pb.len()
+        || pa.iter().zip(&pb).any(|(x, y)| (*x - *y).length() > 1e-9 * size)
+}
+
 /// The plan of `scene` as an SVG document; with `before`, the edit from `before` to
 /// `scene` is shown (the same objects, in the same order).
 pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
@@ -91,12 +113,7 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
             .objects
             .iter()
             .zip(&b.objects)
-            .map(|(a, b)| {
-                let (sa, sb) = (a.similarity(), b.similarity());
-                (sa.translation - sb.translation).length() > 1e-9
-                    || sa.rotation.dot(sb.rotation).abs() < 1.0 - 1e-12
-                    || (sa.scale - sb.scale).abs() > 1e-12
-            })
+            .map(|(a, b)| moved_between(b, a))
             .collect(),
         None => vec![false; scene.objects.len()],
     };

@@ -14,6 +14,8 @@ use std::path::PathBuf;
   shenlong apply examples/workshop.json --object 'tool table' --expr 'T(0.5 * e1)' -o moved.json
   shenlong apply examples/workshop.json --object chair --expr 'R(pi/2, e3, e1)' -o turned.json --tdw turn.tdw.json")]
 pub struct Args {
+    #[command(flatten)]
+    read: super::ReadArgs,
     /// The scene file (or example:NAME).
     scene: String,
     /// The object to transform.
@@ -37,7 +39,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let mut file = super::load_scene(&args.scene)?;
+    let mut file = super::load_scene_with(&args.scene, &args.read)?;
     let options = args.collisions.edit_options(!args.no_carry)?;
     // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
     let before = args.tdw.is_some().then(|| file.scene.clone());

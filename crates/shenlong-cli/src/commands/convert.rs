@@ -16,6 +16,8 @@ use std::path::{Path, PathBuf};
   shenlong convert model.glb model.json
   shenlong convert houses.jsonl house3.json --from procthor --assets asset-database.json --house 3")]
 pub struct Args {
+    #[command(flatten)]
+    read: super::ReadArgs,
     /// The input scene (or example:NAME).
     input: String,
     /// The output file; its extension chooses the format.
@@ -45,7 +47,7 @@ pub fn run(args: Args) -> Result<()> {
             if args.assets.is_some() {
                 bail!("--assets goes with --from procthor");
             }
-            super::load_scene(&args.input)?
+            super::load_scene_with(&args.input, &args.read)?
         }
     };
     file.save(&args.output)?;

@@ -24,6 +24,8 @@ Backends (--llm): offline (built in, no network), openai:MODEL (OPENAI_API_KEY,
 OPENAI_BASE_URL), ollama:MODEL (localhost:11434), replay:FILE (answers recorded with
 --record). See docs/llm.md.")]
 pub struct Args {
+    #[command(flatten)]
+    read: super::ReadArgs,
     /// The scene file (or example:NAME).
     scene: String,
     /// The instruction, with object names in quotes.
@@ -61,7 +63,7 @@ pub struct Args {
 pub fn run(args: Args) -> Result<()> {
     let system = System::from_name(&args.system).expect("clap checked the name");
     let settings = args.translator.settings(system)?;
-    let mut file = super::load_scene(&args.scene)?;
+    let mut file = super::load_scene_with(&args.scene, &args.read)?;
     let translator = translator(&args.translator.llm, &settings).map_err(super::llm_error)?;
     let options = EditOptions {
         carry: !args.no_carry,

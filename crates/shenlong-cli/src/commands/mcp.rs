@@ -22,6 +22,8 @@ Claude Desktop (claude_desktop_config.json):
 
 See docs/mcp.md.")]
 pub struct Args {
+    #[command(flatten)]
+    read: super::ReadArgs,
     /// The scene (a file or example:NAME).
     scene: String,
     /// The file the `save` tool writes (atomically); checked at start-up.
@@ -37,7 +39,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let file = super::load_scene(&args.scene)?;
+    let file = super::load_scene_with(&args.scene, &args.read)?;
     if let Some(save) = &args.save {
         super::serve::check_save(&file, save)?;
     }

@@ -15,8 +15,39 @@ use shenlong::format::SceneFile;
 use std::io::Write;
 use std::path::Path;
 
+/// How a glTF or USD file is read when its own conventions are missing or wrong.
+#[derive(clap::Args, Clone, Copy, Debug, Default)]
+pub struct ReadArgs {
+    /// The units a glTF or USD file is modelled in — mm, cm, m, in or ft — when its own
+    /// are missing or wrong (a CAD export in millimetres). Without it, a file whose
+    /// furniture is tens of metres across is refused, naming the units it looks modelled in.
+    #[arg(long, value_name = "UNITS")]
+    units: Option<shenlong::format::Units>,
+    /// The axis a glTF or USD file's models face, in the file's own frame: +x, -x, +y, -y,
+    /// +z or -z (default: +z for glTF and Y-up USD, -y for Z-up USD as Blender writes it).
+    /// A node's own `shenlong:front` wins.
+    #[arg(long, value_name = "AXIS", allow_hyphen_values = true)]
+    front: Option<shenlong::format::Axis>,
+}
+
+impl ReadArgs {
+    /// The library's options.
+    #[must_use]
+    pub fn options(&self) -> shenlong::format::ReadOptions {
+        shenlong::format::ReadOptions {
+            units: self.units,
+            front: self.front,
+        }
+    }
+}
+
 /// Loads a scene file, or a built-in example given as `example:NAME`.
 pub fn load_scene(spec: &str) -> Result<SceneFile> {
+    load_scene_with(spec, &ReadArgs::default())
+}
+
+/// Loads a scene file read as `read` says, or a built-in example given as `example:NAME`.
+pub fn load_scene_with(spec: &str, read: &ReadArgs) -> Result<SceneFile> {
     if let Some(name) = spec.strip_prefix("example:") {
         let scene = shenlong::examples::build(name)
             .with_context(|| format!("unknown example '{name}': `shenlong examples` lists them"))?;
@@ -26,7 +57,7 @@ pub fn load_scene(spec: &str) -> Result<SceneFile> {
             path: None,
         });
     }
-    Ok(SceneFile::load(Path::new(spec))?)
+    Ok(SceneFile::load_with(Path::new(spec), &read.options())?)
 }
 
 /// Writes an edited scene to `output` (format by extension) or, without one, to stdout in

@@ -13,6 +13,8 @@ use std::path::PathBuf;
   shenlong render examples/living_room.json -o living_room.png
   shenlong render edited.json --before examples/workshop.json -o edit.svg")]
 pub struct Args {
+    #[command(flatten)]
+    read: super::ReadArgs,
     /// The scene (or example:NAME).
     scene: String,
     /// The picture to write: .svg or .png.
@@ -24,11 +26,11 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let scene = super::load_scene(&args.scene)?.scene;
+    let scene = super::load_scene_with(&args.scene, &args.read)?.scene;
     let before = args
         .before
         .as_deref()
-        .map(super::load_scene)
+        .map(|b| super::load_scene_with(b, &args.read))
         .transpose()?
         .map(|f| f.scene);
     if let Some(before) = &before {

@@ -20,6 +20,8 @@ Then open the address in a browser. API: GET /api/scene, POST /api/edit
 {\"instruction\"}, POST /api/undo, POST /api/redo, GET /api/history,
 GET /api/export?format=json|glb|gltf|usda|tdw, POST /api/apply {\"object\", \"expr\"}.")]
 pub struct Args {
+    #[command(flatten)]
+    read: super::ReadArgs,
     /// The scene (a file or example:NAME).
     scene: String,
     /// Address to listen on.
@@ -42,7 +44,7 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let file = super::load_scene(&args.scene)?;
+    let file = super::load_scene_with(&args.scene, &args.read)?;
     if let Some(save) = &args.save {
         check_save(&file, save)?;
     }

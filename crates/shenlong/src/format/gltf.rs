@@ -17,9 +17,8 @@
 //! no file makes it panic.
 
 use super::FormatError;
-use crate::scene::{Labels, Object, Pivot, Scene, Shape, MAX_COORDINATE};
+use crate::scene::{Labels, Scene, MAX_COORDINATE};
 use base64::Engine;
-use cga::Similarity;
 use glam::{DMat4, DQuat, DVec3};
 use serde_json::Value;
 use std::collections::HashSet;
@@ -52,6 +51,8 @@ pub struct GltfDocument {
     order: Vec<usize>,
     /// Nodes targeted by animations: these must stay TRS.
     animated: HashSet<usize>,
+    /// Metres per unit of the file (1 unless read with other units).
+    meters_per_unit: f64,
 }
 
 #[derive(Clone, Debug)]
@@ -114,19 +115,33 @@ impl GltfDocument {
 }
 
 /// Reads a `.gltf` or `.glb` file.
-pub fn read(path: &Path) -> Result<(Scene, GltfDocument), FormatError> {
+pub fn read(
+    path: &Path,
+    options: &super::facts::ReadOptions,
+) -> Result<(Scene, GltfDocument), FormatError> {
     let bytes = std::fs::read(path)
         .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
     let base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
-    read_bytes(bytes, &base_dir, stem)
+    read_bytes_with(bytes, &base_dir, stem, options)
 }
 
-/// Reads glTF from bytes; `base_dir` resolves external resources.
+/// Reads glTF from bytes with the default [`ReadOptions`](super::facts::ReadOptions);
+/// `base_dir` resolves external resources.
 pub fn read_bytes(
     bytes: Vec<u8>,
     base_dir: &Path,
     name: &str,
+) -> Result<(Scene, GltfDocument), FormatError> {
+    read_bytes_with(bytes, base_dir, name, &super::facts::ReadOptions::default())
+}
+
+/// Reads glTF from bytes; `base_dir` resolves external resources.
+pub fn read_bytes_with(
+    bytes: Vec<u8>,
+    base_dir: &Path,
+    name: &str,
+    options: &super::facts::ReadOptions,
 ) -> Result<(Scene, GltfDocument), FormatError> {
     let is_glb = bytes.starts_with(b"glTF");
     let (json_bytes, bin) = if is_glb {
@@ -226,88 +241,39 @@ pub fn read_bytes(
         }
     }
 
-    let mut scene = Scene::new(name);
-    let mut object_nodes = Vec::new();
-    let mut names = HashSet::new();
+    let unit = options.units.map_or(1.0, super::facts::Units::meters);
+    let to_metres = DMat4::from_scale(DVec3::splat(unit));
+    let mut tree = super::facts::Tree::default();
+    let mut tree_index = vec![usize::MAX; count];
     for &index in &order {
         let node = &all_nodes[index];
-        let Some(mesh) = node.mesh() else { continue };
-        let world = nodes[index].world;
-        let mut points = Vec::new();
-        let mut seen = HashSet::new();
-        for primitive in mesh.primitives() {
-            let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
-            if let Some(positions) = reader.read_positions() {
-                for p in positions {
-                    if seen.insert(p.map(f32::to_bits)) {
-                        let local = DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64);
-                        points.push(world.transform_point3(local));
-                    }
-                }
-            }
-        }
-        let has_positions = mesh
-            .primitives()
-            .any(|p| p.get(&::gltf::Semantic::Positions).is_some());
-        let label = node.name().map(|n| format!(" ('{n}')")).unwrap_or_default();
-        if points.iter().any(|p| !p.is_finite()) || (points.is_empty() && has_positions) {
-            return Err(FormatError::new(format!(
-                "nodes[{index}]{label}: its mesh's vertex positions cannot be read (a missing or short buffer, or numbers that are not finite)"
-            )));
-        }
-        // A node transform (or vertex) that puts the mesh beyond the scene limits would
-        // leave every later edit inexact; refuse it here, with the node named.
-        if let Some(far) = points
-            .iter()
-            .map(|p| p.abs().max_element())
-            .find(|&d| d > MAX_COORDINATE)
-        {
-            return Err(FormatError::new(format!(
-                "nodes[{index}]{label}: its mesh lies {far:.3e} m from the origin, beyond the ±{MAX_COORDINATE:.0e} m Shenlong keeps exact (check the node's transform and its parents')"
-            )));
-        }
-        if points.is_empty() {
-            continue;
-        }
-        let base = match node.name() {
-            Some(n) if !n.trim().is_empty() => n.trim().to_string(),
-            _ => format!("node {index}"),
+        let world = to_metres * nodes[index].world;
+        let points = match node.mesh() {
+            Some(mesh) => mesh_points(node, &mesh, &buffers, world)?,
+            None => Vec::new(),
         };
-        let name = if names.contains(&base.to_lowercase()) {
-            format!("{base} (node {index})")
-        } else {
-            base
-        };
-        names.insert(name.to_lowercase());
-        let object = Object::new(
-            name,
-            Shape::Points { points },
-            Similarity::IDENTITY,
-            Pivot::BottomCenter,
-        )
-        .expect("the identity pose is valid");
-        let mut object = object;
-        object.labels = labels_of(node, &mesh);
-        scene.objects.push(object);
-        object_nodes.push(index);
+        tree_index[index] = tree.nodes.len();
+        tree.nodes.push(super::facts::Node {
+            name: node.name().unwrap_or_default().to_string(),
+            parent: nodes[index].parent.map(|p| tree_index[p]),
+            world,
+            points,
+            transformable: true,
+            model: false,
+            given_name: None,
+            labels: node.mesh().map_or_else(Labels::default, |m| labels_of(node, &m)),
+            front: json_nodes
+                .and_then(|n| n.get(index))
+                .and_then(extras_front),
+            fallback: match node.name() {
+                Some(n) if !n.trim().is_empty() => format!("{} (node {index})", n.trim()),
+                _ => format!("node {index}"),
+            },
+        });
     }
-    // Mesh nodes nested under a mesh node rest on it: the nearest object above each node,
-    // found parents first in one pass.
-    let mut object_of = vec![None; count];
-    for (i, &node) in object_nodes.iter().enumerate() {
-        object_of[node] = Some(i);
-    }
-    let mut object_above: Vec<Option<usize>> = vec![None; count];
-    for &index in &order {
-        object_above[index] = nodes[index]
-            .parent
-            .and_then(|p| object_of[p].or(object_above[p]));
-        if let (Some(i), Some(j)) = (object_of[index], object_above[index]) {
-            scene.objects[i].support = Some(j);
-            scene.objects[i].support_from_file = true;
-        }
-    }
-    scene.detect_supports();
+    let derived = super::facts::derive(&tree, name, DVec3::Z, options)?;
+    let scene = derived.scene;
+    let object_nodes: Vec<usize> = derived.nodes.iter().map(|&t| order[t]).collect();
 
     let animated = document
         .animations()
@@ -335,8 +301,63 @@ pub fn read_bytes(
             object_nodes,
             order,
             animated,
+            meters_per_unit: unit,
         },
     ))
+}
+
+/// A mesh node's vertex positions, each once, placed by `world`; refused when they cannot
+/// be read or lie beyond the limits.
+fn mesh_points(
+    node: &::gltf::Node<'_>,
+    mesh: &::gltf::Mesh<'_>,
+    buffers: &[Vec<u8>],
+    world: DMat4,
+) -> Result<Vec<DVec3>, FormatError> {
+    let index = node.index();
+    let mut points = Vec::new();
+    let mut seen = HashSet::new();
+    for primitive in mesh.primitives() {
+        let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
+        if let Some(positions) = reader.read_positions() {
+            for p in positions {
+                if seen.insert(p.map(f32::to_bits)) {
+                    let local = DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64);
+                    points.push(world.transform_point3(local));
+                }
+            }
+        }
+    }
+    let has_positions = mesh
+        .primitives()
+        .any(|p| p.get(&::gltf::Semantic::Positions).is_some());
+    let label = node.name().map(|n| format!(" ('{n}')")).unwrap_or_default();
+    if points.iter().any(|p| !p.is_finite()) || (points.is_empty() && has_positions) {
+        return Err(FormatError::new(format!(
+            "nodes[{index}]{label}: its mesh's vertex positions cannot be read (a missing or short buffer, or numbers that are not finite)"
+        )));
+    }
+    // A node transform (or vertex) that puts the mesh beyond the scene limits would
+    // leave every later edit inexact; refuse it here, with the node named.
+    if let Some(far) = points
+        .iter()
+        .map(|p| p.abs().max_element())
+        .find(|&d| d > MAX_COORDINATE)
+    {
+        return Err(FormatError::new(format!(
+            "nodes[{index}]{label}: its mesh lies {far:.3e} m from the origin, beyond the ±{MAX_COORDINATE:.0e} m Shenlong keeps exact (check the node's transform and its parents')"
+        )));
+    }
+    Ok(points)
+}
+
+/// A node's own front (`extras: {"shenlong:front": [x, y, z]}`), in its own axes.
+fn extras_front(node: &Value) -> Option<DVec3> {
+    let v = node.get("extras")?.get("shenlong:front")?.as_array()?;
+    let xyz: Vec<f64> = v.iter().filter_map(Value::as_f64).collect();
+    (xyz.len() == 3)
+        .then(|| DVec3::from_slice(&xyz))
+        .filter(|d| d.is_finite() && d.length() > 0.0)
 }
 
 /// What a mesh node is called besides its name: its mesh's name as the category (glTF
@@ -833,8 +854,10 @@ fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, 
     // New world matrices: each object node moves by its pose; other nodes keep their
     // local transform and so follow their parent.
     let mut deltas = vec![None; document.nodes.len()];
+    let c = DMat4::from_scale(DVec3::splat(document.meters_per_unit));
+    let c_inv = c.inverse();
     for (object, &node) in scene.objects.iter().zip(&document.object_nodes) {
-        deltas[node] = super::transform::world_motion(object);
+        deltas[node] = super::transform::world_motion(object).map(|m| c_inv * m * c);
     }
     if deltas.iter().all(Option::is_none) {
         return Ok(None);
@@ -968,7 +991,7 @@ mod uri_tests {
         ] {
             let path = inner.join("t.gltf");
             std::fs::write(&path, gltf_with_buffer(uri)).unwrap();
-            let e = read(&path).unwrap_err();
+            let e = read(&path, &crate::format::ReadOptions::default()).unwrap_err();
             assert!(
                 e.message.contains("outside the glTF file's folder"),
                 "{uri}: {}",
@@ -986,7 +1009,7 @@ mod uri_tests {
             std::os::unix::fs::symlink("/dev/zero", inner.join("zero.bin")).unwrap();
             let path = inner.join("t.gltf");
             std::fs::write(&path, gltf_with_buffer("zero.bin")).unwrap();
-            let e = read(&path).unwrap_err();
+            let e = read(&path, &crate::format::ReadOptions::default()).unwrap_err();
             assert!(
                 e.message.contains("outside") || e.message.contains("not a regular file"),
                 "{}",
@@ -1001,7 +1024,7 @@ mod uri_tests {
         std::fs::write(inner.join("ok.bin"), &bytes).unwrap();
         let path = inner.join("ok.gltf");
         std::fs::write(&path, gltf_with_buffer("ok.bin")).unwrap();
-        assert_eq!(read(&path).unwrap().0.objects.len(), 1);
+        assert_eq!(read(&path, &crate::format::ReadOptions::default()).unwrap().0.objects.len(), 1);
     }
 }
 

@@ -10,6 +10,7 @@
 //! [`SceneFile`] pairs a scene with the document it came from, so that writing changes
 //! only what the edit changed.
 
+pub mod facts;
 pub mod gltf;
 pub mod json;
 pub mod pretty;
@@ -19,6 +20,8 @@ pub mod tdw;
 mod transform;
 #[cfg(feature = "usd")]
 pub mod usd;
+
+pub use facts::{Axis, ReadOptions, Units};
 
 use crate::scene::Scene;
 use std::fmt;
@@ -240,7 +243,27 @@ pub struct SceneFile {
 impl SceneFile {
     /// Reads a scene file, choosing the format by extension.
     pub fn load(path: &Path) -> Result<Self, FormatError> {
+        Self::load_with(path, &ReadOptions::default())
+    }
+
+    /// Reads a scene file, choosing the format by extension, with the units and front
+    /// axis a glTF or USD file is to be read with.
+    ///
+    /// # Errors
+    /// As [`SceneFile::load`]; and options given for a format that takes none (scene JSON
+    /// is in metres and says its fronts).
+    pub fn load_with(path: &Path, options: &ReadOptions) -> Result<Self, FormatError> {
         let format = Format::from_path(path)?;
+        let node_based = matches!(
+            format,
+            Format::Gltf | Format::Glb | Format::Usda | Format::Usdc | Format::Usdz
+        );
+        if !node_based && (options.units.is_some() || options.front.is_some()) {
+            return Err(FormatError::new(format!(
+                "{}: units and a front axis are given for glTF and USD files only (scene JSON is in metres and names its fronts)",
+                path.display()
+            )));
+        }
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         match format {
             Format::SceneJson => {
@@ -273,7 +296,8 @@ impl SceneFile {
                 path.display()
             ))),
             Format::Gltf | Format::Glb => {
-                let (scene, document) = gltf::read(path).map_err(|e| e.in_file(path))?;
+                let (scene, document) =
+                    gltf::read(path, options).map_err(|e| e.in_file(path))?;
                 Ok(Self {
                     scene,
                     document: Document::Gltf(Box::new(document)),
@@ -282,7 +306,8 @@ impl SceneFile {
             }
             #[cfg(feature = "usd")]
             Format::Usda | Format::Usdc | Format::Usdz => {
-                let (scene, document) = usd::read(path).map_err(|e| e.in_file(path))?;
+                let (scene, document) =
+                    usd::read(path, options).map_err(|e| e.in_file(path))?;
                 Ok(Self {
                     scene,
                     document: Document::Usd(Box::new(document)),
@@ -334,6 +359,12 @@ impl SceneFile {
 
     /// The scene in the given format, as bytes.
     pub fn to_bytes(&self, format: Format) -> Result<Vec<u8>, FormatError> {
+        self.bytes_for(format, None)
+    }
+
+    /// The scene in the given format, as bytes to be written in the folder `target`
+    /// (a USD stage's relative asset paths are made to resolve from there).
+    fn bytes_for(&self, format: Format, target: Option<&Path>) -> Result<Vec<u8>, FormatError> {
         match format {
             Format::SceneJson => {
                 let original = match &self.document {
@@ -366,13 +397,13 @@ impl SceneFile {
                 }
                 gltf::write(&self.scene, document)
             }
-            Format::Usda | Format::Usdc | Format::Usdz => self.usd_bytes(format),
+            Format::Usda | Format::Usdc | Format::Usdz => self.usd_bytes(format, target),
         }
     }
 
     /// The edited stage in a USD container.
     #[cfg(feature = "usd")]
-    fn usd_bytes(&self, format: Format) -> Result<Vec<u8>, FormatError> {
+    fn usd_bytes(&self, format: Format, target: Option<&Path>) -> Result<Vec<u8>, FormatError> {
         let Document::Usd(document) = &self.document else {
             // A scene from elsewhere: a new stage of boxes.
             return match format {
@@ -387,11 +418,11 @@ impl SceneFile {
             Format::Usdc => usd::UsdContainer::Usdc,
             _ => usd::UsdContainer::Usdz,
         };
-        usd::write(&self.scene, document, container)
+        usd::write(&self.scene, document, container, target)
     }
 
     #[cfg(not(feature = "usd"))]
-    fn usd_bytes(&self, _format: Format) -> Result<Vec<u8>, FormatError> {
+    fn usd_bytes(&self, _format: Format, _target: Option<&Path>) -> Result<Vec<u8>, FormatError> {
         Err(FormatError::new(
             "this build of Shenlong writes no USD (built without the `usd` feature)",
         ))
@@ -441,7 +472,18 @@ impl SceneFile {
                 return resources::write_all(&copies, path, &bytes);
             }
         }
-        let bytes = self.to_bytes(format)?;
+        let folder = match path.parent() {
+            Some(p) if !p.as_os_str().is_empty() => p,
+            _ => Path::new("."),
+        };
+        if !folder.is_dir() {
+            return Err(FormatError::new(format!(
+                "cannot write {}: the folder {} does not exist",
+                path.display(),
+                folder.display()
+            )));
+        }
+        let bytes = self.bytes_for(format, Some(folder))?;
         crate::io::write_atomic(path, &bytes)
             .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
     }

@@ -24,7 +24,7 @@
 //!   [`super::MAX_JSON_DEPTH`] levels and any file over [`MAX_USD_BYTES`] are refused.
 
 use super::FormatError;
-use crate::scene::{Object, Pivot, Scene, Shape};
+use crate::scene::{Scene, Shape};
 use glam::{DMat4, DQuat, DVec3};
 use openusd::ar::{self, Asset, DefaultResolver, ResolvedPath, Resolver};
 use openusd::sdf::{self, Value};
@@ -35,8 +35,8 @@ use std::path::{Path, PathBuf};
 /// every file a scene points to.
 pub const MAX_USD_BYTES: u64 = super::gltf::MAX_RESOURCE_BYTES;
 
-/// The most objects a stage may give (as many as a glTF scene).
-const MAX_OBJECTS: usize = 1_000_000;
+/// The most prims a stage's walk visits.
+const MAX_PRIMS: usize = 4_000_000;
 
 /// Which way is up in a stage.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -105,8 +105,10 @@ pub struct UsdDocument {
     pub source: PathBuf,
     /// Its container.
     pub container: UsdContainer,
-    /// Its frame.
+    /// The frame it is read in (its `metersPerUnit` replaced by the units the run gave).
     pub frame: StageFrame,
+    /// The stage's own `metersPerUnit` (written on a layer over it).
+    pub authored_meters_per_unit: f64,
     /// Its default prim, if set.
     pub default_prim: Option<String>,
     /// The objects, in the scene's order.
@@ -560,12 +562,13 @@ fn geometry_points(prim: &Prim, type_name: &str) -> Vec<DVec3> {
     }
 }
 
-/// A prim and its local-to-world transform, for the walk.
+/// A prim and its parent's place in the tree, for the walk.
 struct Visit {
     prim: Prim,
-    world: DMat4,
-    /// The object (index) this prim belongs to, if any.
-    object: Option<usize>,
+    /// Its parent's local-to-world transform (stage units).
+    parent_world: DMat4,
+    /// Its parent's index in the tree.
+    parent: Option<usize>,
 }
 
 /// Whether a prim is a model of kind `component` (or a kind derived from it).
@@ -576,49 +579,78 @@ fn is_component(prim: &Prim) -> bool {
         .is_some_and(|k| k.as_str() == "component")
 }
 
-/// Reads a stage as a scene: objects with their world boxes in Shenlong's frame.
+/// What the writer needs of each prim of the tree.
+struct PrimInfo {
+    path: String,
+    world: DMat4,
+    parent_world: DMat4,
+}
+
+/// Reads a stage as a scene: objects with their world boxes in Shenlong's frame, chosen,
+/// named and put in their room by the step every node-based format shares
+/// ([`super::facts`]).
 ///
 /// # Errors
 /// A file that is no USD stage Shenlong can read, nests too deep or is too large; a
 /// stage whose `upAxis` or `metersPerUnit` is unusable; one with no object.
-pub fn read(path: &Path) -> Result<(Scene, UsdDocument), FormatError> {
+pub fn read(
+    path: &Path,
+    options: &super::facts::ReadOptions,
+) -> Result<(Scene, UsdDocument), FormatError> {
     let container = container_of(path)?;
     let Opened { stage, uses_kinds } = open_stage(path)?;
-    let frame = frame_of(&stage)?;
+    let authored = frame_of(&stage)?;
+    let frame = StageFrame {
+        meters_per_unit: options
+            .units
+            .map_or(authored.meters_per_unit, super::facts::Units::meters),
+        ..authored
+    };
     let default_prim = stage.default_prim().map(|t| t.as_str().to_string());
-    let root = match &default_prim {
-        Some(name) => stage.prim(format!("/{name}").as_str()),
-        None => stage.prim(sdf::Path::abs_root()),
-    };
     let to_shenlong = frame.to_shenlong();
-    let mut objects: Vec<UsdObject> = Vec::new();
-    let mut points: Vec<Vec<DVec3>> = Vec::new();
-    // Parents before children, on an explicit stack: no recursion however deep.
-    let mut stack: Vec<Visit> = Vec::new();
-    let start_world = if default_prim.is_some() {
-        world_of(&stage, &root)?
-    } else {
-        DMat4::IDENTITY
-    };
+    let mut tree = super::facts::Tree::default();
+    let mut prims: Vec<PrimInfo> = Vec::new();
+    // Parents before children, on an explicit stack: no recursion however deep. The walk
+    // starts at the default prim (a group such as `/World` is recognised as one), else at
+    // the root's children.
     let children = |p: &Prim| -> Result<Vec<Prim>, FormatError> {
         p.children()
             .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))
     };
-    for child in children(&root)?.into_iter().rev() {
-        stack.push(Visit {
-            prim: child,
-            world: start_world,
-            object: None,
-        });
-    }
+    let mut stack: Vec<Visit> = match &default_prim {
+        Some(name) => {
+            let root = stage.prim(format!("/{name}").as_str());
+            let parent_world = match root.path().parent() {
+                Some(p) if p != sdf::Path::abs_root() => world_of(&stage, &stage.prim(p))?,
+                _ => DMat4::IDENTITY,
+            };
+            vec![Visit {
+                prim: root,
+                parent_world,
+                parent: None,
+            }]
+        }
+        None => children(&stage.prim(sdf::Path::abs_root()))?
+            .into_iter()
+            .rev()
+            .map(|prim| Visit {
+                prim,
+                parent_world: DMat4::IDENTITY,
+                parent: None,
+            })
+            .collect(),
+    };
     while let Some(Visit {
         prim,
-        world: parent_world,
-        object,
+        parent_world,
+        parent,
     }) = stack.pop()
     {
         if !prim.is_active().unwrap_or(true) {
             continue;
+        }
+        if tree.nodes.len() >= MAX_PRIMS {
+            return Err(err(format!("more than {MAX_PRIMS} prims")));
         }
         let (local, resets) = local_transform(&prim)?;
         let parent_world = if resets {
@@ -633,49 +665,79 @@ pub fn read(path: &Path) -> Result<(Scene, UsdDocument), FormatError> {
             .flatten()
             .map(|t| t.as_str().to_string())
             .unwrap_or_default();
-        let starts_object = if uses_kinds {
-            is_component(&prim)
+        let shenlong = to_shenlong * world;
+        let points = if matches!(type_name.as_str(), "Xform" | "Scope" | "") {
+            Vec::new()
         } else {
-            object.is_none() && is_transformable(&type_name)
+            geometry_points(&prim, &type_name)
+                .into_iter()
+                .map(|p| shenlong.transform_point3(p))
+                .collect()
         };
-        let object = if starts_object {
-            if objects.len() >= MAX_OBJECTS {
-                return Err(err(format!("more than {MAX_OBJECTS} objects")));
-            }
-            objects.push(UsdObject {
-                path: prim.path().to_string(),
-                world,
-                parent_world,
-                ancestor: object,
-                name: match attr(&prim, "shenlong:name") {
-                    Some(Value::String(n)) if !n.trim().is_empty() => Some(n),
-                    _ => None,
-                },
-            });
-            points.push(Vec::new());
-            Some(objects.len() - 1)
-        } else {
-            object
-        };
-        if let Some(o) = object {
-            if !matches!(type_name.as_str(), "Xform" | "Scope" | "") {
-                let shenlong = to_shenlong * world;
-                points[o].extend(
-                    geometry_points(&prim, &type_name)
-                        .into_iter()
-                        .map(|p| shenlong.transform_point3(p)),
-                );
-            }
-        }
+        let path_text = prim.path().to_string();
+        let index = tree.nodes.len();
+        tree.nodes.push(super::facts::Node {
+            name: path_text.rsplit('/').next().unwrap_or_default().to_string(),
+            parent,
+            world: shenlong,
+            points,
+            transformable: is_transformable(&type_name),
+            model: uses_kinds && is_component(&prim),
+            given_name: match attr(&prim, "shenlong:name") {
+                Some(Value::String(n)) if !n.trim().is_empty() => Some(n),
+                _ => None,
+            },
+            labels: crate::scene::Labels::default(),
+            front: attr(&prim, "shenlong:front")
+                .and_then(|v| vec3(&v))
+                .filter(|d| d.is_finite() && d.length() > 0.0),
+            fallback: path_text.clone(),
+        });
+        prims.push(PrimInfo {
+            path: path_text,
+            world,
+            parent_world,
+        });
         for child in children(&prim)?.into_iter().rev() {
             stack.push(Visit {
                 prim: child,
-                world,
-                object,
+                parent_world: world,
+                parent: Some(index),
             });
         }
     }
-    scene_of(path, container, frame, default_prim, objects, points)
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
+    let front = match frame.up {
+        UpAxis::Y => DVec3::Z,
+        UpAxis::Z => DVec3::NEG_Y,
+    };
+    let derived = super::facts::derive(&tree, stem, front, options)?;
+    if derived.scene.objects.is_empty() {
+        return Err(err(
+            "no object: no prim with geometry under the default prim (or the root)",
+        ));
+    }
+    let objects = derived
+        .nodes
+        .iter()
+        .zip(&derived.ancestors)
+        .map(|(&n, &ancestor)| UsdObject {
+            path: prims[n].path.clone(),
+            world: prims[n].world,
+            parent_world: prims[n].parent_world,
+            ancestor,
+            name: tree.nodes[n].given_name.clone(),
+        })
+        .collect();
+    let document = UsdDocument {
+        source: path.to_path_buf(),
+        container,
+        frame,
+        authored_meters_per_unit: authored.meters_per_unit,
+        default_prim,
+        objects,
+    };
+    Ok((derived.scene, document))
 }
 
 /// Whether a prim of this type can carry a transform (an object's root).
@@ -717,87 +779,6 @@ fn world_of(stage: &Stage, prim: &Prim) -> Result<DMat4, FormatError> {
         world = if resets { local } else { world * local };
     }
     Ok(world)
-}
-
-/// The scene of the objects found: each with its points, its name its prim's.
-fn scene_of(
-    path: &Path,
-    container: UsdContainer,
-    frame: StageFrame,
-    default_prim: Option<String>,
-    objects: Vec<UsdObject>,
-    points: Vec<Vec<DVec3>>,
-) -> Result<(Scene, UsdDocument), FormatError> {
-    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
-    let mut scene = Scene::new(stem);
-    let mut kept: Vec<UsdObject> = Vec::new();
-    // Names taken so far, compared as the scene compares them (case-insensitively): one
-    // hash look-up per object, not a scan of the scene.
-    let mut taken: rustc_hash::FxHashSet<String> = rustc_hash::FxHashSet::default();
-    for (object, pts) in objects.into_iter().zip(points) {
-        if pts.is_empty() || pts.iter().any(|p| !p.is_finite()) {
-            continue;
-        }
-        let leaf = object.name.clone().unwrap_or_else(|| {
-            object
-                .path
-                .rsplit('/')
-                .next()
-                .unwrap_or_default()
-                .to_string()
-        });
-        let name = if taken.contains(&leaf.to_lowercase()) {
-            object.path.clone()
-        } else {
-            leaf
-        };
-        taken.insert(name.to_lowercase());
-        let o = Object::new(
-            name,
-            Shape::Points { points: pts },
-            cga::Similarity::IDENTITY,
-            Pivot::BottomCenter,
-        )
-        .map_err(|e| err(format!("{}: {e}", object.path)))?;
-        scene.objects.push(o);
-        kept.push(object);
-    }
-    if scene.objects.is_empty() {
-        return Err(err(
-            "no object: no prim with geometry under the default prim (or the root)",
-        ));
-    }
-    // Ancestors are indices among all the objects found; map them to the kept ones.
-    let document = UsdDocument {
-        source: path.to_path_buf(),
-        container,
-        frame,
-        default_prim,
-        objects: reindex(kept),
-    };
-    Ok((scene, document))
-}
-
-/// Each object's nearest object ancestor, found again among the kept objects by path:
-/// each path's parents looked up in a map (the cost of the depth, not of the scene).
-fn reindex(mut objects: Vec<UsdObject>) -> Vec<UsdObject> {
-    let by_path: rustc_hash::FxHashMap<String, usize> = objects
-        .iter()
-        .enumerate()
-        .map(|(k, o)| (o.path.clone(), k))
-        .collect();
-    for o in &mut objects {
-        let mut path = o.path.clone();
-        o.ancestor = None;
-        while let Some((parent, _)) = path.rsplit_once('/') {
-            if let Some(&k) = by_path.get(parent) {
-                o.ancestor = Some(k);
-                break;
-            }
-            path = parent.to_string();
-        }
-    }
-    objects
 }
 
 /// The new local transform of each object that moved (stage units, column vectors).
@@ -880,66 +861,110 @@ fn ops_for(local: DMat4) -> Vec<(String, &'static str, Value)> {
     }
 }
 
-/// The edited stage's root layer in `container` (`.usda` text or `.usdc`): the edited
-/// prims' new op stacks authored on it, everything else as it was. An unchanged `.usda`
-/// written as `.usda` gives the original bytes.
+/// The edited stage in `container`, to be written in the folder `target` (when known):
+/// for a `.usda` source, its root layer's text with only the edited prims' transform lines
+/// changed ([`patch`]) and, written in another folder, its relative asset paths made to
+/// resolve from there; for a `.usdc` or `.usdz` source, a `.usda` layer over it
+/// ([`write_layer`]). `.usdc` is not written. An unchanged stage written in its own
+/// container and folder is the same bytes.
 ///
 /// # Errors
-/// The stage cannot be read again, an op cannot be authored, or the layer not written.
+/// `.usdc` or `.usdz` asked for, or the source cannot be read again.
 pub fn write(
     scene: &Scene,
     document: &UsdDocument,
     container: UsdContainer,
+    target: Option<&Path>,
 ) -> Result<Vec<u8>, FormatError> {
     let locals = new_locals(scene, document)?;
-    if locals.iter().all(Option::is_none) && container == document.container {
+    let source_folder = match document.source.parent() {
+        Some(p) if !p.as_os_str().is_empty() => p,
+        _ => Path::new("."),
+    };
+    let same_folder = target.is_none_or(|t| same_dir(t, source_folder));
+    if locals.iter().all(Option::is_none) && container == document.container && same_folder {
         return std::fs::read(&document.source)
             .map_err(|e| err(format!("cannot read the source again: {e}")));
     }
-    let id = match container {
-        UsdContainer::Usda => "usda",
-        UsdContainer::Usdc => "usdc",
-        UsdContainer::Usdz => {
-            return Err(err(
-                "writing .usdz is not supported: write the edit to a .usda or .usdc file",
-            ))
-        }
-    };
-    let stage = open_stage(&document.source)?.stage;
-    for (object, local) in document.objects.iter().zip(&locals) {
-        let Some(local) = local else { continue };
-        author(&stage, &object.path, *local)?;
+    if container != UsdContainer::Usda {
+        return Err(err(
+            "Shenlong writes USD edits as .usda text: write the edit to a .usda file (or as a layer over the stage with --usd-layer)",
+        ));
     }
-    let format =
-        sdf::LayerRegistry::find_by_id(id).ok_or_else(|| err(format!("no {id} writer")))?;
-    let mut buf = std::io::Cursor::new(Vec::new());
-    format
-        .write(stage.root_layer().data(), &mut buf)
-        .map_err(|e| err(one_line(&format!("cannot write the stage: {e:#}"))))?;
-    Ok(buf.into_inner())
+    if document.container != UsdContainer::Usda {
+        let sublayer = match target {
+            Some(t) => sublayer_in(&document.source, t)?,
+            None => document
+                .source
+                .canonicalize()
+                .map_err(|e| err(format!("cannot find the source: {e}")))?
+                .to_string_lossy()
+                .into_owned(),
+        };
+        return write_layer(scene, document, &sublayer);
+    }
+    let text = std::fs::read_to_string(&document.source)
+        .map_err(|e| err(format!("cannot read the source again: {e}")))?;
+    let edits: Vec<(String, patch::Ops)> = document
+        .objects
+        .iter()
+        .zip(&locals)
+        .filter_map(|(o, l)| l.map(|l| (o.path.clone(), ops_text(&ops_for(l)))))
+        .collect();
+    let from = source_folder
+        .canonicalize()
+        .map_err(|e| err(format!("cannot find the stage's folder: {e}")))?;
+    let to = match target {
+        Some(t) if !same_folder => Some(
+            t.canonicalize()
+                .map_err(|e| err(format!("cannot find the folder {}: {e}", t.display())))?,
+        ),
+        _ => None,
+    };
+    let relocate = to
+        .as_ref()
+        .map(|to| move |p: &str| patch::relocated(p, &from, to));
+    let relocate_ref: Option<&dyn Fn(&str) -> Option<String>> = relocate
+        .as_ref()
+        .map(|f| f as &dyn Fn(&str) -> Option<String>);
+    patch::patch(&text, &edits, relocate_ref).map(String::into_bytes)
 }
 
-/// Authors a prim's new local transform on the stage's edit target (its root layer).
-fn author(stage: &Stage, path: &str, local: DMat4) -> Result<(), FormatError> {
-    let prim = stage.prim(path);
-    let ops = ops_for(local);
-    for (name, type_name, value) in &ops {
-        prim.create_attribute(name.as_str(), *type_name)
-            .and_then(|a| a.set_custom(false))
-            .and_then(|a| a.set(value.clone()))
-            .map_err(|e| err(one_line(&format!("{path}: cannot author {name}: {e}"))))?;
-    }
-    let order: Vec<openusd::tf::Token> = ops.iter().map(|(n, _, _)| n.as_str().into()).collect();
-    prim.create_attribute("xformOpOrder", "token[]")
-        .and_then(|a| a.set_custom(false))
-        .and_then(|a| a.set_variability(sdf::Variability::Uniform))
-        .and_then(|a| a.set(Value::TokenVec(order)))
-        .map_err(|e| {
-            err(one_line(&format!(
-                "{path}: cannot author xformOpOrder: {e}"
-            )))
-        })?;
-    Ok(())
+/// Whether two folders are the same one.
+fn same_dir(a: &Path, b: &Path) -> bool {
+    let norm = |p: &Path| {
+        let p = if p.as_os_str().is_empty() {
+            Path::new(".")
+        } else {
+            p
+        };
+        p.canonicalize().ok()
+    };
+    matches!((norm(a), norm(b)), (Some(x), Some(y)) if x == y)
+}
+
+/// How a layer written in the folder `folder` names its source: relative when it can be.
+fn sublayer_in(source: &Path, folder: &Path) -> Result<String, FormatError> {
+    let real = source
+        .canonicalize()
+        .map_err(|e| err(format!("cannot find {}: {e}", source.display())))?;
+    let from = real.parent().unwrap_or(Path::new("/"));
+    let name = real
+        .file_name()
+        .and_then(|n| n.to_str())
+        .ok_or_else(|| err("the source's name is not text"))?;
+    let folder = folder
+        .canonicalize()
+        .map_err(|e| err(format!("cannot find the folder {}: {e}", folder.display())))?;
+    Ok(patch::relocated(name, from, &folder)
+        .unwrap_or_else(|| real.to_string_lossy().into_owned()))
+}
+
+/// The ops as usda statements: (name, type, value text).
+fn ops_text(ops: &[(String, &'static str, Value)]) -> patch::Ops {
+    ops.iter()
+        .map(|(n, t, v)| (n.clone(), *t, usda_value(v)))
+        .collect()
 }
 
 /// The edit as a `.usda` layer that sublayers the input (by `sublayer`, the path written
@@ -961,7 +986,7 @@ pub fn write_layer(
     }
     text.push_str(&format!(
         "    metersPerUnit = {}\n",
-        number(document.frame.meters_per_unit)
+        number(document.authored_meters_per_unit)
     ));
     text.push_str(&format!(
         "    subLayers = [\n        @{}@\n    ]\n",
@@ -1163,16 +1188,43 @@ fn number(x: f64) -> String {
     s.strip_suffix(".0").map_or(s.clone(), str::to_string)
 }
 
+/// A computed number as short as it can be written while within `1e-12 × scale` of it
+/// (so rounding noise such as `-1.8369701987210297e-16` or `0.30000000000000004` does not
+/// reach the file): 0 below that, else the fewest significant digits that stay within.
+fn clean(x: f64, scale: f64) -> String {
+    let tolerance = 1e-12 * scale.abs().max(x.abs()).max(f64::MIN_POSITIVE);
+    if x.abs() <= tolerance {
+        return "0".to_string();
+    }
+    for digits in 1..=17 {
+        let text = format!("{x:.*e}", digits - 1);
+        if let Ok(y) = text.parse::<f64>() {
+            if (y - x).abs() <= tolerance {
+                return number(y);
+            }
+        }
+    }
+    number(x)
+}
+
 /// An op's value as usda text.
 fn usda_value(v: &Value) -> String {
     match v {
-        Value::Vec3d(a) => format!("({}, {}, {})", number(a.x), number(a.y), number(a.z)),
+        Value::Vec3d(a) => {
+            let scale = a.x.abs().max(a.y.abs()).max(a.z.abs()).max(1.0);
+            format!(
+                "({}, {}, {})",
+                clean(a.x, scale),
+                clean(a.y, scale),
+                clean(a.z, scale)
+            )
+        }
         Value::Quatd(q) => format!(
             "({}, {}, {}, {})",
-            number(q.w),
-            number(q.x),
-            number(q.y),
-            number(q.z)
+            clean(q.w, 1.0),
+            clean(q.x, 1.0),
+            clean(q.y, 1.0),
+            clean(q.z, 1.0)
         ),
         Value::Matrix4d(m) => {
             let rows: Vec<String> =
@@ -1193,5 +1245,6 @@ fn usda_value(v: &Value) -> String {
     }
 }
 
+mod patch;
 #[cfg(test)]
 mod tests;

@@ -1,6 +1,7 @@
 //! USD stages read and written: frames, op stacks, geometry, the layer, limits.
 
 use super::*;
+use crate::format::ReadOptions;
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let p = dir.join(name);
@@ -54,7 +55,7 @@ def Xform "World"
 fn a_z_up_centimetre_stage_reads_as_y_up_metres() {
     let dir = tempfile::tempdir().unwrap();
     let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
-    let (scene, document) = read(&path).unwrap();
+    let (scene, document) = read(&path, &ReadOptions::default()).unwrap();
     assert_eq!(document.frame.up, UpAxis::Z);
     assert_eq!(document.default_prim.as_deref(), Some("World"));
     let names: Vec<&str> = scene.objects.iter().map(|o| o.name.as_str()).collect();
@@ -82,7 +83,7 @@ fn a_z_up_centimetre_stage_reads_as_y_up_metres() {
 fn an_edit_changes_only_the_moved_prims_op_stack() {
     let dir = tempfile::tempdir().unwrap();
     let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
-    let (mut scene, document) = read(&path).unwrap();
+    let (mut scene, document) = read(&path, &ReadOptions::default()).unwrap();
     // Unchanged: the original bytes.
     assert_eq!(
         super::write(&scene, &document, UsdContainer::Usda).unwrap(),
@@ -93,7 +94,7 @@ fn an_edit_changes_only_the_moved_prims_op_stack() {
     scene.apply(1, &m, false).unwrap();
     let bytes = super::write(&scene, &document, UsdContainer::Usda).unwrap();
     let out = write(dir.path(), "out.usda", std::str::from_utf8(&bytes).unwrap());
-    let (again, _) = read(&out).unwrap();
+    let (again, _) = read(&out, &ReadOptions::default()).unwrap();
     let before = scene.objects[1].world_aabb();
     let after = again.objects[1].world_aabb();
     assert!(
@@ -113,7 +114,7 @@ fn an_edit_changes_only_the_moved_prims_op_stack() {
 fn the_layer_holds_only_overs_of_what_moved() {
     let dir = tempfile::tempdir().unwrap();
     let path = write(dir.path(), "room.usda", ROOM_Z_UP_CM);
-    let (mut scene, document) = read(&path).unwrap();
+    let (mut scene, document) = read(&path, &ReadOptions::default()).unwrap();
     scene
         .apply(
             0,
@@ -129,7 +130,7 @@ fn the_layer_holds_only_overs_of_what_moved() {
     assert!(text.contains("over \"Table\""), "{text}");
     assert!(!text.contains("Shelf"), "{text}");
     std::fs::write(&layer, &bytes).unwrap();
-    let (composed, _) = read(&layer).unwrap();
+    let (composed, _) = read(&layer, &ReadOptions::default()).unwrap();
     let moved = composed.objects[0].world_aabb();
     assert!((moved.min.x - (0.6 - 1.0)).abs() < 1e-9, "{moved:?}");
     // Never over its own source.
@@ -147,7 +148,7 @@ fn references_out_of_the_folder_and_deep_nesting_are_refused() {
         "room.usda",
         "#usda 1.0\n(\n    subLayers = [@../secret.usda@]\n)\n",
     );
-    let e = read(&escaping).map(|_| ()).unwrap_err().to_string();
+    let e = read(&escaping, &ReadOptions::default()).map(|_| ()).unwrap_err().to_string();
     assert!(
         e.contains("secret.usda' is outside the stage's folder"),
         "{e}"
@@ -160,11 +161,11 @@ fn references_out_of_the_folder_and_deep_nesting_are_refused() {
             dir.path().join("secret.usda").display()
         ),
     );
-    let e = read(&absolute).map(|_| ()).unwrap_err().to_string();
+    let e = read(&absolute, &ReadOptions::default()).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("is outside the stage's folder"), "{e}");
     let deep = format!("#usda 1.0\n{}", "(".repeat(200));
     let deep = write(dir.path(), "deep.usda", &deep);
-    let e = read(&deep).map(|_| ()).unwrap_err().to_string();
+    let e = read(&deep, &ReadOptions::default()).map(|_| ()).unwrap_err().to_string();
     assert!(e.contains("nesting deeper than"), "{e}");
 }
 
@@ -190,7 +191,7 @@ fn a_scene_from_elsewhere_is_written_as_a_new_stage_and_read_back() {
     let dir = tempfile::tempdir().unwrap();
     let path = dir.path().join("lr.usda");
     std::fs::write(&path, write_new(&scene)).unwrap();
-    let (again, document) = read(&path).unwrap();
+    let (again, document) = read(&path, &ReadOptions::default()).unwrap();
     assert_eq!(document.frame.up, UpAxis::Y);
     assert_eq!(again.objects.len(), scene.objects.len());
     for (a, b) in scene.objects.iter().zip(&again.objects) {

@@ -1,0 +1,677 @@
+//! Editing a `.usda` root layer as text: the file is kept byte for byte except the edited
+//! prims' transform lines, as scene JSON is written.
+//!
+//! The layer is scanned once ([`Outline::scan`]) into where each prim spec's body is
+//! (`def`, `over` and `class` blocks, outside variant sets) and where its properties'
+//! statements are. An edit then, for each moved prim:
+//! - replaces its `xformOpOrder` (or adds one) and the `xformOp:…:shenlong` ops an earlier
+//!   edit wrote, or adds them at the top of its body;
+//! - where the prim has no spec in this layer (it comes from a sublayer or a reference),
+//!   adds an `over` for it inside its nearest ancestor's spec, or at the end of the file.
+//!
+//! Asset paths (`@./set.usda@`) are rewritten when the layer is written to another folder,
+//! so that its sublayers, references and payloads still resolve from there.
+
+use super::super::FormatError;
+use std::collections::HashMap;
+use std::path::{Component, Path, PathBuf};
+
+/// Where a prim spec's body is in the text.
+#[derive(Clone, Debug)]
+struct PrimSpec {
+    /// The byte just after its `{`.
+    open: usize,
+    /// The byte of its `}`.
+    close: usize,
+    /// The indentation of its statements.
+    indent: String,
+    /// Its property statements: (name, start byte of the line, end byte after its newline).
+    properties: Vec<(String, usize, usize)>,
+}
+
+/// A scanned layer: each prim spec by path, and each asset path's span.
+#[derive(Debug, Default)]
+pub(super) struct Outline {
+    prims: HashMap<String, PrimSpec>,
+    /// The spans of asset paths, the `@`s included.
+    assets: Vec<(usize, usize)>,
+}
+
+/// The lexical states the scanner passes through.
+struct Lexer<'a> {
+    text: &'a [u8],
+    pos: usize,
+}
+
+/// One token of a layer: what matters for its outline.
+#[derive(Debug, PartialEq)]
+enum Token {
+    /// `{ ( [`
+    Open(u8),
+    /// `} ) ]`
+    Close(u8),
+    /// A quoted string, unescaped.
+    Str(String),
+    /// A bare word (identifier, keyword, number, namespaced name).
+    Word(String),
+    /// An asset path, by its span.
+    Asset(usize, usize),
+    /// `=` and other punctuation.
+    Punct(u8),
+    /// The end of a line.
+    Newline,
+}
+
+impl<'a> Lexer<'a> {
+    /// The next token and where it starts; `None` at the end.
+    fn next(&mut self) -> Result<Option<(usize, Token)>, FormatError> {
+        let t = self.text;
+        while self.pos < t.len() {
+            let c = t[self.pos];
+            let start = self.pos;
+            match c {
+                b'\n' => {
+                    self.pos += 1;
+                    return Ok(Some((start, Token::Newline)));
+                }
+                b' ' | b'\t' | b'\r' => self.pos += 1,
+                b'#' => {
+                    while self.pos < t.len() && t[self.pos] != b'\n' {
+                        self.pos += 1;
+                    }
+                }
+                b'{' | b'(' | b'[' => {
+                    self.pos += 1;
+                    return Ok(Some((start, Token::Open(c))));
+                }
+                b'}' | b')' | b']' => {
+                    self.pos += 1;
+                    return Ok(Some((start, Token::Close(c))));
+                }
+                b'"' | b'\'' => return self.string(c).map(|s| Some((start, Token::Str(s)))),
+                b'@' => {
+                    let triple = t[self.pos..].starts_with(b"@@@");
+                    let end = if triple {
+                        find(t, self.pos + 3, b"@@@").map(|e| e + 3)
+                    } else {
+                        find(t, self.pos + 1, b"@").map(|e| e + 1)
+                    };
+                    let end = end.ok_or_else(|| unclosed(t, start, "asset path"))?;
+                    self.pos = end;
+                    return Ok(Some((start, Token::Asset(start, end))));
+                }
+                b'<' => {
+                    let end = find(t, self.pos + 1, b">").ok_or_else(|| unclosed(t, start, "path"))?;
+                    self.pos = end + 1;
+                    return Ok(Some((start, Token::Punct(b'<'))));
+                }
+                c if c.is_ascii_alphanumeric() || c == b'_' || c == b'-' || c == b'.' || c >= 0x80 => {
+                    while self.pos < t.len() {
+                        let d = t[self.pos];
+                        if d.is_ascii_alphanumeric()
+                            || matches!(d, b'_' | b'-' | b'.' | b':' | b'+')
+                            || d >= 0x80
+                        {
+                            self.pos += 1;
+                        } else {
+                            break;
+                        }
+                    }
+                    let word = String::from_utf8_lossy(&t[start..self.pos]).into_owned();
+                    return Ok(Some((start, Token::Word(word))));
+                }
+                _ => {
+                    self.pos += 1;
+                    return Ok(Some((start, Token::Punct(c))));
+                }
+            }
+        }
+        Ok(None)
+    }
+
+    /// A quoted string (single, double or triple quotes), unescaped.
+    fn string(&mut self, quote: u8) -> Result<String, FormatError> {
+        let t = self.text;
+        let start = self.pos;
+        let triple = t[self.pos..].starts_with(&[quote, quote, quote]);
+        self.pos += if triple { 3 } else { 1 };
+        let mut out = Vec::new();
+        while self.pos < t.len() {
+            let c = t[self.pos];
+            if c == b'\\' && self.pos + 1 < t.len() {
+                out.push(t[self.pos + 1]);
+                self.pos += 2;
+                continue;
+            }
+            if c == quote && (!triple || t[self.pos..].starts_with(&[quote, quote, quote])) {
+                self.pos += if triple { 3 } else { 1 };
+                return Ok(String::from_utf8_lossy(&out).into_owned());
+            }
+            if c == b'\n' && !triple {
+                break;
+            }
+            out.push(c);
+            self.pos += 1;
+        }
+        Err(unclosed(t, start, "string"))
+    }
+}
+
+fn find(t: &[u8], from: usize, needle: &[u8]) -> Option<usize> {
+    t.get(from..)?
+        .windows(needle.len())
+        .position(|w| w == needle)
+        .map(|p| p + from)
+}
+
+fn line_of(t: &[u8], at: usize) -> usize {
+    t[..at.min(t.len())].iter().filter(|&&c| c == b'\n').count() + 1
+}
+
+fn unclosed(t: &[u8], at: usize, what: &str) -> FormatError {
+    FormatError::new(format!("an unclosed {what} at line {}", line_of(t, at)))
+}
+
+/// What a block on the scanner's stack is.
+#[derive(Clone, Debug)]
+enum Block {
+    /// A prim's body: its path.
+    Prim(String),
+    /// Brackets, parentheses, dictionaries, time samples, variant sets (whose prims are
+    /// at no plain path).
+    Other,
+}
+
+impl Outline {
+    /// Scans a layer's text.
+    ///
+    /// # Errors
+    /// Unbalanced brackets or an unclosed string, saying where.
+    pub(super) fn scan(text: &str) -> Result<Self, FormatError> {
+        let t = text.as_bytes();
+        let mut lexer = Lexer { text: t, pos: 0 };
+        let mut outline = Outline::default();
+        // Blocks open: (kind, opening byte, the bracket).
+        let mut stack: Vec<(Block, u8)> = Vec::new();
+        // The statement being read at the current prim level: its tokens' words.
+        let mut statement: Vec<Token> = Vec::new();
+        let mut statement_start: Option<usize> = None;
+        // A prim header seen, waiting for its `{`: its path.
+        let mut pending: Option<String> = None;
+        let mut open_prims: Vec<(String, usize)> = Vec::new();
+        while let Some((at, token)) = lexer.next()? {
+            let depth_other = stack.iter().any(|(b, _)| matches!(b, Block::Other));
+            match token {
+                Token::Asset(a, b) => {
+                    outline.assets.push((a, b));
+                    if !depth_other {
+                        statement.push(Token::Asset(a, b));
+                    }
+                }
+                Token::Open(c) => {
+                    if c == b'{' && !depth_other && pending.is_some() {
+                        let path = pending.take().unwrap_or_default();
+                        open_prims.push((path.clone(), at + 1));
+                        stack.push((Block::Prim(path), c));
+                        statement.clear();
+                        statement_start = None;
+                    } else {
+                        if statement_start.is_none() {
+                            statement_start = Some(at);
+                        }
+                        stack.push((Block::Other, c));
+                    }
+                    if stack.len() > super::super::MAX_JSON_DEPTH * 4 {
+                        return Err(FormatError::new(format!(
+                            "nesting too deep at line {}",
+                            line_of(t, at)
+                        )));
+                    }
+                }
+                Token::Close(c) => {
+                    let Some((block, _)) = stack.pop() else {
+                        return Err(FormatError::new(format!(
+                            "an unmatched '{}' at line {}",
+                            c as char,
+                            line_of(t, at)
+                        )));
+                    };
+                    if let Block::Prim(path) = block {
+                        let (_, open) = open_prims.pop().unwrap_or_default();
+                        let indent = indent_of(t, open, at);
+                        outline.prims.insert(
+                            path,
+                            PrimSpec {
+                                open,
+                                close: at,
+                                indent,
+                                properties: Vec::new(),
+                            },
+                        );
+                        statement.clear();
+                        statement_start = None;
+                    }
+                }
+                Token::Newline => {
+                    if !depth_other {
+                        outline.end_statement(&stack, &statement, statement_start, at, t);
+                        if let Some(path) = prim_header(&stack, &statement) {
+                            pending = Some(path);
+                        }
+                        statement.clear();
+                        statement_start = None;
+                    }
+                }
+                other => {
+                    if !depth_other {
+                        if statement_start.is_none() {
+                            statement_start = Some(at);
+                        }
+                        // A header may be followed by `{` on the same line.
+                        statement.push(other);
+                        if let Some(path) = prim_header(&stack, &statement) {
+                            pending = Some(path);
+                        }
+                    }
+                }
+            }
+        }
+        if let Some((_, open)) = stack.last() {
+            return Err(FormatError::new(format!(
+                "an unclosed '{}' at the end of the layer",
+                *open as char
+            )));
+        }
+        Ok(outline)
+    }
+
+    /// Records a property statement that just ended at `end` (a newline) in its prim.
+    fn end_statement(
+        &mut self,
+        stack: &[(Block, u8)],
+        statement: &[Token],
+        start: Option<usize>,
+        end: usize,
+        t: &[u8],
+    ) {
+        let (Some(start), Some((Block::Prim(path), _))) = (start, stack.last()) else {
+            return;
+        };
+        let Some(name) = property_name(statement) else {
+            return;
+        };
+        let line_start = t[..start]
+            .iter()
+            .rposition(|&c| c == b'\n')
+            .map_or(0, |p| p + 1);
+        // The prim's spec is recorded when it closes; keep the properties aside by path.
+        self.prims
+            .entry(format!("\u{0}{path}"))
+            .or_insert_with(|| PrimSpec {
+                open: 0,
+                close: 0,
+                indent: String::new(),
+                properties: Vec::new(),
+            })
+            .properties
+            .push((name, line_start, end + 1));
+    }
+
+    /// The spec of a prim, with its properties.
+    fn prim(&self, path: &str) -> Option<PrimSpec> {
+        let mut spec = self.prims.get(path)?.clone();
+        if let Some(props) = self.prims.get(&format!("\u{0}{path}")) {
+            spec.properties.clone_from(&props.properties);
+        }
+        Some(spec)
+    }
+}
+
+/// The indentation of a body's statements: the first statement line's, else its `}`'s
+/// plus four spaces.
+fn indent_of(t: &[u8], open: usize, close: usize) -> String {
+    let body = &t[open..close];
+    for line in body.split(|&c| c == b'\n').skip(1) {
+        let trimmed = line.iter().position(|&c| c != b' ' && c != b'\t');
+        if let Some(k) = trimmed {
+            if !matches!(line[k], b'}' | b'#') {
+                return String::from_utf8_lossy(&line[..k]).into_owned();
+            }
+        }
+    }
+    let line_start = t[..close]
+        .iter()
+        .rposition(|&c| c == b'\n')
+        .map_or(0, |p| p + 1);
+    let closing: String = t[line_start..close]
+        .iter()
+        .take_while(|&&c| c == b' ' || c == b'\t')
+        .map(|&c| c as char)
+        .collect();
+    format!("{closing}    ")
+}
+
+/// The path of a prim whose header `statement` is (`def Xform "Chair"`, `over "World"`),
+/// under the prim whose body is on top of `stack`.
+fn prim_header(stack: &[(Block, u8)], statement: &[Token]) -> Option<String> {
+    let parent = match stack.last() {
+        None => String::new(),
+        Some((Block::Prim(p), _)) => p.clone(),
+        Some(_) => return None,
+    };
+    let Some(Token::Word(first)) = statement.first() else {
+        return None;
+    };
+    if !matches!(first.as_str(), "def" | "over" | "class") {
+        return None;
+    }
+    let name = statement.iter().skip(1).take(2).find_map(|t| match t {
+        Token::Str(s) => Some(s.clone()),
+        _ => None,
+    })?;
+    Some(format!("{parent}/{name}"))
+}
+
+/// The name of the property a statement declares (`uniform token[] xformOpOrder = …`,
+/// `double3 xformOp:translate:shenlong = …`, `rel material:binding = …`).
+fn property_name(statement: &[Token]) -> Option<String> {
+    let words: Vec<&str> = statement
+        .iter()
+        .map_while(|t| match t {
+            Token::Word(w) => Some(w.as_str()),
+            Token::Punct(b'[') | Token::Open(b'[') => Some("[]"),
+            Token::Close(b']') => Some(""),
+            _ => None,
+        })
+        .filter(|w| !w.is_empty() && *w != "[]")
+        .collect();
+    if matches!(words.first(), Some(&("def" | "over" | "class" | "variantSet"))) {
+        return None;
+    }
+    words.last().map(|w| {
+        w.trim_end_matches(".timeSamples")
+            .trim_end_matches(".connect")
+            .to_string()
+    })
+}
+
+/// One prim's new ops: (name, USD type, value as text), in order.
+pub(super) type Ops = Vec<(String, &'static str, String)>;
+
+/// Whether a property is one this edit replaces: the order, or an op an earlier edit of
+/// Shenlong's wrote.
+fn replaced(name: &str) -> bool {
+    name == "xformOpOrder" || (name.starts_with("xformOp:") && name.ends_with(":shenlong"))
+}
+
+/// The layer's text with each prim's new ops (`edits`, by path), and its relative asset
+/// paths rewritten by `relocate` when it is given.
+///
+/// # Errors
+/// The text cannot be scanned.
+pub(super) fn patch(
+    text: &str,
+    edits: &[(String, Ops)],
+    relocate: Option<&dyn Fn(&str) -> Option<String>>,
+) -> Result<String, FormatError> {
+    let outline = Outline::scan(text)?;
+    // Replacements: (start, end, new text), applied back to front.
+    let mut changes: Vec<(usize, usize, String)> = Vec::new();
+    let mut appended: Vec<(String, Ops)> = Vec::new();
+    for (path, ops) in edits {
+        let Some(spec) = outline.prim(path) else {
+            appended.push((path.clone(), ops.clone()));
+            continue;
+        };
+        let lines = op_lines(ops, &spec.indent);
+        let mut inserted = false;
+        for (name, start, end) in &spec.properties {
+            if !replaced(name) {
+                continue;
+            }
+            let new = if inserted { String::new() } else { lines.clone() };
+            inserted = true;
+            changes.push((*start, *end, new));
+        }
+        if !inserted {
+            let at = line_after(text.as_bytes(), spec.open);
+            if text[spec.open..at].trim().is_empty() {
+                changes.push((at, at, lines));
+            } else {
+                // Something follows the `{` on its line: the ops go right after it.
+                changes.push((spec.open, spec.open, format!("\n{lines}")));
+            }
+        }
+    }
+    // Prims with no spec here: an `over` inside the nearest ancestor's spec.
+    let mut overs: HashMap<Option<String>, Vec<(String, Ops)>> = HashMap::new();
+    for (path, ops) in appended {
+        let mut ancestor = None;
+        let mut p = path.as_str();
+        while let Some((parent, _)) = p.rsplit_once('/') {
+            if parent.is_empty() {
+                break;
+            }
+            if outline.prims.contains_key(parent) {
+                ancestor = Some(parent.to_string());
+                break;
+            }
+            p = parent;
+        }
+        overs.entry(ancestor).or_default().push((path, ops));
+    }
+    for (ancestor, list) in overs {
+        let (at, indent, base) = match &ancestor {
+            Some(a) => {
+                let spec = outline.prim(a).unwrap_or_else(|| PrimSpec {
+                    open: text.len(),
+                    close: text.len(),
+                    indent: String::new(),
+                    properties: Vec::new(),
+                });
+                let at = text[..spec.close].rfind('\n').map_or(spec.close, |p| p + 1);
+                (at, spec.indent, a.clone())
+            }
+            None => (text.len(), String::new(), String::new()),
+        };
+        let mut block = String::new();
+        if ancestor.is_none() && !text.ends_with('\n') {
+            block.push('\n');
+        }
+        for (path, ops) in list {
+            let rest = path.strip_prefix(&base).unwrap_or(&path);
+            block.push_str(&over_chain(rest, &indent, &ops));
+        }
+        changes.push((at, at, block));
+    }
+    if let Some(relocate) = relocate {
+        for &(a, b) in &outline.assets {
+            let inner = &text[a..b];
+            let (open, path) = if inner.starts_with("@@@") {
+                ("@@@", &inner[3..inner.len().saturating_sub(3)])
+            } else {
+                ("@", &inner[1..inner.len().saturating_sub(1)])
+            };
+            if let Some(new) = relocate(path) {
+                changes.push((a, b, format!("{open}{new}{open}")));
+            }
+        }
+    }
+    changes.sort_by_key(|c| (c.0, c.1));
+    let mut out = String::with_capacity(text.len() + 256);
+    let mut cursor = 0;
+    for (start, end, new) in changes {
+        if start < cursor {
+            continue;
+        }
+        out.push_str(&text[cursor..start]);
+        out.push_str(&new);
+        cursor = end;
+    }
+    out.push_str(&text[cursor..]);
+    Ok(out)
+}
+
+/// The byte after the line that holds `at` (where a body's first statement goes).
+fn line_after(t: &[u8], at: usize) -> usize {
+    t[at..]
+        .iter()
+        .position(|&c| c == b'\n')
+        .map_or(t.len(), |p| at + p + 1)
+}
+
+/// The ops' statements and their order, each on its own line at `indent`.
+fn op_lines(ops: &Ops, indent: &str) -> String {
+    let mut s = String::new();
+    for (name, type_name, value) in ops {
+        s.push_str(&format!("{indent}{type_name} {name} = {value}\n"));
+    }
+    let order: Vec<String> = ops.iter().map(|(n, _, _)| format!("\"{n}\"")).collect();
+    s.push_str(&format!(
+        "{indent}uniform token[] xformOpOrder = [{}]\n",
+        order.join(", ")
+    ));
+    s
+}
+
+/// Nested `over`s down a relative path (`/Furniture/Chair`), the last holding the ops.
+fn over_chain(relative: &str, indent: &str, ops: &Ops) -> String {
+    let names: Vec<&str> = relative.split('/').filter(|s| !s.is_empty()).collect();
+    let mut s = String::from("\n");
+    for (k, name) in names.iter().enumerate() {
+        let pad = format!("{indent}{}", "    ".repeat(k));
+        s.push_str(&format!("{pad}over \"{}\"\n{pad}{{\n", super::escape(name)));
+    }
+    s.push_str(&op_lines(
+        ops,
+        &format!("{indent}{}", "    ".repeat(names.len())),
+    ));
+    for k in (0..names.len()).rev() {
+        s.push_str(&format!("{indent}{}}}\n", "    ".repeat(k)));
+    }
+    s
+}
+
+/// How an asset path of a layer in `from` is written for the same layer in `to`: a
+/// relative path (`./x`, `../x`, `x`) made relative to `to` (with `./` or `../`), when the
+/// file it names exists; absolute paths, URLs and paths that name nothing are kept.
+#[must_use]
+pub(super) fn relocated(path: &str, from: &Path, to: &Path) -> Option<String> {
+    if path.is_empty() || path.contains("://") || Path::new(path).is_absolute() {
+        return None;
+    }
+    // A path into a package (`a.usdz[b.usda]`) relocates by its package.
+    let (outer, inner) = match path.find('[') {
+        Some(k) => (&path[..k], &path[k..]),
+        None => (path, ""),
+    };
+    let target = from.join(outer).canonicalize().ok()?;
+    let rel = relative(to, &target)?;
+    Some(format!("{rel}{inner}"))
+}
+
+/// `target` relative to the folder `base` (both canonical), as `./a/b` or `../a/b`.
+fn relative(base: &Path, target: &Path) -> Option<String> {
+    let b: Vec<Component<'_>> = base.components().collect();
+    let t: Vec<Component<'_>> = target.components().collect();
+    let common = b.iter().zip(&t).take_while(|(x, y)| x == y).count();
+    if common == 0 {
+        return None;
+    }
+    let mut out = PathBuf::new();
+    for _ in common..b.len() {
+        out.push("..");
+    }
+    for c in &t[common..] {
+        out.push(c.as_os_str());
+    }
+    let s = out.to_str()?.replace('\\', "/");
+    Some(if s.starts_with("..") {
+        s
+    } else {
+        format!("./{s}")
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const LAYER: &str = r#"#usda 1.0
+(
+    defaultPrim = "World"
+    doc = """it's a "doc" { with braces"""
+)
+
+def Xform "World"
+{
+    def Xform "Chair" (
+        prepend apiSchemas = ["MaterialBindingAPI"]
+    )
+    {
+        double3 xformOp:translate = (1, 0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+        rel material:binding = </World/Looks/Wood>
+        # a comment with a { brace
+    }
+
+    variantSet "look" = {
+        "red" {
+            def Xform "Chair" {}
+        }
+    }
+}
+"#;
+
+    fn ops() -> Ops {
+        vec![(
+            "xformOp:translate:shenlong".to_string(),
+            "double3",
+            "(2, 0, 0)".to_string(),
+        )]
+    }
+
+    #[test]
+    fn only_the_edited_prims_lines_change() {
+        let out = patch(LAYER, &[("/World/Chair".into(), ops())], None).unwrap();
+        let removed: Vec<&str> = LAYER.lines().filter(|l| !out.contains(l)).collect();
+        assert_eq!(
+            removed,
+            ["        uniform token[] xformOpOrder = [\"xformOp:translate\"]"]
+        );
+        assert!(out.contains(
+            "        double3 xformOp:translate:shenlong = (2, 0, 0)\n        uniform token[] xformOpOrder = [\"xformOp:translate:shenlong\"]\n        rel material:binding"
+        ));
+        // Edited again: the earlier ops are replaced, not repeated.
+        let again = patch(&out, &[("/World/Chair".into(), ops())], None).unwrap();
+        assert_eq!(again, out);
+    }
+
+    #[test]
+    fn a_prim_from_another_layer_gets_an_over() {
+        let out = patch(LAYER, &[("/World/Table/Top".into(), ops())], None).unwrap();
+        assert!(out.contains("    over \"Table\"\n    {\n        over \"Top\"\n        {\n            double3 xformOp:translate:shenlong"), "{out}");
+        let out = patch(LAYER, &[("/Other".into(), ops())], None).unwrap();
+        assert!(out.ends_with("over \"Other\"\n{\n    double3 xformOp:translate:shenlong = (2, 0, 0)\n    uniform token[] xformOpOrder = [\"xformOp:translate:shenlong\"]\n}\n"), "{out}");
+    }
+
+    #[test]
+    fn unbalanced_text_is_refused_with_where() {
+        let e = Outline::scan("#usda 1.0\ndef \"A\" {\n").unwrap_err();
+        assert!(e.message.contains("unclosed '{'"), "{}", e.message);
+        let e = Outline::scan("#usda 1.0\ndef \"A\" {}\n}\n").unwrap_err();
+        assert!(e.message.contains("line 3"), "{}", e.message);
+    }
+
+    #[test]
+    fn relative_paths() {
+        assert_eq!(
+            relative(Path::new("/a/b"), Path::new("/a/c/d.usda")).as_deref(),
+            Some("../c/d.usda")
+        );
+        assert_eq!(
+            relative(Path::new("/a"), Path::new("/a/c/d.usda")).as_deref(),
+            Some("./c/d.usda")
+        );
+    }
+}
