@@ -267,15 +267,15 @@ class BlenderRoom(Base):
         self.usd_moved_by(self.before, after, "/root/Sofa", (50, 0, 0), self.CM)
         self.usd_unchanged(self.before, after, BLENDER_OBJECTS, except_={"/root/Sofa"})
 
-    def test_move_sofa_right_written_as_usdc(self):
+    def test_usdc_output_is_refused_and_writes_nothing(self):
+        # Shenlong writes USD edits as .usda text (the only writer that keeps every stage
+        # openable in usd-core); a .usdc output is refused in one line naming .usda.
         out = self.out("edited.usdc")
-        self.edit(self.scene, "move the couch half a metre to the right", out)
-        with open(out, "rb") as f:
-            self.assertEqual(f.read(8), b"PXR-USDC", "a .usdc output is a crate file")
-        after = open_stage(out)
-        self.assertEqual(UsdGeom.GetStageUpAxis(after), UsdGeom.Tokens.z)
-        self.usd_moved_by(self.before, after, "/root/Sofa", (50, 0, 0), self.CM)
-        self.usd_unchanged(self.before, after, BLENDER_OBJECTS, except_={"/root/Sofa"})
+        r = shenlong("edit", self.scene, "move the couch half a metre to the right", "-o", out)
+        self.assertNotEqual(r.returncode, 0)
+        self.assertFalse(os.path.exists(out), "a refusal writes nothing")
+        self.assertEqual(len(r.stderr.strip().splitlines()), 1, r.stderr)
+        self.assertIn(".usda", r.stderr)
 
     def test_output_in_another_folder_keeps_materials_bound(self):
         after = self.run_edit("move the sofa 50 cm to the right", sub="elsewhere/deeper")
@@ -488,8 +488,8 @@ class OmniverseProps(Base):
         self.assertLessEqual(penetration(vase, wbox(after, "/World/Props/Book")), 1e-3, "not into the book")
         self.usd_unchanged(self.before, after, OMNI_OBJECTS, except_={"/World/Props/Vase"})
 
-    def test_usdc_to_another_folder(self):
-        after = self.run_edit("move the chair 20 cm to the right", name="props_edit.usdc", sub="out/usdc")
+    def test_usda_to_another_folder(self):
+        after = self.run_edit("move the chair 20 cm to the right", name="props_edit.usda", sub="out/usda")
         self.assertEqual(UsdGeom.GetStageUpAxis(after), UsdGeom.Tokens.y)
         self.assertEqual(after.GetDefaultPrim().GetPath(), Sdf.Path("/World"))
         self.usd_moved_by(self.before, after, "/World/Furniture/Chair", (0.2, 0, 0), self.M)
@@ -548,11 +548,12 @@ class LayeredShot(Base):
         self.edit(self.scene, "move the table 30 cm back", out)
         self.check_composes(open_stage(out), "/World/Table", (0, 0, -0.3))
 
-    def test_usdc_beside_the_shot(self):
+    def test_layer_beside_the_shot(self):
+        # --usd-layer: a layer of overs over the shot, written beside it.
         work = os.path.join(self.dir, "layered")
         shutil.copytree(src("layered"), work)
-        out = os.path.join(work, "shot_lamp.usdc")
-        self.edit(os.path.join(work, "shot.usda"), "move the lamp 1 m to the right", out)
+        out = os.path.join(work, "shot_lamp.usda")
+        self.edit(os.path.join(work, "shot.usda"), "move the lamp 1 m to the right", out, "--usd-layer")
         self.check_composes(open_stage(out), "/World/Lamp", (1, 0, 0))
 
 

@@ -16,7 +16,8 @@
 //!    are objects resting on it. Where the file uses model kinds, its components are the
 //!    objects.
 //! 2. **Names** are the nodes' names; objects that share one are told apart by their group
-//!    (`Chair (GroupA)`, `Chair (GroupB)`), so that "the chair" is refused naming both.
+//!    (`Chair in GroupA`, also `GroupA Chair`; `Chair in GroupB`), so that "the chair" is
+//!    refused naming both.
 //! 3. **The room.** Floors, walls and ceilings — by name in the common languages of
 //!    exports, or by shape (a large thin slab under everything, tall thin slabs at the
 //!    boundary) — are not objects: they give the scene its bounds.
@@ -286,7 +287,7 @@ fn has_word(name: &str, list: &[&str]) -> bool {
     words(name).iter().any(|w| list.contains(&w.as_str()))
 }
 
-/// Whether a name says nothing of what the thing is.
+/// Whether a name says nothing of what the thing is (an empty name says nothing).
 fn generic(name: &str) -> bool {
     words(name)
         .iter()
@@ -367,8 +368,9 @@ fn finish(
         check_units(&scene)?;
     }
     let names = names(tree, &nodes);
-    for (o, name) in scene.objects.iter_mut().zip(names) {
+    for (o, (name, alias)) in scene.objects.iter_mut().zip(names) {
         o.name = name;
+        o.labels.aliases.extend(alias);
     }
     scene.bounds = bounds;
     // The object each object is nested under: the nearest owner that is still an object.
@@ -482,10 +484,20 @@ fn union(a: &Aabb, b: &Aabb) -> Aabb {
 /// so, or its geometric children fall apart into separate clusters.
 fn is_group(tree: &Tree, children: &[Vec<usize>], boxes: &[Option<Aabb>], i: usize) -> bool {
     let node = &tree.nodes[i];
+    let geometric: Vec<usize> = children[i]
+        .iter()
+        .copied()
+        .filter(|&c| boxes[c].is_some())
+        .collect();
     if has_word(&node.name, GROUP_WORDS) {
-        return true;
+        // `Furniture` over one `Chair` is a group; `toy set` over its one `box` mesh is
+        // the object.
+        return geometric.len() > 1
+            || geometric
+                .iter()
+                .any(|&c| !generic(&tree.nodes[c].name) && !tree.nodes[c].name.is_empty());
     }
-    let parts: Vec<Aabb> = children[i].iter().filter_map(|&c| boxes[c]).collect();
+    let parts: Vec<Aabb> = geometric.iter().filter_map(|&c| boxes[c]).collect();
     if parts.len() < 2 {
         return false;
     }
@@ -521,9 +533,10 @@ fn clusters(parts: &[Aabb]) -> usize {
 }
 
 /// Each object's name: its node's (or the name Shenlong gave it); objects that share a
-/// name (compared case-insensitively) are told apart by their group's name, else by their
+/// name (compared case-insensitively) are told apart by their group's name — `Chair in
+/// GroupA`, also called `GroupA Chair` (the alias returned beside it) — else by their
 /// node's fallback name (its path).
-fn names(tree: &Tree, nodes: &[usize]) -> Vec<String> {
+fn names(tree: &Tree, nodes: &[usize]) -> Vec<(String, Option<String>)> {
     let base: Vec<String> = nodes
         .iter()
         .map(|&n| {
@@ -550,28 +563,28 @@ fn names(tree: &Tree, nodes: &[usize]) -> Vec<String> {
         }
         None
     };
-    let mut named: Vec<String> = base
+    let mut named: Vec<(String, Option<String>)> = base
         .iter()
         .zip(nodes)
         .map(|(b, &n)| {
             if count[&b.to_lowercase()] > 1 {
                 match group_of(n) {
-                    Some(g) => format!("{b} ({g})"),
-                    None => tree.nodes[n].fallback.clone(),
+                    Some(g) => (format!("{b} in {g}"), Some(format!("{g} {b}"))),
+                    None => (tree.nodes[n].fallback.clone(), None),
                 }
             } else {
-                b.clone()
+                (b.clone(), None)
             }
         })
         .collect();
     // Still shared (the same group's name): the fallback, which is unique.
     let mut again: rustc_hash::FxHashMap<String, usize> = rustc_hash::FxHashMap::default();
-    for b in &named {
+    for (b, _) in &named {
         *again.entry(b.to_lowercase()).or_default() += 1;
     }
     for (k, &n) in nodes.iter().enumerate() {
-        if again[&named[k].to_lowercase()] > 1 {
-            named[k] = tree.nodes[n].fallback.clone();
+        if again[&named[k].0.to_lowercase()] > 1 {
+            named[k] = (tree.nodes[n].fallback.clone(), None);
         }
     }
     named
@@ -790,7 +803,8 @@ mod tests {
         };
         let d = derive(&tree, "t", DVec3::Z, &ReadOptions::default()).unwrap();
         let names: Vec<&str> = d.scene.objects.iter().map(|o| o.name.as_str()).collect();
-        assert_eq!(names, ["Chair", "Mug", "Box (GroupA)", "Box (GroupB)"]);
+        assert_eq!(names, ["Chair", "Mug", "Box in GroupA", "Box in GroupB"]);
+        assert_eq!(d.scene.objects[3].labels.aliases, ["GroupB Box"]);
         let bounds = d.scene.bounds.unwrap();
         assert_eq!(bounds.min.y, 0.0);
         assert_eq!(bounds.min.x, -3.0);

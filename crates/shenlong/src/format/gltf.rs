@@ -261,7 +261,16 @@ pub fn read_bytes_with(
             transformable: true,
             model: false,
             given_name: None,
-            labels: node.mesh().map_or_else(Labels::default, |m| labels_of(node, &m)),
+            labels: {
+                let mut labels = node.mesh().map_or_else(Labels::default, |m| labels_of(node, &m));
+                let json_node = json_nodes.and_then(|n| n.get(index));
+                if let Some(c) = json_node
+                    .and_then(|n| n.get("extras")?.get("shenlong:category")?.as_str())
+                {
+                    labels.category = Some(c.to_string());
+                }
+                labels
+            },
             front: json_nodes
                 .and_then(|n| n.get(index))
                 .and_then(extras_front),
@@ -929,7 +938,7 @@ fn json_number(x: f64) -> Value {
 }
 
 /// A GLB container: header, JSON chunk padded with spaces, binary chunk as it was.
-fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Result<Vec<u8>, FormatError> {
+pub(crate) fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Result<Vec<u8>, FormatError> {
     let mut json_chunk = serde_json::to_vec(json)
         .map_err(|e| FormatError::new(format!("cannot write the glTF JSON: {e}")))?;
     while json_chunk.len() % 4 != 0 {

@@ -12,6 +12,7 @@
 
 pub mod facts;
 pub mod gltf;
+mod gltf_new;
 pub mod json;
 pub mod pretty;
 pub mod procthor;
@@ -379,9 +380,8 @@ impl SceneFile {
             }
             Format::Gltf | Format::Glb => {
                 let Document::Gltf(document) = &self.document else {
-                    return Err(FormatError::new(
-                        "writing glTF needs a glTF source: Shenlong edits the nodes of an existing file",
-                    ));
+                    // A scene from elsewhere: a new glTF of boxes.
+                    return gltf_new::write_new(&self.scene, format == Format::Glb);
                 };
                 let source_is_glb = *document.container() == gltf::Container::Glb;
                 if source_is_glb != (format == Format::Glb) {

@@ -82,6 +82,19 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
                 }
             }
             let raw: String = chars[k..j].iter().map(|&(_, c)| c).collect();
+            // `GroupB`, `SideTable` typed as a name is written: its words, as names are
+            // read ([`normalize`] splits camelCase the same way).
+            if let Some(parts) = camel_parts(&chars[k..j]) {
+                for (a, b) in parts {
+                    let word: String = chars[k + a..k + b].iter().map(|&(_, c)| c).collect();
+                    tokens.push(Token {
+                        kind: Kind::Word(word.to_lowercase()),
+                        span: chars[k + a].0..end_of(k + b),
+                    });
+                }
+                k = j;
+                continue;
+            }
             let lower = raw.to_lowercase().replace('’', "'");
             let kind = match lower.parse::<f64>() {
                 Ok(n) if n.is_finite() => Kind::Number(n),
@@ -103,6 +116,25 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
         k += 1;
     }
     tokens
+}
+
+/// The words of a token of letters only with a lower-case letter followed by a capital
+/// (`GroupB` → `Group`, `B`), as ranges of `chars`; `None` for any other token.
+fn camel_parts(chars: &[(usize, char)]) -> Option<Vec<(usize, usize)>> {
+    if !chars.iter().all(|&(_, c)| c.is_alphabetic()) {
+        return None;
+    }
+    let mut cuts = vec![0];
+    for i in 1..chars.len() {
+        if chars[i - 1].1.is_lowercase() && chars[i].1.is_uppercase() {
+            cuts.push(i);
+        }
+    }
+    if cuts.len() < 2 {
+        return None;
+    }
+    cuts.push(chars.len());
+    Some(cuts.windows(2).map(|w| (w[0], w[1])).collect())
 }
 
 /// Normalises a name or phrase for comparison: lower case, `-` `_` `.` as spaces, runs of

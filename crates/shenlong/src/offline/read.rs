@@ -48,6 +48,9 @@ pub(crate) struct Reader<'a> {
     last_action: Option<Action>,
     /// The first variable's steps of the last clause: what "do the same" repeats.
     pub(super) last_steps: Vec<Step>,
+    /// Whether the relation being read puts its subjects on the floor ("on the floor next
+    /// to X2"), whatever the target stands on.
+    pub(super) on_floor: bool,
 }
 
 /// What one clause asks: each variable with one step, in order.
@@ -170,6 +173,7 @@ impl<'a> Reader<'a> {
             near: BTreeMap::new(),
             last_subjects: Vec::new(),
             last_targets: Vec::new(),
+            on_floor: false,
             last_action: None,
             last_steps: Vec::new(),
         }

@@ -196,6 +196,31 @@ fn mark_relation(c: &mut Clause, r: &Found) {
     }
 }
 
+/// Marks "on the floor" (or "onto / to the floor", "on the ground", with a "down" before
+/// it) where the clause has it free: the level a relation beside something puts its
+/// subjects on.
+fn floor_words(c: &mut Clause) -> bool {
+    for words in [
+        &["on", "the", "floor"][..],
+        &["onto", "the", "floor"],
+        &["to", "the", "floor"],
+        &["on", "the", "ground"],
+        &["onto", "the", "ground"],
+        &["to", "the", "ground"],
+    ] {
+        if let Some(i) = c.find(words) {
+            if (i..i + words.len()).all(|k| c.free(k)) {
+                c.mark(i..i + words.len());
+                if i > 0 && c.words_at(i - 1, &["down"]) && c.free(i - 1) {
+                    c.mark(i - 1..i);
+                }
+                return true;
+            }
+        }
+    }
+    false
+}
+
 /// What `on X2` combined with a second relation on the same surface means ("on X2 next
 /// to X3", "on X2 to the left of X3", "on X2 between X3 and X4"), with `surface` X2.
 fn on_surface(surface: usize, second: &Found) -> Option<Relation> {
@@ -267,6 +292,17 @@ impl Reader<'_> {
         mark_relation(c, &r);
         let targets: Vec<usize> = r.targets.iter().map(|(_, v)| *v).collect();
         let relation = self.relation(c, &r, &subjects, &targets)?;
+        // "on the floor next to X2", "down on the ground beside X2": beside X2, on the floor.
+        let beside = matches!(
+            relation,
+            Relation::NextTo | Relation::Side(..) | Relation::Between | Relation::To
+        );
+        if beside && floor_words(c) {
+            self.on_floor = true;
+            let produced = self.each(&subjects, relation, &targets, text);
+            self.on_floor = false;
+            return produced;
+        }
         // "on X2 next to X3", "on X2 to the left of X3": one destination, beside X3 on the
         // surface X2.
         if relation == Relation::On && targets.len() == 1 {
@@ -404,6 +440,10 @@ impl Reader<'_> {
         let known = self.facts.known;
         let mut level = Level::Target;
         let relation = match relation {
+            r if self.on_floor => {
+                level = Level::Floor;
+                r
+            }
             Relation::NextTo if as_is => match known.side_on_support(s, t)? {
                 Some(side) => {
                     let d = known.float_above_support(t);

@@ -1,0 +1,177 @@
+//! A new glTF of boxes for a scene read from no glTF file (`shenlong convert room.json
+//! room.glb`), so that scenes of boxes reach Blender, three.js and engines.
+//!
+//! Each object is a node named as the object, with its pose as translation, rotation and
+//! uniform scale, and a mesh of its box about the pivot (its bottom centre, as scene JSON
+//! has it), named by its category (else its name); all boxes share one index list. Reading the
+//! file back gives the same objects, names, boxes and fronts: a front other than +Z is
+//! written as the node's `extras: {"shenlong:front": [x, y, z]}`, and the category as
+//! the node's `extras: {"shenlong:category": …}`.
+
+use super::FormatError;
+use crate::scene::{Scene, Shape};
+use base64::Engine;
+use glam::{DQuat, DVec3};
+use serde_json::{json, Value};
+
+/// The 12 triangles of a box over its corners numbered as [`corners`] gives them
+/// (outward faces).
+const TRIANGLES: [u16; 36] = [
+    0, 2, 1, 0, 3, 2, // back (−z)
+    4, 5, 6, 4, 6, 7, // front (+z)
+    0, 1, 5, 0, 5, 4, // bottom (−y)
+    3, 7, 6, 3, 6, 2, // top (+y)
+    0, 4, 7, 0, 7, 3, // left (−x)
+    1, 2, 6, 1, 6, 5, // right (+x)
+];
+
+/// A box's corners about its bottom centre: x ∈ [−w/2, w/2], y ∈ [0, h], z ∈ [−d/2, d/2].
+fn corners(size: DVec3) -> [[f32; 3]; 8] {
+    let (x, y, z) = ((size.x / 2.0) as f32, size.y as f32, (size.z / 2.0) as f32);
+    [
+        [-x, 0.0, -z],
+        [x, 0.0, -z],
+        [x, y, -z],
+        [-x, y, -z],
+        [-x, 0.0, z],
+        [x, 0.0, z],
+        [x, y, z],
+        [-x, y, z],
+    ]
+}
+
+fn number(x: f64) -> Value {
+    json!(super::tidy(x))
+}
+
+/// The scene as a new glTF: `.glb` bytes when `binary`, else a `.gltf` with its buffer
+/// embedded as a data URI.
+///
+/// # Errors
+/// The scene has no object.
+pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
+    if scene.objects.is_empty() {
+        return Err(FormatError::new("the scene has no object to write"));
+    }
+    let mut bin: Vec<u8> = TRIANGLES.iter().flat_map(|i| i.to_le_bytes()).collect();
+    let mut meshes: Vec<Value> = Vec::with_capacity(scene.objects.len());
+    let mut accessors: Vec<Value> = vec![json!(
+        {"bufferView": 0, "componentType": 5123, "count": 36, "type": "SCALAR"}
+    )];
+    let mut views: Vec<Value> = vec![json!(
+        {"buffer": 0, "byteOffset": 0, "byteLength": 72, "target": 34963}
+    )];
+    let mut nodes: Vec<Value> = Vec::with_capacity(scene.objects.len() * 2);
+    let mut roots: Vec<Value> = Vec::with_capacity(scene.objects.len());
+    for object in &scene.objects {
+        let (pose, size) = match &object.shape {
+            Shape::Box { size } => (object.similarity(), *size),
+            Shape::Points { .. } => {
+                let b = object.world_aabb();
+                (
+                    cga::Similarity {
+                        translation: b.bottom_center(),
+                        rotation: DQuat::IDENTITY,
+                        scale: 1.0,
+                    },
+                    b.size(),
+                )
+            }
+        };
+        let index = meshes.len();
+        let box_corners = corners(size);
+        let offset = bin.len();
+        bin.extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
+        let (lo, hi) = (box_corners[0], box_corners[6]);
+        views.push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
+        accessors.push(json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
+            "type": "VEC3", "min": lo, "max": hi}));
+        let mesh_name = object.labels.category.clone().unwrap_or_else(|| object.name.clone());
+        meshes.push(json!({"name": mesh_name,
+            "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
+        let mut extras = serde_json::Map::new();
+        if (object.front - DVec3::Z).length() > 1e-12 {
+            extras.insert(
+                "shenlong:front".into(),
+                json!([
+                    number(object.front.x),
+                    number(object.front.y),
+                    number(object.front.z)
+                ]),
+            );
+        }
+        if let Some(category) = &object.labels.category {
+            extras.insert("shenlong:category".into(), json!(category));
+        }
+        let q = pose.rotation;
+        let t = pose.translation;
+        let mut node = json!({
+            "name": object.name,
+            "translation": [number(t.x), number(t.y), number(t.z)],
+            "rotation": [number(q.x), number(q.y), number(q.z), number(q.w)],
+            "scale": [number(pose.scale), number(pose.scale), number(pose.scale)],
+            "mesh": index,
+        });
+        if !extras.is_empty() {
+            node["extras"] = Value::Object(extras);
+        }
+        nodes.push(node);
+        roots.push(json!(index));
+    }
+    let buffer = if binary {
+        json!({"byteLength": bin.len()})
+    } else {
+        json!({
+            "byteLength": bin.len(),
+            "uri": format!(
+                "data:application/octet-stream;base64,{}",
+                base64::engine::general_purpose::STANDARD.encode(&bin)
+            ),
+        })
+    };
+    let document = json!({
+        "asset": {"version": "2.0", "generator": "Shenlong"},
+        "scene": 0,
+        "scenes": [{"name": scene.name, "nodes": roots}],
+        "nodes": nodes,
+        "meshes": meshes,
+        "accessors": accessors,
+        "bufferViews": views,
+        "buffers": [buffer],
+    });
+    if binary {
+        super::gltf::glb_bytes(&document, Some(&bin))
+    } else {
+        Ok(super::pretty::to_string(&document).into_bytes())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::format::ReadOptions;
+
+    #[test]
+    fn boxes_read_back_as_the_same_objects() {
+        let scene = crate::examples::build("living_room").unwrap();
+        for binary in [false, true] {
+            let bytes = write_new(&scene, binary).unwrap();
+            let (back, _) = super::super::gltf::read_bytes_with(
+                bytes,
+                std::path::Path::new("."),
+                "t",
+                &ReadOptions::default(),
+            )
+            .unwrap();
+            assert_eq!(back.objects.len(), scene.objects.len());
+            for (a, b) in scene.objects.iter().zip(&back.objects) {
+                assert_eq!(a.name, b.name);
+                let (wa, wb) = (a.world_aabb(), b.world_aabb());
+                assert!((wa.min - wb.min).length() < 1e-6, "{}", a.name);
+                assert!((wa.max - wb.max).length() < 1e-6, "{}", a.name);
+                assert!((a.world_front() - b.world_front()).length() < 1e-6);
+                assert_eq!(a.support.is_some(), b.support.is_some(), "{}", a.name);
+            }
+        }
+    }
+}
