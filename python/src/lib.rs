@@ -111,11 +111,23 @@ impl PyScene {
 
 #[pymethods]
 impl PyScene {
-    /// Reads a scene file (`.json`, `.gltf`, `.glb`, `.usda`, `.usdc`, `.usdz`).
+    /// Reads a scene file (`.json`, `.gltf`, `.glb`, `.usda`, `.usdc`, `.usdz`); a glTF or
+    /// USD file with `units` (`mm`, `cm`, `m`, `in`, `ft`) and `front` (`+z`, `-y` …) when
+    /// its own conventions are missing or wrong.
     #[staticmethod]
-    fn load(py: Python<'_>, path: PathBuf) -> PyResult<Self> {
+    #[pyo3(signature = (path, units=None, front=None))]
+    fn load(
+        py: Python<'_>,
+        path: PathBuf,
+        units: Option<String>,
+        front: Option<String>,
+    ) -> PyResult<Self> {
         detached(py, move || {
-            SceneFile::load(&path)
+            let options = shenlong::format::ReadOptions {
+                units: units.as_deref().map(str::parse).transpose()?,
+                front: front.as_deref().map(str::parse).transpose()?,
+            };
+            SceneFile::load_with(&path, &options)
                 .map(Self::new)
                 .map_err(|e| e.to_string())
         })

@@ -350,9 +350,10 @@ fn serve_refuses_an_address_others_can_reach_and_a_save_it_cannot_write() {
     let o = shenlong(&["serve", "example:workshop", "--addr", "0.0.0.0:0"]);
     assert_eq!(o.status.code(), Some(1));
     assert!(stderr(&o).contains("--allow-remote"), "{}", stderr(&o));
-    // A glTF save for a JSON scene would fail at every edit: refused at start.
+    // A .usdc save (Shenlong writes USD as .usda) would fail at every edit: refused at
+    // start.
     let dir = tempfile::tempdir().unwrap();
-    let save = dir.path().join("out.glb");
+    let save = dir.path().join("out.usdc");
     let o = shenlong(&[
         "serve",
         "example:workshop",
@@ -386,7 +387,8 @@ fn edits_of_deep_gltf_hierarchies_do_not_crash() {
     for depth in [8_000, 100_000] {
         let input = dir.path().join(format!("chain{depth}.gltf"));
         std::fs::write(&input, support::deep_chain_gltf(depth)).unwrap();
-        let leaf = format!("n{}", depth - 1);
+        // The chain of empty nodes over one mesh is one object, named by its top node.
+        let leaf = "n0".to_string();
         let edited = dir.path().join(format!("edited{depth}.gltf"));
         let applied = dir.path().join(format!("applied{depth}.gltf"));
         let instruction = format!("move the '{leaf}' 1 m to the right");

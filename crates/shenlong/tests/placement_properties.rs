@@ -88,7 +88,12 @@ fn scenes() -> Vec<(String, Scene)> {
     }
     for file in ["CornellBox.glb", "Cubes.glb"] {
         if let Some(path) = shared_data(&format!("gltf/{file}")) {
-            out.push((file.to_string(), SceneFile::load(&path).unwrap().scene));
+            // The Cornell box is modelled in millimetres.
+            let options = shenlong::format::ReadOptions {
+                units: (file == "CornellBox.glb").then_some(shenlong::format::Units::Millimetres),
+                ..Default::default()
+            };
+            out.push((file.to_string(), SceneFile::load_with(&path, &options).unwrap().scene));
         }
     }
     out

@@ -59,9 +59,15 @@ class Scene:
     # -- making a scene -------------------------------------------------------------
 
     @classmethod
-    def load(cls, path: PathLike) -> "Scene":
-        """Reads a scene file: scene JSON (``.json``), glTF (``.gltf``, ``.glb``)."""
-        return cls(_native.Scene.load(_os.fspath(path)))
+    def load(
+        cls, path: PathLike, units: Optional[str] = None, front: Optional[str] = None
+    ) -> "Scene":
+        """Reads a scene file: scene JSON (``.json``), glTF (``.gltf``, ``.glb``), USD
+        (``.usda``, ``.usdc``, ``.usdz``). For a glTF or USD file whose own conventions are
+        missing or wrong: ``units`` (``"mm"``, ``"cm"``, ``"m"``, ``"in"``, ``"ft"``; a file
+        whose furniture is tens of metres across is refused without it) and ``front`` (the
+        axis its models face in the file's own frame: ``"+z"``, ``"-y"`` …)."""
+        return cls(_native.Scene.load(_os.fspath(path), units, front))
 
     @classmethod
     def from_dict(cls, scene: Mapping[str, Any], name: str = "scene") -> "Scene":

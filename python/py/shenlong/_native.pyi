@@ -10,7 +10,9 @@ class EditError(ValueError):
 
 class Scene:
     @staticmethod
-    def load(path: Union[str, PathLike[str]]) -> Scene: ...
+    def load(
+        path: Union[str, PathLike[str]], units: Optional[str] = None, front: Optional[str] = None
+    ) -> Scene: ...
     @staticmethod
     def from_json(text: str, name: str) -> Scene: ...
     @staticmethod

@@ -20,7 +20,8 @@
 //!    refused naming both.
 //! 3. **The room.** Floors, walls and ceilings — by name in the common languages of
 //!    exports, or by shape (a large thin slab under everything, tall thin slabs at the
-//!    boundary) — are not objects: they give the scene its bounds.
+//!    boundary) — and a room modelled as one mesh (`Room`, `Interior_Shell`, whose box
+//!    holds the others) are not objects: they give the scene its bounds.
 //! 4. **Fronts**: the format's front axis (or the node's own `shenlong:front`, or the
 //!    run's) through the node's world rotation.
 //! 5. **Units**: a scene whose furniture is tens of "metres" across is refused, naming the
@@ -238,6 +239,11 @@ const WALL_WORDS: &[&str] = &[
 const CEILING_WORDS: &[&str] = &[
     "ceiling", "ceilings", "roof", "decke", "plafond", "techo", "soffitto", "teto", "tak",
     "katto", "sufit", "potolok",
+];
+
+/// Words naming a whole room's shell as one mesh (floor, walls and ceiling together).
+const SHELL_WORDS: &[&str] = &[
+    "room", "shell", "interior", "architecture", "building", "apartment", "house", "walls",
 ];
 
 /// Words that say nothing of what a node is (`Plane`, `Cube.004`, `mesh_3`): a node so
@@ -643,10 +649,31 @@ impl Room {
                 walls.push(i);
             }
         }
+        // A room modelled as one mesh (`Room`, `Interior_Shell`): its box holds the others.
+        let mut shells = Vec::new();
+        for (i, b) in boxes.iter().enumerate() {
+            let name = &tree.nodes[nodes[i]].name;
+            if floors.contains(&i) || walls.contains(&i) || ceilings.contains(&i) {
+                continue;
+            }
+            let others: Vec<DVec3> = (0..boxes.len())
+                .filter(|&j| j != i)
+                .map(|j| boxes[j].center())
+                .collect();
+            let inside = others
+                .iter()
+                .filter(|c| (b.min.cmple(**c)).all() && c.cmple(b.max).all())
+                .count();
+            if has_word(name, SHELL_WORDS) && others.len() >= 2 && inside * 5 >= others.len() * 4
+            {
+                shells.push(i);
+            }
+        }
         let mut parts: Vec<usize> = floors
             .iter()
             .chain(&walls)
             .chain(&ceilings)
+            .chain(&shells)
             .copied()
             .collect();
         parts.sort_unstable();
@@ -714,6 +741,32 @@ impl Room {
         for &c in &ceilings {
             max.y = boxes[c].min.y.max(inside.max.y);
         }
+        for &r in &shells {
+            // The shell's box is the room; its floor is where the furniture stands (its
+            // slab's top), when that is just above the box's bottom.
+            let b = &boxes[r];
+            min.x = b.min.x.min(inside.min.x);
+            min.z = b.min.z.min(inside.min.z);
+            max.x = b.max.x.max(inside.max.x);
+            max.z = b.max.z.max(inside.max.z);
+            max.y = b.max.y.max(inside.max.y);
+        }
+        let shell_floor = shells
+            .iter()
+            .map(|&r| {
+                let bottom = boxes[r].min.y;
+                if inside.min.y >= bottom && inside.min.y - bottom <= 0.3 {
+                    inside.min.y
+                } else {
+                    bottom
+                }
+            })
+            .fold(f64::NEG_INFINITY, f64::max);
+        let floor_y = if floors.is_empty() && shell_floor.is_finite() {
+            shell_floor
+        } else {
+            floor_y
+        };
         min.y = floor_y;
         if max.y - min.y < 2.0 && ceilings.is_empty() {
             max.y = min.y + 2.5_f64.max(inside.max.y - min.y);
@@ -742,9 +795,12 @@ fn check_units(scene: &Scene) -> Result<(), FormatError> {
     if median <= 20.0 {
         return Ok(());
     }
+    // The units that bring the median nearest a typical piece of furniture (0.8 m), on a
+    // log scale: 330 units are 0.33 m in millimetres rather than 3.3 m in centimetres.
+    let off = |u: &Units| (median * u.meters() / 0.8).ln().abs();
     let guess = [Units::Centimetres, Units::Inches, Units::Millimetres]
         .into_iter()
-        .find(|u| (0.05..=5.0).contains(&(median * u.meters())))
+        .min_by(|a, b| off(a).total_cmp(&off(b)))
         .unwrap_or(Units::Millimetres);
     Err(FormatError::new(format!(
         "its objects are {median:.0} m across (median): it looks modelled in {} rather than metres; read it with units {} (`--units {}`), or `--units m` to keep metres",
@@ -796,18 +852,33 @@ mod tests {
                 node("Mug", Some(5), slab([2.0, 0.0, 2.0], [2.1, 0.1, 2.1])),
                 node("Floor", Some(0), slab([-3.0, -0.02, -3.0], [3.0, 0.0, 3.0])),
                 node("GroupA", Some(0), vec![]),
-                node("Box", Some(8), slab([1.0, 0.0, -2.0], [1.2, 0.2, -1.8])),
+                node("Stool", Some(8), slab([1.0, 0.0, -2.0], [1.2, 0.2, -1.8])),
                 node("GroupB", Some(0), vec![]),
-                node("Box", Some(10), slab([-1.0, 0.0, -2.0], [-0.8, 0.2, -1.8])),
+                node("Stool", Some(10), slab([-1.0, 0.0, -2.0], [-0.8, 0.2, -1.8])),
             ],
         };
         let d = derive(&tree, "t", DVec3::Z, &ReadOptions::default()).unwrap();
         let names: Vec<&str> = d.scene.objects.iter().map(|o| o.name.as_str()).collect();
-        assert_eq!(names, ["Chair", "Mug", "Box in GroupA", "Box in GroupB"]);
-        assert_eq!(d.scene.objects[3].labels.aliases, ["GroupB Box"]);
+        assert_eq!(names, ["Chair", "Mug", "Stool in GroupA", "Stool in GroupB"]);
+        assert_eq!(d.scene.objects[3].labels.aliases, ["GroupB Stool"]);
         let bounds = d.scene.bounds.unwrap();
         assert_eq!(bounds.min.y, 0.0);
         assert_eq!(bounds.min.x, -3.0);
+    }
+
+    #[test]
+    fn a_room_mesh_is_the_room() {
+        let tree = Tree {
+            nodes: vec![
+                node("Room", None, slab([-2.0, -0.1, -2.0], [2.0, 2.6, 2.0])),
+                node("Bed", None, slab([0.0, 0.0, 0.0], [1.4, 0.5, 2.0])),
+                node("Lamp", None, slab([-1.0, 0.0, -1.0], [-0.8, 1.5, -0.8])),
+            ],
+        };
+        let d = derive(&tree, "t", DVec3::Z, &ReadOptions::default()).unwrap();
+        assert_eq!(d.scene.objects.len(), 2);
+        let b = d.scene.bounds.unwrap();
+        assert_eq!((b.min.y, b.max.x), (0.0, 2.0));
     }
 
     #[test]
