@@ -137,10 +137,16 @@ def test_save_is_atomic_and_by_extension(office_path, tmp_path):
     out = tmp_path / "edited.json"
     scene.save(out)
     assert shenlong.Scene.load(out).objects() == scene.objects()
-    # glTF needs a glTF source: refused, and nothing is written.
-    with pytest.raises(shenlong.EditError, match="glTF"):
-        scene.save(tmp_path / "edited.glb")
+    # .usdc is not written (USD edits go to .usda): refused, and nothing is written.
+    with pytest.raises(shenlong.EditError, match="usda"):
+        scene.save(tmp_path / "edited.usdc")
     assert sorted(p.name for p in tmp_path.iterdir()) == ["edited.json"]
+    # A scene JSON saved as glTF: a new glTF of its boxes, the same objects.
+    scene.save(tmp_path / "edited.glb")
+    boxes = {o["name"]: o["world_box"] for o in shenlong.Scene.load(tmp_path / "edited.glb").objects()}
+    for o in scene.objects():
+        assert all(math.isclose(a, b, abs_tol=1e-5) for a, b in zip(boxes[o["name"]]["min"], o["world_box"]["min"]))
+    (tmp_path / "edited.glb").unlink()
     # A failed write leaves the old file as it was.
     before = out.read_bytes()
     with pytest.raises(shenlong.EditError):
@@ -150,11 +156,14 @@ def test_save_is_atomic_and_by_extension(office_path, tmp_path):
 
 def test_gltf_in_and_out(tmp_path):
     path = shared("gltf/CornellBox.glb")
-    scene = shenlong.Scene.load(path)
+    # Modelled in millimetres: refused without its units, naming them.
+    with pytest.raises(shenlong.EditError, match="units mm"):
+        shenlong.Scene.load(path)
+    scene = shenlong.Scene.load(path, units="mm")
     name = scene.objects()[0]["name"]
     scene.apply(name, "T(0.05*e1)", collide=False)
     scene.save(tmp_path / "moved.glb")
-    moved = shenlong.Scene.load(tmp_path / "moved.glb")
+    moved = shenlong.Scene.load(tmp_path / "moved.glb", units="mm")
     assert math.isclose(
         obj(moved, name)["world_box"]["min"][0], obj(scene, name)["world_box"]["min"][0], abs_tol=1e-5
     )

@@ -778,6 +778,26 @@ impl Room {
     }
 }
 
+/// The slabs that stand for a room's bounds in a file that has no field for them (a new
+/// glTF or USD file written from scene JSON): a floor under `min.y`, a ceiling over
+/// `max.y`, and four walls outside the x and z limits, each 10 cm thick, named so that
+/// reading the file again ([`Room::find`]) gives the same bounds.
+#[must_use]
+pub(crate) fn room_slabs(bounds: &Aabb) -> Vec<(&'static str, Aabb)> {
+    const T: f64 = 0.1;
+    let (lo, hi) = (bounds.min, bounds.max);
+    let out_lo = lo - DVec3::splat(T);
+    let out_hi = hi + DVec3::splat(T);
+    vec![
+        ("Room_Floor", Aabb::new(DVec3::new(out_lo.x, lo.y - T, out_lo.z), DVec3::new(out_hi.x, lo.y, out_hi.z))),
+        ("Room_Ceiling", Aabb::new(DVec3::new(out_lo.x, hi.y, out_lo.z), DVec3::new(out_hi.x, hi.y + T, out_hi.z))),
+        ("Room_Wall_West", Aabb::new(DVec3::new(out_lo.x, lo.y, out_lo.z), DVec3::new(lo.x, hi.y, out_hi.z))),
+        ("Room_Wall_East", Aabb::new(DVec3::new(hi.x, lo.y, out_lo.z), DVec3::new(out_hi.x, hi.y, out_hi.z))),
+        ("Room_Wall_Back", Aabb::new(DVec3::new(lo.x, lo.y, out_lo.z), DVec3::new(hi.x, hi.y, lo.z))),
+        ("Room_Wall_Front", Aabb::new(DVec3::new(lo.x, lo.y, hi.z), DVec3::new(hi.x, hi.y, out_hi.z))),
+    ]
+}
+
 /// Refuses a scene whose furniture is implausibly large for metres: the median of the
 /// objects' largest extents over 20 m (a room's furniture is 0.1 m to 3 m), naming the
 /// units it looks modelled in.

@@ -1,7 +1,9 @@
 //! A new glTF of boxes for a scene read from no glTF file (`shenlong convert room.json
 //! room.glb`), so that scenes of boxes reach Blender, three.js and engines.
 //!
-//! Each object is a node named as the object, with its pose as translation, rotation and
+//! The room's bounds become slabs named `Room_Floor`, `Room_Ceiling` and `Room_Wall_…`
+//! around them, which reading recognises as the room. Each object is a node named as the
+//! object, with its pose as translation, rotation and
 //! uniform scale, and a mesh of its box about the pivot (its bottom centre, as scene JSON
 //! has it), named by its category (else its name); all boxes share one index list. Reading the
 //! file back gives the same objects, names, boxes and fronts: a front other than +Z is
@@ -116,7 +118,28 @@ pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
             node["extras"] = Value::Object(extras);
         }
         nodes.push(node);
-        roots.push(json!(index));
+        roots.push(json!(nodes.len() - 1));
+    }
+    // The room, as slabs the reader recognises as floor, walls and ceiling.
+    for (name, slab) in scene
+        .bounds
+        .as_ref()
+        .map(super::facts::room_slabs)
+        .unwrap_or_default()
+    {
+        let index = meshes.len();
+        let box_corners = corners(slab.size());
+        let offset = bin.len();
+        bin.extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
+        views.push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
+        accessors.push(json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
+            "type": "VEC3", "min": box_corners[0], "max": box_corners[6]}));
+        meshes.push(json!({"name": name,
+            "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
+        let t = slab.bottom_center();
+        roots.push(json!(nodes.len()));
+        nodes.push(json!({"name": name, "mesh": index,
+            "translation": [number(t.x), number(t.y), number(t.z)]}));
     }
     let buffer = if binary {
         json!({"byteLength": bin.len()})
@@ -172,6 +195,9 @@ mod tests {
                 assert!((a.world_front() - b.world_front()).length() < 1e-6);
                 assert_eq!(a.support.is_some(), b.support.is_some(), "{}", a.name);
             }
+            let (ra, rb) = (scene.bounds.unwrap(), back.bounds.unwrap());
+            assert!((ra.min - rb.min).length() < 1e-5, "{ra:?} {rb:?}");
+            assert!((ra.max - rb.max).length() < 1e-5, "{ra:?} {rb:?}");
         }
     }
 }

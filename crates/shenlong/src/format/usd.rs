@@ -687,7 +687,13 @@ pub fn read(
                 Some(Value::String(n)) if !n.trim().is_empty() => Some(n),
                 _ => None,
             },
-            labels: crate::scene::Labels::default(),
+            labels: crate::scene::Labels {
+                category: match attr(&prim, "shenlong:category") {
+                    Some(Value::String(c)) if !c.trim().is_empty() => Some(c),
+                    _ => None,
+                },
+                ..crate::scene::Labels::default()
+            },
             front: attr(&prim, "shenlong:front")
                 .and_then(|v| vec3(&v))
                 .filter(|d| d.is_finite() && d.length() > 0.0),
@@ -1043,68 +1049,119 @@ pub fn sublayer_path(source: &Path, layer: &Path) -> Result<String, FormatError>
 /// A new `.usda` stage of the scene, for a scene read from no USD stage (`shenlong
 /// convert room.json room.usda`): Y-up, metres, under the default prim `/World`, each
 /// object an `Xform` at its pivot with its turn and scale, holding a `Cube` of its box (a
-/// box of points — a glTF mesh — as its world box). Prim names are the objects' names
-/// made identifiers (`coffee table` → `coffee_table`, unique).
+/// box of points — a glTF mesh — as its world box), its name in `shenlong:name`, a front
+/// other than +Z in `shenlong:front` and its category in `shenlong:category`; the room's
+/// bounds as slabs reading recognises (`Room_Floor`, `Room_Wall_…`, `Room_Ceiling`).
+/// Prim names are the objects' names made identifiers (`coffee table` → `coffee_table`,
+/// unique).
 #[must_use]
 pub fn write_new(scene: &Scene) -> Vec<u8> {
     let mut text = String::from(
         "#usda 1.0\n(\n    defaultPrim = \"World\"\n    doc = \"Written by Shenlong\"\n    metersPerUnit = 1\n    upAxis = \"Y\"\n)\n\ndef Xform \"World\"\n{\n",
     );
-    let mut used: Vec<String> = Vec::new();
+    let mut names = Identifiers::default();
     for object in &scene.objects {
-        let name = identifier(&object.name, &used);
-        used.push(name.clone());
-        let (pose, size, lift) = match &object.shape {
-            Shape::Box { size } => (object.similarity(), *size, size.y / 2.0),
+        let name = names.make(&object.name);
+        let (pose, size) = match &object.shape {
+            Shape::Box { size } => (object.similarity(), *size),
             Shape::Points { .. } => {
                 let b = object.world_aabb();
-                let bottom = DVec3::new(b.center().x, b.min.y, b.center().z);
                 (
                     cga::Similarity {
-                        translation: bottom,
+                        translation: b.bottom_center(),
                         rotation: DQuat::IDENTITY,
                         scale: 1.0,
                     },
                     b.size(),
-                    b.size().y / 2.0,
                 )
             }
         };
         let t = pose.translation;
         let q = pose.rotation;
         text.push_str(&format!(
-            "    def Xform \"{name}\"\n    {{\n        custom string shenlong:name = \"{}\"\n        double3 xformOp:translate = ({}, {}, {})\n        quatd xformOp:orient = ({}, {}, {}, {})\n        double3 xformOp:scale = ({s}, {s}, {s})\n        uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:orient\", \"xformOp:scale\"]\n\n",
-            escape(&object.name),
+            "    def Xform \"{name}\"\n    {{\n        custom string shenlong:name = \"{}\"\n",
+            escape(&object.name)
+        ));
+        if (object.front - DVec3::Z).length() > 1e-12 {
+            let f = object.front;
+            text.push_str(&format!(
+                "        custom double3 shenlong:front = ({}, {}, {})\n",
+                number(f.x),
+                number(f.y),
+                number(f.z)
+            ));
+        }
+        if let Some(category) = &object.labels.category {
+            text.push_str(&format!(
+                "        custom string shenlong:category = \"{}\"\n",
+                escape(category)
+            ));
+        }
+        text.push_str(&format!(
+            "        double3 xformOp:translate = ({}, {}, {})\n        quatd xformOp:orient = ({}, {}, {}, {})\n        double3 xformOp:scale = ({s}, {s}, {s})\n        uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:orient\", \"xformOp:scale\"]\n\n",
             number(t.x), number(t.y), number(t.z),
             number(q.w), number(q.x), number(q.y), number(q.z),
             s = number(pose.scale),
         ));
-        text.push_str(&format!(
-            "        def Cube \"Box\"\n        {{\n            double size = 1\n            double3 xformOp:translate = (0, {}, 0)\n            double3 xformOp:scale = ({}, {}, {})\n            uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:scale\"]\n        }}\n    }}\n\n",
-            number(lift), number(size.x), number(size.y), number(size.z),
-        ));
+        text.push_str(&cube("Box", "        ", DVec3::new(0.0, size.y / 2.0, 0.0), size));
+        text.push_str("    }\n\n");
+    }
+    for (name, slab) in scene
+        .bounds
+        .as_ref()
+        .map(super::facts::room_slabs)
+        .unwrap_or_default()
+    {
+        let name = names.make(name);
+        text.push_str(&cube(&name, "    ", slab.center(), slab.size()));
+        text.push('\n');
     }
     text.push_str("}\n");
     text.into_bytes()
 }
 
-/// A name as a USD prim name: letters, digits and `_`, not starting with a digit, unique
-/// among `used`.
-fn identifier(name: &str, used: &[String]) -> String {
-    let mut base: String = name
-        .chars()
-        .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
-        .collect();
-    if base.is_empty() || base.starts_with(|c: char| c.is_ascii_digit()) {
-        base.insert(0, '_');
+/// A `Cube` prim scaled to `size` and centred at `centre`, at `pad`.
+fn cube(name: &str, pad: &str, centre: DVec3, size: DVec3) -> String {
+    format!(
+        "{pad}def Cube \"{name}\"\n{pad}{{\n{pad}    double size = 1\n{pad}    double3 xformOp:translate = ({}, {}, {})\n{pad}    double3 xformOp:scale = ({}, {}, {})\n{pad}    uniform token[] xformOpOrder = [\"xformOp:translate\", \"xformOp:scale\"]\n{pad}}}\n",
+        number(centre.x),
+        number(centre.y),
+        number(centre.z),
+        number(size.x),
+        number(size.y),
+        number(size.z),
+    )
+}
+
+/// USD prim names made from object names: letters, digits and `_`, not starting with a
+/// digit, each unique (a number appended where two names become one). Each name costs a
+/// hash look-up or a few, however many names collide.
+#[derive(Default)]
+struct Identifiers {
+    used: std::collections::HashSet<String>,
+    /// Per base, the next number to try.
+    next: std::collections::HashMap<String, usize>,
+}
+
+impl Identifiers {
+    fn make(&mut self, name: &str) -> String {
+        let mut base: String = name
+            .chars()
+            .map(|c| if c.is_ascii_alphanumeric() { c } else { '_' })
+            .collect();
+        if base.is_empty() || base.starts_with(|c: char| c.is_ascii_digit()) {
+            base.insert(0, '_');
+        }
+        let mut candidate = base.clone();
+        let mut k = self.next.get(&base).copied().unwrap_or(2);
+        while self.used.contains(&candidate) {
+            candidate = format!("{base}_{k}");
+            k += 1;
+        }
+        self.next.insert(base, k);
+        self.used.insert(candidate.clone());
+        candidate
     }
-    let mut candidate = base.clone();
-    let mut k = 2;
-    while used.iter().any(|u| u == &candidate) {
-        candidate = format!("{base}_{k}");
-        k += 1;
-    }
-    candidate
 }
 
 /// Prims of an override layer, by name, each with the ops authored on it.
