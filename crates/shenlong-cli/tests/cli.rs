@@ -656,3 +656,64 @@ fn control_and_bidi_characters_never_reach_the_terminal() {
     let report: serde_json::Value = serde_json::from_str(err.trim()).unwrap();
     assert_eq!(report["bindings"][0]["object"], evil, "{report}");
 }
+
+#[test]
+fn pictures_of_a_gltf_edit_show_what_moved() {
+    let dir = tempfile::tempdir().unwrap();
+    let input = dir.path().join("room.glb");
+    let edited = dir.path().join("edited.glb");
+    let picture = dir.path().join("edit.svg");
+    let o = shenlong(&["convert", "example:living_room", input.to_str().unwrap()]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = shenlong(&[
+        "edit",
+        input.to_str().unwrap(),
+        "move the sofa 30 cm to the left",
+        "-o",
+        edited.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let o = shenlong(&[
+        "render",
+        edited.to_str().unwrap(),
+        "--before",
+        input.to_str().unwrap(),
+        "-o",
+        picture.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let svg = std::fs::read_to_string(&picture).unwrap();
+    // One arrow from the sofa's old place to its new one: only the sofa moved.
+    assert_eq!(
+        svg.matches("marker-end=\"url(#arrow)\"").count(),
+        1,
+        "{svg}"
+    );
+}
+
+#[test]
+fn a_file_for_a_missing_folder_and_bad_units_are_one_line() {
+    let dir = tempfile::tempdir().unwrap();
+    let missing = dir.path().join("no/such/folder/out.gltf");
+    let o = shenlong(&["convert", "example:workshop", missing.to_str().unwrap()]);
+    assert_fails_cleanly(&o, "does not exist");
+    assert!(!missing.exists());
+    let o = shenlong(&[
+        "edit",
+        "example:workshop",
+        "move the 'tool table' 1 m left",
+        "--units",
+        "furlongs",
+    ]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("mm, cm, m, in or ft"), "{}", stderr(&o));
+    // Units are for glTF and USD files: scene JSON is in metres.
+    let o = shenlong(&[
+        "edit",
+        &format!("{}/workshop.json", examples_dir().display()),
+        "move the 'tool table' 1 m left",
+        "--units",
+        "mm",
+    ]);
+    assert_fails_cleanly(&o, "glTF and USD files only");
+}

@@ -233,7 +233,10 @@ fn an_assistant_edits_a_scene_over_mcp() {
         serde_json::from_str(export["content"][0]["resource"]["text"].as_str().unwrap()).unwrap();
     assert!(exported.as_array().unwrap().len() > 5);
     let glb = c.call("export", json!({"format": "glb"}));
-    assert_ne!(glb["isError"], true, "a JSON scene exports as a new glTF of boxes: {glb}");
+    assert_ne!(
+        glb["isError"], true,
+        "a JSON scene exports as a new glTF of boxes: {glb}"
+    );
 
     // The scene as a resource.
     let read = c.request("resources/read", json!({"uri": "scene://current"}));

@@ -226,7 +226,8 @@ async fn apply_export_and_the_page() {
     // A glTF export of a scene that did not come from glTF: a new glTF of its boxes.
     let (status, _, glb) = call(&app, "GET", "/api/export?format=glb", None).await;
     assert_eq!(status, StatusCode::OK);
-    let (back, _) = shenlong::format::gltf::read_bytes(glb, std::path::Path::new("."), "x").unwrap();
+    let (back, _) =
+        shenlong::format::gltf::read_bytes(glb, std::path::Path::new("."), "x").unwrap();
     assert!(back.objects.len() > 5);
 }
 

@@ -99,7 +99,10 @@ fn moved_between(before: &crate::scene::Object, after: &crate::scene::Object) ->
     let (pa, pb) = (world(after), world(before));
     let size = 1.0 + after.world_aabb().size().length();
     pose || pa.len() != pb.len()
-        || pa.iter().zip(&pb).any(|(x, y)| (*x - *y).length() > 1e-9 * size)
+        || pa
+            .iter()
+            .zip(&pb)
+            .any(|(x, y)| (*x - *y).length() > 1e-9 * size)
 }
 
 /// The plan of `scene` as an SVG document; with `before`, the edit from `before` to

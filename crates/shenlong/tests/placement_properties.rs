@@ -93,7 +93,10 @@ fn scenes() -> Vec<(String, Scene)> {
                 units: (file == "CornellBox.glb").then_some(shenlong::format::Units::Millimetres),
                 ..Default::default()
             };
-            out.push((file.to_string(), SceneFile::load_with(&path, &options).unwrap().scene));
+            out.push((
+                file.to_string(),
+                SceneFile::load_with(&path, &options).unwrap().scene,
+            ));
         }
     }
     out

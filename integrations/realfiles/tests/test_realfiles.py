@@ -892,6 +892,19 @@ def gltf_boxes(path):
     return {g.doc.nodes[i].name: g.box[i] for i in g.box if g.doc.nodes[i].mesh is not None}
 
 
+def without_room(boxes):
+    """A converted file's objects without the slabs that carry the room (`Room_Floor`,
+    `Room_Wall_…`, `Room_Ceiling`)."""
+    return {n: b for n, b in boxes.items() if not n.startswith("Room_")}
+
+
+def room_of(boxes):
+    """The room the slabs of a converted file enclose: (min, max) inside them."""
+    lo = np.array([boxes["Room_Wall_West"][1][0], boxes["Room_Floor"][1][1], boxes["Room_Wall_Back"][1][2]])
+    hi = np.array([boxes["Room_Wall_East"][0][0], boxes["Room_Ceiling"][0][1], boxes["Room_Wall_Front"][0][2]])
+    return lo, hi
+
+
 class SameSceneThreeFormats(Base):
     TOL = 1e-3
 
@@ -928,7 +941,7 @@ class SameSceneThreeFormats(Base):
             self.edited[cache] = (r, out)
         r, out = self.edited[cache]
         self.assertEqual(r.returncode, 0, f"{ext}: {CROSS_INSTRUCTIONS[key]!r} failed: {r.stderr.strip()}")
-        return {"json": json_boxes, "usda": usd_boxes, "gltf": gltf_boxes}[ext](out)
+        return without_room({"json": json_boxes, "usda": usd_boxes, "gltf": gltf_boxes}[ext](out))
 
     def same(self, got, want, what):
         self.assertEqual(sorted(got), sorted(want), f"{what}: objects {sorted(got)} vs {sorted(want)}")
@@ -945,10 +958,17 @@ class SameSceneThreeFormats(Base):
         self.converted("gltf")
 
     def test_same_objects_before_usd(self):
-        self.same(usd_boxes(self.converted("usda")), json_boxes(self.json_path), "USD before any edit")
+        self.same(without_room(usd_boxes(self.converted("usda"))), json_boxes(self.json_path), "USD before any edit")
 
     def test_same_objects_before_gltf(self):
-        self.same(gltf_boxes(self.converted("gltf")), json_boxes(self.json_path), "glTF before any edit")
+        self.same(without_room(gltf_boxes(self.converted("gltf"))), json_boxes(self.json_path), "glTF before any edit")
+
+    def test_the_room_survives_conversion(self):
+        want = (np.array(SMALL_SCENE["bounds"]["min"], float), np.array(SMALL_SCENE["bounds"]["max"], float))
+        for ext, boxes in (("usda", usd_boxes), ("gltf", gltf_boxes)):
+            lo, hi = room_of(boxes(self.converted(ext)))
+            self.assertTrue(np.allclose(lo, want[0], atol=1e-5) and np.allclose(hi, want[1], atol=1e-5),
+                            f"{ext}: room {fmt(lo)}-{fmt(hi)}, in scene JSON {fmt(want[0])}-{fmt(want[1])}")
 
     def test_json_table_left(self):
         before, after = json_boxes(self.json_path), self.edited_boxes("json", "table_left")

@@ -89,9 +89,7 @@ impl std::str::FromStr for Units {
             "m" | "metre" | "metres" | "meter" | "meters" => Ok(Units::Metres),
             "in" | "inch" | "inches" => Ok(Units::Inches),
             "ft" | "foot" | "feet" => Ok(Units::Feet),
-            other => Err(format!(
-                "unknown units '{other}': use mm, cm, m, in or ft"
-            )),
+            other => Err(format!("unknown units '{other}': use mm, cm, m, in or ft")),
         }
     }
 }
@@ -224,9 +222,26 @@ const GROUP_WORDS: &[&str] = &[
 
 /// Words naming a floor, in the languages exports are commonly named in.
 const FLOOR_WORDS: &[&str] = &[
-    "floor", "floors", "ground", "groundplane", "flooring", "boden", "fussboden", "sol",
-    "plancher", "suelo", "piso", "pavimento", "chao", "vloer", "golv", "gulv", "lattia",
-    "podloga", "pol", "pavement",
+    "floor",
+    "floors",
+    "ground",
+    "groundplane",
+    "flooring",
+    "boden",
+    "fussboden",
+    "sol",
+    "plancher",
+    "suelo",
+    "piso",
+    "pavimento",
+    "chao",
+    "vloer",
+    "golv",
+    "gulv",
+    "lattia",
+    "podloga",
+    "pol",
+    "pavement",
 ];
 
 /// Words naming a wall.
@@ -237,20 +252,45 @@ const WALL_WORDS: &[&str] = &[
 
 /// Words naming a ceiling.
 const CEILING_WORDS: &[&str] = &[
-    "ceiling", "ceilings", "roof", "decke", "plafond", "techo", "soffitto", "teto", "tak",
-    "katto", "sufit", "potolok",
+    "ceiling", "ceilings", "roof", "decke", "plafond", "techo", "soffitto", "teto", "tak", "katto",
+    "sufit", "potolok",
 ];
 
 /// Words naming a whole room's shell as one mesh (floor, walls and ceiling together).
 const SHELL_WORDS: &[&str] = &[
-    "room", "shell", "interior", "architecture", "building", "apartment", "house", "walls",
+    "room",
+    "shell",
+    "interior",
+    "architecture",
+    "building",
+    "apartment",
+    "house",
+    "walls",
 ];
 
 /// Words that say nothing of what a node is (`Plane`, `Cube.004`, `mesh_3`): a node so
 /// named may be recognised as a floor or wall by its shape alone.
 const GENERIC_WORDS: &[&str] = &[
-    "plane", "grid", "mesh", "object", "obj", "geo", "geom", "node", "polysurface", "poly",
-    "shape", "solid", "body", "surface", "slab", "cube", "box", "part", "primitive", "brep",
+    "plane",
+    "grid",
+    "mesh",
+    "object",
+    "obj",
+    "geo",
+    "geom",
+    "node",
+    "polysurface",
+    "poly",
+    "shape",
+    "solid",
+    "body",
+    "surface",
+    "slab",
+    "cube",
+    "box",
+    "part",
+    "primitive",
+    "brep",
 ];
 
 /// The lower-case words of a name: split at case changes, digits and punctuation.
@@ -358,7 +398,14 @@ pub(crate) fn derive(
             kept_owners.push(owners[i]);
         }
     }
-    finish(tree, kept_scene, kept_nodes, kept_owners, room.bounds, options)
+    finish(
+        tree,
+        kept_scene,
+        kept_nodes,
+        kept_owners,
+        room.bounds,
+        options,
+    )
 }
 
 /// Names, units, nesting and supports.
@@ -441,13 +488,9 @@ fn choose(tree: &Tree) -> Vec<Chosen> {
     let mut stack: Vec<usize> = roots.into_iter().rev().collect();
     while let Some(i) = stack.pop() {
         let node = &tree.nodes[i];
-        let inherited = node.parent.and_then(|p| {
-            if starts[p] {
-                Some(p)
-            } else {
-                owner[p]
-            }
-        });
+        let inherited = node
+            .parent
+            .and_then(|p| if starts[p] { Some(p) } else { owner[p] });
         let start = if uses_models {
             node.model
         } else if boxes[i].is_none() || !node.transformable {
@@ -535,7 +578,9 @@ fn clusters(parts: &[Aabb]) -> usize {
             }
         }
     }
-    (0..parts.len()).filter(|&k| root(&mut parent, k) == k).count()
+    (0..parts.len())
+        .filter(|&k| root(&mut parent, k) == k)
+        .count()
 }
 
 /// Each object's name: its node's (or the name Shenlong gave it); objects that share a
@@ -664,8 +709,7 @@ impl Room {
                 .iter()
                 .filter(|c| (b.min.cmple(**c)).all() && c.cmple(b.max).all())
                 .count();
-            if has_word(name, SHELL_WORDS) && others.len() >= 2 && inside * 5 >= others.len() * 4
-            {
+            if has_word(name, SHELL_WORDS) && others.len() >= 2 && inside * 5 >= others.len() * 4 {
                 shells.push(i);
             }
         }
@@ -789,12 +833,48 @@ pub(crate) fn room_slabs(bounds: &Aabb) -> Vec<(&'static str, Aabb)> {
     let out_lo = lo - DVec3::splat(T);
     let out_hi = hi + DVec3::splat(T);
     vec![
-        ("Room_Floor", Aabb::new(DVec3::new(out_lo.x, lo.y - T, out_lo.z), DVec3::new(out_hi.x, lo.y, out_hi.z))),
-        ("Room_Ceiling", Aabb::new(DVec3::new(out_lo.x, hi.y, out_lo.z), DVec3::new(out_hi.x, hi.y + T, out_hi.z))),
-        ("Room_Wall_West", Aabb::new(DVec3::new(out_lo.x, lo.y, out_lo.z), DVec3::new(lo.x, hi.y, out_hi.z))),
-        ("Room_Wall_East", Aabb::new(DVec3::new(hi.x, lo.y, out_lo.z), DVec3::new(out_hi.x, hi.y, out_hi.z))),
-        ("Room_Wall_Back", Aabb::new(DVec3::new(lo.x, lo.y, out_lo.z), DVec3::new(hi.x, hi.y, lo.z))),
-        ("Room_Wall_Front", Aabb::new(DVec3::new(lo.x, lo.y, hi.z), DVec3::new(hi.x, hi.y, out_hi.z))),
+        (
+            "Room_Floor",
+            Aabb::new(
+                DVec3::new(out_lo.x, lo.y - T, out_lo.z),
+                DVec3::new(out_hi.x, lo.y, out_hi.z),
+            ),
+        ),
+        (
+            "Room_Ceiling",
+            Aabb::new(
+                DVec3::new(out_lo.x, hi.y, out_lo.z),
+                DVec3::new(out_hi.x, hi.y + T, out_hi.z),
+            ),
+        ),
+        (
+            "Room_Wall_West",
+            Aabb::new(
+                DVec3::new(out_lo.x, lo.y, out_lo.z),
+                DVec3::new(lo.x, hi.y, out_hi.z),
+            ),
+        ),
+        (
+            "Room_Wall_East",
+            Aabb::new(
+                DVec3::new(hi.x, lo.y, out_lo.z),
+                DVec3::new(out_hi.x, hi.y, out_hi.z),
+            ),
+        ),
+        (
+            "Room_Wall_Back",
+            Aabb::new(
+                DVec3::new(lo.x, lo.y, out_lo.z),
+                DVec3::new(hi.x, hi.y, lo.z),
+            ),
+        ),
+        (
+            "Room_Wall_Front",
+            Aabb::new(
+                DVec3::new(lo.x, lo.y, hi.z),
+                DVec3::new(hi.x, hi.y, out_hi.z),
+            ),
+        ),
     ]
 }
 
@@ -874,12 +954,19 @@ mod tests {
                 node("GroupA", Some(0), vec![]),
                 node("Stool", Some(8), slab([1.0, 0.0, -2.0], [1.2, 0.2, -1.8])),
                 node("GroupB", Some(0), vec![]),
-                node("Stool", Some(10), slab([-1.0, 0.0, -2.0], [-0.8, 0.2, -1.8])),
+                node(
+                    "Stool",
+                    Some(10),
+                    slab([-1.0, 0.0, -2.0], [-0.8, 0.2, -1.8]),
+                ),
             ],
         };
         let d = derive(&tree, "t", DVec3::Z, &ReadOptions::default()).unwrap();
         let names: Vec<&str> = d.scene.objects.iter().map(|o| o.name.as_str()).collect();
-        assert_eq!(names, ["Chair", "Mug", "Stool in GroupA", "Stool in GroupB"]);
+        assert_eq!(
+            names,
+            ["Chair", "Mug", "Stool in GroupA", "Stool in GroupB"]
+        );
         assert_eq!(d.scene.objects[3].labels.aliases, ["GroupB Stool"]);
         let bounds = d.scene.bounds.unwrap();
         assert_eq!(bounds.min.y, 0.0);
@@ -919,7 +1006,11 @@ mod tests {
         let tree = Tree {
             nodes: vec![
                 node("Desk", None, slab([0.0, 0.0, 0.0], [1200.0, 750.0, 600.0])),
-                node("Monitor", None, slab([0.0, 750.0, 0.0], [500.0, 1100.0, 200.0])),
+                node(
+                    "Monitor",
+                    None,
+                    slab([0.0, 750.0, 0.0], [500.0, 1100.0, 200.0]),
+                ),
             ],
         };
         let e = derive(&tree, "t", DVec3::Z, &ReadOptions::default())

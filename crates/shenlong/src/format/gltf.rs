@@ -262,18 +262,18 @@ pub fn read_bytes_with(
             model: false,
             given_name: None,
             labels: {
-                let mut labels = node.mesh().map_or_else(Labels::default, |m| labels_of(node, &m));
+                let mut labels = node
+                    .mesh()
+                    .map_or_else(Labels::default, |m| labels_of(node, &m));
                 let json_node = json_nodes.and_then(|n| n.get(index));
-                if let Some(c) = json_node
-                    .and_then(|n| n.get("extras")?.get("shenlong:category")?.as_str())
+                if let Some(c) =
+                    json_node.and_then(|n| n.get("extras")?.get("shenlong:category")?.as_str())
                 {
                     labels.category = Some(c.to_string());
                 }
                 labels
             },
-            front: json_nodes
-                .and_then(|n| n.get(index))
-                .and_then(extras_front),
+            front: json_nodes.and_then(|n| n.get(index)).and_then(extras_front),
             fallback: match node.name() {
                 Some(n) if !n.trim().is_empty() => format!("{} (node {index})", n.trim()),
                 _ => format!("node {index}"),
@@ -1033,7 +1033,14 @@ mod uri_tests {
         std::fs::write(inner.join("ok.bin"), &bytes).unwrap();
         let path = inner.join("ok.gltf");
         std::fs::write(&path, gltf_with_buffer("ok.bin")).unwrap();
-        assert_eq!(read(&path, &crate::format::ReadOptions::default()).unwrap().0.objects.len(), 1);
+        assert_eq!(
+            read(&path, &crate::format::ReadOptions::default())
+                .unwrap()
+                .0
+                .objects
+                .len(),
+            1
+        );
     }
 }
 

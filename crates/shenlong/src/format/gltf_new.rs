@@ -86,9 +86,15 @@ pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
         bin.extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
         let (lo, hi) = (box_corners[0], box_corners[6]);
         views.push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
-        accessors.push(json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
-            "type": "VEC3", "min": lo, "max": hi}));
-        let mesh_name = object.labels.category.clone().unwrap_or_else(|| object.name.clone());
+        accessors.push(
+            json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
+            "type": "VEC3", "min": lo, "max": hi}),
+        );
+        let mesh_name = object
+            .labels
+            .category
+            .clone()
+            .unwrap_or_else(|| object.name.clone());
         meshes.push(json!({"name": mesh_name,
             "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
         let mut extras = serde_json::Map::new();
@@ -132,8 +138,10 @@ pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
         let offset = bin.len();
         bin.extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
         views.push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
-        accessors.push(json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
-            "type": "VEC3", "min": box_corners[0], "max": box_corners[6]}));
+        accessors.push(
+            json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
+            "type": "VEC3", "min": box_corners[0], "max": box_corners[6]}),
+        );
         meshes.push(json!({"name": name,
             "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
         let t = slab.bottom_center();
@@ -199,5 +207,45 @@ mod tests {
             assert!((ra.min - rb.min).length() < 1e-5, "{ra:?} {rb:?}");
             assert!((ra.max - rb.max).length() < 1e-5, "{ra:?} {rb:?}");
         }
+    }
+}
+
+#[cfg(test)]
+mod front_tests {
+    use crate::format::ReadOptions;
+    use glam::DVec3;
+
+    #[test]
+    fn a_nodes_extras_front_and_its_turn() {
+        // A node turned 90° about +Y (a quaternion) faces +X; one with its own front −X
+        // in `extras` faces −X.
+        let positions: [f32; 9] = [0.0, 0.0, 0.0, 1.0, 0.0, 0.0, 0.0, 1.0, 1.0];
+        let bytes: Vec<u8> = positions.iter().flat_map(|f| f.to_le_bytes()).collect();
+        use base64::Engine as _;
+        let data = base64::engine::general_purpose::STANDARD.encode(&bytes);
+        let h = std::f64::consts::FRAC_1_SQRT_2;
+        let text = serde_json::json!({
+            "asset": {"version": "2.0"}, "scene": 0, "scenes": [{"nodes": [0, 1]}],
+            "nodes": [
+                {"name": "Chair", "mesh": 0, "rotation": [0, h, 0, h]},
+                {"name": "Lamp", "mesh": 0, "translation": [3, 0, 0],
+                 "extras": {"shenlong:front": [-1, 0, 0]}}
+            ],
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}}]}],
+            "accessors": [{"bufferView": 0, "componentType": 5126, "count": 3, "type": "VEC3",
+                           "min": [0, 0, 0], "max": [1, 1, 1]}],
+            "bufferViews": [{"buffer": 0, "byteLength": 36}],
+            "buffers": [{"byteLength": 36, "uri": format!("data:application/octet-stream;base64,{data}")}]
+        })
+        .to_string();
+        let (scene, _) = super::super::gltf::read_bytes_with(
+            text.into_bytes(),
+            std::path::Path::new("."),
+            "t",
+            &ReadOptions::default(),
+        )
+        .unwrap();
+        assert!((scene.objects[0].world_front() - DVec3::X).length() < 1e-9);
+        assert!((scene.objects[1].world_front() - DVec3::NEG_X).length() < 1e-9);
     }
 }

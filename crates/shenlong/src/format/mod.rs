@@ -297,8 +297,7 @@ impl SceneFile {
                 path.display()
             ))),
             Format::Gltf | Format::Glb => {
-                let (scene, document) =
-                    gltf::read(path, options).map_err(|e| e.in_file(path))?;
+                let (scene, document) = gltf::read(path, options).map_err(|e| e.in_file(path))?;
                 Ok(Self {
                     scene,
                     document: Document::Gltf(Box::new(document)),
@@ -307,8 +306,7 @@ impl SceneFile {
             }
             #[cfg(feature = "usd")]
             Format::Usda | Format::Usdc | Format::Usdz => {
-                let (scene, document) =
-                    usd::read(path, options).map_err(|e| e.in_file(path))?;
+                let (scene, document) = usd::read(path, options).map_err(|e| e.in_file(path))?;
                 Ok(Self {
                     scene,
                     document: Document::Usd(Box::new(document)),

@@ -927,13 +927,8 @@ pub fn write(
         ),
         _ => None,
     };
-    let relocate = to
-        .as_ref()
-        .map(|to| move |p: &str| patch::relocated(p, &from, to));
-    let relocate_ref: Option<&dyn Fn(&str) -> Option<String>> = relocate
-        .as_ref()
-        .map(|f| f as &dyn Fn(&str) -> Option<String>);
-    patch::patch(&text, &edits, relocate_ref).map(String::into_bytes)
+    let moves = to.map(|to| patch::Move { from, to });
+    patch::patch(&text, &edits, moves.as_ref()).map(String::into_bytes)
 }
 
 /// Whether two folders are the same one.
@@ -962,8 +957,10 @@ fn sublayer_in(source: &Path, folder: &Path) -> Result<String, FormatError> {
     let folder = folder
         .canonicalize()
         .map_err(|e| err(format!("cannot find the folder {}: {e}", folder.display())))?;
-    Ok(patch::relocated(name, from, &folder)
-        .unwrap_or_else(|| real.to_string_lossy().into_owned()))
+    Ok(
+        patch::relocated(name, from, &folder)
+            .unwrap_or_else(|| real.to_string_lossy().into_owned()),
+    )
 }
 
 /// The ops as usda statements: (name, type, value text).
@@ -1103,7 +1100,12 @@ pub fn write_new(scene: &Scene) -> Vec<u8> {
             number(q.w), number(q.x), number(q.y), number(q.z),
             s = number(pose.scale),
         ));
-        text.push_str(&cube("Box", "        ", DVec3::new(0.0, size.y / 2.0, 0.0), size));
+        text.push_str(&cube(
+            "Box",
+            "        ",
+            DVec3::new(0.0, size.y / 2.0, 0.0),
+            size,
+        ));
         text.push_str("    }\n\n");
     }
     for (name, slab) in scene

@@ -101,11 +101,17 @@ impl<'a> Lexer<'a> {
                     return Ok(Some((start, Token::Asset(start, end))));
                 }
                 b'<' => {
-                    let end = find(t, self.pos + 1, b">").ok_or_else(|| unclosed(t, start, "path"))?;
+                    let end =
+                        find(t, self.pos + 1, b">").ok_or_else(|| unclosed(t, start, "path"))?;
                     self.pos = end + 1;
                     return Ok(Some((start, Token::Punct(b'<'))));
                 }
-                c if c.is_ascii_alphanumeric() || c == b'_' || c == b'-' || c == b'.' || c >= 0x80 => {
+                c if c.is_ascii_alphanumeric()
+                    || c == b'_'
+                    || c == b'-'
+                    || c == b'.'
+                    || c >= 0x80 =>
+                {
                     while self.pos < t.len() {
                         let d = t[self.pos];
                         if d.is_ascii_alphanumeric()
@@ -385,7 +391,10 @@ fn property_name(statement: &[Token]) -> Option<String> {
         })
         .filter(|w| !w.is_empty() && *w != "[]")
         .collect();
-    if matches!(words.first(), Some(&("def" | "over" | "class" | "variantSet"))) {
+    if matches!(
+        words.first(),
+        Some(&("def" | "over" | "class" | "variantSet"))
+    ) {
         return None;
     }
     words.last().map(|w| {
@@ -404,15 +413,25 @@ fn replaced(name: &str) -> bool {
     name == "xformOpOrder" || (name.starts_with("xformOp:") && name.ends_with(":shenlong"))
 }
 
+/// A layer moving from one folder to another (both canonical): its relative asset paths
+/// are rewritten to resolve from the new one.
+#[derive(Debug)]
+pub(super) struct Move {
+    /// The folder the layer was read from.
+    pub from: PathBuf,
+    /// The folder it is written to.
+    pub to: PathBuf,
+}
+
 /// The layer's text with each prim's new ops (`edits`, by path), and its relative asset
-/// paths rewritten by `relocate` when it is given.
+/// paths rewritten when it `moves` to another folder.
 ///
 /// # Errors
 /// The text cannot be scanned.
 pub(super) fn patch(
     text: &str,
     edits: &[(String, Ops)],
-    relocate: Option<&dyn Fn(&str) -> Option<String>>,
+    moves: Option<&Move>,
 ) -> Result<String, FormatError> {
     let outline = Outline::scan(text)?;
     // Replacements: (start, end, new text), applied back to front.
@@ -429,7 +448,11 @@ pub(super) fn patch(
             if !replaced(name) {
                 continue;
             }
-            let new = if inserted { String::new() } else { lines.clone() };
+            let new = if inserted {
+                String::new()
+            } else {
+                lines.clone()
+            };
             inserted = true;
             changes.push((*start, *end, new));
         }
@@ -484,7 +507,7 @@ pub(super) fn patch(
         }
         changes.push((at, at, block));
     }
-    if let Some(relocate) = relocate {
+    if let Some(m) = moves {
         for &(a, b) in &outline.assets {
             let inner = &text[a..b];
             let (open, path) = if inner.starts_with("@@@") {
@@ -492,7 +515,7 @@ pub(super) fn patch(
             } else {
                 ("@", &inner[1..inner.len().saturating_sub(1)])
             };
-            if let Some(new) = relocate(path) {
+            if let Some(new) = relocated(path, &m.from, &m.to) {
                 changes.push((a, b, format!("{open}{new}{open}")));
             }
         }

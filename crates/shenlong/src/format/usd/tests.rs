@@ -120,8 +120,16 @@ fn an_edit_changes_only_the_moved_prims_op_stack() {
         .filter(|l| !ROOM_Z_UP_CM.lines().any(|t| t == *l))
         .collect();
     assert_eq!(added.len(), 4, "{added:?}");
-    assert!(added[0].contains("double3 xformOp:translate:shenlong = (-150, -30, 0)"), "{added:?}");
-    assert!(added[1].contains("quatd xformOp:orient:shenlong = (0.7071067811865476, 0, 0, 0.7071067811865475)") || added[1].contains("quatd xformOp:orient:shenlong"), "{added:?}");
+    assert!(
+        added[0].contains("double3 xformOp:translate:shenlong = (-150, -30, 0)"),
+        "{added:?}"
+    );
+    assert!(
+        added[1].contains(
+            "quatd xformOp:orient:shenlong = (0.7071067811865476, 0, 0, 0.7071067811865475)"
+        ) || added[1].contains("quatd xformOp:orient:shenlong"),
+        "{added:?}"
+    );
     // A .usdc output is refused, naming .usda.
     let e = super::write(&scene, &document, UsdContainer::Usdc, None).unwrap_err();
     assert!(e.message.contains(".usda"), "{}", e.message);
@@ -153,7 +161,10 @@ fn written_elsewhere_asset_paths_still_resolve() {
     // Read from there, every object is still composed (the stage's folder is the
     // output's, so read with the files outside it allowed by reading from their common
     // folder is what usd-core does; here the text is checked).
-    assert!(text.contains("double3 xformOp:translate:shenlong = (200, 0, 0)"), "{text}");
+    assert!(
+        text.contains("double3 xformOp:translate:shenlong = (200, 0, 0)"),
+        "{text}"
+    );
 }
 
 #[test]
@@ -194,7 +205,10 @@ fn references_out_of_the_folder_and_deep_nesting_are_refused() {
         "room.usda",
         "#usda 1.0\n(\n    subLayers = [@../secret.usda@]\n)\n",
     );
-    let e = read(&escaping, &ReadOptions::default()).map(|_| ()).unwrap_err().to_string();
+    let e = read(&escaping, &ReadOptions::default())
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
     assert!(
         e.contains("secret.usda' is outside the stage's folder"),
         "{e}"
@@ -207,11 +221,17 @@ fn references_out_of_the_folder_and_deep_nesting_are_refused() {
             dir.path().join("secret.usda").display()
         ),
     );
-    let e = read(&absolute, &ReadOptions::default()).map(|_| ()).unwrap_err().to_string();
+    let e = read(&absolute, &ReadOptions::default())
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("is outside the stage's folder"), "{e}");
     let deep = format!("#usda 1.0\n{}", "(".repeat(200));
     let deep = write(dir.path(), "deep.usda", &deep);
-    let e = read(&deep, &ReadOptions::default()).map(|_| ()).unwrap_err().to_string();
+    let e = read(&deep, &ReadOptions::default())
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
     assert!(e.contains("nesting deeper than"), "{e}");
 }
 
@@ -266,7 +286,11 @@ fn every_example_reads_back_the_same_from_usd_and_gltf() {
     let dir = tempfile::tempdir().unwrap();
     for (name, _) in crate::examples::list() {
         let scene = crate::examples::build(name).unwrap();
-        let usd = write(dir.path(), &format!("{name}.usda"), std::str::from_utf8(&write_new(&scene)).unwrap());
+        let usd = write(
+            dir.path(),
+            &format!("{name}.usda"),
+            std::str::from_utf8(&write_new(&scene)).unwrap(),
+        );
         let (from_usd, _) = read(&usd, &ReadOptions::default()).unwrap();
         let glb = super::super::gltf_new::write_new(&scene, true).unwrap();
         let (from_gltf, _) = super::super::gltf::read_bytes(glb, Path::new("."), name).unwrap();
@@ -275,16 +299,108 @@ fn every_example_reads_back_the_same_from_usd_and_gltf() {
             for (a, b) in scene.objects.iter().zip(&back.objects) {
                 assert_eq!(a.name, b.name, "{name}");
                 let (x, y) = (a.world_aabb(), b.world_aabb());
-                assert!((x.min - y.min).length() < 1e-5 && (x.max - y.max).length() < 1e-5, "{name}: {}", a.name);
-                assert!((a.world_front() - b.world_front()).length() < 1e-6, "{name}: {} front", a.name);
+                assert!(
+                    (x.min - y.min).length() < 1e-5 && (x.max - y.max).length() < 1e-5,
+                    "{name}: {}",
+                    a.name
+                );
+                assert!(
+                    (a.world_front() - b.world_front()).length() < 1e-6,
+                    "{name}: {} front",
+                    a.name
+                );
                 assert_eq!(a.labels.category, b.labels.category, "{name}: {}", a.name);
                 let support = |s: &crate::scene::Scene, o: &crate::scene::Object| {
                     o.support.map(|k| s.objects[k].name.clone())
                 };
-                assert_eq!(support(&scene, a), support(back, b), "{name}: {} support", a.name);
+                assert_eq!(
+                    support(&scene, a),
+                    support(back, b),
+                    "{name}: {} support",
+                    a.name
+                );
             }
             let (ra, rb) = (scene.bounds.unwrap(), back.bounds.unwrap());
-            assert!((ra.min - rb.min).length() < 1e-5 && (ra.max - rb.max).length() < 1e-5, "{name}: {ra:?} {rb:?}");
+            assert!(
+                (ra.min - rb.min).length() < 1e-5 && (ra.max - rb.max).length() < 1e-5,
+                "{name}: {ra:?} {rb:?}"
+            );
         }
     }
+}
+
+#[test]
+fn fronts_follow_each_prims_turn_its_own_front_and_the_runs_axis() {
+    // Blender's convention: Z-up models face −Y. An armchair turned rotateZ −90 faces −X;
+    // a lamp with its own `shenlong:front` (+X in its axes) faces +X; a stool faces +Z.
+    let stage = r#"#usda 1.0
+(
+    defaultPrim = "root"
+    metersPerUnit = 0.01
+    upAxis = "Z"
+)
+
+def Xform "root"
+{
+    def Xform "Armchair"
+    {
+        float xformOp:rotateZ = -90
+        uniform token[] xformOpOrder = ["xformOp:rotateZ"]
+        def Cube "Body"
+        {
+            double size = 80
+        }
+    }
+
+    def Xform "Lamp"
+    {
+        custom double3 shenlong:front = (1, 0, 0)
+        double3 xformOp:translate = (300, 0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+        def Cube "Body"
+        {
+            double size = 30
+        }
+    }
+
+    def Xform "Stool"
+    {
+        double3 xformOp:translate = (-300, 0, 0)
+        uniform token[] xformOpOrder = ["xformOp:translate"]
+        def Cube "Body"
+        {
+            double size = 40
+        }
+    }
+}
+"#;
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "fronts.usda", stage);
+    let (scene, _) = read(&path, &ReadOptions::default()).unwrap();
+    let front = |name: &str| scene.objects[scene.find(name).unwrap()].world_front();
+    assert!(
+        (front("Armchair") - DVec3::NEG_X).length() < 1e-9,
+        "{}",
+        front("Armchair")
+    );
+    assert!((front("Lamp") - DVec3::X).length() < 1e-9);
+    assert!((front("Stool") - DVec3::Z).length() < 1e-9);
+    // A file that follows another convention: its models face +X (in its axes).
+    let options = ReadOptions {
+        front: Some("+x".parse().unwrap()),
+        ..ReadOptions::default()
+    };
+    let (scene, _) = read(&path, &options).unwrap();
+    let front = |name: &str| scene.objects[scene.find(name).unwrap()].world_front();
+    // +X turned −90° about Z is −Y in the stage: Shenlong's +Z.
+    assert!(
+        (front("Armchair") - DVec3::Z).length() < 1e-9,
+        "{}",
+        front("Armchair")
+    );
+    assert!(
+        (front("Lamp") - DVec3::X).length() < 1e-9,
+        "a prim's own front wins"
+    );
+    assert!((front("Stool") - DVec3::X).length() < 1e-9);
 }
