@@ -115,14 +115,17 @@ pub struct UsdDocument {
     pub objects: Vec<UsdObject>,
 }
 
+/// Asset paths a resolver refused, each with the reason in words.
+pub type Refusals = std::sync::Arc<std::sync::Mutex<Vec<(String, String)>>>;
+
 /// A resolver that reads only inside one folder: sublayers, references and payloads that
 /// climb out of it (`../`, an absolute path elsewhere, a link out) or are no regular file
 /// of at most [`MAX_USD_BYTES`] resolve to nothing, as glTF URIs do.
 pub struct FolderResolver {
     root: PathBuf,
     inner: DefaultResolver,
-    /// The asset paths refused, for the error that names them.
-    refused: std::sync::Arc<std::sync::Mutex<Vec<String>>>,
+    /// The asset paths refused, each with why, for the error that names them.
+    refused: Refusals,
 }
 
 impl FolderResolver {
@@ -146,17 +149,29 @@ impl FolderResolver {
 
     /// The list the resolver adds each refused asset path to.
     #[must_use]
-    pub fn refusals(&self) -> std::sync::Arc<std::sync::Mutex<Vec<String>>> {
+    pub fn refusals(&self) -> Refusals {
         self.refused.clone()
     }
 
     /// Whether a resolved path is a regular file inside the folder (a file inside a
-    /// package: its package).
-    fn inside(&self, resolved: &ResolvedPath) -> bool {
+    /// package: its package), or why not.
+    fn inside(&self, resolved: &ResolvedPath) -> Result<(), String> {
         let text = resolved.to_string_lossy();
         let outer = ar::split_package_relative_path_outer(&text)
             .map_or_else(|| text.to_string(), |(package, _)| package);
-        super::file_inside(Path::new(&outer), &self.root).is_ok()
+        super::file_inside(Path::new(&outer), &self.root).map_err(|why| match why {
+            super::NotInside::Outside => {
+                "is outside the stage's folder; only files inside it are read".to_string()
+            }
+            super::NotInside::Missing => "does not exist".to_string(),
+            super::NotInside::NotAFile => {
+                "is not a regular file (a folder, pipe or device); only files are read".to_string()
+            }
+            super::NotInside::TooLarge => {
+                format!("is larger than {} MiB", MAX_USD_BYTES >> 20)
+            }
+            super::NotInside::Unreadable(e) => format!("cannot be read: {e}"),
+        })
     }
 }
 
@@ -167,13 +182,14 @@ impl Resolver for FolderResolver {
 
     fn resolve(&self, asset_path: &str) -> Option<ResolvedPath> {
         let resolved = self.inner.resolve(asset_path)?;
-        if self.inside(&resolved) {
-            Some(resolved)
-        } else {
-            if let Ok(mut list) = self.refused.lock() {
-                list.push(asset_path.to_string());
+        match self.inside(&resolved) {
+            Ok(()) => Some(resolved),
+            Err(why) => {
+                if let Ok(mut list) = self.refused.lock() {
+                    list.push((asset_path.to_string(), why));
+                }
+                None
             }
-            None
         }
     }
 
@@ -182,10 +198,10 @@ impl Resolver for FolderResolver {
     }
 
     fn open_asset(&self, resolved_path: &ResolvedPath) -> std::io::Result<Box<dyn Asset>> {
-        if !self.inside(resolved_path) {
+        if let Err(why) = self.inside(resolved_path) {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::PermissionDenied,
-                "outside the stage's folder",
+                why,
             ));
         }
         self.inner.open_asset(resolved_path)
@@ -221,6 +237,8 @@ fn check_nesting(text: &str) -> Result<(), FormatError> {
     let (mut depth, mut line) = (0usize, 1usize);
     let mut quote: Option<char> = None;
     let mut escaped = false;
+    // A comment runs to the end of its line: an apostrophe in it (`# it's`) opens nothing.
+    let mut in_comment = false;
     for c in text.chars() {
         if c == '\n' {
             line += 1;
@@ -235,7 +253,12 @@ fn check_nesting(text: &str) -> Result<(), FormatError> {
             }
             continue;
         }
+        if in_comment {
+            in_comment = c != '\n';
+            continue;
+        }
         match c {
+            '#' => in_comment = true,
             '"' | '\'' => quote = Some(c),
             '{' | '[' | '(' => {
                 depth += 1;
@@ -260,8 +283,9 @@ struct Opened {
     uses_kinds: bool,
 }
 
-/// Opens a stage, reading only inside its folder, and walks it once.
-fn open_stage(path: &Path) -> Result<Opened, FormatError> {
+/// Whether a stage's file is a regular file within [`MAX_USD_BYTES`] (a FIFO, a device or
+/// a link to `/dev/zero` is refused before anything is read): its size.
+fn check_file(path: &Path) -> Result<u64, FormatError> {
     let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot read it: {e}")))?;
     if !meta.is_file() {
         return Err(err("not a regular file"));
@@ -269,6 +293,63 @@ fn open_stage(path: &Path) -> Result<Opened, FormatError> {
     if meta.len() > MAX_USD_BYTES {
         return Err(err(format!("larger than {} MiB", MAX_USD_BYTES >> 20)));
     }
+    Ok(meta.len())
+}
+
+/// Whether a `.usdz` package is as USD makes them: a zip whose files are stored, not
+/// compressed (so nothing in it inflates: no zip bomb), each within the package. Reads
+/// only its central directory.
+fn check_package(path: &Path) -> Result<(), FormatError> {
+    let bytes = std::fs::read(path).map_err(|e| err(format!("cannot read it: {e}")))?;
+    let bad = |what: &str| err(format!("not a USD package: {what}"));
+    // The end of central directory record: its signature within the last 64 KiB + 22.
+    let from = bytes.len().saturating_sub(65_557);
+    let eocd = (from..bytes.len().saturating_sub(21))
+        .rev()
+        .find(|&k| bytes[k..k + 4] == [0x50, 0x4b, 0x05, 0x06])
+        .ok_or_else(|| bad("no zip directory"))?;
+    let u16_at = |k: usize| -> Option<u64> {
+        Some(u64::from(u16::from_le_bytes(
+            bytes.get(k..k + 2)?.try_into().ok()?,
+        )))
+    };
+    let u32_at = |k: usize| -> Option<u64> {
+        Some(u64::from(u32::from_le_bytes(
+            bytes.get(k..k + 4)?.try_into().ok()?,
+        )))
+    };
+    let entries = u16_at(eocd + 10).ok_or_else(|| bad("a cut zip directory"))?;
+    let mut at = usize::try_from(u32_at(eocd + 16).unwrap_or(u64::MAX)).unwrap_or(usize::MAX);
+    let total = bytes.len() as u64;
+    for _ in 0..entries {
+        let entry = (|| -> Option<(u64, u64, u64, usize)> {
+            if bytes.get(at..at + 4)? != [0x50, 0x4b, 0x01, 0x02] {
+                return None;
+            }
+            let method = u16_at(at + 10)?;
+            let compressed = u32_at(at + 20)?;
+            let size = u32_at(at + 24)?;
+            let next = at + 46 + (u16_at(at + 28)? + u16_at(at + 30)? + u16_at(at + 32)?) as usize;
+            Some((method, compressed, size, next))
+        })()
+        .ok_or_else(|| bad("a cut or corrupt zip directory"))?;
+        let (method, compressed, size, next) = entry;
+        if method != 0 {
+            return Err(bad(
+                "its files are compressed (a .usdz stores them uncompressed), so it is not read",
+            ));
+        }
+        if compressed != size || size > total {
+            return Err(bad("a file in it is larger than the package"));
+        }
+        at = next;
+    }
+    Ok(())
+}
+
+/// Opens a stage, reading only inside its folder, and walks it once.
+fn open_stage(path: &Path) -> Result<Opened, FormatError> {
+    check_file(path)?;
     if container_of(path)? == UsdContainer::Usda {
         let text =
             std::fs::read_to_string(path).map_err(|e| err(format!("cannot read it: {e}")))?;
@@ -313,9 +394,9 @@ fn open_stage(path: &Path) -> Result<Opened, FormatError> {
             break;
         }
     }
-    if let Some(first) = refused.lock().ok().and_then(|l| l.first().cloned()) {
+    if let Some((first, why)) = refused.lock().ok().and_then(|l| l.first().cloned()) {
         return Err(err(format!(
-            "'{}' is outside the stage's folder; only files inside it are read",
+            "'{}' {why}",
             first.chars().take(200).collect::<String>()
         )));
     }
@@ -342,9 +423,9 @@ fn frame_of(stage: &Stage) -> Result<StageFrame, FormatError> {
         None => 0.01,
         Some(v) => scalar(&v).ok_or_else(|| err("metersPerUnit is not a number"))?,
     };
-    if !(meters_per_unit.is_finite() && meters_per_unit > 0.0) {
+    if !(meters_per_unit.is_finite() && (1e-9..=1e9).contains(&meters_per_unit)) {
         return Err(err(format!(
-            "metersPerUnit {meters_per_unit} is not a positive number"
+            "metersPerUnit {meters_per_unit} is not a number between 1e-9 and 1e9 (a nanometre and a million kilometres)"
         )));
     }
     Ok(StageFrame {
@@ -452,7 +533,10 @@ fn op_matrix(prim: &Prim, op: &str) -> Result<DMat4, FormatError> {
             Value::Matrix4d(m) => matrix(m),
             _ => DMat4::IDENTITY,
         },
-        k if k.starts_with("rotate") && k.len() == 9 => {
+        k if k.starts_with("rotate")
+            && k.len() == 9
+            && k[6..].bytes().all(|b| matches!(b, b'X' | b'Y' | b'Z')) =>
+        {
             let v = vec3(&value).unwrap_or(DVec3::ZERO);
             let r = |axis: char| match axis {
                 'X' => DMat4::from_rotation_x(v.x.to_radians()),
@@ -580,6 +664,7 @@ fn is_component(prim: &Prim) -> bool {
 }
 
 /// What the writer needs of each prim of the tree.
+#[derive(Debug)]
 struct PrimInfo {
     path: String,
     world: DMat4,
@@ -588,16 +673,70 @@ struct PrimInfo {
 
 /// Reads a stage as a scene: objects with their world boxes in Shenlong's frame, chosen,
 /// named and put in their room by the step every node-based format shares
-/// ([`super::facts`]).
+/// ([`super::facts`]). The stage is opened and walked in a child process with a time and
+/// memory budget ([`sandbox`]), so that no stage can crash or exhaust this one.
 ///
 /// # Errors
-/// A file that is no USD stage Shenlong can read, nests too deep or is too large; a
-/// stage whose `upAxis` or `metersPerUnit` is unusable; one with no object.
+/// A file that is no USD stage Shenlong can read, nests too deep or is too large, or whose
+/// reading crashed or ran out of time or memory; a stage whose `upAxis` or
+/// `metersPerUnit` is unusable; one with no object.
 pub fn read(
     path: &Path,
     options: &super::facts::ReadOptions,
 ) -> Result<(Scene, UsdDocument), FormatError> {
     let container = container_of(path)?;
+    let size = check_file(path)?;
+    if container == UsdContainer::Usdz {
+        check_package(path)?;
+    }
+    let budget = sandbox::Budget::for_bytes(size);
+    let bytes = sandbox::run(budget, || walk(path, options).map(|w| w.encode()))?;
+    let walked = wire::Walked::decode(&bytes)?;
+    let frame = StageFrame {
+        meters_per_unit: options
+            .units
+            .map_or(walked.frame.meters_per_unit, super::facts::Units::meters),
+        ..walked.frame
+    };
+    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
+    let front = match frame.up {
+        UpAxis::Y => DVec3::Z,
+        UpAxis::Z => DVec3::NEG_Y,
+    };
+    let derived = super::facts::derive(&walked.tree, stem, front, options)?;
+    if derived.scene.objects.is_empty() {
+        return Err(err(
+            "no object: no prim with geometry under the default prim (or the root)",
+        ));
+    }
+    let prims = &walked.prims;
+    let objects = derived
+        .nodes
+        .iter()
+        .zip(&derived.ancestors)
+        .map(|(&n, &ancestor)| UsdObject {
+            path: prims[n].path.clone(),
+            world: prims[n].world,
+            parent_world: prims[n].parent_world,
+            ancestor,
+            name: walked.tree.nodes[n].given_name.clone(),
+        })
+        .collect();
+    let document = UsdDocument {
+        source: path.to_path_buf(),
+        container,
+        frame,
+        authored_meters_per_unit: walked.frame.meters_per_unit,
+        default_prim: walked.default_prim,
+        objects,
+    };
+    Ok((derived.scene, document))
+}
+
+/// Opens a stage and walks its prims, parents first: the tree the shared reading step
+/// needs, what writing needs of each prim, the frame as authored and the default prim.
+/// Runs in the reading child process ([`sandbox`]).
+fn walk(path: &Path, options: &super::facts::ReadOptions) -> Result<wire::Walked, FormatError> {
     let Opened { stage, uses_kinds } = open_stage(path)?;
     let authored = frame_of(&stage)?;
     let frame = StageFrame {
@@ -684,12 +823,12 @@ pub fn read(
             transformable: is_transformable(&type_name),
             model: uses_kinds && is_component(&prim),
             given_name: match attr(&prim, "shenlong:name") {
-                Some(Value::String(n)) if !n.trim().is_empty() => Some(n),
+                Some(Value::String(n)) if !n.trim().is_empty() => Some(unescape(&n)),
                 _ => None,
             },
             labels: crate::scene::Labels {
                 category: match attr(&prim, "shenlong:category") {
-                    Some(Value::String(c)) if !c.trim().is_empty() => Some(c),
+                    Some(Value::String(c)) if !c.trim().is_empty() => Some(unescape(&c)),
                     _ => None,
                 },
                 ..crate::scene::Labels::default()
@@ -712,38 +851,12 @@ pub fn read(
             });
         }
     }
-    let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
-    let front = match frame.up {
-        UpAxis::Y => DVec3::Z,
-        UpAxis::Z => DVec3::NEG_Y,
-    };
-    let derived = super::facts::derive(&tree, stem, front, options)?;
-    if derived.scene.objects.is_empty() {
-        return Err(err(
-            "no object: no prim with geometry under the default prim (or the root)",
-        ));
-    }
-    let objects = derived
-        .nodes
-        .iter()
-        .zip(&derived.ancestors)
-        .map(|(&n, &ancestor)| UsdObject {
-            path: prims[n].path.clone(),
-            world: prims[n].world,
-            parent_world: prims[n].parent_world,
-            ancestor,
-            name: tree.nodes[n].given_name.clone(),
-        })
-        .collect();
-    let document = UsdDocument {
-        source: path.to_path_buf(),
-        container,
-        frame,
-        authored_meters_per_unit: authored.meters_per_unit,
+    Ok(wire::Walked {
+        tree,
+        prims,
+        frame: authored,
         default_prim,
-        objects,
-    };
-    Ok((derived.scene, document))
+    })
 }
 
 /// Whether a prim of this type can carry a transform (an object's root).
@@ -1030,7 +1143,9 @@ pub fn sublayer_path(source: &Path, layer: &Path) -> Result<String, FormatError>
         .canonicalize()
         .map_err(|e| err(format!("cannot find the folder {}: {e}", folder.display())))?;
     let name = layer.file_name().map(|n| layer_folder.join(n));
-    if name.as_deref() == Some(real.as_path()) {
+    // Where the layer would really be written: through a link, the file it names.
+    let target = layer.canonicalize().ok().or(name);
+    if target.as_deref() == Some(real.as_path()) {
         return Err(err(
             "a layer over a stage cannot replace the stage itself: write it to another file",
         ));
@@ -1241,6 +1356,26 @@ fn escape(s: &str) -> String {
     s.replace('\\', "\\\\").replace('"', "\\\"")
 }
 
+/// A usda string's text as written, its escapes undone (the USD crate keeps them): what
+/// [`escape`] wrote reads back as it was.
+fn unescape(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let mut chars = s.chars();
+    while let Some(c) = chars.next() {
+        if c != '\\' {
+            out.push(c);
+            continue;
+        }
+        match chars.next() {
+            Some('n') => out.push('\n'),
+            Some('t') => out.push('\t'),
+            Some(other) => out.push(other),
+            None => out.push('\\'),
+        }
+    }
+    out
+}
+
 /// A number as usda writes it: shortest round-trip form.
 fn number(x: f64) -> String {
     let s = format!("{x:?}");
@@ -1305,5 +1440,7 @@ fn usda_value(v: &Value) -> String {
 }
 
 mod patch;
+mod sandbox;
 #[cfg(test)]
 mod tests;
+mod wire;
