@@ -359,12 +359,7 @@ pub(crate) fn derive(
             continue;
         }
         let node = &tree.nodes[object.node];
-        let local_front = node.front.unwrap_or(front_axis);
-        let front = node
-            .world
-            .transform_vector3(local_front)
-            .try_normalize()
-            .unwrap_or(DVec3::Z);
+        let front = front_of(node, front_axis, options.front.is_none());
         let mut o = Object::new(
             String::new(),
             Shape::Points {
@@ -406,6 +401,25 @@ pub(crate) fn derive(
         room.bounds,
         options,
     )
+}
+
+/// The world direction a node faces: its own front, else the format's (or the run's) axis
+/// through its world rotation. Furniture faces sideways: where the format's axis comes
+/// out vertical and neither the node nor the run says otherwise, the models were authored
+/// Z-up under a node that turns them Y-up (a Sketchfab or FBX wrapper), and face their
+/// −Y, as Blender's do.
+fn front_of(node: &Node, axis: DVec3, guess: bool) -> DVec3 {
+    let world = |local: DVec3| node.world.transform_vector3(local).try_normalize();
+    if let Some(own) = node.front {
+        return world(own).unwrap_or(DVec3::Z);
+    }
+    let front = world(axis).unwrap_or(DVec3::Z);
+    if guess && front.y.abs() > 0.9 {
+        if let Some(z_up) = world(DVec3::NEG_Y).filter(|f| f.y.abs() < 0.5) {
+            return z_up;
+        }
+    }
+    front
 }
 
 /// Names, units, nesting and supports.
@@ -492,7 +506,15 @@ fn choose(tree: &Tree) -> Vec<Chosen> {
             .parent
             .and_then(|p| if starts[p] { Some(p) } else { owner[p] });
         let start = if uses_models {
+            // The file's components; and, outside them, floors, walls and ceilings that
+            // hold geometry (the room, taken out of the objects later).
             node.model
+                || (inherited.is_none()
+                    && boxes[i].is_some()
+                    && !ancestors_model(tree, i)
+                    && (has_word(&node.name, FLOOR_WORDS)
+                        || has_word(&node.name, WALL_WORDS)
+                        || has_word(&node.name, CEILING_WORDS)))
         } else if boxes[i].is_none() || !node.transformable {
             false
         } else {
@@ -525,6 +547,18 @@ fn choose(tree: &Tree) -> Vec<Chosen> {
     out
 }
 
+/// Whether a node lies inside a model (a USD component): its parts are the model's.
+fn ancestors_model(tree: &Tree, i: usize) -> bool {
+    let mut p = tree.nodes[i].parent;
+    while let Some(k) = p {
+        if tree.nodes[k].model {
+            return true;
+        }
+        p = tree.nodes[k].parent;
+    }
+    false
+}
+
 fn union(a: &Aabb, b: &Aabb) -> Aabb {
     Aabb::new(a.min.min(b.min), a.max.max(b.max))
 }
@@ -551,6 +585,27 @@ fn is_group(tree: &Tree, children: &[Vec<usize>], boxes: &[Option<Aabb>], i: usi
         return false;
     }
     if parts.len() > MAX_PARTS {
+        return true;
+    }
+    // A floor or a wall among the children: the node is a room of objects (everything
+    // stands on the floor, so the boxes alone would make one cluster).
+    let union = parts
+        .iter()
+        .skip(1)
+        .fold(parts[0], |a, b| self::union(&a, b));
+    let room_like = |c: usize| {
+        let name = &tree.nodes[c].name;
+        let Some(b) = boxes[c] else { return false };
+        let s = b.size();
+        has_word(name, FLOOR_WORDS)
+            || has_word(name, WALL_WORDS)
+            || has_word(name, CEILING_WORDS)
+            || (generic(name)
+                && s.y <= 0.1
+                && s.x * s.z >= 2.0
+                && b.max.y <= union.min.y + 0.02 + s.y)
+    };
+    if geometric.iter().any(|&c| room_like(c)) {
         return true;
     }
     clusters(&parts) > 1
@@ -587,7 +642,7 @@ fn clusters(parts: &[Aabb]) -> usize {
 /// name (compared case-insensitively) are told apart by their group's name — `Chair in
 /// GroupA`, also called `GroupA Chair` (the alias returned beside it) — else by their
 /// node's fallback name (its path).
-fn names(tree: &Tree, nodes: &[usize]) -> Vec<(String, Option<String>)> {
+fn names(tree: &Tree, nodes: &[usize]) -> Vec<(String, Vec<String>)> {
     let base: Vec<String> = nodes
         .iter()
         .map(|&n| {
@@ -614,17 +669,17 @@ fn names(tree: &Tree, nodes: &[usize]) -> Vec<(String, Option<String>)> {
         }
         None
     };
-    let mut named: Vec<(String, Option<String>)> = base
+    let mut named: Vec<(String, Vec<String>)> = base
         .iter()
         .zip(nodes)
         .map(|(b, &n)| {
             if count[&b.to_lowercase()] > 1 {
                 match group_of(n) {
-                    Some(g) => (format!("{b} in {g}"), Some(format!("{g} {b}"))),
-                    None => (tree.nodes[n].fallback.clone(), None),
+                    Some(g) => (format!("{b} in {g}"), vec![format!("{g} {b}")]),
+                    None => (tree.nodes[n].fallback.clone(), Vec::new()),
                 }
             } else {
-                (b.clone(), None)
+                (b.clone(), Vec::new())
             }
         })
         .collect();
@@ -635,7 +690,7 @@ fn names(tree: &Tree, nodes: &[usize]) -> Vec<(String, Option<String>)> {
     }
     for (k, &n) in nodes.iter().enumerate() {
         if again[&named[k].0.to_lowercase()] > 1 {
-            named[k] = (tree.nodes[n].fallback.clone(), None);
+            named[k] = (tree.nodes[n].fallback.clone(), Vec::new());
         }
     }
     named

@@ -14,7 +14,9 @@ pub const FLOOR_LEVEL: f64 = 0.05;
 /// Marks, for each object without a support from the file, the object it rests on: the
 /// one whose top is within [`SUPPORT_GAP`] of its bottom, that its footprint's centre lies
 /// over, and that it rises above (so two supports can never form a cycle). Among several,
-/// the highest top wins, then the largest footprint overlap.
+/// the highest top wins, then the largest footprint overlap. An object that rests on no
+/// top but stands inside another's box, above its bottom (a book on a bookcase's shelf),
+/// is held by the smallest such object.
 pub fn detect(scene: &mut Scene) {
     let boxes = scene.world_aabbs();
     let grid = FloorGrid::new(&boxes);
@@ -68,9 +70,9 @@ pub fn detect_around(
         }
         // What still rests on its support keeps it (a lamp carried with its nightstand
         // into the bed's box still stands on the nightstand, not on the bed).
-        let keeps = scene.objects[i]
-            .support
-            .is_some_and(|s| s != i && rests(scene, &boxes[i], &boxes[s]));
+        let keeps = scene.objects[i].support.is_some_and(|s| {
+            s != i && (rests(scene, &boxes[i], &boxes[s]) || inside(&boxes[i], &boxes[s]))
+        });
         if !keeps {
             scene.objects[i].support = support_of(scene, boxes, grid, i);
         }
@@ -124,4 +126,33 @@ fn support_of(scene: &Scene, boxes: &[Aabb], grid: &FloorGrid, i: usize) -> Opti
         }
     }
     best.map(|(j, _, _)| j)
+        .or_else(|| container_of(boxes, grid, i))
+}
+
+/// Whether box `a` stands inside box `b` rather than on its top: its bottom within `b`'s
+/// height, above `b`'s bottom, and its footprint within `b`'s (to 1 cm) — a book on a
+/// bookcase's shelf, a cushion sunk in a sofa, a drill in a toolbox.
+fn inside(a: &Aabb, b: &Aabb) -> bool {
+    const MARGIN: f64 = 0.01;
+    a.min.y > b.min.y + 1e-3
+        && a.min.y < b.max.y - SUPPORT_GAP
+        && a.min.x >= b.min.x - MARGIN
+        && a.max.x <= b.max.x + MARGIN
+        && a.min.z >= b.min.z - MARGIN
+        && a.max.z <= b.max.z + MARGIN
+}
+
+/// For an object that rests on no top: the smallest object whose box it stands inside
+/// ([`inside`]), so that it moves with what holds it.
+fn container_of(boxes: &[Aabb], grid: &FloorGrid, i: usize) -> Option<usize> {
+    let a = &boxes[i];
+    let volume = |b: &Aabb| {
+        let s = b.size();
+        s.x * s.y * s.z
+    };
+    let centre = a.center();
+    grid.near_point(centre.x, centre.z)
+        .into_iter()
+        .filter(|&j| j != i && inside(a, &boxes[j]) && volume(&boxes[j]) > volume(a))
+        .min_by(|&j, &k| volume(&boxes[j]).total_cmp(&volume(&boxes[k])))
 }
