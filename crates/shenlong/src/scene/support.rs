@@ -152,7 +152,6 @@ fn container_of(boxes: &[Aabb], grid: &FloorGrid, i: usize) -> Option<usize> {
     };
     let centre = a.center();
     grid.near_point(centre.x, centre.z)
-        .into_iter()
         .filter(|&j| j != i && inside(a, &boxes[j]) && volume(&boxes[j]) > volume(a))
         .min_by(|&j, &k| volume(&boxes[j]).total_cmp(&volume(&boxes[k])))
 }
