@@ -70,29 +70,48 @@ fn collisions(collide: bool) -> Option<shenlong::collide::ResolveOptions> {
     collide.then(shenlong::collide::ResolveOptions::default)
 }
 
-/// A scene being edited, with undo and redo (`shenlong.Scene` wraps it).
-#[pyclass(module = "shenlong._native", name = "Scene")]
+/// A scene being edited, with undo and redo (`shenlong.Scene` wraps it). One `Scene` may
+/// be used from several threads: its calls take turns (each holds the scene for the whole
+/// call, without the GIL, so other Python threads run meanwhile).
+#[pyclass(module = "shenlong._native", name = "Scene", frozen)]
 struct PyScene {
-    session: Session,
+    session: std::sync::Mutex<Session>,
 }
 
 impl PyScene {
     fn new(file: SceneFile) -> Self {
         Self {
-            session: Session::saving_on_request(file, None),
+            session: std::sync::Mutex::new(Session::saving_on_request(file, None)),
         }
+    }
+
+    /// The session, for a quick read under the GIL: no call holds it while it waits for
+    /// the GIL, so this never deadlocks. (A call that panicked left it as it was: every
+    /// change is made on a copy and committed at its end.)
+    fn lock(&self) -> std::sync::MutexGuard<'_, Session> {
+        self.session
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+
+    /// Runs `f` on the session without the GIL, after the calls before it.
+    fn with<T: Send>(
+        &self,
+        py: Python<'_>,
+        f: impl FnOnce(&mut Session) -> Result<T, String> + Send,
+    ) -> PyResult<T> {
+        detached(py, move || f(&mut self.lock()))
     }
 
     /// Runs `change` on a copy of the scene and commits it when it succeeds.
     fn change<T: Send>(
-        &mut self,
+        &self,
         py: Python<'_>,
         kind: &str,
         text: &str,
         change: impl FnOnce(&mut shenlong::scene::Scene) -> Result<T, String> + Send,
     ) -> PyResult<T> {
-        let session = &mut self.session;
-        detached(py, move || {
+        self.with(py, move |session| {
             let mut after = session.file.scene.clone();
             let out = change(&mut after)?;
             session.commit(after, kind, text);
@@ -100,9 +119,8 @@ impl PyScene {
         })
     }
 
-    fn step(&mut self, py: Python<'_>, undo: bool) -> PyResult<bool> {
-        let session = &mut self.session;
-        detached(py, move || match session.step(undo) {
+    fn step(&self, py: Python<'_>, undo: bool) -> PyResult<bool> {
+        self.with(py, move |session| match session.step(undo) {
             Ok(_) => Ok(true),
             Err(StepError::Nothing) => Ok(false),
         })
@@ -178,25 +196,25 @@ impl PyScene {
     /// The scene's name.
     #[getter]
     fn name(&self) -> String {
-        self.session.file.scene.name.clone()
+        self.lock().file.scene.name.clone()
     }
 
     /// The number of objects.
     fn len(&self) -> usize {
-        self.session.file.scene.objects.len()
+        self.lock().file.scene.objects.len()
     }
 
     /// Every object as JSON: name, position, rotation, scale, size, world_box, front,
     /// rests_on.
-    fn objects_json(&self) -> PyResult<String> {
-        to_json(&listing(&self.session.file.scene).objects).map_err(error)
+    fn objects_json(&self, py: Python<'_>) -> PyResult<String> {
+        self.with(py, |session| to_json(&listing(&session.file.scene).objects))
     }
 
     /// The scene as scene-JSON text.
     fn to_json(&self, py: Python<'_>) -> PyResult<String> {
-        let file = &self.session.file;
-        detached(py, move || {
-            let bytes = file
+        self.with(py, |session| {
+            let bytes = session
+                .file
                 .to_bytes(Format::SceneJson)
                 .map_err(|e| e.to_string())?;
             String::from_utf8(bytes).map_err(|e| e.to_string())
@@ -205,13 +223,13 @@ impl PyScene {
 
     /// The history as JSON, oldest first.
     fn history_json(&self) -> PyResult<String> {
-        to_json(&self.session.history()).map_err(error)
+        to_json(&self.lock().history()).map_err(error)
     }
 
     /// Runs an instruction; returns the edit report as JSON.
     #[allow(clippy::too_many_arguments)]
     fn edit(
-        &mut self,
+        &self,
         py: Python<'_>,
         instruction: String,
         llm: String,
@@ -240,7 +258,7 @@ impl PyScene {
 
     /// Applies one CGA expression to one object; returns what it did as JSON.
     fn apply(
-        &mut self,
+        &self,
         py: Python<'_>,
         name: String,
         expr: String,
@@ -271,19 +289,20 @@ impl PyScene {
     }
 
     /// Undoes the last change; false when there is none.
-    fn undo(&mut self, py: Python<'_>) -> PyResult<bool> {
+    fn undo(&self, py: Python<'_>) -> PyResult<bool> {
         self.step(py, true)
     }
 
     /// Redoes the last undone change; false when there is none.
-    fn redo(&mut self, py: Python<'_>) -> PyResult<bool> {
+    fn redo(&self, py: Python<'_>) -> PyResult<bool> {
         self.step(py, false)
     }
 
     /// Writes the scene atomically, the format by extension.
     fn save(&self, py: Python<'_>, path: PathBuf) -> PyResult<()> {
-        let file = &self.session.file;
-        detached(py, move || file.save(&path).map_err(|e| e.to_string()))
+        self.with(py, move |session| {
+            session.file.save(&path).map_err(|e| e.to_string())
+        })
     }
 }
 

@@ -291,3 +291,26 @@ def test_a_usd_stage_is_read_edited_and_saved(tmp_path):
     again = shenlong.Scene.load(str(out))
     assert math.isclose(obj(again, "Vase")["world_box"]["min"][1], 0.8, abs_tol=1e-6)
     assert 'upAxis = "Z"' in out.read_text()
+
+
+def test_one_scene_used_from_several_threads_takes_turns(office_path):
+    import threading
+
+    scene = shenlong.Scene.load(office_path)
+    errors = []
+
+    def work(k):
+        try:
+            for _ in range(5):
+                scene.apply(scene.objects()[k]["name"], "T(0.001*e2)", collide=False)
+                scene.objects()
+        except Exception as exc:  # noqa: BLE001 - any failure fails the test
+            errors.append(exc)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(4)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert errors == []
+    assert len(scene.history()) == 20

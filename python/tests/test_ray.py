@@ -95,3 +95,22 @@ def test_bad_arguments_fail_with_one_line(tmp_path):
         capture_output=True, text=True, env=ENV,
     )
     assert run.returncode == 2 and "--shards must be at least 1" in run.stderr
+
+
+def test_an_output_that_is_a_file_is_refused_before_any_shard_runs(tmp_path):
+    import subprocess
+    import sys
+
+    out = tmp_path / "results.txt"
+    out.write_text("precious")
+    suite = Path(__file__).resolve().parents[2] / "bench" / "natural.suite.json"
+    r = subprocess.run(
+        [sys.executable, "-m", "shenlong.ray_bench", str(suite), "--shards", "2", "--out", str(out)],
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert r.returncode == 2, r.stderr
+    assert len(r.stderr.strip().splitlines()) == 1, r.stderr
+    assert "not a folder" in r.stderr
+    assert out.read_text() == "precious"

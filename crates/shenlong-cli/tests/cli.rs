@@ -717,3 +717,136 @@ fn a_file_for_a_missing_folder_and_bad_units_are_one_line() {
     ]);
     assert_fails_cleanly(&o, "glTF and USD files only");
 }
+
+#[cfg(unix)]
+#[test]
+fn a_report_that_cannot_be_written_leaves_the_scene_unwritten() {
+    let dir = tempfile::tempdir().unwrap();
+    let full = dir.path().join("full.json");
+    std::os::unix::fs::symlink("/dev/full", &full).unwrap();
+    let edited = dir.path().join("edited.json");
+    let o = shenlong(&[
+        "edit",
+        "example:workshop",
+        "move the 'tool table' 1 m left",
+        "-o",
+        edited.to_str().unwrap(),
+        "--json",
+        full.to_str().unwrap(),
+    ]);
+    assert_fails_cleanly(&o, "cannot write");
+    assert!(!edited.exists(), "the scene is not written");
+}
+
+#[cfg(unix)]
+#[test]
+fn pipes_and_endless_devices_are_refused_as_scenes_suites_and_houses() {
+    let dir = tempfile::tempdir().unwrap();
+    let mut inputs = Vec::new();
+    for name in ["pipe.json", "pipe.gltf", "pipe.glb"] {
+        let p = dir.path().join(name);
+        assert!(std::process::Command::new("mkfifo")
+            .arg(&p)
+            .status()
+            .unwrap()
+            .success());
+        inputs.push(p);
+    }
+    for name in ["zero.json", "zero.gltf", "zero.glb"] {
+        let p = dir.path().join(name);
+        std::os::unix::fs::symlink("/dev/zero", &p).unwrap();
+        inputs.push(p);
+    }
+    for input in &inputs {
+        let out = dir.path().join("out.json");
+        let o = shenlong(&["convert", input.to_str().unwrap(), out.to_str().unwrap()]);
+        assert_fails_cleanly(&o, "not a regular file");
+        assert!(!out.exists());
+    }
+    // A ProcTHOR house file and asset database that are pipes.
+    let db = dir.path().join("assets.json");
+    std::os::unix::fs::symlink("/dev/zero", &db).unwrap();
+    let o = shenlong(&[
+        "convert",
+        inputs[0].to_str().unwrap(),
+        dir.path().join("h.json").to_str().unwrap(),
+        "--from",
+        "procthor",
+        "--assets",
+        db.to_str().unwrap(),
+    ]);
+    assert_fails_cleanly(&o, "not a regular file");
+    // A suite whose scene is a pipe (suites are downloaded).
+    let suite = dir.path().join("hostile.suite.json");
+    std::fs::write(
+        &suite,
+        r#"{"name": "hostile", "scenes": ["pipe.json"], "queries": [{"id": "q", "category": "simple", "text": "move the box 1 m left", "expect": [{"check": "moved", "object": "box"}]}]}"#,
+    )
+    .unwrap();
+    let o = shenlong(&[
+        "bench",
+        suite.to_str().unwrap(),
+        "--out",
+        dir.path().join("run").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("not a regular file"), "{}", stderr(&o));
+}
+
+#[test]
+fn a_shard_folder_claiming_a_trillion_shards_is_refused_at_once() {
+    let dir = tempfile::tempdir().unwrap();
+    let shard = dir.path().join("shard");
+    std::fs::create_dir(&shard).unwrap();
+    std::fs::write(
+        shard.join("run.json"),
+        r#"{"suite": "s", "model": "offline", "systems": ["cga"], "shard": [1, 1000000000000]}"#,
+    )
+    .unwrap();
+    std::fs::write(shard.join("results.jsonl"), "").unwrap();
+    let start = std::time::Instant::now();
+    let o = shenlong(&[
+        "bench",
+        "--merge",
+        shard.to_str().unwrap(),
+        "--out",
+        dir.path().join("merged").to_str().unwrap(),
+    ]);
+    assert!(!o.status.success());
+    assert!(
+        stderr(&o).contains("10000 shards at most"),
+        "{}",
+        stderr(&o)
+    );
+    assert!(start.elapsed() < std::time::Duration::from_secs(10));
+}
+
+#[test]
+fn a_group_edit_of_thousands_is_not_quadratic() {
+    // 5,000 chairs moved together, colliding with nothing: each costs a walk of its
+    // supports, not a search of every other chair's load (this took hours before).
+    let dir = tempfile::tempdir().unwrap();
+    let objects: Vec<serde_json::Value> = (0..5000)
+        .map(|i| {
+            serde_json::json!({"name": format!("chair {}", i + 1), "category": "chair",
+                "position": [(i % 100) as f64, 0.0, (i / 100) as f64], "size": [0.5, 0.9, 0.5]})
+        })
+        .collect();
+    let scene = dir.path().join("hall.json");
+    std::fs::write(
+        &scene,
+        serde_json::json!({"name": "hall", "objects": objects}).to_string(),
+    )
+    .unwrap();
+    let out = dir.path().join("out.json");
+    let o = shenlong(&[
+        "edit",
+        scene.to_str().unwrap(),
+        "move all the chairs 1 m up",
+        "-o",
+        out.to_str().unwrap(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let edited: serde_json::Value = serde_json::from_slice(&std::fs::read(&out).unwrap()).unwrap();
+    assert_eq!(edited["objects"][4999]["position"][1], 1);
+}

@@ -3,6 +3,57 @@
 use std::io::Write;
 use std::path::{Path, PathBuf};
 
+/// The most bytes a file is read to: scene files, houses, asset databases, suites, run
+/// folders' files (1 GiB; the limit of every file a scene points to too).
+pub const MAX_READ_BYTES: u64 = 1 << 30;
+
+/// Reads a regular file of at most `max` bytes. Anything else is refused before a byte is
+/// read: a FIFO (which would block), a device or a link to one (`/dev/zero`, which never
+/// ends), a folder; and a file that grows past `max` while it is read.
+///
+/// # Errors
+/// The file cannot be read, is no regular file, or is larger than `max`.
+pub fn read_limited(path: &Path, max: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let meta = std::fs::metadata(path)?;
+    if !meta.is_file() {
+        return Err(std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            "not a regular file (a pipe, a device or a folder); only files are read",
+        ));
+    }
+    let too_large = || {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidInput,
+            format!("larger than {} MiB", max >> 20),
+        )
+    };
+    if meta.len() > max {
+        return Err(too_large());
+    }
+    let mut out = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    std::fs::File::open(path)?
+        .take(max + 1)
+        .read_to_end(&mut out)?;
+    if out.len() as u64 > max {
+        return Err(too_large());
+    }
+    Ok(out)
+}
+
+/// [`read_limited`] as UTF-8 text.
+///
+/// # Errors
+/// As [`read_limited`], and text that is not UTF-8.
+pub fn read_text_limited(path: &Path, max: u64) -> std::io::Result<String> {
+    String::from_utf8(read_limited(path, max)?).map_err(|_| {
+        std::io::Error::new(
+            std::io::ErrorKind::InvalidData,
+            "stream did not contain valid UTF-8",
+        )
+    })
+}
+
 /// Writes `bytes` to `path` atomically: into a temporary file beside it, flushed to disk,
 /// then renamed over the target. On any error the target is left as it was and the
 /// temporary file is removed. A replaced file keeps its permissions; a new one is

@@ -104,6 +104,18 @@ def main(argv: Optional[Sequence[str]] = None) -> int:
         return 2
 
     out = Path(args.out)
+    # The output is checked before any shard runs: a run's results are never lost to it.
+    if out.exists() and not out.is_dir():
+        print(f"shenlong.ray_bench: --out {out}: not a folder (a file is there)", file=sys.stderr)
+        return 2
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+        probe = out / f".shenlong-write-check-{os.getpid()}"
+        probe.write_bytes(b"")
+        probe.unlink()
+    except OSError as exc:
+        print(f"shenlong.ray_bench: --out {out}: cannot write there: {exc.strerror or exc}", file=sys.stderr)
+        return 2
     local_suite = Path(args.working_dir, args.suite) if args.working_dir else Path(args.suite)
     if not local_suite.is_file():
         print(f"shenlong.ray_bench: {local_suite}: no such suite file", file=sys.stderr)

@@ -100,6 +100,17 @@ pub fn run(args: Args) -> Result<()> {
         ),
         _ => None,
     };
+    // A stream (a pipe, `/dev/full`) fails only when it is written: it is written before
+    // the scene, so that a report that cannot be written leaves the scene unwritten.
+    let json_file = match json_file {
+        Some(stream @ shenlong::io::Prepared::InPlace { .. }) => {
+            stream
+                .commit()
+                .with_context(|| format!("cannot write {}", args.json.as_deref().unwrap_or("")))?;
+            None
+        }
+        other => other,
+    };
     super::write_edit(
         &file,
         before.as_ref(),

@@ -87,6 +87,24 @@ pub fn write_edit(
             shenlong::format::pretty::to_string(&serde_json::Value::Array(list)),
         )
     });
+    // The commands are made ready before the scene is written, and a stream among them
+    // written first: when they cannot be written, neither is the scene.
+    let commands = match commands {
+        Some((path, text)) => {
+            let prepared = shenlong::io::prepare(path, text.as_bytes())
+                .with_context(|| format!("cannot write {}", path.display()))?;
+            match prepared {
+                stream @ shenlong::io::Prepared::InPlace { .. } => {
+                    stream
+                        .commit()
+                        .with_context(|| format!("cannot write {}", path.display()))?;
+                    None
+                }
+                staged => Some((path, staged)),
+            }
+        }
+        None => None,
+    };
     match output.path {
         Some(path) if output.usd_layer => file.save_usd_layer(path)?,
         Some(path) => file.save(path)?,
@@ -98,8 +116,9 @@ pub fn write_edit(
             write_stdout(&file.to_bytes(format)?)?;
         }
     }
-    if let Some((path, text)) = commands {
-        shenlong::io::write_atomic(path, text.as_bytes())
+    if let Some((path, prepared)) = commands {
+        prepared
+            .commit()
             .with_context(|| format!("cannot write {}", path.display()))?;
     }
     Ok(())

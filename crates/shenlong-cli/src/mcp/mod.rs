@@ -107,20 +107,47 @@ pub struct ExportRequest {
 }
 
 /// The formats `export` writes.
-#[derive(Clone, Copy, Debug, Deserialize, schemars::JsonSchema)]
+#[derive(Clone, Copy, Debug, schemars::JsonSchema)]
 #[serde(rename_all = "lowercase")]
 pub enum ExportFormat {
     /// Shenlong scene JSON.
     Json,
-    /// glTF JSON (the source must be glTF).
+    /// glTF JSON (a glTF source with its moved nodes rewritten; any other scene as a new
+    /// glTF of boxes).
     Gltf,
-    /// Binary glTF (the source must be GLB).
+    /// Binary glTF (likewise).
     Glb,
     /// USD as text (the source must be a USD stage: the original with the moved prims'
     /// transforms rewritten).
     Usda,
     /// ThreeDWorld commands placing every object.
     Tdw,
+}
+
+impl<'de> Deserialize<'de> for ExportFormat {
+    /// By name; an unknown name is quoted in the error cut to 40 characters, so that a
+    /// 10 MB `format` is not echoed back.
+    fn deserialize<D: serde::Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        let name = String::deserialize(d)?;
+        Ok(match name.as_str() {
+            "json" => Self::Json,
+            "gltf" => Self::Gltf,
+            "glb" => Self::Glb,
+            "usda" => Self::Usda,
+            "tdw" => Self::Tdw,
+            other => {
+                let shown: String = other.chars().take(40).collect();
+                let cut = if other.chars().count() > 40 {
+                    "…"
+                } else {
+                    ""
+                };
+                return Err(serde::de::Error::custom(format!(
+                    "unknown format '{shown}{cut}': use json, gltf, glb, usda or tdw"
+                )));
+            }
+        })
+    }
 }
 
 const APPLY_DESCRIPTION: &str = "Apply a CGA (conformal geometric algebra) expression to one object, for an assistant that writes the transformation itself. Nothing is executed: the expression is parsed and evaluated by Shenlong's expression language, checked to be a translation·rotation·uniform scale, applied about the object's pivot (the bottom centre of its box), carrying what rests on it, then collisions are resolved.\n\nFrame: metres, right-handed, +Y up, +X right, +Z towards the viewer (front); e1, e2, e3 are the x, y, z unit vectors. The object is X1; bind others as X2, X3… with `bind`.\nVersors, one example each:\n- T(v) translates by the vector v: T(0.5*e1) moves 0.5 m right.\n- R(angle, u, v) rotates by angle (radians) in the plane from u to v: R(pi/2, e3, e1) turns a quarter turn counter-clockwise seen from above.\n- D(s) scales uniformly about the pivot: D(2) doubles the size.\n- Compose with *, right to left: T(e2) * R(pi/4, e3, e1) turns, then lifts 1 m.\nBoxes (points and vectors of the world box), one example each; `| e2` takes the y component (| binds loosely: parenthesise it):\n- X1.min, X1.max: the low and high corners: T(((X2.max | e2) - (X1.min | e2)) * e2) puts X1's bottom at X2's top height.\n- X1.center: T(((X2.center - X1.center) | e1) * e1) lines X1 up with X2 along x.\n- X1.size: T((X1.size | e1) * e1) moves X1 by its own width to the right.\n- X1.front: the direction X1 faces: T(0.3 * X1.front) moves it 30 cm forward.\nExample, X1 on top of X2: T(((X2.max | e2) - (X1.min | e2)) * e2 + ((X2.center - X1.center) | e1) * e1 + ((X2.center - X1.center) | e3) * e3).";

@@ -522,18 +522,24 @@ fn commit(app: &App, after: Scene, kind: &str, text: &str) -> shenlong::session:
 /// name cannot be quoted or would make the instruction too long).
 fn ambiguity_json(instruction: &str, ambiguity: &shenlong::ground::Ambiguity) -> Value {
     let text = instruction.trim();
-    let choices: Vec<Value> = ambiguity
-        .objects
+    // The page shows a few choices; the answer stays small whatever the scene (20,000
+    // chairs): the first MAX_CHOICES, and how many there are.
+    let shown = &ambiguity.objects[..ambiguity.objects.len().min(MAX_CHOICES)];
+    let choices: Vec<Value> = shown
         .iter()
         .map(|name| json!({"object": name, "instruction": naming(text, ambiguity.span, name)}))
         .collect();
     json!({
         "phrase": ambiguity.phrase,
         "span": ambiguity.span,
-        "objects": ambiguity.objects,
+        "objects": shown,
+        "total": ambiguity.objects.len(),
         "choices": choices,
     })
 }
+
+/// The most choices a refusal's answer lists (the page shows them as buttons).
+const MAX_CHOICES: usize = 24;
 
 /// `text` with the bytes `span` replaced by `name` in quotes the grounder reads as one
 /// name: the first pair whose closing quote is not in the name (`'…'`, `"…"`, `‘…’`,

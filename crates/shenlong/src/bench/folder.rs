@@ -68,6 +68,14 @@ pub enum FolderError {
     /// Nothing to merge.
     #[error("no folder to merge")]
     Empty,
+    /// `run.json` names a shard no run makes.
+    #[error("{}: {reason}", path.display())]
+    BadShard {
+        /// The file.
+        path: PathBuf,
+        /// What is wrong with it.
+        reason: String,
+    },
 }
 
 fn io<'a>(action: &'static str, path: &'a Path) -> impl FnOnce(std::io::Error) -> FolderError + 'a {
@@ -165,7 +173,8 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Finished, FolderError> {
     let mut warnings = Vec::new();
     for dir in dirs {
         let meta = dir.join(RUN);
-        let text = std::fs::read_to_string(&meta).map_err(io("read", &meta))?;
+        let text = crate::io::read_text_limited(&meta, crate::io::MAX_READ_BYTES)
+            .map_err(io("read", &meta))?;
         let this: RunInfo = serde_json::from_str(&text).map_err(|source| FolderError::RunInfo {
             path: meta.clone(),
             source,
@@ -180,7 +189,8 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Finished, FolderError> {
             }
         }
         let results = dir.join(RESULTS);
-        let text = std::fs::read_to_string(&results).map_err(io("read", &results))?;
+        let text = crate::io::read_text_limited(&results, crate::io::MAX_READ_BYTES)
+            .map_err(io("read", &results))?;
         let mut unreadable = 0;
         for line in text.lines().filter(|l| !l.trim().is_empty()) {
             // As a resumed run does, a line cut short is skipped.
@@ -198,8 +208,12 @@ pub fn merge(dirs: &[PathBuf], out: &Path) -> Result<Finished, FolderError> {
                 results.display()
             ));
         }
-        if let Some(shard) = this.shard {
-            shards.push(shard);
+        if let Some((k, n)) = this.shard {
+            super::run::check_shard(k, n).map_err(|reason| FolderError::BadShard {
+                path: meta.clone(),
+                reason,
+            })?;
+            shards.push((k, n));
         }
         if info.is_none() {
             info = Some(this);

@@ -77,8 +77,16 @@ pub fn check_shard(k: usize, n: usize) -> Result<(), String> {
     if n == 0 || k == 0 || k > n {
         return Err(format!("shard {k}/{n}: K must be between 1 and N"));
     }
+    if n > MAX_SHARDS {
+        return Err(format!(
+            "shard {k}/{n}: a run is split into {MAX_SHARDS} shards at most"
+        ));
+    }
     Ok(())
 }
+
+/// The most shards a run is split into (more than any pool of machines a user has).
+pub const MAX_SHARDS: usize = 10_000;
 
 /// Every instance of a suite on its scenes, in a fixed order.
 pub fn instances(suite: &Suite, scenes: &[Scene]) -> Vec<Instance> {
@@ -189,14 +197,15 @@ pub fn run(
     progress: &(dyn Fn(usize, usize) + Sync),
     stop: &AtomicBool,
 ) -> std::io::Result<Vec<Outcome>> {
-    let mut done: Vec<Outcome> = match std::fs::read_to_string(results) {
-        Ok(text) => text
-            .lines()
-            .filter_map(|l| serde_json::from_str(l).ok())
-            .collect(),
-        Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
-        Err(e) => return Err(e),
-    };
+    let mut done: Vec<Outcome> =
+        match crate::io::read_text_limited(results, crate::io::MAX_READ_BYTES) {
+            Ok(text) => text
+                .lines()
+                .filter_map(|l| serde_json::from_str(l).ok())
+                .collect(),
+            Err(e) if e.kind() == std::io::ErrorKind::NotFound => Vec::new(),
+            Err(e) => return Err(e),
+        };
     let finished: HashSet<(String, String)> = done
         .iter()
         .map(|o| (o.system.clone(), o.instance.clone()))

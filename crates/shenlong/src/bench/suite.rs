@@ -222,7 +222,7 @@ fn err(message: impl Into<String>) -> SuiteError {
 impl Suite {
     /// Reads and validates a suite file.
     pub fn load(path: &Path) -> Result<Self, SuiteError> {
-        let text = std::fs::read_to_string(path)
+        let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
             .map_err(|e| err(format!("cannot read {}: {e}", path.display())))?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Self::parse(&text, &dir).map_err(|e| err(format!("{}: {}", path.display(), e.message)))

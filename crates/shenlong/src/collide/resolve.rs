@@ -413,18 +413,32 @@ fn search(
 /// The edited objects with what rests on them; an object carried by an earlier edited
 /// object belongs to that object's group.
 fn groups(scene: &Scene, moved: &[usize]) -> Vec<Vec<usize>> {
-    let mut assigned = vec![false; scene.objects.len()];
+    let n = scene.objects.len();
+    let mut assigned = vec![false; n];
+    let mut is_moved = vec![false; n];
+    for &m in moved {
+        if let Some(flag) = is_moved.get_mut(m) {
+            *flag = true;
+        }
+    }
+    // Whether an edited object rests, directly or through others, on another edited
+    // object: a walk down its chain of supports (each object has one), not a search of
+    // every other edited object's load — a group edit of n objects costs n walks.
+    let on_moved = |m: usize| {
+        let mut support = scene.objects[m].support;
+        for _ in 0..n {
+            match support {
+                Some(k) if k == m => return false,
+                Some(k) if is_moved.get(k).copied().unwrap_or(false) => return true,
+                Some(k) => support = scene.objects.get(k).and_then(|o| o.support),
+                None => return false,
+            }
+        }
+        false
+    };
     let mut groups = Vec::new();
     // Edited objects carried by another edited object join that object's group.
-    let roots: Vec<usize> = moved
-        .iter()
-        .copied()
-        .filter(|&m| {
-            !moved
-                .iter()
-                .any(|&other| other != m && scene.carried_by(other).contains(&m))
-        })
-        .collect();
+    let roots: Vec<usize> = moved.iter().copied().filter(|&m| !on_moved(m)).collect();
     for root in roots {
         if assigned[root] {
             continue;

@@ -119,7 +119,7 @@ pub fn read(
     path: &Path,
     options: &super::facts::ReadOptions,
 ) -> Result<(Scene, GltfDocument), FormatError> {
-    let bytes = std::fs::read(path)
+    let bytes = crate::io::read_limited(path, crate::io::MAX_READ_BYTES)
         .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
     let base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");

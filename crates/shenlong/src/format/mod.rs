@@ -268,12 +268,13 @@ impl SceneFile {
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         match format {
             Format::SceneJson => {
-                let text = std::fs::read_to_string(path).map_err(|e| {
-                    FormatError::new(format!("cannot read {}: {e}", path.display()))
-                })?;
+                let text =
+                    crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES).map_err(|e| {
+                        FormatError::new(format!("cannot read {}: {e}", path.display()))
+                    })?;
                 let loaded = json::read_string(text, stem).map_err(|e| {
                     // (Read again on this error path only: the text went into the document.)
-                    let house = std::fs::read_to_string(path)
+                    let house = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
                         .ok()
                         .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
                         .is_some_and(|v| procthor::looks_like_house(&v));

@@ -26,7 +26,7 @@ pub struct AssetDatabase {
 impl AssetDatabase {
     /// Reads the database file.
     pub fn load(path: &Path) -> Result<Self, FormatError> {
-        let text = std::fs::read_to_string(path)
+        let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
             .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
         Self::from_json(&text).map_err(|e| e.in_file(path))
     }
@@ -102,7 +102,7 @@ pub fn looks_like_house(document: &Value) -> bool {
 /// Reads house number `index` (from 0) of a file holding one house (`.json`) or one per
 /// line (`.jsonl`), and converts it to a scene-JSON document.
 pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Value, FormatError> {
-    let text = std::fs::read_to_string(path)
+    let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
         .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
     super::check_json_depth(text.as_bytes()).map_err(|e| e.in_file(path))?;
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("house");

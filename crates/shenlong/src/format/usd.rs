@@ -300,7 +300,8 @@ fn check_file(path: &Path) -> Result<u64, FormatError> {
 /// compressed (so nothing in it inflates: no zip bomb), each within the package. Reads
 /// only its central directory.
 fn check_package(path: &Path) -> Result<(), FormatError> {
-    let bytes = std::fs::read(path).map_err(|e| err(format!("cannot read it: {e}")))?;
+    let bytes = crate::io::read_limited(path, MAX_USD_BYTES)
+        .map_err(|e| err(format!("cannot read it: {e}")))?;
     let bad = |what: &str| err(format!("not a USD package: {what}"));
     // The end of central directory record: its signature within the last 64 KiB + 22.
     let from = bytes.len().saturating_sub(65_557);
@@ -351,8 +352,8 @@ fn check_package(path: &Path) -> Result<(), FormatError> {
 fn open_stage(path: &Path) -> Result<Opened, FormatError> {
     check_file(path)?;
     if container_of(path)? == UsdContainer::Usda {
-        let text =
-            std::fs::read_to_string(path).map_err(|e| err(format!("cannot read it: {e}")))?;
+        let text = crate::io::read_text_limited(path, MAX_USD_BYTES)
+            .map_err(|e| err(format!("cannot read it: {e}")))?;
         check_nesting(&text)?;
     }
     let folder = path.parent().unwrap_or(Path::new("."));

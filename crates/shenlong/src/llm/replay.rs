@@ -19,8 +19,10 @@ pub struct Replay {
 impl Replay {
     /// Loads a recording (JSON lines written by `--record`).
     pub fn load(path: &Path) -> Result<Self, LlmError> {
-        let text = std::fs::read_to_string(path).map_err(|e| LlmError {
-            message: format!("cannot read {}: {e}", path.display()),
+        let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES).map_err(|e| {
+            LlmError {
+                message: format!("cannot read {}: {e}", path.display()),
+            }
         })?;
         let mut records = Vec::new();
         for (n, line) in text

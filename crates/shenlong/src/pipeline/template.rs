@@ -46,7 +46,8 @@ pub fn template_selected(
     scene: &Scene,
     selection: &[usize],
 ) -> Result<Templated, GroundError> {
-    let grounding = grounder.ground_with_selection(instruction, scene, selection)?;
+    let mut grounding = grounder.ground_with_selection(instruction, scene, selection)?;
+    check_phrases(&mut grounding)?;
     let text = grounding.instruction.as_str();
     // What is held is cut from the query (a cut that would take a bound phrase with it is
     // not made: the words stay, and the translator reads or refuses them).
@@ -117,6 +118,33 @@ pub fn template_selected(
     })
 }
 
+/// Puts the phrases in the order of the instruction and refuses two that share words: a
+/// scene whose objects are named by words of the instruction itself (`the`, `left`, `50`,
+/// `cm`) can make the same words read as two names at once. Templating needs each word
+/// in one phrase at most.
+///
+/// # Errors
+/// [`GroundError::NoPick`] naming the words read twice.
+fn check_phrases(grounding: &mut crate::ground::Grounding) -> Result<(), GroundError> {
+    grounding
+        .phrases
+        .sort_by_key(|p| (p.span.start, p.span.end));
+    let text = &grounding.instruction;
+    for pair in grounding.phrases.windows(2) {
+        let (a, b) = (&pair[0].span, &pair[1].span);
+        if b.start < a.end || a.end > text.len() || b.end > text.len() {
+            let words = text
+                .get(a.start.min(b.start)..a.end.max(b.end).min(text.len()))
+                .unwrap_or(text);
+            return Err(GroundError::NoPick {
+                phrase: words.to_string(),
+                reason: "these words name objects in two ways at once (the scene has objects named like the words of the instruction); put the object's name in quotes".to_string(),
+            });
+        }
+    }
+    Ok(())
+}
+
 /// `X1`, `X1 and X2`, `X1, X2 and X3`.
 fn list(variables: &[String]) -> String {
     match variables {
@@ -148,6 +176,35 @@ mod tests {
     fn t(instruction: &str) -> (String, Vec<usize>) {
         let r = template(instruction, &scene()).unwrap();
         (r.query, r.objects)
+    }
+
+    #[test]
+    fn objects_named_like_the_words_of_an_instruction_never_panic() {
+        // Names that are articles, directions, numbers, units and verbs: each instruction
+        // is read or refused in one line, never a panic (overlapping phrases).
+        let mut s = Scene::new("words");
+        for (k, name) in [
+            "box", "the", "left", "50", "cm", "move", "to", "on", "it", "a",
+        ]
+        .iter()
+        .enumerate()
+        {
+            s.push_box(name, [0.5; 3], [k as f64 * 2.0, 0.0, 0.0]);
+        }
+        for instruction in [
+            "move the 'box' 50 cm to the left",
+            "move the box 50 cm to the left",
+            "move the left 1 m up",
+            "move 'the' 1 m up",
+            "put the box on the to",
+            "move the cm 1 m right",
+            "move it to the left of the 50",
+            "move a box on a move to the left 50 cm",
+        ] {
+            if let Err(e) = template(instruction, &s) {
+                assert_eq!(e.to_string().lines().count(), 1, "{instruction}: {e}");
+            }
+        }
     }
 
     #[test]

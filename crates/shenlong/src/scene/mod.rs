@@ -354,6 +354,11 @@ impl Scene {
     /// on them, stay.
     #[must_use]
     pub fn carried_by_except(&self, index: usize, held: &[usize]) -> Vec<usize> {
+        // Most objects carry nothing: found in one pass without allocating, so that a
+        // group edit of thousands of objects costs each of them one pass, not an index.
+        if !self.objects.iter().any(|o| o.support == Some(index)) {
+            return Vec::new();
+        }
         // What rests on each object, indexed once: a chain of thousands costs its length.
         let mut on: Vec<Vec<usize>> = vec![Vec::new(); self.objects.len()];
         for (i, o) in self.objects.iter().enumerate() {
