@@ -15,6 +15,15 @@ resident memory of the edit (from `wait4`'s `ru_maxrss`), and checks that every 
 succeeded and moved the box. The files go to a temporary folder, removed afterwards.
 
     python3 bench/big_scenes.py --bin target/release/shenlong --sizes 1000,10000,100000 --runs 5
+
+With `--group`, each scene is `N` chairs 1 m apart and the edit is a group edit, "move all
+the chairs 1 m up" (nothing collides: the cost of collision checks for N moved objects),
+timed beside the same edit with `--no-collide` and `json.load`. With `--compare BIN`,
+another build of `shenlong` (an earlier commit's) runs the same edit in the same loop,
+alternating, so that two builds are compared on a machine loaded alike.
+
+    python3 bench/big_scenes.py --group --sizes 1000,10000 --runs 5
+    python3 bench/big_scenes.py --sizes 100000 --runs 9 --compare /tmp/old/shenlong
 """
 
 from __future__ import annotations
@@ -46,6 +55,53 @@ def write_grid(path: str, count: int) -> str:
     return f"box-{min(middle, count - 1)}"
 
 
+def write_chairs(path: str, count: int) -> None:
+    """Writes `count` chairs on a grid 1 m apart (0.5 m gaps), for a group edit."""
+    side = math.ceil(math.sqrt(count))
+    with open(path, "w", encoding="utf-8") as f:
+        f.write('{"name": "hall", "objects": [\n')
+        for i in range(count):
+            x, z = (i % side) * 1.0, (i // side) * 1.0
+            sep = ",\n" if i else ""
+            f.write(
+                f'{sep}{{"name": "chair {i + 1}", "category": "chair", '
+                f'"size": [0.5, 0.9, 0.5], "position": [{x}, 0, {z}]}}'
+            )
+        f.write("\n]}\n")
+
+
+def group_rows(args, sizes, tmp) -> int:
+    """The group-edit figures (`--group`)."""
+    for n in sizes:
+        scene = os.path.join(tmp, f"hall-{n}.json")
+        write_chairs(scene, n)
+        out = os.path.join(tmp, f"hall-out-{n}.json")
+        edit = [args.bin, "edit", scene, "move all the chairs 1 m up", "-o", out]
+        python = [sys.executable, "-c", f"import json; json.load(open({scene!r}))"]
+        with_c, without_c, peaks, baselines = [], [], [], []
+        for _ in range(args.runs):
+            t, rss, code, stderr = run_measured(edit)
+            if code != 0:
+                print(f"{n} chairs: the edit failed: {stderr.strip()}", file=sys.stderr)
+                return 1
+            with_c.append(t)
+            peaks.append(rss)
+            t2, _, code, stderr = run_measured(edit + ["--no-collide"])
+            if code != 0:
+                print(f"{n} chairs: the edit failed: {stderr.strip()}", file=sys.stderr)
+                return 1
+            without_c.append(t2)
+            baselines.append(run_measured(python)[0])
+        print(
+            f"{n:>9} chairs  group edit {statistics.median(with_c) * 1000:9.1f} ms  "
+            f"--no-collide {statistics.median(without_c) * 1000:9.1f} ms  "
+            f"json.load {statistics.median(baselines) * 1000:8.1f} ms  "
+            f"peak {statistics.median(peaks) / 1024:7.1f} MiB",
+            flush=True,
+        )
+    return 0
+
+
 def run_measured(argv: list[str]) -> tuple[float, int, int, str]:
     """Runs a command; returns (seconds, peak RSS in KiB, exit code, stderr)."""
     err = tempfile.TemporaryFile()
@@ -74,9 +130,14 @@ def main() -> int:
     )
     parser.add_argument("--runs", type=int, default=5, help="runs per size (median quoted)")
     parser.add_argument("--json", help="also write the figures as JSON to this file")
+    parser.add_argument("--group", action="store_true", help="time a group edit of N chairs")
+    parser.add_argument("--compare", metavar="BIN", help="another shenlong build, timed alike")
     args = parser.parse_args()
     sizes = [int(s) for s in args.sizes.split(",") if s.strip()]
     rows = []
+    if args.group:
+        with tempfile.TemporaryDirectory(prefix="shenlong-group-") as tmp:
+            return group_rows(args, sizes, tmp)
     with tempfile.TemporaryDirectory(prefix="shenlong-big-") as tmp:
         for n in sizes:
             scene = os.path.join(tmp, f"grid-{n}.json")
@@ -89,7 +150,15 @@ def main() -> int:
             ]
             python = [sys.executable, "-c", f"import json; json.load(open({scene!r}))"]
             times, peaks, baselines, phases = [], [], [], []
+            other_times, other_peaks = [], []
             for _ in range(args.runs):
+                if args.compare:
+                    t, rss, code, stderr = run_measured([args.compare] + edit[1:])
+                    if code != 0:
+                        print(f"{n} objects: --compare's edit failed: {stderr.strip()}", file=sys.stderr)
+                        return 1
+                    other_times.append(t)
+                    other_peaks.append(rss)
                 t, rss, code, stderr = run_measured(edit)
                 if code != 0:
                     print(f"{n} objects: the edit failed: {stderr.strip()}", file=sys.stderr)
@@ -117,6 +186,10 @@ def main() -> int:
                     for k in sorted({k for p in phases for k in p})
                 },
             }
+            if other_times:
+                row["compare_edit_s"] = statistics.median(other_times)
+                row["compare_peak_mib"] = statistics.median(other_peaks) / 1024
+                row["vs_compare"] = row["edit_s"] / row["compare_edit_s"]
             rows.append(row)
             print(
                 f"{n:>9} objects  {size_mb:7.2f} MB  edit {row['edit_s'] * 1000:9.1f} ms  "
@@ -126,6 +199,13 @@ def main() -> int:
                 flush=True,
             )
             print(f"{'':>11}phases (ms): {row['phases_ms']}", flush=True)
+            if other_times:
+                print(
+                    f"{'':>11}--compare: edit {row['compare_edit_s'] * 1000:9.1f} ms, "
+                    f"peak {row['compare_peak_mib']:7.1f} MiB; this build / that one: "
+                    f"time {row['vs_compare']:.3f}, memory {row['peak_mib'] / row['compare_peak_mib']:.3f}",
+                    flush=True,
+                )
     if args.json:
         with open(args.json, "w", encoding="utf-8") as f:
             json.dump(rows, f, indent=2)

@@ -293,5 +293,14 @@ fn errors_never_echo_huge_arguments() {
         "{}",
         text(&edited).len()
     );
+    // A 10 MB export format: the answer quotes 40 characters of it.
+    let format = "y".repeat(10_000_000);
+    let exported = c.request(
+        "tools/call",
+        json!({"name": "export", "arguments": {"format": format}}),
+    );
+    let answer = exported.to_string();
+    assert!(answer.len() < 3_000, "{} bytes", answer.len());
+    assert!(answer.contains("unknown format"), "{answer}");
     c.finish();
 }

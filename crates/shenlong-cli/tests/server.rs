@@ -746,6 +746,36 @@ fn a_deep_gltf_hierarchy_is_applied_and_exported_without_a_crash() {
     assert_eq!(get(address, "/api/scene"), Ok(200));
 }
 
+#[tokio::test]
+async fn a_refusal_among_thousands_answers_a_few_choices_and_the_total() {
+    let mut scene = shenlong::scene::Scene::new("hall");
+    for i in 0..3000 {
+        scene.objects.push(
+            shenlong::scene::Object::new_box(
+                format!("chair {}", i + 1),
+                glam::DVec3::new(0.5, 0.9, 0.5),
+                glam::DVec3::new((i % 60) as f64, 0.0, (i / 60) as f64),
+                glam::DQuat::IDENTITY,
+                1.0,
+            )
+            .unwrap(),
+        );
+    }
+    let file = shenlong::format::SceneFile {
+        scene,
+        document: shenlong::format::Document::None,
+        path: None,
+    };
+    let app = App::new(file, settings(None, true, None));
+    let body = json!({"instruction": "move the chair 1 m left"}).to_string();
+    let (status, answer, bytes) = call(&app, "POST", "/api/edit", Some(&body)).await;
+    assert_eq!(status, StatusCode::UNPROCESSABLE_ENTITY, "{answer}");
+    assert!(bytes.len() < 16_000, "{} bytes", bytes.len());
+    let ambiguity = &answer["ambiguity"];
+    assert_eq!(ambiguity["total"], 3000, "{answer}");
+    assert_eq!(ambiguity["choices"].as_array().unwrap().len(), 24);
+}
+
 /// A one-triangle glTF whose buffer is a `data:` URI, and an image at `image_uri` if given.
 fn triangle_gltf(dir: &std::path::Path, image_uri: Option<&str>) -> std::path::PathBuf {
     use base64::Engine as _;

@@ -442,7 +442,7 @@ impl ShenlongMcp {
 
     /// The scene in a format, as content.
     #[tool(
-        description = "The scene as a file's content: json (Shenlong scene JSON), gltf or glb (for a scene read from glTF/GLB: the original with the moved nodes rewritten), usda (for a scene read from a USD stage: the root layer with the moved prims' transforms rewritten), or tdw (ThreeDWorld commands). Text formats come as text, glb as a base64 resource.",
+        description = "The scene as a file's content: json (Shenlong scene JSON), gltf or glb (a scene read from glTF/GLB: the original with the moved nodes rewritten; any other: a new glTF of its boxes), usda (a scene read from a USD stage: its root layer with only the moved prims' transform lines changed; any other: a new stage of boxes), or tdw (ThreeDWorld commands). Text formats come as text, glb as a base64 resource.",
         annotations(read_only_hint = true)
     )]
     async fn export(

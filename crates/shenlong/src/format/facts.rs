@@ -704,21 +704,23 @@ struct Room {
     bounds: Option<Aabb>,
 }
 
-impl Room {
-    /// Floors, walls and ceilings among the objects, by name or by shape.
-    fn find(tree: &Tree, scene: &Scene, nodes: &[usize]) -> Room {
-        let boxes = scene.world_aabbs();
-        if boxes.len() < 2 {
-            return Room {
-                parts: Vec::new(),
-                bounds: None,
-            };
-        }
+/// The objects (indices) that are the room, by kind.
+#[derive(Default)]
+struct RoomParts {
+    floors: Vec<usize>,
+    walls: Vec<usize>,
+    ceilings: Vec<usize>,
+    /// Rooms modelled as one mesh.
+    shells: Vec<usize>,
+}
+
+impl RoomParts {
+    /// Floors, walls and ceilings among the objects, by name or by shape; then rooms
+    /// modelled as one mesh (`Room`, `Interior_Shell`: a box that holds the others).
+    fn classify(tree: &Tree, nodes: &[usize], boxes: &[Aabb]) -> Self {
         let all = boxes.iter().skip(1).fold(boxes[0], |a, b| union(&a, b));
         let all_size = all.size();
-        let mut floors = Vec::new();
-        let mut walls = Vec::new();
-        let mut ceilings = Vec::new();
+        let mut parts = RoomParts::default();
         for (i, b) in boxes.iter().enumerate() {
             let name = &tree.nodes[nodes[i]].name;
             let s = b.size();
@@ -733,83 +735,70 @@ impl Room {
                 || (b.min.z - all.min.z).abs() < 0.5
                 || (all.max.z - b.max.z).abs() < 0.5;
             if has_word(name, FLOOR_WORDS) && thin_flat {
-                floors.push(i);
+                parts.floors.push(i);
             } else if has_word(name, CEILING_WORDS) && thin_flat {
-                ceilings.push(i);
+                parts.ceilings.push(i);
             } else if has_word(name, WALL_WORDS) && s.x.min(s.z) <= 0.6 {
-                walls.push(i);
+                parts.walls.push(i);
             } else if generic(name) && thin_flat && wide {
                 // A large thin slab: the floor if nothing is below it, else the ceiling.
                 if b.max.y <= all.min.y + 0.1 {
-                    floors.push(i);
+                    parts.floors.push(i);
                 } else if b.min.y >= all.max.y - 0.1 {
-                    ceilings.push(i);
+                    parts.ceilings.push(i);
                 }
             } else if generic(name) && tall_thin && at_boundary {
-                walls.push(i);
+                parts.walls.push(i);
             }
         }
-        // A room modelled as one mesh (`Room`, `Interior_Shell`): its box holds the others.
-        let mut shells = Vec::new();
         for (i, b) in boxes.iter().enumerate() {
             let name = &tree.nodes[nodes[i]].name;
-            if floors.contains(&i) || walls.contains(&i) || ceilings.contains(&i) {
+            if parts.all().contains(&i) || !has_word(name, SHELL_WORDS) {
                 continue;
             }
-            let others: Vec<DVec3> = (0..boxes.len())
+            let others = boxes.len() - 1;
+            let inside = (0..boxes.len())
                 .filter(|&j| j != i)
-                .map(|j| boxes[j].center())
-                .collect();
-            let inside = others
-                .iter()
-                .filter(|c| (b.min.cmple(**c)).all() && c.cmple(b.max).all())
+                .filter(|&j| {
+                    let c = boxes[j].center();
+                    b.min.cmple(c).all() && c.cmple(b.max).all()
+                })
                 .count();
-            if has_word(name, SHELL_WORDS) && others.len() >= 2 && inside * 5 >= others.len() * 4 {
-                shells.push(i);
+            if others >= 2 && inside * 5 >= others * 4 {
+                parts.shells.push(i);
             }
         }
-        let mut parts: Vec<usize> = floors
+        parts
+    }
+
+    /// Every part, sorted, each once.
+    fn all(&self) -> Vec<usize> {
+        let mut all: Vec<usize> = self
+            .floors
             .iter()
-            .chain(&walls)
-            .chain(&ceilings)
-            .chain(&shells)
+            .chain(&self.walls)
+            .chain(&self.ceilings)
+            .chain(&self.shells)
             .copied()
             .collect();
-        parts.sort_unstable();
-        parts.dedup();
-        if parts.is_empty() || parts.len() == boxes.len() {
-            return Room {
-                parts: Vec::new(),
-                bounds: None,
-            };
-        }
-        let furniture: Vec<Aabb> = (0..boxes.len())
-            .filter(|i| !parts.contains(i))
-            .map(|i| boxes[i])
-            .collect();
-        let inside = furniture
-            .iter()
-            .skip(1)
-            .fold(furniture[0], |a, b| union(&a, b));
-        let floor_y = floors
-            .iter()
-            .map(|&i| boxes[i].max.y)
-            .fold(f64::NEG_INFINITY, f64::max);
-        let floor_y = if floor_y.is_finite() {
-            floor_y.min(inside.min.y)
-        } else {
-            inside.min.y.min(0.0)
-        };
-        // The walls' inner faces; else the floor's and the furniture's extent.
+        all.sort_unstable();
+        all.dedup();
+        all
+    }
+
+    /// The room these parts make around the furniture (whose boxes span `inside`): the
+    /// floor's top, the walls' inner faces (else the floor's and the furniture's extent),
+    /// the ceiling's underside (else the walls' tops, at least 2.5 m up).
+    fn bounds(&self, boxes: &[Aabb], inside: Aabb) -> Aabb {
         let mut min = inside.min;
         let mut max = inside.max;
-        for &f in &floors {
+        for &f in &self.floors {
             min = min.min(boxes[f].min);
             max = max.max(boxes[f].max);
         }
         let centre = inside.center();
         let (mut lo_x, mut hi_x, mut lo_z, mut hi_z) = (None, None, None, None);
-        for &w in &walls {
+        for &w in &self.walls {
             let b = &boxes[w];
             let s = b.size();
             if s.x <= s.z {
@@ -837,12 +826,10 @@ impl Room {
         if let Some(v) = hi_z.filter(|&v| v >= inside.max.z - 1e-6) {
             max.z = v;
         }
-        for &c in &ceilings {
+        for &c in &self.ceilings {
             max.y = boxes[c].min.y.max(inside.max.y);
         }
-        for &r in &shells {
-            // The shell's box is the room; its floor is where the furniture stands (its
-            // slab's top), when that is just above the box's bottom.
+        for &r in &self.shells {
             let b = &boxes[r];
             min.x = b.min.x.min(inside.min.x);
             min.z = b.min.z.min(inside.min.z);
@@ -850,7 +837,26 @@ impl Room {
             max.z = b.max.z.max(inside.max.z);
             max.y = b.max.y.max(inside.max.y);
         }
-        let shell_floor = shells
+        min.y = self.floor_level(boxes, inside);
+        if max.y - min.y < 2.0 && self.ceilings.is_empty() {
+            max.y = min.y + 2.5_f64.max(inside.max.y - min.y);
+        }
+        Aabb::new(min, max)
+    }
+
+    /// The floor's level: the floors' top; a shell's slab top (where the furniture stands,
+    /// when that is just above its box's bottom); else the furniture's bottom.
+    fn floor_level(&self, boxes: &[Aabb], inside: Aabb) -> f64 {
+        let top = self
+            .floors
+            .iter()
+            .map(|&i| boxes[i].max.y)
+            .fold(f64::NEG_INFINITY, f64::max);
+        if top.is_finite() {
+            return top.min(inside.min.y);
+        }
+        let shell = self
+            .shells
             .iter()
             .map(|&r| {
                 let bottom = boxes[r].min.y;
@@ -861,18 +867,42 @@ impl Room {
                 }
             })
             .fold(f64::NEG_INFINITY, f64::max);
-        let floor_y = if floors.is_empty() && shell_floor.is_finite() {
-            shell_floor
+        if shell.is_finite() {
+            shell
         } else {
-            floor_y
-        };
-        min.y = floor_y;
-        if max.y - min.y < 2.0 && ceilings.is_empty() {
-            max.y = min.y + 2.5_f64.max(inside.max.y - min.y);
+            inside.min.y.min(0.0)
         }
+    }
+}
+
+impl Room {
+    /// The room among the objects ([`RoomParts::classify`]) and its bounds; none when
+    /// nothing is a room part, or everything is.
+    fn find(tree: &Tree, scene: &Scene, nodes: &[usize]) -> Room {
+        let none = Room {
+            parts: Vec::new(),
+            bounds: None,
+        };
+        let boxes = scene.world_aabbs();
+        if boxes.len() < 2 {
+            return none;
+        }
+        let kinds = RoomParts::classify(tree, nodes, &boxes);
+        let parts = kinds.all();
+        if parts.is_empty() || parts.len() == boxes.len() {
+            return none;
+        }
+        let furniture: Vec<Aabb> = (0..boxes.len())
+            .filter(|i| parts.binary_search(i).is_err())
+            .map(|i| boxes[i])
+            .collect();
+        let inside = furniture
+            .iter()
+            .skip(1)
+            .fold(furniture[0], |a, b| union(&a, b));
         Room {
+            bounds: Some(kinds.bounds(&boxes, inside)),
             parts,
-            bounds: Some(Aabb::new(min, max)),
         }
     }
 }

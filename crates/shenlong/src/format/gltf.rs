@@ -176,8 +176,56 @@ pub fn read_bytes_with(
     let buffers = load_buffers(document, bin.as_deref(), base_dir)?;
 
     let all_nodes: Vec<::gltf::Node<'_>> = document.nodes().collect();
-    let count = all_nodes.len();
     let json_nodes = json.get("nodes").and_then(Value::as_array);
+    let (nodes, order) = hierarchy(document, &all_nodes, json_nodes)?;
+    let unit = options.units.map_or(1.0, super::facts::Units::meters);
+    let tree = tree_of(&all_nodes, &nodes, &order, json_nodes, &buffers, unit)?;
+    let derived = super::facts::derive(&tree, name, DVec3::Z, options)?;
+    let scene = derived.scene;
+    let object_nodes: Vec<usize> = derived.nodes.iter().map(|&t| order[t]).collect();
+
+    let animated = document
+        .animations()
+        .flat_map(|a| {
+            a.channels()
+                .map(|c| c.target().node().index())
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let container = if is_glb {
+        Container::Glb
+    } else {
+        Container::Gltf {
+            base_dir: base_dir.to_path_buf(),
+        }
+    };
+    Ok((
+        scene,
+        GltfDocument {
+            json,
+            bin,
+            container,
+            original: bytes,
+            nodes,
+            object_nodes,
+            order,
+            animated,
+            meters_per_unit: unit,
+        },
+    ))
+}
+
+/// The nodes' parents, local and world transforms, and the order of the scene's nodes
+/// (each after its parent, depth first from the roots). The hierarchy must be a forest
+/// (glTF 2.0 §3.5.3): one parent at most, and a scene lists roots only. Then no walk from
+/// a root meets a cycle, and every walk is a loop over the nodes, never a recursion, so
+/// any depth is read, edited and written.
+fn hierarchy(
+    document: &::gltf::Document,
+    all_nodes: &[::gltf::Node<'_>],
+    json_nodes: Option<&Vec<Value>>,
+) -> Result<(Vec<NodeInfo>, Vec<usize>), FormatError> {
+    let count = all_nodes.len();
     let mut nodes: Vec<NodeInfo> = (0..count)
         .map(|i| NodeInfo {
             parent: None,
@@ -188,10 +236,7 @@ pub fn read_bytes_with(
             in_scene: false,
         })
         .collect();
-    // The hierarchy must be a forest (glTF 2.0 §3.5.3): one parent at most, and a scene
-    // lists roots only. Then no walk from a root meets a cycle, and every walk below is a
-    // loop over the nodes, never a recursion, so any depth is read, edited and written.
-    for node in &all_nodes {
+    for node in all_nodes {
         for child in node.children() {
             let c = child.index();
             match nodes[c].parent {
@@ -241,15 +286,29 @@ pub fn read_bytes_with(
         }
     }
 
-    let unit = options.units.map_or(1.0, super::facts::Units::meters);
+    Ok((nodes, order))
+}
+
+/// The scene's nodes as the tree the shared reading step takes ([`super::facts`]): names,
+/// parents, world transforms in metres, vertex positions, the words and fronts their
+/// JSON gives.
+fn tree_of(
+    all_nodes: &[::gltf::Node<'_>],
+    nodes: &[NodeInfo],
+    order: &[usize],
+    json_nodes: Option<&Vec<Value>>,
+    buffers: &[Vec<u8>],
+    unit: f64,
+) -> Result<super::facts::Tree, FormatError> {
+    let count = all_nodes.len();
     let to_metres = DMat4::from_scale(DVec3::splat(unit));
     let mut tree = super::facts::Tree::default();
     let mut tree_index = vec![usize::MAX; count];
-    for &index in &order {
+    for &index in order {
         let node = &all_nodes[index];
         let world = to_metres * nodes[index].world;
         let points = match node.mesh() {
-            Some(mesh) => mesh_points(node, &mesh, &buffers, world)?,
+            Some(mesh) => mesh_points(node, &mesh, buffers, world)?,
             None => Vec::new(),
         };
         tree_index[index] = tree.nodes.len();
@@ -280,39 +339,7 @@ pub fn read_bytes_with(
             },
         });
     }
-    let derived = super::facts::derive(&tree, name, DVec3::Z, options)?;
-    let scene = derived.scene;
-    let object_nodes: Vec<usize> = derived.nodes.iter().map(|&t| order[t]).collect();
-
-    let animated = document
-        .animations()
-        .flat_map(|a| {
-            a.channels()
-                .map(|c| c.target().node().index())
-                .collect::<Vec<_>>()
-        })
-        .collect();
-    let container = if is_glb {
-        Container::Glb
-    } else {
-        Container::Gltf {
-            base_dir: base_dir.to_path_buf(),
-        }
-    };
-    Ok((
-        scene,
-        GltfDocument {
-            json,
-            bin,
-            container,
-            original: bytes,
-            nodes,
-            object_nodes,
-            order,
-            animated,
-            meters_per_unit: unit,
-        },
-    ))
+    Ok(tree)
 }
 
 /// A mesh node's vertex positions, each once, placed by `world`; refused when they cannot

@@ -46,6 +46,129 @@ fn number(x: f64) -> Value {
     json!(super::tidy(x))
 }
 
+/// The document being built: its buffer, meshes, accessors, views, nodes and roots.
+struct Builder {
+    bin: Vec<u8>,
+    meshes: Vec<Value>,
+    accessors: Vec<Value>,
+    views: Vec<Value>,
+    nodes: Vec<Value>,
+    roots: Vec<Value>,
+}
+
+impl Builder {
+    /// A document holding the shared index list of a box's triangles.
+    fn new(objects: usize) -> Self {
+        Self {
+            bin: TRIANGLES.iter().flat_map(|i| i.to_le_bytes()).collect(),
+            meshes: Vec::with_capacity(objects),
+            accessors: vec![json!(
+                {"bufferView": 0, "componentType": 5123, "count": 36, "type": "SCALAR"}
+            )],
+            views: vec![json!(
+                {"buffer": 0, "byteOffset": 0, "byteLength": 72, "target": 34963}
+            )],
+            nodes: Vec::with_capacity(objects),
+            roots: Vec::with_capacity(objects),
+        }
+    }
+
+    /// A mesh of a box of `size` about its bottom centre, named `name`: its index.
+    fn box_mesh(&mut self, name: &str, size: DVec3) -> usize {
+        let index = self.meshes.len();
+        let box_corners = corners(size);
+        let offset = self.bin.len();
+        self.bin
+            .extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
+        self.views
+            .push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
+        self.accessors
+            .push(json!({"bufferView": index + 1, "componentType": 5126,
+            "count": 8, "type": "VEC3", "min": box_corners[0], "max": box_corners[6]}));
+        self.meshes.push(json!({"name": name,
+            "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
+        index
+    }
+
+    /// A root node.
+    fn root(&mut self, node: Value) {
+        self.roots.push(json!(self.nodes.len()));
+        self.nodes.push(node);
+    }
+
+    /// An object: a node at its pose with a mesh of its box, its front and category in
+    /// `extras`.
+    fn object(&mut self, object: &crate::scene::Object) {
+        let (pose, size) = match &object.shape {
+            Shape::Box { size } => (object.similarity(), *size),
+            Shape::Points { .. } => {
+                let b = object.world_aabb();
+                let pose = cga::Similarity {
+                    translation: b.bottom_center(),
+                    rotation: DQuat::IDENTITY,
+                    scale: 1.0,
+                };
+                (pose, b.size())
+            }
+        };
+        let mesh_name = object.labels.category.as_ref().unwrap_or(&object.name);
+        let mesh = self.box_mesh(mesh_name, size);
+        let mut extras = serde_json::Map::new();
+        if (object.front - DVec3::Z).length() > 1e-12 {
+            let f = object.front;
+            extras.insert(
+                "shenlong:front".into(),
+                json!([number(f.x), number(f.y), number(f.z)]),
+            );
+        }
+        if let Some(category) = &object.labels.category {
+            extras.insert("shenlong:category".into(), json!(category));
+        }
+        let (q, t, s) = (pose.rotation, pose.translation, pose.scale);
+        let mut node = json!({
+            "name": object.name,
+            "translation": [number(t.x), number(t.y), number(t.z)],
+            "rotation": [number(q.x), number(q.y), number(q.z), number(q.w)],
+            "scale": [number(s), number(s), number(s)],
+            "mesh": mesh,
+        });
+        if !extras.is_empty() {
+            node["extras"] = Value::Object(extras);
+        }
+        self.root(node);
+    }
+
+    /// The document, with its buffer inside it: a `.glb`'s binary chunk, or a data URI.
+    fn finish(self, scene_name: &str, binary: bool) -> Result<Vec<u8>, FormatError> {
+        let buffer = if binary {
+            json!({"byteLength": self.bin.len()})
+        } else {
+            json!({
+                "byteLength": self.bin.len(),
+                "uri": format!(
+                    "data:application/octet-stream;base64,{}",
+                    base64::engine::general_purpose::STANDARD.encode(&self.bin)
+                ),
+            })
+        };
+        let document = json!({
+            "asset": {"version": "2.0", "generator": "Shenlong"},
+            "scene": 0,
+            "scenes": [{"name": scene_name, "nodes": self.roots}],
+            "nodes": self.nodes,
+            "meshes": self.meshes,
+            "accessors": self.accessors,
+            "bufferViews": self.views,
+            "buffers": [buffer],
+        });
+        if binary {
+            super::gltf::glb_bytes(&document, Some(&self.bin))
+        } else {
+            Ok(super::pretty::to_string(&document).into_bytes())
+        }
+    }
+}
+
 /// The scene as a new glTF: `.glb` bytes when `binary`, else a `.gltf` with its buffer
 /// embedded as a data URI.
 ///
@@ -55,76 +178,9 @@ pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
     if scene.objects.is_empty() {
         return Err(FormatError::new("the scene has no object to write"));
     }
-    let mut bin: Vec<u8> = TRIANGLES.iter().flat_map(|i| i.to_le_bytes()).collect();
-    let mut meshes: Vec<Value> = Vec::with_capacity(scene.objects.len());
-    let mut accessors: Vec<Value> = vec![json!(
-        {"bufferView": 0, "componentType": 5123, "count": 36, "type": "SCALAR"}
-    )];
-    let mut views: Vec<Value> = vec![json!(
-        {"buffer": 0, "byteOffset": 0, "byteLength": 72, "target": 34963}
-    )];
-    let mut nodes: Vec<Value> = Vec::with_capacity(scene.objects.len() * 2);
-    let mut roots: Vec<Value> = Vec::with_capacity(scene.objects.len());
+    let mut builder = Builder::new(scene.objects.len());
     for object in &scene.objects {
-        let (pose, size) = match &object.shape {
-            Shape::Box { size } => (object.similarity(), *size),
-            Shape::Points { .. } => {
-                let b = object.world_aabb();
-                (
-                    cga::Similarity {
-                        translation: b.bottom_center(),
-                        rotation: DQuat::IDENTITY,
-                        scale: 1.0,
-                    },
-                    b.size(),
-                )
-            }
-        };
-        let index = meshes.len();
-        let box_corners = corners(size);
-        let offset = bin.len();
-        bin.extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
-        let (lo, hi) = (box_corners[0], box_corners[6]);
-        views.push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
-        accessors.push(
-            json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
-            "type": "VEC3", "min": lo, "max": hi}),
-        );
-        let mesh_name = object
-            .labels
-            .category
-            .clone()
-            .unwrap_or_else(|| object.name.clone());
-        meshes.push(json!({"name": mesh_name,
-            "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
-        let mut extras = serde_json::Map::new();
-        if (object.front - DVec3::Z).length() > 1e-12 {
-            extras.insert(
-                "shenlong:front".into(),
-                json!([
-                    number(object.front.x),
-                    number(object.front.y),
-                    number(object.front.z)
-                ]),
-            );
-        }
-        if let Some(category) = &object.labels.category {
-            extras.insert("shenlong:category".into(), json!(category));
-        }
-        let q = pose.rotation;
-        let t = pose.translation;
-        let mut node = json!({
-            "name": object.name,
-            "translation": [number(t.x), number(t.y), number(t.z)],
-            "rotation": [number(q.x), number(q.y), number(q.z), number(q.w)],
-            "scale": [number(pose.scale), number(pose.scale), number(pose.scale)],
-            "mesh": index,
-        });
-        if !extras.is_empty() {
-            node["extras"] = Value::Object(extras);
-        }
-        nodes.push(node);
-        roots.push(json!(nodes.len() - 1));
+        builder.object(object);
     }
     // The room, as slabs the reader recognises as floor, walls and ceiling.
     for (name, slab) in scene
@@ -133,48 +189,12 @@ pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
         .map(super::facts::room_slabs)
         .unwrap_or_default()
     {
-        let index = meshes.len();
-        let box_corners = corners(slab.size());
-        let offset = bin.len();
-        bin.extend(box_corners.iter().flatten().flat_map(|v| v.to_le_bytes()));
-        views.push(json!({"buffer": 0, "byteOffset": offset, "byteLength": 96, "target": 34962}));
-        accessors.push(
-            json!({"bufferView": index + 1, "componentType": 5126, "count": 8,
-            "type": "VEC3", "min": box_corners[0], "max": box_corners[6]}),
-        );
-        meshes.push(json!({"name": name,
-            "primitives": [{"attributes": {"POSITION": index + 1}, "indices": 0}]}));
+        let mesh = builder.box_mesh(name, slab.size());
         let t = slab.bottom_center();
-        roots.push(json!(nodes.len()));
-        nodes.push(json!({"name": name, "mesh": index,
+        builder.root(json!({"name": name, "mesh": mesh,
             "translation": [number(t.x), number(t.y), number(t.z)]}));
     }
-    let buffer = if binary {
-        json!({"byteLength": bin.len()})
-    } else {
-        json!({
-            "byteLength": bin.len(),
-            "uri": format!(
-                "data:application/octet-stream;base64,{}",
-                base64::engine::general_purpose::STANDARD.encode(&bin)
-            ),
-        })
-    };
-    let document = json!({
-        "asset": {"version": "2.0", "generator": "Shenlong"},
-        "scene": 0,
-        "scenes": [{"name": scene.name, "nodes": roots}],
-        "nodes": nodes,
-        "meshes": meshes,
-        "accessors": accessors,
-        "bufferViews": views,
-        "buffers": [buffer],
-    });
-    if binary {
-        super::gltf::glb_bytes(&document, Some(&bin))
-    } else {
-        Ok(super::pretty::to_string(&document).into_bytes())
-    }
+    builder.finish(&scene.name, binary)
 }
 
 #[cfg(test)]

@@ -33,6 +33,8 @@ struct PrimSpec {
 #[derive(Debug, Default)]
 pub(super) struct Outline {
     prims: HashMap<String, PrimSpec>,
+    /// Each prim's property statements (recorded before its spec closes).
+    properties: HashMap<String, Vec<(String, usize, usize)>>,
     /// The spans of asset paths, the `@`s included.
     assets: Vec<(usize, usize)>,
 }
@@ -188,6 +190,128 @@ enum Block {
     Other,
 }
 
+/// The scanner's state between tokens.
+struct Scanner<'a> {
+    text: &'a [u8],
+    outline: Outline,
+    /// Blocks open, with their bracket.
+    stack: Vec<(Block, u8)>,
+    /// How many of them are brackets, dictionaries or variant sets (inside one, no
+    /// statement of a prim's body is read).
+    others: usize,
+    /// The statement being read at the current prim level.
+    statement: Vec<Token>,
+    statement_start: Option<usize>,
+    /// A prim header seen, waiting for its `{`: its path.
+    pending: Option<String>,
+    /// The prims open: each path and the byte after its `{`.
+    open_prims: Vec<(String, usize)>,
+}
+
+impl Scanner<'_> {
+    fn end_of_statement(&mut self) {
+        self.statement.clear();
+        self.statement_start = None;
+    }
+
+    fn open(&mut self, at: usize, c: u8) -> Result<(), FormatError> {
+        if c == b'{' && self.others == 0 && self.pending.is_some() {
+            let path = self.pending.take().unwrap_or_default();
+            self.open_prims.push((path.clone(), at + 1));
+            self.stack.push((Block::Prim(path), c));
+            self.end_of_statement();
+        } else {
+            if self.statement_start.is_none() {
+                self.statement_start = Some(at);
+            }
+            self.stack.push((Block::Other, c));
+            self.others += 1;
+        }
+        if self.stack.len() > super::super::MAX_JSON_DEPTH * 4 {
+            return Err(FormatError::new(format!(
+                "nesting too deep at line {}",
+                line_of(self.text, at)
+            )));
+        }
+        Ok(())
+    }
+
+    fn close(&mut self, at: usize, c: u8) -> Result<(), FormatError> {
+        let Some((block, _)) = self.stack.pop() else {
+            return Err(FormatError::new(format!(
+                "an unmatched '{}' at line {}",
+                c as char,
+                line_of(self.text, at)
+            )));
+        };
+        match block {
+            Block::Prim(path) => {
+                let (_, open) = self.open_prims.pop().unwrap_or_default();
+                let indent = indent_of(self.text, open, at);
+                self.outline.prims.insert(
+                    path,
+                    PrimSpec {
+                        open,
+                        close: at,
+                        indent,
+                        properties: Vec::new(),
+                    },
+                );
+                self.end_of_statement();
+            }
+            Block::Other => self.others -= 1,
+        }
+        Ok(())
+    }
+
+    /// A line ends: a property statement of a prim's body is recorded; a prim header
+    /// waits for its `{`.
+    fn newline(&mut self, at: usize) {
+        if self.others > 0 {
+            return;
+        }
+        self.record_property(at);
+        if let Some(path) = prim_header(&self.stack, &self.statement) {
+            self.pending = Some(path);
+        }
+        self.end_of_statement();
+    }
+
+    /// Records the property statement that just ended at `end` (a newline) in its prim.
+    fn record_property(&mut self, end: usize) {
+        let (Some(start), Some((Block::Prim(path), _))) = (self.statement_start, self.stack.last())
+        else {
+            return;
+        };
+        let Some(name) = property_name(&self.statement) else {
+            return;
+        };
+        let line_start = self.text[..start]
+            .iter()
+            .rposition(|&c| c == b'\n')
+            .map_or(0, |p| p + 1);
+        self.outline
+            .properties
+            .entry(path.clone())
+            .or_default()
+            .push((name, line_start, end + 1));
+    }
+
+    fn word(&mut self, at: usize, token: Token) {
+        if self.others > 0 {
+            return;
+        }
+        if self.statement_start.is_none() {
+            self.statement_start = Some(at);
+        }
+        // A header may be followed by `{` on the same line.
+        self.statement.push(token);
+        if let Some(path) = prim_header(&self.stack, &self.statement) {
+            self.pending = Some(path);
+        }
+    }
+}
+
 impl Outline {
     /// Scans a layer's text.
     ///
@@ -196,138 +320,42 @@ impl Outline {
     pub(super) fn scan(text: &str) -> Result<Self, FormatError> {
         let t = text.as_bytes();
         let mut lexer = Lexer { text: t, pos: 0 };
-        let mut outline = Outline::default();
-        // Blocks open: (kind, opening byte, the bracket).
-        let mut stack: Vec<(Block, u8)> = Vec::new();
-        // The statement being read at the current prim level: its tokens' words.
-        let mut statement: Vec<Token> = Vec::new();
-        let mut statement_start: Option<usize> = None;
-        // A prim header seen, waiting for its `{`: its path.
-        let mut pending: Option<String> = None;
-        let mut open_prims: Vec<(String, usize)> = Vec::new();
+        let mut scanner = Scanner {
+            text: t,
+            outline: Outline::default(),
+            stack: Vec::new(),
+            others: 0,
+            statement: Vec::new(),
+            statement_start: None,
+            pending: None,
+            open_prims: Vec::new(),
+        };
         while let Some((at, token)) = lexer.next()? {
-            let depth_other = stack.iter().any(|(b, _)| matches!(b, Block::Other));
             match token {
                 Token::Asset(a, b) => {
-                    outline.assets.push((a, b));
-                    if !depth_other {
-                        statement.push(Token::Asset(a, b));
-                    }
+                    scanner.outline.assets.push((a, b));
+                    scanner.word(at, Token::Asset(a, b));
                 }
-                Token::Open(c) => {
-                    if c == b'{' && !depth_other && pending.is_some() {
-                        let path = pending.take().unwrap_or_default();
-                        open_prims.push((path.clone(), at + 1));
-                        stack.push((Block::Prim(path), c));
-                        statement.clear();
-                        statement_start = None;
-                    } else {
-                        if statement_start.is_none() {
-                            statement_start = Some(at);
-                        }
-                        stack.push((Block::Other, c));
-                    }
-                    if stack.len() > super::super::MAX_JSON_DEPTH * 4 {
-                        return Err(FormatError::new(format!(
-                            "nesting too deep at line {}",
-                            line_of(t, at)
-                        )));
-                    }
-                }
-                Token::Close(c) => {
-                    let Some((block, _)) = stack.pop() else {
-                        return Err(FormatError::new(format!(
-                            "an unmatched '{}' at line {}",
-                            c as char,
-                            line_of(t, at)
-                        )));
-                    };
-                    if let Block::Prim(path) = block {
-                        let (_, open) = open_prims.pop().unwrap_or_default();
-                        let indent = indent_of(t, open, at);
-                        outline.prims.insert(
-                            path,
-                            PrimSpec {
-                                open,
-                                close: at,
-                                indent,
-                                properties: Vec::new(),
-                            },
-                        );
-                        statement.clear();
-                        statement_start = None;
-                    }
-                }
-                Token::Newline => {
-                    if !depth_other {
-                        outline.end_statement(&stack, &statement, statement_start, at, t);
-                        if let Some(path) = prim_header(&stack, &statement) {
-                            pending = Some(path);
-                        }
-                        statement.clear();
-                        statement_start = None;
-                    }
-                }
-                other => {
-                    if !depth_other {
-                        if statement_start.is_none() {
-                            statement_start = Some(at);
-                        }
-                        // A header may be followed by `{` on the same line.
-                        statement.push(other);
-                        if let Some(path) = prim_header(&stack, &statement) {
-                            pending = Some(path);
-                        }
-                    }
-                }
+                Token::Open(c) => scanner.open(at, c)?,
+                Token::Close(c) => scanner.close(at, c)?,
+                Token::Newline => scanner.newline(at),
+                other => scanner.word(at, other),
             }
         }
-        if let Some((_, open)) = stack.last() {
+        if let Some((_, open)) = scanner.stack.last() {
             return Err(FormatError::new(format!(
                 "an unclosed '{}' at the end of the layer",
                 *open as char
             )));
         }
-        Ok(outline)
-    }
-
-    /// Records a property statement that just ended at `end` (a newline) in its prim.
-    fn end_statement(
-        &mut self,
-        stack: &[(Block, u8)],
-        statement: &[Token],
-        start: Option<usize>,
-        end: usize,
-        t: &[u8],
-    ) {
-        let (Some(start), Some((Block::Prim(path), _))) = (start, stack.last()) else {
-            return;
-        };
-        let Some(name) = property_name(statement) else {
-            return;
-        };
-        let line_start = t[..start]
-            .iter()
-            .rposition(|&c| c == b'\n')
-            .map_or(0, |p| p + 1);
-        // The prim's spec is recorded when it closes; keep the properties aside by path.
-        self.prims
-            .entry(format!("\u{0}{path}"))
-            .or_insert_with(|| PrimSpec {
-                open: 0,
-                close: 0,
-                indent: String::new(),
-                properties: Vec::new(),
-            })
-            .properties
-            .push((name, line_start, end + 1));
+        Ok(scanner.outline)
     }
 
     /// The spec of a prim, with its properties.
     fn prim(&self, path: &str) -> Option<PrimSpec> {
         let mut spec = self.prims.get(path)?.clone();
-        if let Some(props) = self.prims.get(&format!("\u{0}{path}")) {
-            spec.properties.clone_from(&props.properties);
+        if let Some(props) = self.properties.get(path) {
+            spec.properties.clone_from(props);
         }
         Some(spec)
     }
