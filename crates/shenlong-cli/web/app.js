@@ -525,8 +525,10 @@ function showChoice(ambiguity) {
   for (const name of ambiguity.objects) if (objects.has(name)) candidates.add(name);
   const choices = ambiguity.choices || ambiguity.objects.map((object) => ({ object, instruction: null }));
   const shown = choices.slice(0, MAX_CHOICES);
-  $('choice-text').replaceChildren(h('span', {}, `“${ambiguity.phrase}” could mean ${ambiguity.objects.length} objects. Which one?`,
-    choices.length > shown.length ? h('span', { class: 'why' }, ` (the first ${shown.length}; name another by typing)`) : null));
+  // The server lists a few choices and says how many there are (`total`).
+  const total = ambiguity.total || ambiguity.objects.length;
+  $('choice-text').replaceChildren(h('span', {}, `“${ambiguity.phrase}” could mean ${total} objects. Which one?`,
+    total > shown.length ? h('span', { class: 'why' }, ` (the first ${shown.length}; name another by typing)`) : null));
   $('choices').replaceChildren(...shown.map((choice) => {
     const button = link(h('button', { type: 'button', title: choice.instruction || `Insert '${choice.object}'` }, choice.object), [choice.object]);
     button.addEventListener('click', () => {

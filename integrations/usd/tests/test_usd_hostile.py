@@ -58,6 +58,8 @@ def author(path: str) -> None:
     prim = stage.GetPrimAtPath("/World/A")
     attr = prim.CreateAttribute("xformOp:rotateÅY", Sdf.ValueTypeNames.Float)
     attr.Set(10.0)
+    # … named in the op order, where Shenlong reads it (it once sliced the name by bytes).
+    UsdGeom.Xformable(prim).GetXformOpOrderAttr().Set(["xformOp:translate", "xformOp:rotateÅY"])
     stage.GetRootLayer().Save()
 
 

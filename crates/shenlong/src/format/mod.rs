@@ -63,42 +63,82 @@ pub const MAX_JSON_DEPTH: usize = 100;
 /// and parsed again as a tree by whoever serves it.)
 pub(crate) fn check_json_depth(text: &[u8]) -> Result<(), FormatError> {
     let mut depth = 0usize;
-    let mut in_string = false;
-    let mut escaped = false;
-    for (i, &b) in text.iter().enumerate() {
-        if in_string {
-            if escaped {
-                escaped = false;
-            } else if b == b'\\' {
-                escaped = true;
-            } else if b == b'"' {
-                in_string = false;
-            }
-            continue;
+    let mut i = 0;
+    while i < text.len() {
+        // To the next byte that can change the depth: a bracket or a string's quote.
+        match text[i..].iter().position(|&b| STRUCTURAL[b as usize]) {
+            Some(k) => i += k,
+            None => break,
         }
-        match b {
-            b'"' => in_string = true,
+        match text[i] {
+            b'"' => {
+                // The string's end: its next quote not escaped (SIMD search).
+                i += 1;
+                loop {
+                    match memchr::memchr2(b'"', b'\\', &text[i..]) {
+                        Some(k) if text[i + k] == b'\\' => i = (i + k + 2).min(text.len()),
+                        Some(k) => {
+                            i += k + 1;
+                            break;
+                        }
+                        None => return Ok(()),
+                    }
+                }
+                continue;
+            }
             b'[' | b'{' => {
                 depth += 1;
                 if depth > MAX_JSON_DEPTH {
-                    let before = &text[..i];
-                    let line = before.iter().filter(|&&c| c == b'\n').count() + 1;
-                    let line_start = before
-                        .iter()
-                        .rposition(|&c| c == b'\n')
-                        .map_or(0, |p| p + 1);
-                    // Columns count bytes from 1, as serde_json's do.
-                    let column = i - line_start + 1;
-                    return Err(FormatError::new(format!(
-                        "nesting deeper than {MAX_JSON_DEPTH} levels at line {line}, column {column}"
-                    )));
+                    return Err(too_deep(text, i));
                 }
             }
-            b']' | b'}' => depth = depth.saturating_sub(1),
-            _ => {}
+            _ => depth = depth.saturating_sub(1),
         }
+        i += 1;
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod depth_scan_tests {
+    use super::check_json_depth;
+
+    #[test]
+    fn strings_escapes_and_ends_are_scanned_without_a_panic() {
+        assert!(check_json_depth(br#"{"a": "[[[", "b": "\"[", "c": [1]}"#).is_ok());
+        assert!(check_json_depth(b"\"abc\\").is_ok());
+        assert!(check_json_depth(b"\"\\").is_ok());
+        let deep = "[".repeat(101);
+        assert!(check_json_depth(deep.as_bytes()).is_err());
+        let quoted = format!("\"{deep}\"");
+        assert!(check_json_depth(quoted.as_bytes()).is_ok());
+    }
+}
+
+/// The bytes that open strings, lists and objects, or close lists and objects.
+const STRUCTURAL: [bool; 256] = {
+    let mut table = [false; 256];
+    table[b'"' as usize] = true;
+    table[b'[' as usize] = true;
+    table[b']' as usize] = true;
+    table[b'{' as usize] = true;
+    table[b'}' as usize] = true;
+    table
+};
+
+/// The error for nesting past [`MAX_JSON_DEPTH`] at byte `i`, with its line and column.
+fn too_deep(text: &[u8], i: usize) -> FormatError {
+    let before = &text[..i];
+    let line = before.iter().filter(|&&c| c == b'\n').count() + 1;
+    let line_start = before
+        .iter()
+        .rposition(|&c| c == b'\n')
+        .map_or(0, |p| p + 1);
+    // Columns count bytes from 1, as serde_json's do.
+    let column = i - line_start + 1;
+    FormatError::new(format!(
+        "nesting deeper than {MAX_JSON_DEPTH} levels at line {line}, column {column}"
+    ))
 }
 
 /// A problem with a scene file: what is wrong and, in the message, where.

@@ -113,9 +113,55 @@ fn headed(lexicon: &Lexicon, phrase: &str) -> bool {
         .is_some_and(|last| known(lexicon, last) && !super::words::is_room_part(last))
 }
 
+/// The common simple name — one word of letters and an instance number (`box-5023`,
+/// `Chair 7`, `lamp_01`, `stool`) — read without splitting it into parts: what [`read`]
+/// gives for it, at the cost of one pass and one allocation (a scene of 100,000 such
+/// objects is read for every edit). `None` for any other name.
+fn simple(name: &str) -> Option<Identifier> {
+    let bytes = name.as_bytes();
+    let letters = bytes.iter().take_while(|b| b.is_ascii_alphabetic()).count();
+    if letters < 2 || bytes[1..letters].iter().any(u8::is_ascii_uppercase) {
+        return None;
+    }
+    let rest = &bytes[letters..];
+    let digits = match rest.first() {
+        None => rest,
+        Some(b'-' | b'_' | b' ' | b'.') => &rest[1..],
+        Some(_) => rest,
+    };
+    if !digits.iter().all(u8::is_ascii_digit) || (digits.is_empty() && !rest.is_empty()) {
+        return None;
+    }
+    let word = name[..letters].to_ascii_lowercase();
+    let plain = !PREFIXES.contains(&word.as_str())
+        && !SUFFIXES.contains(&word.as_str())
+        && side_of(&word).is_none()
+        && word != "node"
+        && super::words::spelling(&word) == word;
+    if !plain {
+        return None;
+    }
+    let number = if digits.is_empty() {
+        None
+    } else {
+        std::str::from_utf8(digits).ok()?.parse::<u32>().ok()
+    };
+    Some(Identifier {
+        base: word,
+        other: None,
+        number,
+        side: None,
+    })
+}
+
 /// Reads an object's name.
 #[must_use]
 pub fn read(name: &str, lexicon: &Lexicon) -> Identifier {
+    simple(name).unwrap_or_else(|| read_parts(name, lexicon))
+}
+
+/// [`read`] by the name's parts.
+fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
     let mut parts = parts(name);
     // A part of several words that ends in a number (`chair 2`, `FloorLamp01`): split it.
     if let Some(last) = parts.last_mut() {
@@ -188,6 +234,30 @@ mod tests {
 
     fn r(name: &str) -> Identifier {
         read(name, Lexicon::builtin())
+    }
+
+    #[test]
+    fn simple_names_read_as_the_full_reading_reads_them() {
+        for name in [
+            "box-5023",
+            "Chair 7",
+            "lamp_01",
+            "stool",
+            "Sofa",
+            "mesh_3",
+            "left_2",
+            "gray-1",
+            "node 4",
+            "chair99999999999",
+            "ab",
+            "Box.001",
+            "table-",
+            "l_2",
+            "sm_chair",
+        ] {
+            // The fast path's reading is the full one's.
+            assert_eq!(r(name), read_parts(name, Lexicon::builtin()), "{name}");
+        }
     }
 
     #[test]

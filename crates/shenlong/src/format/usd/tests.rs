@@ -404,3 +404,24 @@ def Xform "root"
     );
     assert!((front("Stool") - DVec3::X).length() < 1e-9);
 }
+
+#[test]
+fn names_with_quotes_and_backslashes_survive_round_trips() {
+    // Written escaped, read unescaped: a name gains no backslash however often it goes
+    // through a stage.
+    let mut scene = crate::scene::Scene::new("q");
+    scene.push_box(r#"quote"inside\and back"#, [1.0; 3], [0.0; 3]);
+    let dir = tempfile::tempdir().unwrap();
+    for round in 0..3 {
+        let path = write(
+            dir.path(),
+            &format!("q{round}.usda"),
+            std::str::from_utf8(&write_new(&scene)).unwrap(),
+        );
+        scene = read(&path, &ReadOptions::default()).unwrap().0;
+        assert_eq!(
+            scene.objects[0].name, r#"quote"inside\and back"#,
+            "round {round}"
+        );
+    }
+}
