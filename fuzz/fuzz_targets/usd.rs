@@ -1,8 +1,11 @@
-//! Read arbitrary bytes as a USD stage — `.usda` text, a `.usdc` crate or a `.usdz`
-//! package, by the first byte — through `format::usd::read`, as every front end does:
-//! never a panic, a hang or runaway memory in this process (the stage is read in a child
-//! process with a budget, whose crash is an error here). A stage that reads is edited
-//! (its first object moved) and written back as `.usda` text, through the text patcher.
+//! USD stages from arbitrary bytes, two ways:
+//! - Shenlong's own readers in this process (`format::usd::fuzz_own_readers`: the nesting
+//!   check, the `.usda` text scanner and patcher, the decoder of a walk sent back by the
+//!   reading child), where coverage guides the fuzzer: never a panic or a hang;
+//! - the whole read as every front end does it (`format::usd::read`: the stage opened in a
+//!   child process with a budget), `.usda`, `.usdc` or `.usdz` by the first byte: this
+//!   process never crashes, whatever the USD crate does in the child; a stage that reads
+//!   is edited and written back as `.usda` text.
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
@@ -10,14 +13,15 @@ use shenlong::format::usd::{self, UsdContainer};
 use shenlong::format::ReadOptions;
 
 fuzz_target!(|data: &[u8]| {
+    usd::fuzz_own_readers(data);
     let Some((&kind, body)) = data.split_first() else {
         return;
     };
-    let extension = match kind % 3 {
-        0 => "usda",
-        1 => "usdc",
-        _ => "usdz",
-    };
+    // The whole read forks a child: one input in 16, to keep the run fast.
+    if kind % 16 >= 3 {
+        return;
+    }
+    let extension = ["usda", "usdc", "usdz"][usize::from(kind % 16)];
     let Ok(dir) = tempfile::tempdir() else { return };
     let path = dir.path().join(format!("stage.{extension}"));
     if std::fs::write(&path, body).is_err() {

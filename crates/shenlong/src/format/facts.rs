@@ -268,6 +268,10 @@ const SHELL_WORDS: &[&str] = &[
     "walls",
 ];
 
+/// The most objects named like a room's shell that are tried as one (each costs a pass
+/// over the objects).
+const MAX_SHELLS: usize = 16;
+
 /// Words that say nothing of what a node is (`Plane`, `Cube.004`, `mesh_3`): a node so
 /// named may be recognised as a floor or wall by its shape alone.
 const GENERIC_WORDS: &[&str] = &[
@@ -333,6 +337,75 @@ fn has_word(name: &str, list: &[&str]) -> bool {
     words(name).iter().any(|w| list.contains(&w.as_str()))
 }
 
+/// Words for things that hang on, stand on or cover a floor, wall or ceiling: a name with
+/// one of them (`WallClock`, `Wall_Shelf`, `FloorRug`, `Ceiling_Lamp`) names the thing,
+/// not the room.
+const FIXTURE_WORDS: &[&str] = &[
+    "clock",
+    "lamp",
+    "light",
+    "lights",
+    "sconce",
+    "shelf",
+    "shelves",
+    "cabinet",
+    "cupboard",
+    "unit",
+    "rug",
+    "mat",
+    "carpet",
+    "art",
+    "picture",
+    "painting",
+    "poster",
+    "frame",
+    "mirror",
+    "hook",
+    "hooks",
+    "rack",
+    "fan",
+    "vent",
+    "heater",
+    "radiator",
+    "socket",
+    "outlet",
+    "switch",
+    "plant",
+    "vase",
+    "decal",
+    "sticker",
+    "tv",
+    "screen",
+    "desk",
+    "table",
+    "stand",
+    "speaker",
+    "cushion",
+    "pillow",
+    "blanket",
+    "box",
+    "bin",
+    "basket",
+    "chair",
+    "sofa",
+    "bed",
+    "magic",
+    "fixture",
+    "pendant",
+    "chandelier",
+    "bulb",
+    "sign",
+    "board",
+];
+
+/// Whether a name names a part of the room of this kind (`Floor`, `Wall_North`,
+/// `Boden_01`): one of its words is in `list` and none names a thing on it.
+fn room_word(name: &str, list: &[&str]) -> bool {
+    let words = words(name);
+    words.iter().any(|w| list.contains(&w.as_str()))
+        && !words.iter().any(|w| FIXTURE_WORDS.contains(&w.as_str()))
+}
+
 /// Whether a name says nothing of what the thing is (an empty name says nothing).
 fn generic(name: &str) -> bool {
     words(name)
@@ -379,10 +452,6 @@ pub(crate) fn derive(
     let keep: Vec<bool> = (0..scene.objects.len())
         .map(|i| !room.parts.contains(&i))
         .collect();
-    if keep.iter().all(|&k| !k) && !keep.is_empty() {
-        // A file of nothing but a room: its parts are its objects.
-        return finish(tree, scene, nodes, owners, None, options);
-    }
     let mut kept_scene = Scene::new(scene_name);
     let mut kept_nodes = Vec::new();
     let mut kept_owners = Vec::new();
@@ -512,9 +581,9 @@ fn choose(tree: &Tree) -> Vec<Chosen> {
                 || (inherited.is_none()
                     && boxes[i].is_some()
                     && !ancestors_model(tree, i)
-                    && (has_word(&node.name, FLOOR_WORDS)
-                        || has_word(&node.name, WALL_WORDS)
-                        || has_word(&node.name, CEILING_WORDS)))
+                    && (room_word(&node.name, FLOOR_WORDS)
+                        || room_word(&node.name, WALL_WORDS)
+                        || room_word(&node.name, CEILING_WORDS)))
         } else if boxes[i].is_none() || !node.transformable {
             false
         } else {
@@ -597,9 +666,9 @@ fn is_group(tree: &Tree, children: &[Vec<usize>], boxes: &[Option<Aabb>], i: usi
         let name = &tree.nodes[c].name;
         let Some(b) = boxes[c] else { return false };
         let s = b.size();
-        has_word(name, FLOOR_WORDS)
-            || has_word(name, WALL_WORDS)
-            || has_word(name, CEILING_WORDS)
+        room_word(name, FLOOR_WORDS)
+            || room_word(name, WALL_WORDS)
+            || room_word(name, CEILING_WORDS)
             || (generic(name)
                 && s.y <= 0.1
                 && s.x * s.z >= 2.0
@@ -734,11 +803,15 @@ impl RoomParts {
                 || (all.max.x - b.max.x).abs() < 0.5
                 || (b.min.z - all.min.z).abs() < 0.5
                 || (all.max.z - b.max.z).abs() < 0.5;
-            if has_word(name, FLOOR_WORDS) && thin_flat {
+            if room_word(name, FLOOR_WORDS) && thin_flat {
                 parts.floors.push(i);
-            } else if has_word(name, CEILING_WORDS) && thin_flat {
+            } else if room_word(name, CEILING_WORDS) && thin_flat {
                 parts.ceilings.push(i);
-            } else if has_word(name, WALL_WORDS) && s.x.min(s.z) <= 0.6 {
+            } else if room_word(name, WALL_WORDS)
+                && s.x.min(s.z) <= 0.6
+                && s.x.max(s.z) >= 1.0
+                && s.y >= 1.5
+            {
                 parts.walls.push(i);
             } else if generic(name) && thin_flat && wide {
                 // A large thin slab: the floor if nothing is below it, else the ceiling.
@@ -751,11 +824,14 @@ impl RoomParts {
                 parts.walls.push(i);
             }
         }
-        for (i, b) in boxes.iter().enumerate() {
-            let name = &tree.nodes[nodes[i]].name;
-            if parts.all().contains(&i) || !has_word(name, SHELL_WORDS) {
-                continue;
-            }
+        let classified = parts.all();
+        let candidates: Vec<usize> = (0..boxes.len())
+            .filter(|i| classified.binary_search(i).is_err())
+            .filter(|&i| has_word(&tree.nodes[nodes[i]].name, SHELL_WORDS))
+            .take(MAX_SHELLS)
+            .collect();
+        for i in candidates {
+            let b = &boxes[i];
             let others = boxes.len() - 1;
             let inside = (0..boxes.len())
                 .filter(|&j| j != i)
@@ -826,8 +902,13 @@ impl RoomParts {
         if let Some(v) = hi_z.filter(|&v| v >= inside.max.z - 1e-6) {
             max.z = v;
         }
-        for &c in &self.ceilings {
-            max.y = boxes[c].min.y.max(inside.max.y);
+        if let Some(lowest) = self
+            .ceilings
+            .iter()
+            .map(|&c| boxes[c].min.y)
+            .min_by(f64::total_cmp)
+        {
+            max.y = lowest.max(inside.max.y);
         }
         for &r in &self.shells {
             let b = &boxes[r];
@@ -1071,6 +1152,27 @@ mod tests {
         assert_eq!(d.scene.objects.len(), 2);
         let b = d.scene.bounds.unwrap();
         assert_eq!((b.min.y, b.max.x), (0.0, 2.0));
+    }
+
+    #[test]
+    fn things_on_walls_and_floors_are_not_the_room() {
+        let tree = Tree {
+            nodes: vec![
+                node("Floor", None, slab([-3.0, -0.02, -3.0], [3.0, 0.0, 3.0])),
+                node(
+                    "Wall_North",
+                    None,
+                    slab([-3.0, 0.0, -3.1], [3.0, 2.6, -3.0]),
+                ),
+                node("WallClock", None, slab([0.0, 1.8, -3.0], [0.3, 2.1, -2.95])),
+                node("Wall_Shelf", None, slab([1.0, 1.2, -3.0], [1.8, 1.5, -2.7])),
+                node("FloorRug", None, slab([-1.0, 0.0, -1.0], [1.0, 0.01, 1.0])),
+            ],
+        };
+        let d = derive(&tree, "t", DVec3::Z, &ReadOptions::default()).unwrap();
+        let names: Vec<&str> = d.scene.objects.iter().map(|o| o.name.as_str()).collect();
+        assert_eq!(names, ["WallClock", "Wall_Shelf", "FloorRug"]);
+        assert_eq!(d.scene.bounds.unwrap().min.z, -3.0);
     }
 
     #[test]

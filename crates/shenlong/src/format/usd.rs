@@ -96,6 +96,8 @@ pub struct UsdObject {
     pub ancestor: Option<usize>,
     /// The name Shenlong wrote for it (`shenlong:name`), when the stage is one it made.
     pub name: Option<String>,
+    /// Whether it resets the transform stack: its new op order keeps the reset.
+    pub resets: bool,
 }
 
 /// What writing a stage back needs: where it came from and its objects' prims.
@@ -231,49 +233,10 @@ fn container_of(path: &Path) -> Result<UsdContainer, FormatError> {
     }
 }
 
-/// Refuses text nested deeper than [`super::MAX_JSON_DEPTH`] levels of `{ [ (` (outside
-/// strings), before the parser sees it, saying where.
+/// Refuses text nested deeper than [`super::MAX_JSON_DEPTH`] levels of `{ [ (`, before
+/// the parser sees it, saying where ([`patch::check_depth`]).
 fn check_nesting(text: &str) -> Result<(), FormatError> {
-    let (mut depth, mut line) = (0usize, 1usize);
-    let mut quote: Option<char> = None;
-    let mut escaped = false;
-    // A comment runs to the end of its line: an apostrophe in it (`# it's`) opens nothing.
-    let mut in_comment = false;
-    for c in text.chars() {
-        if c == '\n' {
-            line += 1;
-        }
-        if let Some(q) = quote {
-            if escaped {
-                escaped = false;
-            } else if c == '\\' {
-                escaped = true;
-            } else if c == q {
-                quote = None;
-            }
-            continue;
-        }
-        if in_comment {
-            in_comment = c != '\n';
-            continue;
-        }
-        match c {
-            '#' => in_comment = true,
-            '"' | '\'' => quote = Some(c),
-            '{' | '[' | '(' => {
-                depth += 1;
-                if depth > super::MAX_JSON_DEPTH {
-                    return Err(err(format!(
-                        "nesting deeper than {} levels at line {line}",
-                        super::MAX_JSON_DEPTH
-                    )));
-                }
-            }
-            '}' | ']' | ')' => depth = depth.saturating_sub(1),
-            _ => {}
-        }
-    }
-    Ok(())
+    patch::check_depth(text, super::MAX_JSON_DEPTH)
 }
 
 /// A stage opened and walked once.
@@ -667,6 +630,9 @@ fn is_component(prim: &Prim) -> bool {
 /// What the writer needs of each prim of the tree.
 #[derive(Debug)]
 struct PrimInfo {
+    /// Whether its op order starts with `!resetXformStack!` (its parent's transform does
+    /// not apply to it).
+    resets: bool,
     path: String,
     world: DMat4,
     parent_world: DMat4,
@@ -721,6 +687,7 @@ pub fn read(
             parent_world: prims[n].parent_world,
             ancestor,
             name: walked.tree.nodes[n].given_name.clone(),
+            resets: prims[n].resets,
         })
         .collect();
     let document = UsdDocument {
@@ -840,6 +807,7 @@ fn walk(path: &Path, options: &super::facts::ReadOptions) -> Result<wire::Walked
             fallback: path_text.clone(),
         });
         prims.push(PrimInfo {
+            resets,
             path: path_text,
             world,
             parent_world,
@@ -1029,7 +997,7 @@ pub fn write(
         .objects
         .iter()
         .zip(&locals)
-        .filter_map(|(o, l)| l.map(|l| (o.path.clone(), ops_text(&ops_for(l)))))
+        .filter_map(|(o, l)| l.map(|l| (o.path.clone(), ops_text(&ops_for(l), o.resets))))
         .collect();
     let from = source_folder
         .canonicalize()
@@ -1077,10 +1045,13 @@ fn sublayer_in(source: &Path, folder: &Path) -> Result<String, FormatError> {
     )
 }
 
-/// The ops as usda statements: (name, type, value text).
-fn ops_text(ops: &[(String, &'static str, Value)]) -> patch::Ops {
-    ops.iter()
-        .map(|(n, t, v)| (n.clone(), *t, usda_value(v)))
+/// The ops as usda statements: (name, type, value text); first, for a prim that resets
+/// the transform stack, the reset (named in the order, no statement of its own).
+fn ops_text(ops: &[(String, &'static str, Value)], resets: bool) -> patch::Ops {
+    let reset = resets.then(|| (patch::RESET.to_string(), "", String::new()));
+    reset
+        .into_iter()
+        .chain(ops.iter().map(|(n, t, v)| (n.clone(), *t, usda_value(v))))
         .collect()
 }
 
@@ -1105,10 +1076,12 @@ pub fn write_layer(
         "    metersPerUnit = {}\n",
         number(document.authored_meters_per_unit)
     ));
-    text.push_str(&format!(
-        "    subLayers = [\n        @{}@\n    ]\n",
-        sublayer.replace('@', "")
-    ));
+    if sublayer.contains('@') {
+        return Err(err(format!(
+            "the stage's path '{sublayer}' holds an '@', which a layer cannot name it by; move or rename it"
+        )));
+    }
+    text.push_str(&format!("    subLayers = [\n        @{sublayer}@\n    ]\n"));
     text.push_str(&format!(
         "    upAxis = \"{}\"\n)\n",
         match document.frame.up {
@@ -1120,7 +1093,7 @@ pub fn write_layer(
     let mut tree = OverTree::default();
     for (object, local) in document.objects.iter().zip(&locals) {
         if let Some(local) = local {
-            tree.insert(&object.path, ops_for(*local));
+            tree.insert(&object.path, ops_for(*local), object.resets);
         }
     }
     tree.write(&mut text);
@@ -1287,10 +1260,12 @@ impl Identifiers {
 struct OverTree {
     children: Vec<(String, OverTree)>,
     ops: Vec<(String, &'static str, Value)>,
+    /// Whether the prim resets the transform stack (kept first in its order).
+    resets: bool,
 }
 
 impl OverTree {
-    fn insert(&mut self, path: &str, ops: Vec<(String, &'static str, Value)>) {
+    fn insert(&mut self, path: &str, ops: Vec<(String, &'static str, Value)>, resets: bool) {
         let mut node = self;
         for name in path.split('/').filter(|s| !s.is_empty()) {
             let k = match node.children.iter().position(|(n, _)| n == name) {
@@ -1303,6 +1278,7 @@ impl OverTree {
             node = &mut node.children[k].1;
         }
         node.ops = ops;
+        node.resets = resets;
     }
 
     /// The tree as text, without recursion: a stack of (node, depth, closing).
@@ -1329,10 +1305,10 @@ impl OverTree {
                         ));
                     }
                     if !node.ops.is_empty() {
-                        let order: Vec<String> = node
-                            .ops
-                            .iter()
-                            .map(|(n, _, _)| format!("\"{n}\""))
+                        let reset = node.resets.then(|| format!("\"{}\"", patch::RESET));
+                        let order: Vec<String> = reset
+                            .into_iter()
+                            .chain(node.ops.iter().map(|(n, _, _)| format!("\"{n}\"")))
                             .collect();
                         out.push_str(&format!(
                             "{pad}    uniform token[] xformOpOrder = [{}]\n",
@@ -1437,6 +1413,35 @@ fn usda_value(v: &Value) -> String {
             format!("( {} )", rows.join(", "))
         }
         _ => String::new(),
+    }
+}
+
+/// For the fuzz target: the code of Shenlong's own that reads a stage's bytes in this
+/// process — the nesting check, the text scanner and patcher (an edit of `/A` and of
+/// `/World/A`, relocated to another folder), the walk's decoder — on any input. Never
+/// panics, whatever the bytes.
+#[doc(hidden)]
+pub fn fuzz_own_readers(bytes: &[u8]) {
+    let _ = wire::Walked::decode(bytes);
+    let Ok(text) = std::str::from_utf8(bytes) else {
+        return;
+    };
+    let _ = check_nesting(text);
+    let ops: patch::Ops = vec![
+        (patch::RESET.to_string(), "", String::new()),
+        (
+            "xformOp:translate:shenlong".to_string(),
+            "double3",
+            "(1, 0, 0)".to_string(),
+        ),
+    ];
+    let edits = vec![
+        ("/A".to_string(), ops.clone()),
+        ("/World/A".to_string(), ops),
+    ];
+    if let Ok(out) = patch::patch(text, &edits, None) {
+        // What the patcher writes scans again.
+        let _ = patch::Outline::scan(&out);
     }
 }
 

@@ -237,7 +237,12 @@ impl Scanner<'_> {
     }
 
     fn close(&mut self, at: usize, c: u8) -> Result<(), FormatError> {
-        let Some((block, _)) = self.stack.pop() else {
+        let opener = match c {
+            b'}' => b'{',
+            b')' => b'(',
+            _ => b'[',
+        };
+        let Some((block, _)) = self.stack.pop().filter(|(_, open)| *open == opener) else {
             return Err(FormatError::new(format!(
                 "an unmatched '{}' at line {}",
                 c as char,
@@ -286,10 +291,13 @@ impl Scanner<'_> {
         let Some(name) = property_name(&self.statement) else {
             return;
         };
+        // Its line, or from the prim's `{` when the statement follows it on that line.
+        let body = self.open_prims.last().map_or(0, |(_, open)| *open);
         let line_start = self.text[..start]
             .iter()
             .rposition(|&c| c == b'\n')
-            .map_or(0, |p| p + 1);
+            .map_or(0, |p| p + 1)
+            .max(body);
         self.outline
             .properties
             .entry(path.clone())
@@ -310,6 +318,34 @@ impl Scanner<'_> {
             self.pending = Some(path);
         }
     }
+}
+
+/// Refuses a layer nested deeper than `max` levels of `{ [ (`, saying where: strings
+/// (triple-quoted too), asset paths and comments are read as the scanner reads them, so
+/// no quote in a comment (`# it's`) or an asset path hides what follows.
+///
+/// # Errors
+/// Nesting past `max`, or an unclosed string or asset path.
+pub(super) fn check_depth(text: &str, max: usize) -> Result<(), FormatError> {
+    let t = text.as_bytes();
+    let mut lexer = Lexer { text: t, pos: 0 };
+    let mut depth = 0usize;
+    while let Some((at, token)) = lexer.next()? {
+        match token {
+            Token::Open(_) => {
+                depth += 1;
+                if depth > max {
+                    return Err(FormatError::new(format!(
+                        "nesting deeper than {max} levels at line {}",
+                        line_of(t, at)
+                    )));
+                }
+            }
+            Token::Close(_) => depth = depth.saturating_sub(1),
+            _ => {}
+        }
+    }
+    Ok(())
 }
 
 impl Outline {
@@ -432,8 +468,12 @@ fn property_name(statement: &[Token]) -> Option<String> {
     })
 }
 
-/// One prim's new ops: (name, USD type, value as text), in order.
+/// One prim's new ops: (name, USD type, value as text), in order. An op of no type is
+/// named in the order only ([`RESET`]).
 pub(super) type Ops = Vec<(String, &'static str, String)>;
+
+/// The op-order entry that resets the transform stack.
+pub(super) const RESET: &str = "!resetXformStack!";
 
 /// Whether a property is one this edit replaces: the order, or an op an earlier edit of
 /// Shenlong's wrote.
@@ -520,7 +560,14 @@ pub(super) fn patch(
                     indent: String::new(),
                     properties: Vec::new(),
                 });
-                let at = text[..spec.close].rfind('\n').map_or(spec.close, |p| p + 1);
+                let line = text[..spec.close].rfind('\n').map_or(0, |p| p + 1);
+                // Where the `}` shares its line with other text (`def "A" {}`), the over
+                // goes right before the `}`, on lines of its own.
+                let at = if text[line..spec.close].trim().is_empty() {
+                    line
+                } else {
+                    spec.close
+                };
                 (at, spec.indent, a.clone())
             }
             None => (text.len(), String::new(), String::new()),
@@ -574,7 +621,7 @@ fn line_after(t: &[u8], at: usize) -> usize {
 /// The ops' statements and their order, each on its own line at `indent`.
 fn op_lines(ops: &Ops, indent: &str) -> String {
     let mut s = String::new();
-    for (name, type_name, value) in ops {
+    for (name, type_name, value) in ops.iter().filter(|(_, t, _)| !t.is_empty()) {
         s.push_str(&format!("{indent}{type_name} {name} = {value}\n"));
     }
     let order: Vec<String> = ops.iter().map(|(n, _, _)| format!("\"{n}\"")).collect();
@@ -704,6 +751,52 @@ def Xform "World"
         assert!(out.contains("    over \"Table\"\n    {\n        over \"Top\"\n        {\n            double3 xformOp:translate:shenlong"), "{out}");
         let out = patch(LAYER, &[("/Other".into(), ops())], None).unwrap();
         assert!(out.ends_with("over \"Other\"\n{\n    double3 xformOp:translate:shenlong = (2, 0, 0)\n    uniform token[] xformOpOrder = [\"xformOp:translate:shenlong\"]\n}\n"), "{out}");
+    }
+
+    #[test]
+    fn headers_and_bodies_on_one_line_keep_their_prims() {
+        // A property on the `{` line: only it is replaced, the header stays.
+        let one_line = "#usda 1.0\ndef Xform \"A\" { uniform token[] xformOpOrder = [\"xformOp:translate\"]\n}\n";
+        let out = patch(one_line, &[("/A".into(), ops())], None).unwrap();
+        assert!(out.starts_with("#usda 1.0\ndef Xform \"A\" {"), "{out}");
+        assert!(Outline::scan(&out).is_ok(), "{out}");
+        // An over for a child of a prim written on one line goes inside it.
+        let compact = "#usda 1.0\ndef Xform \"World\" {}\n";
+        let out = patch(compact, &[("/World/Chair".into(), ops())], None).unwrap();
+        let outline = Outline::scan(&out).unwrap();
+        assert!(outline.prims.contains_key("/World/Chair"), "{out}");
+        // A prim that resets the transform stack keeps the reset first in its order.
+        let reset: Ops = vec![
+            (RESET.to_string(), "", String::new()),
+            (
+                "xformOp:translate:shenlong".into(),
+                "double3",
+                "(1, 0, 0)".into(),
+            ),
+        ];
+        let out = patch(LAYER, &[("/World/Chair".into(), reset)], None).unwrap();
+        assert!(
+            out.contains("xformOpOrder = [\"!resetXformStack!\", \"xformOp:translate:shenlong\"]"),
+            "{out}"
+        );
+        assert!(!out.contains(" !resetXformStack! ="), "{out}");
+    }
+
+    #[test]
+    fn depth_is_counted_past_comments_triple_quotes_and_asset_paths() {
+        let deep = format!(
+            "#usda 1.0\n# it's\n(doc = \"\"\"a \" b\"\"\")\n@it's.usda@\n{}",
+            "{".repeat(101)
+        );
+        let e = check_depth(&deep, 100).unwrap_err();
+        assert!(
+            e.message
+                .contains("nesting deeper than 100 levels at line 5"),
+            "{}",
+            e.message
+        );
+        assert!(check_depth("#usda 1.0\n(\n)\n", 100).is_ok());
+        assert!(Outline::scan("#usda 1.0\ndef \"A\" (\n}\n").is_err());
     }
 
     #[test]

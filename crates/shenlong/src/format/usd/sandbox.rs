@@ -16,6 +16,9 @@
 
 use super::super::FormatError;
 
+/// The longest a read may be given: a day.
+const MAX_SECONDS: u64 = 86_400;
+
 /// What a read may use.
 #[derive(Clone, Copy, Debug)]
 pub(super) struct Budget {
@@ -36,7 +39,8 @@ impl Budget {
             .ok()
             .and_then(|s| s.trim().parse::<u64>().ok())
             .filter(|&s| s > 0)
-            .unwrap_or(20 + 10 * mib);
+            .unwrap_or(20 + 10 * mib)
+            .min(MAX_SECONDS);
         Self {
             seconds,
             memory: ((2u64 << 30) + 64 * bytes).min(16 << 30),
@@ -54,8 +58,9 @@ pub(super) fn run(
     work: impl FnOnce() -> Result<Vec<u8>, FormatError>,
 ) -> Result<Vec<u8>, FormatError> {
     let mut fds = [0i32; 2];
-    // SAFETY: `pipe` writes two descriptors into the array it is given.
-    if unsafe { libc::pipe(fds.as_mut_ptr()) } != 0 {
+    // SAFETY: `pipe2` writes two descriptors into the array it is given. Close-on-exec,
+    // so that a process another thread starts meanwhile does not hold the pipe open.
+    if unsafe { libc::pipe2(fds.as_mut_ptr(), libc::O_CLOEXEC) } != 0 {
         return in_process(work);
     }
     let (read_fd, write_fd) = (fds[0], fds[1]);
@@ -75,8 +80,17 @@ pub(super) fn run(
     if pid == 0 {
         // SAFETY: in the child: close the read end, silence its output (a stack overflow
         // or a panic would print on the user's terminal), limit memory, run, send, leave.
-        unsafe {
+        let write_fd = unsafe {
             libc::close(read_fd);
+            // The answer's descriptor above the standard ones (a host started with its
+            // stdout closed may have been given 1), before they are redirected.
+            let moved = libc::fcntl(write_fd, libc::F_DUPFD_CLOEXEC, 3);
+            let write_fd = if moved >= 0 {
+                libc::close(write_fd);
+                moved
+            } else {
+                write_fd
+            };
             // The host's crash handlers (Python's faulthandler, a debugger's) are the
             // parent's: the child just dies, and the parent says why.
             for signal in [
@@ -100,7 +114,11 @@ pub(super) fn run(
                 rlim_max: limit as libc::rlim_t,
             };
             libc::setrlimit(libc::RLIMIT_AS, &rl);
-        }
+            write_fd
+        };
+        // A panic prints nothing (the parent says what failed): the default hook would
+        // take the output locks, which a thread of the parent may have held at the fork.
+        std::panic::set_hook(Box::new(|_| {}));
         let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(work));
         let message = match result {
             Ok(Ok(bytes)) => frame(0, &bytes),
@@ -114,28 +132,60 @@ pub(super) fn run(
     }
     // SAFETY: the parent does not write.
     unsafe { libc::close(write_fd) };
-    let received = read_until(read_fd, budget.seconds);
+    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(budget.seconds);
+    let received = read_until(read_fd, deadline, budget.memory);
     // SAFETY: the descriptor is ours.
     unsafe { libc::close(read_fd) };
-    let timed_out = received.is_none();
-    if timed_out {
-        // SAFETY: the child is ours.
-        unsafe { libc::kill(pid, libc::SIGKILL) };
-    }
-    let mut status = 0;
-    // SAFETY: reaping our own child.
-    unsafe { libc::waitpid(pid, &mut status, 0) };
+    let (status, timed_out) = reap(pid, deadline, received.is_none());
     if timed_out {
         return Err(FormatError::new(format!(
             "reading the stage took more than {} s (its composition grows without bound, or it is too large; SHENLONG_USD_SECONDS allows more); refused",
             budget.seconds
         )));
     }
-    let data = received.unwrap_or_default();
+    let mut data = received.unwrap_or_default();
     match unframe(&data) {
-        Some((0, body)) => Ok(body.to_vec()),
+        Some((0, _)) => {
+            // The answer without its 9-byte frame, not copied.
+            data.drain(..9);
+            Ok(data)
+        }
         Some((_, body)) => Err(FormatError::new(String::from_utf8_lossy(body).into_owned())),
         None => Err(died(status, budget)),
+    }
+}
+
+/// Waits for the child until `deadline` (killing it then, or at once when `kill`), and
+/// returns its status and whether it ran out of time. Never blocks past the deadline
+/// plus the moment a killed process takes to go.
+#[cfg(unix)]
+fn reap(pid: libc::pid_t, deadline: std::time::Instant, kill: bool) -> (i32, bool) {
+    let mut timed_out = kill;
+    if kill {
+        // SAFETY: the child is ours.
+        unsafe { libc::kill(pid, libc::SIGKILL) };
+    }
+    let mut status = 0;
+    loop {
+        let flags = if timed_out { 0 } else { libc::WNOHANG };
+        // SAFETY: reaping our own child.
+        let r = unsafe { libc::waitpid(pid, &mut status, flags) };
+        if r == pid {
+            return (status, timed_out);
+        }
+        if r < 0 {
+            if std::io::Error::last_os_error().kind() == std::io::ErrorKind::Interrupted {
+                continue;
+            }
+            return (status, timed_out);
+        }
+        if std::time::Instant::now() >= deadline {
+            // SAFETY: the child is ours.
+            unsafe { libc::kill(pid, libc::SIGKILL) };
+            timed_out = true;
+        } else {
+            std::thread::sleep(std::time::Duration::from_millis(5));
+        }
     }
 }
 
@@ -186,10 +236,10 @@ fn write_all(fd: i32, mut bytes: &[u8]) {
     }
 }
 
-/// Everything the child sends until it closes the pipe; `None` past `seconds`.
+/// Everything the child sends until it closes the pipe, at most `max` bytes (more is cut,
+/// and then fails to decode); `None` past `deadline`.
 #[cfg(unix)]
-fn read_until(fd: i32, seconds: u64) -> Option<Vec<u8>> {
-    let deadline = std::time::Instant::now() + std::time::Duration::from_secs(seconds);
+fn read_until(fd: i32, deadline: std::time::Instant, max: u64) -> Option<Vec<u8>> {
     let mut out = Vec::new();
     let mut buf = vec![0u8; 1 << 16];
     loop {
@@ -224,7 +274,9 @@ fn read_until(fd: i32, seconds: u64) -> Option<Vec<u8>> {
         if n == 0 {
             return Some(out);
         }
-        out.extend_from_slice(&buf[..n as usize]);
+        if (out.len() as u64) < max {
+            out.extend_from_slice(&buf[..n as usize]);
+        }
     }
 }
 

@@ -136,6 +136,7 @@ impl Walked {
             }
             o.text(&node.fallback);
             o.text(&prim.path);
+            o.flag(prim.resets);
             o.mat(&prim.world);
             o.mat(&prim.parent_world);
         }
@@ -196,6 +197,7 @@ impl Walked {
             });
             prims.push(PrimInfo {
                 path: i.text()?,
+                resets: i.flag()?,
                 world: i.mat()?,
                 parent_world: i.mat()?,
             });
@@ -235,6 +237,7 @@ mod tests {
             tree,
             prims: vec![PrimInfo {
                 path: "/World/Chair".into(),
+                resets: false,
                 world: DMat4::from_translation(DVec3::X),
                 parent_world: DMat4::IDENTITY,
             }],
