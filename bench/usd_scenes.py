@@ -8,6 +8,13 @@ median wall time and the median peak resident memory (from `wait4`'s `ru_maxrss`
 run must succeed. The files go to a temporary folder, removed afterwards.
 
     python3 bench/usd_scenes.py --bin target/release/shenlong --sizes 1000,10000,100000 --runs 3
+
+With `--usd-python PY` (the Python of a virtual environment with `usd-core`), Pixar's own
+library does the same edit in the same loop, alternating — open the stage, set the prim's
+translate op, export it — as a user would instead:
+
+    python3.11 -m venv /tmp/usd && /tmp/usd/bin/pip install usd-core
+    python3 bench/usd_scenes.py --sizes 1000,10000 --usd-python /tmp/usd/bin/python
 """
 
 from __future__ import annotations
@@ -47,29 +54,55 @@ def timed(args: list[str]) -> tuple[float, float]:
     return elapsed, usage.ru_maxrss / 1024.0
 
 
+#: The same edit with usd-core: open, move /World/Box_7 1 m along -x, export.
+USD_CORE_EDIT = """
+import sys
+from pxr import Gf, Usd, UsdGeom
+stage = Usd.Stage.Open(sys.argv[1])
+prim = stage.GetPrimAtPath("/World/Box_7")
+op = UsdGeom.Xformable(prim).GetOrderedXformOps()[0]
+op.Set(op.Get() + Gf.Vec3d(-1, 0, 0))
+stage.GetRootLayer().Export(sys.argv[2])
+"""
+
+
 def main() -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--bin", default="target/release/shenlong")
     p.add_argument("--sizes", default="1000,10000")
     p.add_argument("--runs", type=int, default=3)
+    p.add_argument("--usd-python", help="a Python with usd-core, to time the same edit with it")
     a = p.parse_args()
-    print("| prims (objects) | file | convert (read) | edit (read, edit, write) | peak memory (edit) |")
-    print("|---|---|---|---|---|")
+    print(
+        "| prims (objects) | file | convert (read) | edit (read, edit, write) | peak memory (edit) "
+        "| usd-core edit | usd-core memory |"
+    )
+    print("|---|---|---|---|---|---|---|")
     with tempfile.TemporaryDirectory() as tmp:
         for n in (int(s) for s in a.sizes.split(",")):
             src = os.path.join(tmp, f"grid{n}.usda")
             with open(src, "w") as f:
                 f.write(stage(n))
-            conv, edit, mem = [], [], []
+            conv, edit, mem, pixar, pixar_mem = [], [], [], [], []
             for _ in range(a.runs):
                 conv.append(timed([a.bin, "convert", src, os.path.join(tmp, "o.json")])[0])
                 t, m = timed([a.bin, "edit", src, "move box_7 1 m to the left", "-o", os.path.join(tmp, "o.usda")])
                 edit.append(t)
                 mem.append(m)
+                if a.usd_python:
+                    t, m = timed([a.usd_python, "-c", USD_CORE_EDIT, src, os.path.join(tmp, "p.usda")])
+                    pixar.append(t)
+                    pixar_mem.append(m)
             size = os.path.getsize(src) / 1e6
+            theirs = (
+                f"{statistics.median(pixar):.2f} s | {statistics.median(pixar_mem):.0f} MiB"
+                if pixar
+                else "— | —"
+            )
             print(
                 f"| {2 * n:,} ({n:,}) | {size:.1f} MB | {statistics.median(conv):.2f} s "
-                f"| {statistics.median(edit):.2f} s | {statistics.median(mem):.0f} MiB |"
+                f"| {statistics.median(edit):.2f} s | {statistics.median(mem):.0f} MiB | {theirs} |",
+                flush=True,
             )
 
 
