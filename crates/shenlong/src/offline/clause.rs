@@ -377,6 +377,9 @@ fn stays_inside(tokens: &[Token], i: usize, current: &[Token]) -> bool {
 /// qualifier of the turn or the amount ("a half turn, clockwise as seen from above", "20
 /// cm, roughly"), or after a view that begins the clause so far, `current` ("from a bird's
 /// eye view, turn …").
+/// The most words a view ("from a bird's eye view", "as seen from the door") takes.
+const VIEW_WORDS: usize = 16;
+
 fn dropped_comma(tokens: &[Token], i: usize, current: &[Token]) -> bool {
     if !matches!(tokens[i], Token::Separator) {
         return false;
@@ -392,15 +395,19 @@ fn dropped_comma(tokens: &[Token], i: usize, current: &[Token]) -> bool {
                 | "more"
         )
     ) && !matches!(word(tokens, i + 2), Some(w) if words::verb(w).is_some());
+    // A view is a few words ("from a bird's eye view"): only that many are looked at, so
+    // a list of thousands of objects costs each comma a few words, not the list.
     let view_after = {
-        let rest: Vec<&str> = (i + 1..tokens.len())
+        let rest: Vec<&str> = (i + 1..tokens.len().min(i + 1 + VIEW_WORDS))
             .map(|k| word(tokens, k).unwrap_or(""))
             .collect();
         super::view::view_at(&rest, 0).is_some()
     };
-    let so_far = words_of(current);
-    let view_before = !so_far.is_empty()
-        && super::view::view_at(&so_far, 0).is_some_and(|(n, _)| n == so_far.len());
+    let view_before = current.len() <= VIEW_WORDS && {
+        let so_far = words_of(current);
+        !so_far.is_empty()
+            && super::view::view_at(&so_far, 0).is_some_and(|(n, _)| n == so_far.len())
+    };
     qualifier || view_after || view_before
 }
 
