@@ -40,6 +40,9 @@ pub fn run(args: Args) -> Result<()> {
             let Some(db) = &args.assets else {
                 bail!("--from procthor needs --assets asset-database.json for the objects' sizes");
             };
+            if args.read.given() {
+                bail!("--units and --front are for glTF and USD files; a ProcTHOR house is in metres and says its fronts");
+            }
             let assets = AssetDatabase::load(db)?;
             SceneFile::load_house(Path::new(&args.input), args.house, &assets)?
         }

@@ -31,6 +31,12 @@ pub struct ReadArgs {
 }
 
 impl ReadArgs {
+    /// Whether either was given.
+    #[must_use]
+    pub fn given(&self) -> bool {
+        self.units.is_some() || self.front.is_some()
+    }
+
     /// The library's options.
     #[must_use]
     pub fn options(&self) -> shenlong::format::ReadOptions {
