@@ -39,35 +39,36 @@ import tempfile
 import time
 
 
-def write_grid(path: str, count: int) -> str:
-    """Writes `count` unit boxes on a grid and returns the name of one in the middle."""
+def write_objects(path: str, name: str, count: int, spacing: float, entry) -> int:
+    """Writes scene `name` of `count` objects on a square grid `spacing` m apart,
+    `entry(i, x, z)` giving each one's JSON; returns the grid's side."""
     side = math.ceil(math.sqrt(count))
     with open(path, "w", encoding="utf-8") as f:
-        f.write('{"name": "grid", "objects": [\n')
+        f.write(f'{{"name": "{name}", "objects": [\n')
         for i in range(count):
-            x, z = (i % side) * 1.5, (i // side) * 1.5
-            sep = ",\n" if i else ""
-            f.write(
-                f'{sep}{{"name": "box-{i}", "size": [1, 1, 1], "position": [{x}, 0, {z}]}}'
-            )
+            x, z = (i % side) * spacing, (i // side) * spacing
+            f.write((",\n" if i else "") + entry(i, x, z))
         f.write("\n]}\n")
+    return side
+
+
+def write_grid(path: str, count: int) -> str:
+    """Writes `count` unit boxes 1.5 m apart and returns the name of one in the middle."""
+    side = write_objects(
+        path, "grid", count, 1.5,
+        lambda i, x, z: f'{{"name": "box-{i}", "size": [1, 1, 1], "position": [{x}, 0, {z}]}}',
+    )
     middle = (side // 2) * side + side // 2
     return f"box-{min(middle, count - 1)}"
 
 
 def write_chairs(path: str, count: int) -> None:
     """Writes `count` chairs on a grid 1 m apart (0.5 m gaps), for a group edit."""
-    side = math.ceil(math.sqrt(count))
-    with open(path, "w", encoding="utf-8") as f:
-        f.write('{"name": "hall", "objects": [\n')
-        for i in range(count):
-            x, z = (i % side) * 1.0, (i // side) * 1.0
-            sep = ",\n" if i else ""
-            f.write(
-                f'{sep}{{"name": "chair {i + 1}", "category": "chair", '
-                f'"size": [0.5, 0.9, 0.5], "position": [{x}, 0, {z}]}}'
-            )
-        f.write("\n]}\n")
+    write_objects(
+        path, "hall", count, 1.0,
+        lambda i, x, z: f'{{"name": "chair {i + 1}", "category": "chair", '
+        f'"size": [0.5, 0.9, 0.5], "position": [{x}, 0, {z}]}}',
+    )
 
 
 def group_rows(args, sizes, tmp) -> int:

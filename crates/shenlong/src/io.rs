@@ -7,16 +7,14 @@ use std::path::{Path, PathBuf};
 /// folders' files (1 GiB; the limit of every file a scene points to too).
 pub const MAX_READ_BYTES: u64 = 1 << 30;
 
-/// Reads a regular file of at most `max` bytes. Anything else is refused before a byte is
-/// read: a FIFO (which would block), a device or a link to one (`/dev/zero`, which never
-/// ends), a folder; and a file that grows past `max` while it is read.
+/// Opens a regular file of at most `max` bytes, and gives its length. Anything else is
+/// refused before a byte is read: a FIFO (which would block: it is opened without
+/// waiting, then checked by its handle, so nothing swapped in between is read), a device
+/// or a link to one (`/dev/zero`, which never ends), a folder.
 ///
 /// # Errors
-/// The file cannot be read, is no regular file, or is larger than `max`.
-pub fn read_limited(path: &Path, max: u64) -> std::io::Result<Vec<u8>> {
-    use std::io::Read;
-    // Opened without blocking (a FIFO would wait for a writer), then checked by its
-    // handle, so nothing swapped in between is read.
+/// The file cannot be opened, is no regular file, or is larger than `max`.
+pub fn open_limited(path: &Path, max: u64) -> std::io::Result<(std::fs::File, u64)> {
     let mut options = std::fs::OpenOptions::new();
     options.read(true);
     #[cfg(unix)]
@@ -32,19 +30,31 @@ pub fn read_limited(path: &Path, max: u64) -> std::io::Result<Vec<u8>> {
             "not a regular file (a pipe, a device or a folder); only files are read",
         ));
     }
-    let too_large = || {
-        std::io::Error::new(
-            std::io::ErrorKind::InvalidInput,
-            format!("larger than {} MiB", max >> 20),
-        )
-    };
     if meta.len() > max {
-        return Err(too_large());
+        return Err(too_large(max));
     }
-    let mut out = Vec::with_capacity(usize::try_from(meta.len()).unwrap_or(0));
+    Ok((file, meta.len()))
+}
+
+fn too_large(max: u64) -> std::io::Error {
+    std::io::Error::new(
+        std::io::ErrorKind::InvalidInput,
+        format!("larger than {} MiB", max >> 20),
+    )
+}
+
+/// Reads a regular file of at most `max` bytes ([`open_limited`]); a file that grows past
+/// `max` while it is read is refused too.
+///
+/// # Errors
+/// As [`open_limited`], and the read.
+pub fn read_limited(path: &Path, max: u64) -> std::io::Result<Vec<u8>> {
+    use std::io::Read;
+    let (file, len) = open_limited(path, max)?;
+    let mut out = Vec::with_capacity(usize::try_from(len).unwrap_or(0));
     file.take(max.saturating_add(1)).read_to_end(&mut out)?;
     if out.len() as u64 > max {
-        return Err(too_large());
+        return Err(too_large(max));
     }
     Ok(out)
 }

@@ -51,6 +51,21 @@ fn glb_chunks(bytes: &[u8]) -> (serde_json::Value, Vec<u8>) {
     (json, bin)
 }
 
+/// Every node of `b` but `edited` is as in `a`.
+#[track_caller]
+fn assert_other_nodes_untouched(a: &serde_json::Value, b: &serde_json::Value, edited: usize) {
+    let (a, b) = (
+        a["nodes"].as_array().unwrap(),
+        b["nodes"].as_array().unwrap(),
+    );
+    assert_eq!(a.len(), b.len());
+    for (i, (x, y)) in a.iter().zip(b).enumerate() {
+        if i != edited {
+            assert_eq!(x, y, "node {i} untouched");
+        }
+    }
+}
+
 /// Reads a file modelled in millimetres (the Cornell box, the engine), as `--units mm`.
 fn load_mm(path: &Path) -> SceneFile {
     let options = shenlong::format::ReadOptions {
@@ -95,17 +110,7 @@ fn cornell_box_edit_changes_only_the_moved_node() {
     assert_eq!(bin_a, bin_b, "the binary chunk is copied byte for byte");
     let node_b = &json_b["nodes"][2];
     assert_eq!(node_b["name"], "small.box");
-    for (i, (a, b)) in json_a["nodes"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .zip(json_b["nodes"].as_array().unwrap())
-        .enumerate()
-    {
-        if i != 2 {
-            assert_eq!(a, b, "node {i} untouched");
-        }
-    }
+    assert_other_nodes_untouched(&json_a, &json_b, 2);
     for key in [
         "meshes",
         "materials",
@@ -177,17 +182,7 @@ fn engine_of_unnamed_nested_matrix_nodes_is_one_object() {
     let (json_b, _) = glb_chunks(&std::fs::read(&output).unwrap());
     // Only the root node's transform is written; every nested node, matrices included,
     // is as it was.
-    for (i, (a, b)) in json_a["nodes"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .zip(json_b["nodes"].as_array().unwrap())
-        .enumerate()
-    {
-        if i != 0 {
-            assert_eq!(a, b, "node {i} untouched");
-        }
-    }
+    assert_other_nodes_untouched(&json_a, &json_b, 0);
     assert!(json_b["nodes"][0].get("rotation").is_some());
     let reread = load_mm(&output);
     let got = reread.scene.objects[0].world_aabb();

@@ -449,17 +449,16 @@ pub(crate) fn derive(
         owners.push(object.owner);
     }
     let room = Room::find(tree, &scene, &nodes);
-    let keep: Vec<bool> = (0..scene.objects.len())
-        .map(|i| !room.parts.contains(&i))
-        .collect();
+    // The room's parts (sorted) are not objects.
     let mut kept_scene = Scene::new(scene_name);
     let mut kept_nodes = Vec::new();
     let mut kept_owners = Vec::new();
-    for (i, o) in scene.objects.into_iter().enumerate() {
-        if keep[i] {
+    let objects = scene.objects.into_iter().zip(nodes).zip(owners);
+    for (i, ((o, node), owner)) in objects.enumerate() {
+        if room.parts.binary_search(&i).is_err() {
             kept_scene.objects.push(o);
-            kept_nodes.push(nodes[i]);
-            kept_owners.push(owners[i]);
+            kept_nodes.push(node);
+            kept_owners.push(owner);
         }
     }
     finish(
@@ -558,7 +557,7 @@ fn choose(tree: &Tree) -> Vec<Chosen> {
     for i in (0..n).rev() {
         if let (Some(p), Some(b)) = (tree.nodes[i].parent, boxes[i]) {
             if p < i {
-                boxes[p] = Some(boxes[p].map_or(b, |a| union(&a, &b)));
+                boxes[p] = Some(boxes[p].map_or(b, |a| a.union(&b)));
             }
         }
     }
@@ -628,10 +627,6 @@ fn ancestors_model(tree: &Tree, i: usize) -> bool {
     false
 }
 
-fn union(a: &Aabb, b: &Aabb) -> Aabb {
-    Aabb::new(a.min.min(b.min), a.max.max(b.max))
-}
-
 /// Whether a node without geometry of its own is merely a group of objects: its name says
 /// so, or its geometric children fall apart into separate clusters.
 fn is_group(tree: &Tree, children: &[Vec<usize>], boxes: &[Option<Aabb>], i: usize) -> bool {
@@ -658,10 +653,7 @@ fn is_group(tree: &Tree, children: &[Vec<usize>], boxes: &[Option<Aabb>], i: usi
     }
     // A floor or a wall among the children: the node is a room of objects (everything
     // stands on the floor, so the boxes alone would make one cluster).
-    let union = parts
-        .iter()
-        .skip(1)
-        .fold(parts[0], |a, b| self::union(&a, b));
+    let union = parts.iter().skip(1).fold(parts[0], |a, b| a.union(b));
     let room_like = |c: usize| {
         let name = &tree.nodes[c].name;
         let Some(b) = boxes[c] else { return false };
@@ -694,8 +686,7 @@ fn clusters(parts: &[Aabb]) -> usize {
     for a in 0..parts.len() {
         for b in a + 1..parts.len() {
             let (p, q) = (&parts[a], &parts[b]);
-            let near = (p.min - DVec3::splat(PART_GAP)).cmple(q.max).all()
-                && (q.min - DVec3::splat(PART_GAP)).cmple(p.max).all();
+            let near = p.overlap(q).cmpge(DVec3::splat(-PART_GAP)).all();
             if near {
                 let (ra, rb) = (root(&mut parent, a), root(&mut parent, b));
                 parent[ra] = rb;
@@ -767,7 +758,7 @@ fn names(tree: &Tree, nodes: &[usize]) -> Vec<(String, Vec<String>)> {
 
 /// The parts of a file that are the room, and the bounds they give.
 struct Room {
-    /// The objects (indices) that are floor, walls or ceiling.
+    /// The objects (indices, sorted) that are floor, walls or ceiling.
     parts: Vec<usize>,
     /// The room's bounds: floor at `min.y`, walls at the x and z limits.
     bounds: Option<Aabb>,
@@ -787,7 +778,7 @@ impl RoomParts {
     /// Floors, walls and ceilings among the objects, by name or by shape; then rooms
     /// modelled as one mesh (`Room`, `Interior_Shell`: a box that holds the others).
     fn classify(tree: &Tree, nodes: &[usize], boxes: &[Aabb]) -> Self {
-        let all = boxes.iter().skip(1).fold(boxes[0], |a, b| union(&a, b));
+        let all = boxes.iter().skip(1).fold(boxes[0], |a, b| a.union(b));
         let all_size = all.size();
         let mut parts = RoomParts::default();
         for (i, b) in boxes.iter().enumerate() {
@@ -980,7 +971,7 @@ impl Room {
         let inside = furniture
             .iter()
             .skip(1)
-            .fold(furniture[0], |a, b| union(&a, b));
+            .fold(furniture[0], |a, b| a.union(b));
         Room {
             bounds: Some(kinds.bounds(&boxes, inside)),
             parts,

@@ -11,9 +11,9 @@
 //! the node's `extras: {"shenlong:category": …}`.
 
 use super::FormatError;
-use crate::scene::{Scene, Shape};
+use crate::scene::Scene;
 use base64::Engine;
-use glam::{DQuat, DVec3};
+use glam::DVec3;
 use serde_json::{json, Value};
 
 /// The 12 triangles of a box over its corners numbered as [`corners`] gives them
@@ -99,18 +99,7 @@ impl Builder {
     /// An object: a node at its pose with a mesh of its box, its front and category in
     /// `extras`.
     fn object(&mut self, object: &crate::scene::Object) {
-        let (pose, size) = match &object.shape {
-            Shape::Box { size } => (object.similarity(), *size),
-            Shape::Points { .. } => {
-                let b = object.world_aabb();
-                let pose = cga::Similarity {
-                    translation: b.bottom_center(),
-                    rotation: DQuat::IDENTITY,
-                    scale: 1.0,
-                };
-                (pose, b.size())
-            }
-        };
+        let (pose, size) = super::transform::box_pose(object);
         let mesh_name = object.labels.category.as_ref().unwrap_or(&object.name);
         let mesh = self.box_mesh(mesh_name, size);
         let mut extras = serde_json::Map::new();

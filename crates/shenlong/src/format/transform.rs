@@ -2,7 +2,7 @@
 //! prims): an object's world motion as a matrix, comparison of transforms relative to
 //! their size, and a matrix read as translate · rotate · scale when it is one.
 
-use crate::scene::Object;
+use crate::scene::{Object, Shape};
 use glam::{DMat4, DQuat, DVec3};
 
 /// An object's world motion since it was read (its pose, which starts at the identity
@@ -33,6 +33,25 @@ pub(crate) fn as_trs(m: &DMat4) -> Option<(DVec3, DQuat, DVec3)> {
     let (scale, rotation, translation) = m.to_scale_rotation_translation();
     let rebuilt = DMat4::from_scale_rotation_translation(scale, rotation, translation);
     nearly_equal(&rebuilt, m, 1e-9).then_some((scale, rotation, translation))
+}
+
+/// An object as a box for a new file (a glTF or USD stage written from scene JSON): its
+/// pose and the box's size about its bottom centre — a box object's own; for a mesh's
+/// points, its world box at the identity turn.
+#[must_use]
+pub(crate) fn box_pose(object: &Object) -> (cga::Similarity, DVec3) {
+    match &object.shape {
+        Shape::Box { size } => (object.similarity(), *size),
+        Shape::Points { .. } => {
+            let b = object.world_aabb();
+            let pose = cga::Similarity {
+                translation: b.bottom_center(),
+                rotation: DQuat::IDENTITY,
+                scale: 1.0,
+            };
+            (pose, b.size())
+        }
+    }
 }
 
 #[cfg(test)]

@@ -24,7 +24,7 @@
 //!   [`super::MAX_JSON_DEPTH`] levels and any file over [`MAX_USD_BYTES`] are refused.
 
 use super::FormatError;
-use crate::scene::{Scene, Shape};
+use crate::scene::Scene;
 use glam::{DMat4, DQuat, DVec3};
 use openusd::ar::{self, Asset, DefaultResolver, ResolvedPath, Resolver};
 use openusd::sdf::{self, Value};
@@ -57,6 +57,15 @@ pub struct StageFrame {
 }
 
 impl StageFrame {
+    /// The frame read in `units` instead of the stage's `metersPerUnit`, when given.
+    #[must_use]
+    pub fn in_units(self, units: Option<super::facts::Units>) -> Self {
+        Self {
+            meters_per_unit: units.map_or(self.meters_per_unit, super::facts::Units::meters),
+            ..self
+        }
+    }
+
     /// The matrix taking stage coordinates to Shenlong's (a rotation and a uniform scale).
     #[must_use]
     pub fn to_shenlong(self) -> DMat4 {
@@ -249,71 +258,83 @@ struct Opened {
 /// Whether a stage's file is a regular file within [`MAX_USD_BYTES`] (a FIFO, a device or
 /// a link to `/dev/zero` is refused before anything is read): its size.
 fn check_file(path: &Path) -> Result<u64, FormatError> {
-    let meta = std::fs::metadata(path).map_err(|e| err(format!("cannot read it: {e}")))?;
-    if !meta.is_file() {
-        return Err(err("not a regular file"));
-    }
-    if meta.len() > MAX_USD_BYTES {
-        return Err(err(format!("larger than {} MiB", MAX_USD_BYTES >> 20)));
-    }
-    Ok(meta.len())
+    crate::io::open_limited(path, MAX_USD_BYTES)
+        .map(|(_, len)| len)
+        .map_err(|e| err(format!("cannot read it: {e}")))
 }
 
 /// Whether a `.usdz` package is as USD makes them: a zip whose files are stored, not
 /// compressed (so nothing in it inflates: no zip bomb), each within the package. Reads
-/// only its central directory.
+/// only its end record and central directory, not the files.
 fn check_package(path: &Path) -> Result<(), FormatError> {
-    let bytes = crate::io::read_limited(path, MAX_USD_BYTES)
-        .map_err(|e| err(format!("cannot read it: {e}")))?;
+    use std::io::{Read, Seek, SeekFrom};
+    let cannot = |e: std::io::Error| err(format!("cannot read it: {e}"));
     let bad = |what: &str| err(format!("not a USD package: {what}"));
+    let (mut file, total) = crate::io::open_limited(path, MAX_USD_BYTES).map_err(cannot)?;
     // The end of central directory record: its signature within the last 64 KiB + 22.
-    let from = bytes.len().saturating_sub(65_557);
-    let eocd = (from..bytes.len().saturating_sub(21))
+    let tail_len = total.min(65_557);
+    let mut tail = vec![0u8; usize::try_from(tail_len).unwrap_or(0)];
+    file.seek(SeekFrom::End(-(tail_len as i64)))
+        .and_then(|_| file.read_exact(&mut tail))
+        .map_err(cannot)?;
+    let eocd = (0..tail.len().saturating_sub(21))
         .rev()
-        .find(|&k| bytes[k..k + 4] == [0x50, 0x4b, 0x05, 0x06])
+        .find(|&k| tail[k..k + 4] == [0x50, 0x4b, 0x05, 0x06])
         .ok_or_else(|| bad("no zip directory"))?;
-    let u16_at = |k: usize| -> Option<u64> {
+    let u16_at = |b: &[u8], k: usize| -> Option<u64> {
         Some(u64::from(u16::from_le_bytes(
-            bytes.get(k..k + 2)?.try_into().ok()?,
+            b.get(k..k + 2)?.try_into().ok()?,
         )))
     };
-    let u32_at = |k: usize| -> Option<u64> {
+    let u32_at = |b: &[u8], k: usize| -> Option<u64> {
         Some(u64::from(u32::from_le_bytes(
-            bytes.get(k..k + 4)?.try_into().ok()?,
+            b.get(k..k + 4)?.try_into().ok()?,
         )))
     };
-    let entries = u16_at(eocd + 10).ok_or_else(|| bad("a cut zip directory"))?;
-    let mut at = usize::try_from(u32_at(eocd + 16).unwrap_or(u64::MAX)).unwrap_or(usize::MAX);
-    let total = bytes.len() as u64;
+    let cut = || bad("a cut or corrupt zip directory");
+    let entries = u16_at(&tail, eocd + 10).ok_or_else(cut)?;
+    let size = u32_at(&tail, eocd + 12).ok_or_else(cut)?;
+    let offset = u32_at(&tail, eocd + 16).ok_or_else(cut)?;
+    if offset.saturating_add(size) > total {
+        return Err(cut());
+    }
+    let mut directory = vec![0u8; usize::try_from(size).map_err(|_| cut())?];
+    file.seek(SeekFrom::Start(offset))
+        .and_then(|_| file.read_exact(&mut directory))
+        .map_err(cannot)?;
+    let mut at = 0usize;
     for _ in 0..entries {
-        let entry = (|| -> Option<(u64, u64, u64, usize)> {
-            if bytes.get(at..at + 4)? != [0x50, 0x4b, 0x01, 0x02] {
-                return None;
+        let b = directory.as_slice();
+        if b.get(at..at + 4) != Some(&[0x50, 0x4b, 0x01, 0x02][..]) {
+            return Err(cut());
+        }
+        let field = |k: usize, four: bool| {
+            if four {
+                u32_at(b, at + k)
+            } else {
+                u16_at(b, at + k)
             }
-            let method = u16_at(at + 10)?;
-            let compressed = u32_at(at + 20)?;
-            let size = u32_at(at + 24)?;
-            let next = at + 46 + (u16_at(at + 28)? + u16_at(at + 30)? + u16_at(at + 32)?) as usize;
-            Some((method, compressed, size, next))
-        })()
-        .ok_or_else(|| bad("a cut or corrupt zip directory"))?;
-        let (method, compressed, size, next) = entry;
+            .ok_or_else(cut)
+        };
+        let (method, compressed, inflated) =
+            (field(10, false)?, field(20, true)?, field(24, true)?);
         if method != 0 {
             return Err(bad(
                 "its files are compressed (a .usdz stores them uncompressed), so it is not read",
             ));
         }
-        if compressed != size || size > total {
+        if compressed != inflated || inflated > total {
             return Err(bad("a file in it is larger than the package"));
         }
-        at = next;
+        let names = field(28, false)? + field(30, false)? + field(32, false)?;
+        at += 46 + usize::try_from(names).map_err(|_| cut())?;
     }
     Ok(())
 }
 
-/// Opens a stage, reading only inside its folder, and walks it once.
+/// Opens a stage, reading only inside its folder, and walks it once. The file itself was
+/// checked by [`read`] before the reading child began ([`check_file`]).
 fn open_stage(path: &Path) -> Result<Opened, FormatError> {
-    check_file(path)?;
     if container_of(path)? == UsdContainer::Usda {
         let text = crate::io::read_text_limited(path, MAX_USD_BYTES)
             .map_err(|e| err(format!("cannot read it: {e}")))?;
@@ -659,12 +680,7 @@ pub fn read(
     let budget = sandbox::Budget::for_bytes(size);
     let bytes = sandbox::run(budget, || walk(path, options).map(|w| w.encode()))?;
     let walked = wire::Walked::decode(&bytes)?;
-    let frame = StageFrame {
-        meters_per_unit: options
-            .units
-            .map_or(walked.frame.meters_per_unit, super::facts::Units::meters),
-        ..walked.frame
-    };
+    let frame = walked.frame.in_units(options.units);
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
     let front = match frame.up {
         UpAxis::Y => DVec3::Z,
@@ -707,12 +723,7 @@ pub fn read(
 fn walk(path: &Path, options: &super::facts::ReadOptions) -> Result<wire::Walked, FormatError> {
     let Opened { stage, uses_kinds } = open_stage(path)?;
     let authored = frame_of(&stage)?;
-    let frame = StageFrame {
-        meters_per_unit: options
-            .units
-            .map_or(authored.meters_per_unit, super::facts::Units::meters),
-        ..authored
-    };
+    let frame = authored.in_units(options.units);
     let default_prim = stage.default_prim().map(|t| t.as_str().to_string());
     let to_shenlong = frame.to_shenlong();
     let mut tree = super::facts::Tree::default();
@@ -980,16 +991,17 @@ pub fn write(
         ));
     }
     if document.container != UsdContainer::Usda {
-        let sublayer = match target {
-            Some(t) => sublayer_in(&document.source, t)?,
-            None => document
-                .source
-                .canonicalize()
-                .map_err(|e| err(format!("cannot find the source: {e}")))?
-                .to_string_lossy()
-                .into_owned(),
-        };
-        return write_layer(scene, document, &sublayer);
+        let real = document
+            .source
+            .canonicalize()
+            .map_err(|e| err(format!("cannot find the source: {e}")))?;
+        let folder = target
+            .map(|t| {
+                t.canonicalize()
+                    .map_err(|e| err(format!("cannot find the folder {}: {e}", t.display())))
+            })
+            .transpose()?;
+        return write_layer(scene, document, &source_name(&real, folder.as_deref()));
     }
     let text = std::fs::read_to_string(&document.source)
         .map_err(|e| err(format!("cannot read the source again: {e}")))?;
@@ -1024,25 +1036,6 @@ fn same_dir(a: &Path, b: &Path) -> bool {
         p.canonicalize().ok()
     };
     matches!((norm(a), norm(b)), (Some(x), Some(y)) if x == y)
-}
-
-/// How a layer written in the folder `folder` names its source: relative when it can be.
-fn sublayer_in(source: &Path, folder: &Path) -> Result<String, FormatError> {
-    let real = source
-        .canonicalize()
-        .map_err(|e| err(format!("cannot find {}: {e}", source.display())))?;
-    let from = real.parent().unwrap_or(Path::new("/"));
-    let name = real
-        .file_name()
-        .and_then(|n| n.to_str())
-        .ok_or_else(|| err("the source's name is not text"))?;
-    let folder = folder
-        .canonicalize()
-        .map_err(|e| err(format!("cannot find the folder {}: {e}", folder.display())))?;
-    Ok(
-        patch::relocated(name, from, &folder)
-            .unwrap_or_else(|| real.to_string_lossy().into_owned()),
-    )
 }
 
 /// The ops as usda statements: (name, type, value text); first, for a prim that resets
@@ -1090,13 +1083,13 @@ pub fn write_layer(
         }
     ));
     // A tree of `over`s: each edited prim under the overs of its ancestors.
-    let mut tree = OverTree::default();
+    let mut tree = patch::Overs::default();
     for (object, local) in document.objects.iter().zip(&locals) {
         if let Some(local) = local {
-            tree.insert(&object.path, ops_for(*local), object.resets);
+            tree.insert(&object.path, ops_text(&ops_for(*local), object.resets));
         }
     }
-    tree.write(&mut text);
+    tree.write(&mut text, "");
     Ok(text.into_bytes())
 }
 
@@ -1124,12 +1117,16 @@ pub fn sublayer_path(source: &Path, layer: &Path) -> Result<String, FormatError>
             "a layer over a stage cannot replace the stage itself: write it to another file",
         ));
     }
-    Ok(
-        match (real.parent(), real.file_name().and_then(|n| n.to_str())) {
-            (Some(parent), Some(file)) if parent == layer_folder => format!("./{file}"),
-            _ => real.to_string_lossy().into_owned(),
-        },
-    )
+    Ok(source_name(&real, Some(&layer_folder)))
+}
+
+/// How a layer in the folder `layer_folder` names the stage `real` it sublayers (both
+/// canonical): `./name` beside it, else its absolute path.
+fn source_name(real: &Path, layer_folder: Option<&Path>) -> String {
+    match (real.parent(), real.file_name().and_then(|n| n.to_str())) {
+        (Some(parent), Some(file)) if Some(parent) == layer_folder => format!("./{file}"),
+        _ => real.to_string_lossy().into_owned(),
+    }
 }
 
 /// A new `.usda` stage of the scene, for a scene read from no USD stage (`shenlong
@@ -1148,20 +1145,7 @@ pub fn write_new(scene: &Scene) -> Vec<u8> {
     let mut names = Identifiers::default();
     for object in &scene.objects {
         let name = names.make(&object.name);
-        let (pose, size) = match &object.shape {
-            Shape::Box { size } => (object.similarity(), *size),
-            Shape::Points { .. } => {
-                let b = object.world_aabb();
-                (
-                    cga::Similarity {
-                        translation: b.bottom_center(),
-                        rotation: DQuat::IDENTITY,
-                        scale: 1.0,
-                    },
-                    b.size(),
-                )
-            }
-        };
+        let (pose, size) = super::transform::box_pose(object);
         let t = pose.translation;
         let q = pose.rotation;
         text.push_str(&format!(
@@ -1255,79 +1239,6 @@ impl Identifiers {
     }
 }
 
-/// Prims of an override layer, by name, each with the ops authored on it.
-#[derive(Default)]
-struct OverTree {
-    children: Vec<(String, OverTree)>,
-    ops: Vec<(String, &'static str, Value)>,
-    /// Whether the prim resets the transform stack (kept first in its order).
-    resets: bool,
-}
-
-impl OverTree {
-    fn insert(&mut self, path: &str, ops: Vec<(String, &'static str, Value)>, resets: bool) {
-        let mut node = self;
-        for name in path.split('/').filter(|s| !s.is_empty()) {
-            let k = match node.children.iter().position(|(n, _)| n == name) {
-                Some(k) => k,
-                None => {
-                    node.children.push((name.to_string(), OverTree::default()));
-                    node.children.len() - 1
-                }
-            };
-            node = &mut node.children[k].1;
-        }
-        node.ops = ops;
-        node.resets = resets;
-    }
-
-    /// The tree as text, without recursion: a stack of (node, depth, closing).
-    fn write(&self, out: &mut String) {
-        enum Step<'a> {
-            Open(&'a str, &'a OverTree, usize),
-            Close(usize),
-        }
-        let mut stack: Vec<Step<'_>> = self
-            .children
-            .iter()
-            .rev()
-            .map(|(n, t)| Step::Open(n, t, 0))
-            .collect();
-        while let Some(step) = stack.pop() {
-            match step {
-                Step::Open(name, node, depth) => {
-                    let pad = "    ".repeat(depth);
-                    out.push_str(&format!("\n{pad}over \"{}\"\n{pad}{{\n", escape(name)));
-                    for (op, type_name, value) in &node.ops {
-                        out.push_str(&format!(
-                            "{pad}    {type_name} {op} = {}\n",
-                            usda_value(value)
-                        ));
-                    }
-                    if !node.ops.is_empty() {
-                        let reset = node.resets.then(|| format!("\"{}\"", patch::RESET));
-                        let order: Vec<String> = reset
-                            .into_iter()
-                            .chain(node.ops.iter().map(|(n, _, _)| format!("\"{n}\"")))
-                            .collect();
-                        out.push_str(&format!(
-                            "{pad}    uniform token[] xformOpOrder = [{}]\n",
-                            order.join(", ")
-                        ));
-                    }
-                    stack.push(Step::Close(depth));
-                    for (n, t) in node.children.iter().rev() {
-                        stack.push(Step::Open(n, t, depth + 1));
-                    }
-                }
-                Step::Close(depth) => {
-                    out.push_str(&format!("{}}}\n", "    ".repeat(depth)));
-                }
-            }
-        }
-    }
-}
-
 /// A string for a usda quoted string.
 fn escape(s: &str) -> String {
     s.replace('\\', "\\\\").replace('"', "\\\"")
@@ -1418,7 +1329,7 @@ fn usda_value(v: &Value) -> String {
 
 /// For the fuzz target: the code of Shenlong's own that reads a stage's bytes in this
 /// process — the nesting check, the text scanner and patcher (an edit of `/A` and of
-/// `/World/A`, relocated to another folder), the walk's decoder — on any input. Never
+/// `/World/A`, the output scanned again), the walk's decoder — on any input. Never
 /// panics, whatever the bytes.
 #[doc(hidden)]
 pub fn fuzz_own_readers(bytes: &[u8]) {

@@ -118,38 +118,19 @@ fn headed(lexicon: &Lexicon, phrase: &str) -> bool {
 /// gives for it, at the cost of one pass and one allocation (a scene of 100,000 such
 /// objects is read for every edit). `None` for any other name.
 fn simple(name: &str) -> Option<Identifier> {
-    let bytes = name.as_bytes();
-    let letters = bytes.iter().take_while(|b| b.is_ascii_alphabetic()).count();
-    if letters < 2 || bytes[1..letters].iter().any(u8::is_ascii_uppercase) {
+    let (word, digits) = super::words::simple_name(name)?;
+    if PREFIXES.contains(&word.as_str())
+        || SUFFIXES.contains(&word.as_str())
+        || side_of(&word).is_some()
+    {
         return None;
     }
-    let rest = &bytes[letters..];
-    let digits = match rest.first() {
-        None => rest,
-        Some(b'-' | b'_' | b' ' | b'.') => &rest[1..],
-        Some(_) => rest,
-    };
-    if !digits.iter().all(u8::is_ascii_digit) || (digits.is_empty() && !rest.is_empty()) {
-        return None;
-    }
-    let word = name[..letters].to_ascii_lowercase();
-    let plain = !PREFIXES.contains(&word.as_str())
-        && !SUFFIXES.contains(&word.as_str())
-        && side_of(&word).is_none()
-        && word != "node"
-        && super::words::spelling(&word) == word;
-    if !plain {
-        return None;
-    }
-    let number = if digits.is_empty() {
-        None
-    } else {
-        std::str::from_utf8(digits).ok()?.parse::<u32>().ok()
-    };
     Some(Identifier {
         base: word,
         other: None,
-        number,
+        number: (!digits.is_empty())
+            .then(|| digits.parse::<u32>().ok())
+            .flatten(),
         side: None,
     })
 }

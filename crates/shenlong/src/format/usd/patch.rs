@@ -576,10 +576,11 @@ pub(super) fn patch(
         if ancestor.is_none() && !text.ends_with('\n') {
             block.push('\n');
         }
+        let mut tree = Overs::default();
         for (path, ops) in list {
-            let rest = path.strip_prefix(&base).unwrap_or(&path);
-            block.push_str(&over_chain(rest, &indent, &ops));
+            tree.insert(path.strip_prefix(&base).unwrap_or(&path), ops);
         }
+        tree.write(&mut block, &indent);
         changes.push((at, at, block));
     }
     if let Some(m) = moves {
@@ -632,22 +633,66 @@ fn op_lines(ops: &Ops, indent: &str) -> String {
     s
 }
 
-/// Nested `over`s down a relative path (`/Furniture/Chair`), the last holding the ops.
-fn over_chain(relative: &str, indent: &str, ops: &Ops) -> String {
-    let names: Vec<&str> = relative.split('/').filter(|s| !s.is_empty()).collect();
-    let mut s = String::from("\n");
-    for (k, name) in names.iter().enumerate() {
-        let pad = format!("{indent}{}", "    ".repeat(k));
-        s.push_str(&format!("{pad}over \"{}\"\n{pad}{{\n", super::escape(name)));
+/// Prims with no spec in a layer, as a tree of `over`s holding their new ops: prims that
+/// share an ancestor share its `over` (a layer may hold one spec of a prim).
+#[derive(Debug, Default)]
+pub(super) struct Overs {
+    children: Vec<(String, Overs)>,
+    ops: Ops,
+}
+
+impl Overs {
+    /// Adds the prim at `path` (relative to where the tree is written) with its ops.
+    pub(super) fn insert(&mut self, path: &str, ops: Ops) {
+        let mut node = self;
+        for name in path.split('/').filter(|s| !s.is_empty()) {
+            let k = match node.children.iter().position(|(n, _)| n == name) {
+                Some(k) => k,
+                None => {
+                    node.children.push((name.to_string(), Overs::default()));
+                    node.children.len() - 1
+                }
+            };
+            node = &mut node.children[k].1;
+        }
+        node.ops = ops;
     }
-    s.push_str(&op_lines(
-        ops,
-        &format!("{indent}{}", "    ".repeat(names.len())),
-    ));
-    for k in (0..names.len()).rev() {
-        s.push_str(&format!("{indent}{}}}\n", "    ".repeat(k)));
+
+    /// The tree as text at `indent`, each top-level `over` after a blank line; a stack,
+    /// never recursion.
+    pub(super) fn write(&self, out: &mut String, indent: &str) {
+        enum Step<'a> {
+            Open(&'a str, &'a Overs, usize),
+            Close(usize),
+        }
+        let mut stack: Vec<Step<'_>> = self
+            .children
+            .iter()
+            .rev()
+            .map(|(n, t)| Step::Open(n, t, 0))
+            .collect();
+        while let Some(step) = stack.pop() {
+            match step {
+                Step::Open(name, node, depth) => {
+                    let pad = format!("{indent}{}", "    ".repeat(depth));
+                    if depth == 0 {
+                        out.push('\n');
+                    }
+                    out.push_str(&format!("{pad}over \"{}\"\n{pad}{{\n", super::escape(name)));
+                    if !node.ops.is_empty() {
+                        out.push_str(&op_lines(&node.ops, &format!("{pad}    ")));
+                    }
+                    stack.push(Step::Close(depth));
+                    for (n, t) in node.children.iter().rev() {
+                        stack.push(Step::Open(n, t, depth + 1));
+                    }
+                }
+                Step::Close(depth) => {
+                    out.push_str(&format!("{indent}{}}}\n", "    ".repeat(depth)));
+                }
+            }
+        }
     }
-    s
 }
 
 /// How an asset path of a layer in `from` is written for the same layer in `to`: a
@@ -751,6 +796,22 @@ def Xform "World"
         assert!(out.contains("    over \"Table\"\n    {\n        over \"Top\"\n        {\n            double3 xformOp:translate:shenlong"), "{out}");
         let out = patch(LAYER, &[("/Other".into(), ops())], None).unwrap();
         assert!(out.ends_with("over \"Other\"\n{\n    double3 xformOp:translate:shenlong = (2, 0, 0)\n    uniform token[] xformOpOrder = [\"xformOp:translate:shenlong\"]\n}\n"), "{out}");
+    }
+
+    #[test]
+    fn prims_from_another_layer_under_one_ancestor_share_its_over() {
+        // The root layer has no `World`: two prims under it get one `over "World"` (two
+        // specs of one prim in a layer would not open).
+        let header = "#usda 1.0\n(\n    subLayers = [@./set.usda@]\n)\n";
+        let out = patch(
+            header,
+            &[("/World/A".into(), ops()), ("/World/B".into(), ops())],
+            None,
+        )
+        .unwrap();
+        assert_eq!(out.matches("over \"World\"").count(), 1, "{out}");
+        let outline = Outline::scan(&out).unwrap();
+        assert!(outline.prims.contains_key("/World/A") && outline.prims.contains_key("/World/B"));
     }
 
     #[test]
