@@ -9,12 +9,14 @@ run must succeed. The files go to a temporary folder, removed afterwards.
 
     python3 bench/usd_scenes.py --bin target/release/shenlong --sizes 1000,10000,100000 --runs 3
 
-With `--usd-python PY` (the Python of a virtual environment with `usd-core`), Pixar's own
-library does the same edit in the same loop, alternating — open the stage, set the prim's
-translate op, export it — as a user would instead:
+With `--usd-core`, Pixar's own library does the same edit in the same loop, alternating —
+open the stage, set the prim's translate op, export it — as a user would instead. It runs
+in the benchmark's own virtual environment, `bench/.venv-usd` (made with `python3.11 -m
+venv` and `bench/requirements-usd.txt` on first use); `--usd-python PY` names another
+Python with `usd-core`. Both edits are then read back with usd-core: `Box_7` must be 1 m
+to the left and `Box_8` where it was, in each output.
 
-    python3.11 -m venv /tmp/usd && /tmp/usd/bin/pip install usd-core
-    python3 bench/usd_scenes.py --sizes 1000,10000 --usd-python /tmp/usd/bin/python
+    python3 bench/usd_scenes.py --sizes 10000,100000 --runs 5 --usd-core
 """
 
 from __future__ import annotations
@@ -66,13 +68,50 @@ stage.GetRootLayer().Export(sys.argv[2])
 """
 
 
+#: Reads an edited stage back: Box_7 moved 1 m along -x, Box_8 not (prints "ok").
+USD_CORE_CHECK = """
+import sys
+from pxr import Usd, UsdGeom
+for path in sys.argv[1:]:
+    stage = Usd.Stage.Open(path)
+    cache = UsdGeom.XformCache()
+    def at(name):
+        return cache.GetLocalToWorldTransform(stage.GetPrimAtPath("/World/" + name)).ExtractTranslation()
+    assert abs(at("Box_7")[0] - (7 * 2.0 - 1)) < 1e-9 and abs(at("Box_8")[0] - 8 * 2.0) < 1e-9, path
+print("ok")
+"""
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+
+def own_venv() -> str:
+    """The Python of the benchmark's own virtual environment with usd-core, made on first use."""
+    venv = os.path.join(HERE, ".venv-usd")
+    python = os.path.join(venv, "bin", "python")
+    if not os.path.exists(python):
+        print(f"making {venv} (usd-core) …", file=sys.stderr, flush=True)
+        subprocess.run(["python3.11", "-m", "venv", venv], check=True)
+        subprocess.run(
+            [python, "-m", "pip", "install", "--quiet", "--disable-pip-version-check",
+             "-r", os.path.join(HERE, "requirements-usd.txt")],
+            check=True,
+        )
+    return python
+
+
 def main() -> None:
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("--bin", default="target/release/shenlong")
     p.add_argument("--sizes", default="1000,10000")
     p.add_argument("--runs", type=int, default=3)
-    p.add_argument("--usd-python", help="a Python with usd-core, to time the same edit with it")
+    p.add_argument("--usd-core", action="store_true",
+                   help="time the same edit with usd-core, in the benchmark's own virtual environment")
+    p.add_argument("--usd-python", help="another Python with usd-core, to time the same edit with it")
     a = p.parse_args()
+    if not os.path.exists(a.bin):
+        sys.exit(f"no binary at {a.bin}: build it with `cargo build --release`")
+    if a.usd_core and not a.usd_python:
+        a.usd_python = own_venv()
     print(
         "| prims (objects) | file | convert (read) | edit (read, edit, write) | peak memory (edit) "
         "| usd-core edit | usd-core memory |"
@@ -93,6 +132,13 @@ def main() -> None:
                     t, m = timed([a.usd_python, "-c", USD_CORE_EDIT, src, os.path.join(tmp, "p.usda")])
                     pixar.append(t)
                     pixar_mem.append(m)
+            if a.usd_python:
+                check = subprocess.run(
+                    [a.usd_python, "-c", USD_CORE_CHECK, os.path.join(tmp, "o.usda"), os.path.join(tmp, "p.usda")],
+                    capture_output=True, text=True,
+                )
+                if check.stdout.strip() != "ok":
+                    sys.exit(f"an edit of {n:,} objects did not read back right: {check.stderr.strip()}")
             size = os.path.getsize(src) / 1e6
             theirs = (
                 f"{statistics.median(pixar):.2f} s | {statistics.median(pixar_mem):.0f} MiB"

@@ -207,6 +207,11 @@ fn bad_suites_fail_before_anything_runs() {
         .contains("expect[0]: unknown check 'teleported'"));
     assert!(err(&base.replace("\"object\": \"A\"", "\"object\": \"B\""))
         .contains("names {B}, which the text does not have"));
+    // A query with no placeholder may name an object `TV`.
+    let plain = base
+        .replace("'{A}'", "TV")
+        .replace("\"object\": \"A\"", "\"object\": \"TV\"");
+    assert!(Suite::parse(&plain, dir).is_ok(), "{plain}");
     assert!(
         err(&base.replace("\"queries\"", "\"variations\": 0, \"queries\""))
             .contains("variations must be at least 1")

@@ -1,7 +1,9 @@
-//! USD stages (`.usda`, `.usdc`, `.usdz`), read and written with the `openusd` crate: a
-//! stage as a scene of separate objects whose transforms Shenlong edits, everything else
-//! kept exactly.
+//! USD stages (`.usda`, `.usdc`, `.usdz`): a stage as a scene of separate objects whose
+//! transforms Shenlong edits, everything else kept exactly.
 //!
+//! - **Reading**: a `.usda` that needs no composition is read by Shenlong's own layer
+//!   reader ([`layer`]) in this process; any other stage is composed by the `openusd` crate
+//!   in a child process ([`sandbox`]). Both are walked alike ([`walk`], [`xform`]).
 //! - **Objects** are the prims of kind `component` where the stage uses model kinds; else
 //!   the prims directly under the default prim (or under the root when none is set) — each
 //!   one that has geometry below it.
@@ -25,11 +27,13 @@
 
 use super::FormatError;
 use crate::scene::Scene;
-use glam::{DMat4, DQuat, DVec3};
+use glam::{DMat4, DVec3};
 use openusd::ar::{self, Asset, DefaultResolver, ResolvedPath, Resolver};
 use openusd::sdf::{self, Value};
 use openusd::usd::{Prim, Stage};
 use std::path::{Path, PathBuf};
+use walk::Source as _;
+use xform::Attr;
 
 /// The largest USD file read, and the largest file a stage may pull in: the limit of
 /// every file a scene points to.
@@ -397,17 +401,30 @@ fn one_line(message: &str) -> String {
 /// The stage's frame from its metadata.
 fn frame_of(stage: &Stage) -> Result<StageFrame, FormatError> {
     let up = match stage.stage_metadata("upAxis").ok().flatten() {
-        Some(Value::Token(t)) if t.as_str() == "Z" => UpAxis::Z,
-        Some(Value::String(t)) if t == "Z" => UpAxis::Z,
-        None => UpAxis::Y,
-        Some(Value::Token(t)) if t.as_str() == "Y" => UpAxis::Y,
-        Some(Value::String(t)) if t == "Y" => UpAxis::Y,
+        None => None,
+        Some(Value::Token(t)) => Some(t.as_str().to_string()),
+        Some(Value::String(t)) => Some(t),
         Some(other) => return Err(err(format!("upAxis {other:?} is neither \"Y\" nor \"Z\""))),
     };
     let meters_per_unit = match stage.stage_metadata("metersPerUnit").ok().flatten() {
-        None => 0.01,
-        Some(v) => scalar(&v).ok_or_else(|| err("metersPerUnit is not a number"))?,
+        None => None,
+        Some(v) => Some(scalar(&v).ok_or_else(|| err("metersPerUnit is not a number"))?),
     };
+    stage_frame(up.as_deref(), meters_per_unit)
+}
+
+/// The frame a stage's `upAxis` and `metersPerUnit` give (USD's fallbacks, Y and 0.01,
+/// where unauthored).
+///
+/// # Errors
+/// An up axis other than Y or Z; metres per unit outside 1e-9 to 1e9.
+fn stage_frame(up: Option<&str>, meters_per_unit: Option<f64>) -> Result<StageFrame, FormatError> {
+    let up = match up {
+        None | Some("Y") => UpAxis::Y,
+        Some("Z") => UpAxis::Z,
+        Some(other) => return Err(err(format!("upAxis {other:?} is neither \"Y\" nor \"Z\""))),
+    };
+    let meters_per_unit = meters_per_unit.unwrap_or(0.01);
     if !(meters_per_unit.is_finite() && (1e-9..=1e9).contains(&meters_per_unit)) {
         return Err(err(format!(
             "metersPerUnit {meters_per_unit} is not a number between 1e-9 and 1e9 (a nanometre and a million kilometres)"
@@ -430,34 +447,6 @@ fn scalar(v: &Value) -> Option<f64> {
     }
 }
 
-fn vec3(v: &Value) -> Option<DVec3> {
-    match v {
-        Value::Vec3d(a) => Some(DVec3::new(a.x, a.y, a.z)),
-        Value::Vec3f(a) => Some(DVec3::new(a.x.into(), a.y.into(), a.z.into())),
-        Value::Vec3h(a) => Some(DVec3::new(
-            a.x.to_f32().into(),
-            a.y.to_f32().into(),
-            a.z.to_f32().into(),
-        )),
-        _ => None,
-    }
-}
-
-fn quat(v: &Value) -> Option<DQuat> {
-    let q = match v {
-        Value::Quatd(q) => DQuat::from_xyzw(q.x, q.y, q.z, q.w),
-        Value::Quatf(q) => DQuat::from_xyzw(q.x.into(), q.y.into(), q.z.into(), q.w.into()),
-        Value::Quath(q) => DQuat::from_xyzw(
-            q.x.to_f32().into(),
-            q.y.to_f32().into(),
-            q.z.to_f32().into(),
-            q.w.to_f32().into(),
-        ),
-        _ => return None,
-    };
-    (q.length() > 0.0).then(|| q.normalize())
-}
-
 /// A USD matrix (row-major, row vectors) as Shenlong's (column vectors).
 fn matrix(m: &openusd::gf::Matrix4d) -> DMat4 {
     DMat4::from_cols_array(&m.0)
@@ -466,186 +455,6 @@ fn matrix(m: &openusd::gf::Matrix4d) -> DMat4 {
 /// Shenlong's matrix as USD's.
 fn to_usd_matrix(m: DMat4) -> openusd::gf::Matrix4d {
     openusd::gf::Matrix4d(m.to_cols_array())
-}
-
-/// An attribute's default value.
-fn attr(prim: &Prim, name: &str) -> Option<Value> {
-    prim.attribute(name).get::<Value>().ok().flatten()
-}
-
-/// The order of a prim's transform ops, as authored.
-fn op_order(prim: &Prim) -> Vec<String> {
-    match attr(prim, "xformOpOrder") {
-        Some(Value::TokenVec(v)) => v.into_iter().map(|t| t.as_str().to_string()).collect(),
-        Some(Value::StringVec(v)) => v,
-        Some(Value::TokenListOp(op)) => op
-            .flatten()
-            .into_iter()
-            .map(|t| t.as_str().to_string())
-            .collect(),
-        _ => Vec::new(),
-    }
-}
-
-/// One op's matrix (column vectors).
-fn op_matrix(prim: &Prim, op: &str) -> Result<DMat4, FormatError> {
-    let (inverted, name) = match op.strip_prefix("!invert!") {
-        Some(rest) => (true, rest),
-        None => (false, op),
-    };
-    let Some(value) = attr(prim, name) else {
-        return Ok(DMat4::IDENTITY);
-    };
-    let kind = name
-        .strip_prefix("xformOp:")
-        .and_then(|k| k.split(':').next())
-        .unwrap_or_default();
-    let angle = |v: &Value| scalar(v).unwrap_or(0.0).to_radians();
-    let m = match kind {
-        "translate" => DMat4::from_translation(vec3(&value).unwrap_or(DVec3::ZERO)),
-        "translateX" => DMat4::from_translation(DVec3::X * scalar(&value).unwrap_or(0.0)),
-        "translateY" => DMat4::from_translation(DVec3::Y * scalar(&value).unwrap_or(0.0)),
-        "translateZ" => DMat4::from_translation(DVec3::Z * scalar(&value).unwrap_or(0.0)),
-        "scale" => DMat4::from_scale(vec3(&value).unwrap_or(DVec3::ONE)),
-        "scaleX" => DMat4::from_scale(DVec3::new(scalar(&value).unwrap_or(1.0), 1.0, 1.0)),
-        "scaleY" => DMat4::from_scale(DVec3::new(1.0, scalar(&value).unwrap_or(1.0), 1.0)),
-        "scaleZ" => DMat4::from_scale(DVec3::new(1.0, 1.0, scalar(&value).unwrap_or(1.0))),
-        "rotateX" => DMat4::from_rotation_x(angle(&value)),
-        "rotateY" => DMat4::from_rotation_y(angle(&value)),
-        "rotateZ" => DMat4::from_rotation_z(angle(&value)),
-        "orient" => DMat4::from_quat(quat(&value).unwrap_or(DQuat::IDENTITY)),
-        "transform" => match &value {
-            Value::Matrix4d(m) => matrix(m),
-            _ => DMat4::IDENTITY,
-        },
-        k if k.starts_with("rotate")
-            && k.len() == 9
-            && k[6..].bytes().all(|b| matches!(b, b'X' | b'Y' | b'Z')) =>
-        {
-            let v = vec3(&value).unwrap_or(DVec3::ZERO);
-            let r = |axis: char| match axis {
-                'X' => DMat4::from_rotation_x(v.x.to_radians()),
-                'Y' => DMat4::from_rotation_y(v.y.to_radians()),
-                _ => DMat4::from_rotation_z(v.z.to_radians()),
-            };
-            // `rotateXYZ` turns about X first, then Y, then Z.
-            let axes: Vec<char> = k[6..].chars().collect();
-            r(axes[2]) * r(axes[1]) * r(axes[0])
-        }
-        _ => DMat4::IDENTITY,
-    };
-    if !m.is_finite() {
-        return Err(err(format!(
-            "{}: the transform op {name} is not finite",
-            prim.path()
-        )));
-    }
-    if inverted {
-        if m.determinant().abs() < 1e-300 {
-            return Err(err(format!(
-                "{}: the inverted op {name} cannot be inverted",
-                prim.path()
-            )));
-        }
-        Ok(m.inverse())
-    } else {
-        Ok(m)
-    }
-}
-
-/// A prim's local transform, and whether it resets the transform stack.
-fn local_transform(prim: &Prim) -> Result<(DMat4, bool), FormatError> {
-    let order = op_order(prim);
-    let resets = order.first().is_some_and(|o| o == "!resetXformStack!");
-    // The first op listed is the outermost: M = op0 · op1 · … (column vectors).
-    let mut m = DMat4::IDENTITY;
-    for op in order.iter().filter(|o| *o != "!resetXformStack!") {
-        m *= op_matrix(prim, op)?;
-    }
-    Ok((m, resets))
-}
-
-/// The points a gprim's geometry spans, in its own space: its points, or the corners of
-/// its extent.
-fn geometry_points(prim: &Prim, type_name: &str) -> Vec<DVec3> {
-    let corners = |lo: DVec3, hi: DVec3| -> Vec<DVec3> {
-        (0..8)
-            .map(|k| {
-                DVec3::new(
-                    if k & 1 == 0 { lo.x } else { hi.x },
-                    if k & 2 == 0 { lo.y } else { hi.y },
-                    if k & 4 == 0 { lo.z } else { hi.z },
-                )
-            })
-            .collect()
-    };
-    let number =
-        |name: &str, default: f64| attr(prim, name).and_then(|v| scalar(&v)).unwrap_or(default);
-    let axis = || match attr(prim, "axis") {
-        Some(Value::Token(t)) => t.as_str().to_string(),
-        Some(Value::String(s)) => s,
-        _ => "Z".to_string(),
-    };
-    let upright = |r: f64, half: f64| {
-        let (lo, hi) = match axis().as_str() {
-            "X" => (DVec3::new(-half, -r, -r), DVec3::new(half, r, r)),
-            "Y" => (DVec3::new(-r, -half, -r), DVec3::new(r, half, r)),
-            _ => (DVec3::new(-r, -r, -half), DVec3::new(r, r, half)),
-        };
-        corners(lo, hi)
-    };
-    match type_name {
-        "Cube" => {
-            let h = number("size", 2.0) / 2.0;
-            corners(DVec3::splat(-h), DVec3::splat(h))
-        }
-        "Sphere" => {
-            let r = number("radius", 1.0);
-            corners(DVec3::splat(-r), DVec3::splat(r))
-        }
-        "Cylinder" | "Cone" => upright(number("radius", 1.0), number("height", 2.0) / 2.0),
-        "Capsule" => {
-            let r = number("radius", 0.5);
-            upright(r, number("height", 1.0) / 2.0 + r)
-        }
-        _ => {
-            let points: Vec<DVec3> = match attr(prim, "points") {
-                Some(Value::Vec3fVec(v)) => v
-                    .iter()
-                    .map(|p| DVec3::new(p.x.into(), p.y.into(), p.z.into()))
-                    .collect(),
-                Some(Value::Vec3dVec(v)) => v.iter().map(|p| DVec3::new(p.x, p.y, p.z)).collect(),
-                _ => Vec::new(),
-            };
-            if !points.is_empty() {
-                return points;
-            }
-            match attr(prim, "extent") {
-                Some(Value::Vec3fVec(v)) if v.len() == 2 => corners(
-                    DVec3::new(v[0].x.into(), v[0].y.into(), v[0].z.into()),
-                    DVec3::new(v[1].x.into(), v[1].y.into(), v[1].z.into()),
-                ),
-                _ => Vec::new(),
-            }
-        }
-    }
-}
-
-/// A prim and its parent's place in the tree, for the walk.
-struct Visit {
-    prim: Prim,
-    /// Its parent's local-to-world transform (stage units).
-    parent_world: DMat4,
-    /// Its parent's index in the tree.
-    parent: Option<usize>,
-}
-
-/// Whether a prim is a model of kind `component` (or a kind derived from it).
-fn is_component(prim: &Prim) -> bool {
-    prim.kind()
-        .ok()
-        .flatten()
-        .is_some_and(|k| k.as_str() == "component")
 }
 
 /// What the writer needs of each prim of the tree.
@@ -677,9 +486,14 @@ pub fn read(
     if container == UsdContainer::Usdz {
         check_package(path)?;
     }
-    let budget = sandbox::Budget::for_bytes(size);
-    let bytes = sandbox::run(budget, || walk(path, options).map(|w| w.encode()))?;
-    let walked = wire::Walked::decode(&bytes)?;
+    let walked = match own_walk(path, container, options)? {
+        Some(walked) => walked,
+        None => {
+            let budget = sandbox::Budget::for_bytes(size);
+            let bytes = sandbox::run(budget, || walk(path, options).map(|w| w.encode()))?;
+            wire::Walked::decode(&bytes)?
+        }
+    };
     let frame = walked.frame.in_units(options.units);
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
     let front = match frame.up {
@@ -717,120 +531,68 @@ pub fn read(
     Ok((derived.scene, document))
 }
 
+/// A `.usda` that needs no composition, read and walked by Shenlong's own reader in this
+/// process ([`layer`]); `None` for any other stage (the composing reader's, [`walk`]).
+///
+/// # Errors
+/// The file cannot be read, or nests too deep, holds too many prims or an unusable frame.
+fn own_walk(
+    path: &Path,
+    container: UsdContainer,
+    options: &super::facts::ReadOptions,
+) -> Result<Option<wire::Walked>, FormatError> {
+    if container != UsdContainer::Usda {
+        return Ok(None);
+    }
+    let text = crate::io::read_text_limited(path, MAX_USD_BYTES)
+        .map_err(|e| err(format!("cannot read it: {e}")))?;
+    let parsed = layer::read(&text, MAX_PRIMS)?;
+    drop(text);
+    match parsed {
+        layer::Parsed::Layer(layer) => walk_layer(&layer, options),
+        layer::Parsed::Compose => Ok(None),
+    }
+}
+
 /// Opens a stage and walks its prims, parents first: the tree the shared reading step
 /// needs, what writing needs of each prim, the frame as authored and the default prim.
 /// Runs in the reading child process ([`sandbox`]).
 fn walk(path: &Path, options: &super::facts::ReadOptions) -> Result<wire::Walked, FormatError> {
     let Opened { stage, uses_kinds } = open_stage(path)?;
     let authored = frame_of(&stage)?;
-    let frame = authored.in_units(options.units);
     let default_prim = stage.default_prim().map(|t| t.as_str().to_string());
-    let to_shenlong = frame.to_shenlong();
-    let mut tree = super::facts::Tree::default();
-    let mut prims: Vec<PrimInfo> = Vec::new();
-    // Parents before children, on an explicit stack: no recursion however deep. The walk
-    // starts at the default prim (a group such as `/World` is recognised as one), else at
-    // the root's children.
-    let children = |p: &Prim| -> Result<Vec<Prim>, FormatError> {
-        p.children()
-            .map_err(|e| err(one_line(&format!("{}: {e:#}", p.path()))))
-    };
-    let mut stack: Vec<Visit> = match &default_prim {
+    // The walk starts at the default prim (a group such as `/World` is recognised as
+    // one), else at the root's children.
+    let starts: Vec<walk::Visit<Prim>> = match &default_prim {
         Some(name) => {
             let root = stage.prim(format!("/{name}").as_str());
             let parent_world = match root.path().parent() {
                 Some(p) if p != sdf::Path::abs_root() => world_of(&stage, &stage.prim(p))?,
                 _ => DMat4::IDENTITY,
             };
-            vec![Visit {
+            vec![walk::Visit {
                 prim: root,
                 parent_world,
                 parent: None,
             }]
         }
-        None => children(&stage.prim(sdf::Path::abs_root()))?
+        None => stage
+            .children(&stage.prim(sdf::Path::abs_root()))?
             .into_iter()
-            .rev()
-            .map(|prim| Visit {
+            .map(|prim| walk::Visit {
                 prim,
                 parent_world: DMat4::IDENTITY,
                 parent: None,
             })
             .collect(),
     };
-    while let Some(Visit {
-        prim,
-        parent_world,
-        parent,
-    }) = stack.pop()
-    {
-        if !prim.is_active().unwrap_or(true) {
-            continue;
-        }
-        if tree.nodes.len() >= MAX_PRIMS {
-            return Err(err(format!("more than {MAX_PRIMS} prims")));
-        }
-        let (local, resets) = local_transform(&prim)?;
-        let parent_world = if resets {
-            DMat4::IDENTITY
-        } else {
-            parent_world
-        };
-        let world = parent_world * local;
-        let type_name = prim
-            .type_name()
-            .ok()
-            .flatten()
-            .map(|t| t.as_str().to_string())
-            .unwrap_or_default();
-        let shenlong = to_shenlong * world;
-        let points = if matches!(type_name.as_str(), "Xform" | "Scope" | "") {
-            Vec::new()
-        } else {
-            geometry_points(&prim, &type_name)
-                .into_iter()
-                .map(|p| shenlong.transform_point3(p))
-                .collect()
-        };
-        let path_text = prim.path().to_string();
-        let index = tree.nodes.len();
-        tree.nodes.push(super::facts::Node {
-            name: path_text.rsplit('/').next().unwrap_or_default().to_string(),
-            parent,
-            world: shenlong,
-            points,
-            transformable: is_transformable(&type_name),
-            model: uses_kinds && is_component(&prim),
-            given_name: match attr(&prim, "shenlong:name") {
-                Some(Value::String(n)) if !n.trim().is_empty() => Some(unescape(&n)),
-                _ => None,
-            },
-            labels: crate::scene::Labels {
-                category: match attr(&prim, "shenlong:category") {
-                    Some(Value::String(c)) if !c.trim().is_empty() => Some(unescape(&c)),
-                    _ => None,
-                },
-                ..crate::scene::Labels::default()
-            },
-            front: attr(&prim, "shenlong:front")
-                .and_then(|v| vec3(&v))
-                .filter(|d| d.is_finite() && d.length() > 0.0),
-            fallback: path_text.clone(),
-        });
-        prims.push(PrimInfo {
-            resets,
-            path: path_text,
-            world,
-            parent_world,
-        });
-        for child in children(&prim)?.into_iter().rev() {
-            stack.push(Visit {
-                prim: child,
-                parent_world: world,
-                parent: Some(index),
-            });
-        }
+    let (tree, prims) = walk::Walk {
+        to_shenlong: authored.in_units(options.units).to_shenlong(),
+        uses_kinds,
+        max_prims: MAX_PRIMS,
+        expected: 0,
     }
+    .run(&stage, starts)?;
     Ok(wire::Walked {
         tree,
         prims,
@@ -839,26 +601,128 @@ fn walk(path: &Path, options: &super::facts::ReadOptions) -> Result<wire::Walked
     })
 }
 
-/// Whether a prim of this type can carry a transform (an object's root).
-fn is_transformable(type_name: &str) -> bool {
-    !matches!(
-        type_name,
-        "" | "Scope"
-            | "Material"
-            | "Shader"
-            | "NodeGraph"
-            | "GeomSubset"
-            | "Camera"
-            | "DistantLight"
-            | "DomeLight"
-            | "RectLight"
-            | "SphereLight"
-            | "DiskLight"
-            | "CylinderLight"
-            | "RenderSettings"
-            | "RenderProduct"
-            | "RenderVar"
-    )
+/// Walks a layer Shenlong read itself ([`layer`]) as [`walk`] walks a composed stage;
+/// `None` when its default prim is none of its root prims (composition says what then).
+fn walk_layer(
+    layer: &layer::Layer,
+    options: &super::facts::ReadOptions,
+) -> Result<Option<wire::Walked>, FormatError> {
+    let authored = stage_frame(layer.up_axis.as_deref(), layer.meters_per_unit)?;
+    let starts: Vec<usize> = match &layer.default_prim {
+        Some(name) => {
+            let path = format!("/{name}");
+            match layer.roots.iter().find(|&&r| layer.prims[r].path == path) {
+                Some(&root) => vec![root],
+                None => return Ok(None),
+            }
+        }
+        None => layer.roots.clone(),
+    };
+    let starts = starts
+        .into_iter()
+        .map(|prim| walk::Visit {
+            prim,
+            parent_world: DMat4::IDENTITY,
+            parent: None,
+        })
+        .collect();
+    let (tree, prims) = walk::Walk {
+        to_shenlong: authored.in_units(options.units).to_shenlong(),
+        uses_kinds: layer.uses_kinds(),
+        max_prims: MAX_PRIMS,
+        expected: layer.prims.len(),
+    }
+    .run(layer, starts)?;
+    Ok(Some(wire::Walked {
+        tree,
+        prims,
+        frame: authored,
+        default_prim: layer.default_prim.clone(),
+    }))
+}
+
+/// The composed stage's prims as a walk's source.
+impl walk::Source for Stage {
+    type Prim = Prim;
+
+    fn children(&self, prim: &Prim) -> Result<Vec<Prim>, FormatError> {
+        prim.children()
+            .map_err(|e| err(one_line(&format!("{}: {e:#}", prim.path()))))
+    }
+    fn path(&self, prim: &Prim) -> String {
+        prim.path().to_string()
+    }
+    fn type_name(&self, prim: &Prim) -> String {
+        prim.type_name()
+            .ok()
+            .flatten()
+            .map(|t| t.as_str().to_string())
+            .unwrap_or_default()
+    }
+    fn active(&self, prim: &Prim) -> bool {
+        prim.is_active().unwrap_or(true)
+    }
+    fn component(&self, prim: &Prim) -> bool {
+        is_component(prim)
+    }
+    fn attr(&self, prim: &Prim, name: &str) -> Option<Attr> {
+        prim.attribute(name)
+            .get::<Value>()
+            .ok()
+            .flatten()
+            .and_then(attr_of)
+    }
+}
+
+/// Whether a prim is a model of kind `component` (or a kind derived from it).
+fn is_component(prim: &Prim) -> bool {
+    prim.kind()
+        .ok()
+        .flatten()
+        .is_some_and(|k| k.as_str() == "component")
+}
+
+/// A composed attribute's value as the walk reads it.
+fn attr_of(value: Value) -> Option<Attr> {
+    let v3 = |x: f64, y: f64, z: f64| DVec3::new(x, y, z);
+    Some(match value {
+        Value::Double(_) | Value::Float(_) | Value::Half(_) | Value::Int(_) | Value::Int64(_) => {
+            Attr::Scalar(scalar(&value)?)
+        }
+        Value::Vec3d(a) => Attr::Vec3(v3(a.x, a.y, a.z)),
+        Value::Vec3f(a) => Attr::Vec3(v3(a.x.into(), a.y.into(), a.z.into())),
+        Value::Vec3h(a) => Attr::Vec3(v3(
+            a.x.to_f32().into(),
+            a.y.to_f32().into(),
+            a.z.to_f32().into(),
+        )),
+        Value::Quatd(q) => Attr::quat(q.w, q.x, q.y, q.z),
+        Value::Quatf(q) => Attr::quat(q.w.into(), q.x.into(), q.y.into(), q.z.into()),
+        Value::Quath(q) => Attr::quat(
+            q.w.to_f32().into(),
+            q.x.to_f32().into(),
+            q.y.to_f32().into(),
+            q.z.to_f32().into(),
+        ),
+        Value::Matrix4d(m) => Attr::Matrix(Box::new(matrix(&m))),
+        Value::Token(t) => Attr::Text(t.as_str().to_string()),
+        Value::String(s) => Attr::Text(unescape(&s)),
+        Value::TokenVec(v) => Attr::Texts(v.into_iter().map(|t| t.as_str().to_string()).collect()),
+        Value::StringVec(v) => Attr::Texts(v),
+        Value::TokenListOp(op) => Attr::Texts(
+            op.flatten()
+                .into_iter()
+                .map(|t| t.as_str().to_string())
+                .collect(),
+        ),
+        Value::Vec3fVec(v) => Attr::Points(
+            v.iter()
+                .map(|p| v3(p.x.into(), p.y.into(), p.z.into()))
+                .collect(),
+        ),
+        Value::Vec3dVec(v) => Attr::Points(v.iter().map(|p| v3(p.x, p.y, p.z)).collect()),
+        _ => return None,
+    })
 }
 
 /// The local-to-world transform of a prim, from the root down.
@@ -874,7 +738,8 @@ fn world_of(stage: &Stage, prim: &Prim) -> Result<DMat4, FormatError> {
     }
     let mut world = DMat4::IDENTITY;
     for p in chain.iter().rev() {
-        let (local, resets) = local_transform(p)?;
+        let (local, resets) =
+            xform::local_transform(&|name| stage.attr(p, name), &p.path().to_string())?;
         world = if resets { local } else { world * local };
     }
     Ok(world)
@@ -1328,7 +1193,7 @@ fn usda_value(v: &Value) -> String {
 }
 
 /// For the fuzz target: the code of Shenlong's own that reads a stage's bytes in this
-/// process — the nesting check, the text scanner and patcher (an edit of `/A` and of
+/// process — the nesting check, the layer reader and its walk, the text scanner and patcher (an edit of `/A` and of
 /// `/World/A`, the output scanned again), the walk's decoder — on any input. Never
 /// panics, whatever the bytes.
 #[doc(hidden)]
@@ -1338,6 +1203,9 @@ pub fn fuzz_own_readers(bytes: &[u8]) {
         return;
     };
     let _ = check_nesting(text);
+    if let Ok(layer::Parsed::Layer(layer)) = layer::read(text, 100_000) {
+        let _ = walk_layer(&layer, &super::facts::ReadOptions::default());
+    }
     let ops: patch::Ops = vec![
         (patch::RESET.to_string(), "", String::new()),
         (
@@ -1356,8 +1224,12 @@ pub fn fuzz_own_readers(bytes: &[u8]) {
     }
 }
 
+mod layer;
+mod lex;
 mod patch;
 mod sandbox;
 #[cfg(test)]
 mod tests;
+mod walk;
 mod wire;
+mod xform;

@@ -13,7 +13,8 @@
 //! so that its sublayers, references and payloads still resolve from there.
 
 use super::super::FormatError;
-use std::collections::HashMap;
+use super::lex::{line_of, Lexer, Token};
+use std::collections::{HashMap, HashSet};
 use std::path::{Component, Path, PathBuf};
 
 /// Where a prim spec's body is in the text.
@@ -39,147 +40,6 @@ pub(super) struct Outline {
     assets: Vec<(usize, usize)>,
 }
 
-/// The lexical states the scanner passes through.
-struct Lexer<'a> {
-    text: &'a [u8],
-    pos: usize,
-}
-
-/// One token of a layer: what matters for its outline.
-#[derive(Debug, PartialEq)]
-enum Token {
-    /// `{ ( [`
-    Open(u8),
-    /// `} ) ]`
-    Close(u8),
-    /// A quoted string, unescaped.
-    Str(String),
-    /// A bare word (identifier, keyword, number, namespaced name).
-    Word(String),
-    /// An asset path, by its span.
-    Asset(usize, usize),
-    /// `=` and other punctuation.
-    Punct(u8),
-    /// The end of a line.
-    Newline,
-}
-
-impl<'a> Lexer<'a> {
-    /// The next token and where it starts; `None` at the end.
-    fn next(&mut self) -> Result<Option<(usize, Token)>, FormatError> {
-        let t = self.text;
-        while self.pos < t.len() {
-            let c = t[self.pos];
-            let start = self.pos;
-            match c {
-                b'\n' => {
-                    self.pos += 1;
-                    return Ok(Some((start, Token::Newline)));
-                }
-                b' ' | b'\t' | b'\r' => self.pos += 1,
-                b'#' => {
-                    while self.pos < t.len() && t[self.pos] != b'\n' {
-                        self.pos += 1;
-                    }
-                }
-                b'{' | b'(' | b'[' => {
-                    self.pos += 1;
-                    return Ok(Some((start, Token::Open(c))));
-                }
-                b'}' | b')' | b']' => {
-                    self.pos += 1;
-                    return Ok(Some((start, Token::Close(c))));
-                }
-                b'"' | b'\'' => return self.string(c).map(|s| Some((start, Token::Str(s)))),
-                b'@' => {
-                    let triple = t[self.pos..].starts_with(b"@@@");
-                    let end = if triple {
-                        find(t, self.pos + 3, b"@@@").map(|e| e + 3)
-                    } else {
-                        find(t, self.pos + 1, b"@").map(|e| e + 1)
-                    };
-                    let end = end.ok_or_else(|| unclosed(t, start, "asset path"))?;
-                    self.pos = end;
-                    return Ok(Some((start, Token::Asset(start, end))));
-                }
-                b'<' => {
-                    let end =
-                        find(t, self.pos + 1, b">").ok_or_else(|| unclosed(t, start, "path"))?;
-                    self.pos = end + 1;
-                    return Ok(Some((start, Token::Punct(b'<'))));
-                }
-                c if c.is_ascii_alphanumeric()
-                    || c == b'_'
-                    || c == b'-'
-                    || c == b'.'
-                    || c >= 0x80 =>
-                {
-                    while self.pos < t.len() {
-                        let d = t[self.pos];
-                        if d.is_ascii_alphanumeric()
-                            || matches!(d, b'_' | b'-' | b'.' | b':' | b'+')
-                            || d >= 0x80
-                        {
-                            self.pos += 1;
-                        } else {
-                            break;
-                        }
-                    }
-                    let word = String::from_utf8_lossy(&t[start..self.pos]).into_owned();
-                    return Ok(Some((start, Token::Word(word))));
-                }
-                _ => {
-                    self.pos += 1;
-                    return Ok(Some((start, Token::Punct(c))));
-                }
-            }
-        }
-        Ok(None)
-    }
-
-    /// A quoted string (single, double or triple quotes), unescaped.
-    fn string(&mut self, quote: u8) -> Result<String, FormatError> {
-        let t = self.text;
-        let start = self.pos;
-        let triple = t[self.pos..].starts_with(&[quote, quote, quote]);
-        self.pos += if triple { 3 } else { 1 };
-        let mut out = Vec::new();
-        while self.pos < t.len() {
-            let c = t[self.pos];
-            if c == b'\\' && self.pos + 1 < t.len() {
-                out.push(t[self.pos + 1]);
-                self.pos += 2;
-                continue;
-            }
-            if c == quote && (!triple || t[self.pos..].starts_with(&[quote, quote, quote])) {
-                self.pos += if triple { 3 } else { 1 };
-                return Ok(String::from_utf8_lossy(&out).into_owned());
-            }
-            if c == b'\n' && !triple {
-                break;
-            }
-            out.push(c);
-            self.pos += 1;
-        }
-        Err(unclosed(t, start, "string"))
-    }
-}
-
-fn find(t: &[u8], from: usize, needle: &[u8]) -> Option<usize> {
-    t.get(from..)?
-        .windows(needle.len())
-        .position(|w| w == needle)
-        .map(|p| p + from)
-}
-
-fn line_of(t: &[u8], at: usize) -> usize {
-    t[..at.min(t.len())].iter().filter(|&&c| c == b'\n').count() + 1
-}
-
-fn unclosed(t: &[u8], at: usize, what: &str) -> FormatError {
-    FormatError::new(format!("an unclosed {what} at line {}", line_of(t, at)))
-}
-
 /// What a block on the scanner's stack is.
 #[derive(Clone, Debug)]
 enum Block {
@@ -194,6 +54,8 @@ enum Block {
 struct Scanner<'a> {
     text: &'a [u8],
     outline: Outline,
+    /// The prims whose specs are recorded (all when `None`).
+    keep: Option<&'a HashSet<String>>,
     /// Blocks open, with their bracket.
     stack: Vec<(Block, u8)>,
     /// How many of them are brackets, dictionaries or variant sets (inside one, no
@@ -209,6 +71,10 @@ struct Scanner<'a> {
 }
 
 impl Scanner<'_> {
+    fn kept(&self, path: &str) -> bool {
+        self.keep.is_none_or(|k| k.contains(path))
+    }
+
     fn end_of_statement(&mut self) {
         self.statement.clear();
         self.statement_start = None;
@@ -252,6 +118,10 @@ impl Scanner<'_> {
         match block {
             Block::Prim(path) => {
                 let (_, open) = self.open_prims.pop().unwrap_or_default();
+                self.end_of_statement();
+                if !self.kept(&path) {
+                    return Ok(());
+                }
                 let indent = indent_of(self.text, open, at);
                 self.outline.prims.insert(
                     path,
@@ -262,7 +132,6 @@ impl Scanner<'_> {
                         properties: Vec::new(),
                     },
                 );
-                self.end_of_statement();
             }
             Block::Other => self.others -= 1,
         }
@@ -288,6 +157,9 @@ impl Scanner<'_> {
         else {
             return;
         };
+        if !self.kept(path) {
+            return;
+        }
         let Some(name) = property_name(&self.statement) else {
             return;
         };
@@ -354,11 +226,21 @@ impl Outline {
     /// # Errors
     /// Unbalanced brackets or an unclosed string, saying where.
     pub(super) fn scan(text: &str) -> Result<Self, FormatError> {
+        Self::scan_for(text, None)
+    }
+
+    /// Scans a layer's text, recording the specs of the prims in `keep` only (all when
+    /// `None`): an edit needs its prims' and their ancestors', not the other million.
+    ///
+    /// # Errors
+    /// As [`Outline::scan`].
+    fn scan_for(text: &str, keep: Option<&HashSet<String>>) -> Result<Self, FormatError> {
         let t = text.as_bytes();
         let mut lexer = Lexer { text: t, pos: 0 };
         let mut scanner = Scanner {
             text: t,
             outline: Outline::default(),
+            keep,
             stack: Vec::new(),
             others: 0,
             statement: Vec::new(),
@@ -501,7 +383,15 @@ pub(super) fn patch(
     edits: &[(String, Ops)],
     moves: Option<&Move>,
 ) -> Result<String, FormatError> {
-    let outline = Outline::scan(text)?;
+    // The edited prims and their ancestors: the only specs the edit looks at.
+    let mut keep: HashSet<String> = HashSet::new();
+    for (path, _) in edits {
+        let mut p = path.as_str();
+        while !p.is_empty() && keep.insert(p.to_string()) {
+            p = p.rsplit_once('/').map_or("", |(parent, _)| parent);
+        }
+    }
+    let outline = Outline::scan_for(text, Some(&keep))?;
     // Replacements: (start, end, new text), applied back to front.
     let mut changes: Vec<(usize, usize, String)> = Vec::new();
     let mut appended: Vec<(String, Ops)> = Vec::new();

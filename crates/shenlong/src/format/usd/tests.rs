@@ -2,6 +2,7 @@
 
 use super::*;
 use crate::format::ReadOptions;
+use glam::DQuat;
 
 fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
     let p = dir.join(name);
@@ -422,6 +423,271 @@ fn names_with_quotes_and_backslashes_survive_round_trips() {
         assert_eq!(
             scene.objects[0].name, r#"quote"inside\and back"#,
             "round {round}"
+        );
+    }
+}
+
+/// A stage exercising every op kind, kinds, inactive prims, float precision and Shenlong's
+/// own attributes: what both readers must read alike.
+const EVERY_OP: &str = r#"#usda 1.0
+(
+    "A layer with a doc string"
+    defaultPrim = "World"
+    metersPerUnit = 0.0254
+    upAxis = "Z"
+    customLayerData = {
+        string creator = "Blender v4.2"
+        dictionary nested = { int a = 1 }
+    }
+)
+
+def Xform "World" (
+    kind = "assembly"
+)
+{
+    def Xform "Lamp" (
+        kind = "component"
+        prepend apiSchemas = ["MaterialBindingAPI"]
+        doc = """a "lamp" (with parentheses)"""
+    )
+    {
+        custom string shenlong:name = "desk \"lamp\""
+        custom string shenlong:category = "lamp"
+        custom double3 shenlong:front = (0, -1, 0)
+        float3 xformOp:translate = (1.1, 2.2, 3.3)
+        float3 xformOp:rotateXYZ:tilt = (10, 20, 30)
+        quatf xformOp:orient = (0.9238795, 0, 0, 0.3826834)
+        half3 xformOp:scale = (1, 2, 0.5)
+        double xformOp:rotateY = 45
+        uniform token[] xformOpOrder = ["xformOp:translate", "xformOp:rotateXYZ:tilt", "xformOp:orient", "!invert!xformOp:rotateY", "xformOp:scale"]
+        rel material:binding = </World/Looks/Brass>
+
+        def Mesh "Shade" (
+            active = true
+        )
+        {
+            point3f[] points = [(-1, -1, 0), (1, -1, 0), (1, 1, 2.5), (-1, 1, 2.5)] (
+                interpolation = "vertex"
+            )
+            int[] faceVertexCounts = [4]
+            int[] faceVertexIndices = [0, 1, 2, 3]
+            texCoord2f[] primvars:st = [(0, 0), (1, 0), (1, 1), (0, 1)]
+        }
+        def Cylinder "Pole"
+        {
+            double radius = 0.25
+            double height = 3
+            uniform token axis = "Y"
+        }
+    }
+
+    def Xform "Frame" (
+        kind = "component"
+    )
+    {
+        matrix4d xformOp:transform = ( (0, 1, 0, 0), (-1, 0, 0, 0), (0, 0, 1, 0), (5, 6, 7, 1) )
+        uniform token[] xformOpOrder = ["xformOp:transform"]
+
+        def Xform "Loose"
+        {
+            double3 xformOp:translate = (1, 1, 1)
+            uniform token[] xformOpOrder = ["!resetXformStack!", "xformOp:translate"]
+
+            def Sphere "Ball"
+            {
+                double radius = 0.5
+            }
+        }
+        def Capsule "Pill"
+        {
+            double radius = 0.2
+            double height = 1
+            uniform token axis = "X"
+            float3[] extent = [(-0.7, -0.2, -0.2), (0.7, 0.2, 0.2)]
+        }
+    }
+
+    def Xform "Gone" (
+        active = false
+        kind = "component"
+    )
+    {
+        def Cube "Box"
+        {
+        }
+    }
+
+    def Scope "Looks"
+    {
+        def Material "Brass"
+        {
+            token outputs:surface.connect = </World/Looks/Brass/Shader.outputs:surface>
+        }
+    }
+
+    def "Untyped"
+    {
+        def BasisCurves "Wire"
+        {
+            float3[] extent = [(0, 0, 0), (1, 2, 3)]
+        }
+    }
+}
+
+def Xform "Elsewhere"
+{
+    def Cube "Lost"
+    {
+    }
+}
+"#;
+
+/// The walk of a `.usda` by both readers: (the composing reader's, Shenlong's own).
+fn both_walks(text: &str, options: &ReadOptions) -> (wire::Walked, Option<wire::Walked>) {
+    let dir = tempfile::tempdir().unwrap();
+    let path = write(dir.path(), "stage.usda", text);
+    let composed = walk(&path, options).unwrap();
+    let own = own_walk(&path, UsdContainer::Usda, options).unwrap();
+    (composed, own)
+}
+
+/// Whether two walks agree, to 1e-9 in every number.
+fn assert_same_walk(a: &wire::Walked, b: &wire::Walked) {
+    let near = |x: &DMat4, y: &DMat4| {
+        x.to_cols_array()
+            .iter()
+            .zip(y.to_cols_array())
+            .all(|(p, q)| (p - q).abs() <= 1e-9 * (1.0 + p.abs()))
+    };
+    assert_eq!(a.frame, b.frame);
+    assert_eq!(a.default_prim, b.default_prim);
+    assert_eq!(a.tree.nodes.len(), b.tree.nodes.len());
+    for (m, n) in a.tree.nodes.iter().zip(&b.tree.nodes) {
+        assert_eq!(
+            (&m.name, m.parent, m.transformable, m.model),
+            (&n.name, n.parent, n.transformable, n.model),
+            "{}",
+            m.fallback
+        );
+        assert_eq!(
+            (&m.given_name, &m.labels.category, &m.fallback),
+            (&n.given_name, &n.labels.category, &n.fallback)
+        );
+        assert!(near(&m.world, &n.world), "{}", m.fallback);
+        assert_eq!(m.points.len(), n.points.len(), "{}", m.fallback);
+        for (p, q) in m.points.iter().zip(&n.points) {
+            assert!((*p - *q).length() < 1e-9, "{}: {p} {q}", m.fallback);
+        }
+        assert_eq!(m.front.is_some(), n.front.is_some());
+        if let (Some(f), Some(g)) = (m.front, n.front) {
+            assert!((f - g).length() < 1e-12);
+        }
+    }
+    for (p, q) in a.prims.iter().zip(&b.prims) {
+        assert_eq!((&p.path, p.resets), (&q.path, q.resets));
+        assert!(near(&p.world, &q.world) && near(&p.parent_world, &q.parent_world));
+    }
+}
+
+#[test]
+fn the_own_layer_reader_reads_as_the_composing_one() {
+    let examples = write_new(&crate::examples::build("living_room").unwrap());
+    let stages = [
+        EVERY_OP.to_string(),
+        ROOM_Z_UP_CM.to_string(),
+        String::from_utf8(examples).unwrap(),
+        // No default prim: every root prim, and USD's fallback frame.
+        EVERY_OP
+            .replace("    defaultPrim = \"World\"\n", "")
+            .replace("    upAxis = \"Z\"\n", "")
+            .replace("    metersPerUnit = 0.0254\n", ""),
+        // No component: objects are the default prim's children.
+        EVERY_OP.replace("kind = \"component\"", "kind = \"group\""),
+    ];
+    for (k, text) in stages.iter().enumerate() {
+        for units in [None, Some(crate::format::facts::Units::Centimetres)] {
+            let options = ReadOptions {
+                units,
+                ..ReadOptions::default()
+            };
+            let (composed, own) = both_walks(text, &options);
+            let own = own.unwrap_or_else(|| panic!("stage {k} was left to composition"));
+            assert!(composed.tree.nodes.len() > 3, "stage {k}");
+            assert_same_walk(&composed, &own);
+        }
+    }
+}
+
+#[test]
+fn layers_that_compose_are_left_to_the_composing_reader() {
+    let arcs = [
+        (
+            "    defaultPrim",
+            "    subLayers = [@./other.usda@]\n    defaultPrim",
+        ),
+        ("kind = \"assembly\"", "references = @./other.usda@</X>"),
+        ("kind = \"assembly\"", "prepend payload = @./other.usda@"),
+        ("kind = \"assembly\"", "inherits = </Base>"),
+        ("kind = \"assembly\"", "append specializes = </Base>"),
+        (
+            "kind = \"assembly\"",
+            "variants = { string look = \"red\" }",
+        ),
+        ("def Xform \"Elsewhere\"", "over \"Elsewhere\""),
+        ("def Xform \"Elsewhere\"", "class Xform \"Elsewhere\""),
+        (
+            "double radius = 0.25",
+            "double radius.timeSamples = { 0: 1, 10: 2 }",
+        ),
+        (
+            "float3 xformOp:translate = (1.1, 2.2, 3.3)",
+            "float3 xformOp:translate.timeSamples = { 0: (1, 2, 3) }",
+        ),
+        (
+            "uniform token axis = \"Y\"",
+            "variantSet \"look\" = { \"red\" { } }",
+        ),
+        ("#usda 1.0", "#sdf 1.0"),
+    ];
+    let dir = tempfile::tempdir().unwrap();
+    for (from, to) in arcs {
+        assert!(EVERY_OP.contains(from), "{from}");
+        let path = write(dir.path(), "stage.usda", &EVERY_OP.replacen(from, to, 1));
+        let own = own_walk(&path, UsdContainer::Usda, &ReadOptions::default()).unwrap();
+        assert!(own.is_none(), "read itself with {to}");
+    }
+    // A default prim that is no root prim: composition says what that means.
+    let path = write(
+        dir.path(),
+        "stage.usda",
+        &EVERY_OP.replace("defaultPrim = \"World\"", "defaultPrim = \"Nowhere\""),
+    );
+    assert!(own_walk(&path, UsdContainer::Usda, &ReadOptions::default())
+        .unwrap()
+        .is_none());
+}
+
+#[test]
+fn the_own_layer_reader_bounds_depth_and_prims() {
+    let mut deep = String::from("#usda 1.0\n");
+    for k in 0..(crate::format::MAX_JSON_DEPTH + 2) {
+        deep.push_str(&format!("def Xform \"P{k}\" {{\n"));
+    }
+    deep.push_str(&"}\n".repeat(crate::format::MAX_JSON_DEPTH + 2));
+    let e = layer::read(&deep, 1_000).unwrap_err();
+    assert!(e.message.contains("nesting deeper than"), "{}", e.message);
+    let many = format!("#usda 1.0\n{}", "def Xform \"A\" {}\n".repeat(20));
+    let e = layer::read(&many, 10).unwrap_err();
+    assert!(e.message.contains("more than 10 prims"), "{}", e.message);
+    // Whatever bytes it meets, it answers (the fuzz target runs it too).
+    for text in [
+        "#usda 1.0\ndef \"A\" { double3 xformOp:translate = (",
+        "#usda 1.0\n}",
+        "#usda 1.0\ndef X \"A\" ( kind = ) {}",
+    ] {
+        assert!(
+            matches!(layer::read(text, 10), Ok(layer::Parsed::Compose)),
+            "{text}"
         );
     }
 }
