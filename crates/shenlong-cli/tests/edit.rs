@@ -74,7 +74,9 @@ fn an_unknown_object_fails_with_a_suggestion_and_writes_nothing() {
     ]);
     assert!(!o.status.success());
     assert!(
-        stderr(&o).contains("could not read") && stderr(&o).contains("--llm offline+openai:MODEL"),
+        stderr(&o).contains("could not read")
+            && stderr(&o).contains("--llm")
+            && stderr(&o).matches("offline+openai:MODEL").count() == 1,
         "{}",
         stderr(&o)
     );

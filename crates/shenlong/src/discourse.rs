@@ -40,8 +40,37 @@ pub fn canonical(word: &str) -> &str {
         "mornin" | "gm" => "morning",
         "sec" | "second" | "moment" | "min" | "minute" | "mo" => "sec",
         "hiya" | "heya" => "hi",
-        other => other,
+        other => frame_typo(other).unwrap_or(other),
     }
+}
+
+/// The words of request frames a typo is read through (`coudl`, `pleae`, `cna`, `yuo`).
+const FRAME_WORDS: [&str; 7] = ["could", "would", "please", "can", "you", "should", "want"];
+
+/// The request-frame word `word` is a typo of: two neighbouring letters swapped (`cna`,
+/// `coudl`), or, in a word of five letters or more, one letter left out (`pleae`, `coud`)
+/// or one doubled (`pleasse`). Never a letter replaced: "world" is no typo of "would".
+fn frame_typo(word: &str) -> Option<&'static str> {
+    let w = word.as_bytes();
+    FRAME_WORDS.into_iter().find(|frame| {
+        let f = frame.as_bytes();
+        let swapped = w.len() == f.len()
+            && w.len() >= 3
+            && (0..w.len() - 1).any(|i| {
+                w[i] != w[i + 1]
+                    && w[i] == f[i + 1]
+                    && w[i + 1] == f[i]
+                    && w[..i] == f[..i]
+                    && w[i + 2..] == f[i + 2..]
+            });
+        let dropped = f.len() >= 5
+            && w.len() + 1 == f.len()
+            && (0..f.len()).any(|i| w[..i] == f[..i] && w[i..] == f[i + 1..]);
+        let doubled = f.len() >= 5
+            && w.len() == f.len() + 1
+            && (1..w.len()).any(|i| w[i] == w[i - 1] && w[..i] == f[..i] && w[i + 1..] == f[i..]);
+        swapped || dropped || doubled
+    })
 }
 
 /// Single words that may stand anywhere in an instruction and mean nothing for the edit:
@@ -298,6 +327,34 @@ fn is_article(w: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn typos_of_request_frames_read_as_the_frame() {
+        for (typed, frame) in [
+            ("coudl", "could"),
+            ("cna", "can"),
+            ("pleae", "please"),
+            ("pelase", "please"),
+            ("yuo", "you"),
+            ("woudl", "would"),
+            ("pleasse", "please"),
+        ] {
+            assert_eq!(canonical(typed), frame, "{typed}");
+        }
+        // A letter replaced is another word; short words lose nothing.
+        for word in [
+            "world", "cloud", "can", "could", "yo", "cab", "plate", "wants",
+        ] {
+            assert!(
+                canonical(word) == word || FRAME_WORDS.contains(&word),
+                "{word}"
+            );
+        }
+        assert_eq!(
+            core_of("coudl you pleae move the mug left"),
+            "move the mug left"
+        );
+    }
 
     fn core_of(s: &str) -> String {
         let w: Vec<&str> = s.split(' ').collect();

@@ -325,7 +325,7 @@ pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
                 .starts_with("the offline translator could not read") =>
         {
             anyhow::anyhow!(
-                "{} — with --llm offline+openai:MODEL a model answers only what the offline translator cannot read",
+                "{}, or use a language model with --llm (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
                 e.message
             )
         }

@@ -75,6 +75,20 @@ pub enum GroundError {
         /// The objects held.
         held: Vec<String>,
     },
+    /// The instruction names a kind of object the scene has none of ("the window").
+    #[error(
+        "there is no {word} in the scene; name one of its objects (it has {total}: {}{})",
+        names.join(", "),
+        if *total > names.len() { ", …" } else { "" }
+    )]
+    Absent {
+        /// The word, as typed.
+        word: String,
+        /// The first of the scene's names.
+        names: Vec<String>,
+        /// How many objects the scene has.
+        total: usize,
+    },
     /// The instruction names no object of the scene.
     #[error(
         "the instruction names no object of the scene; name one (it has {total}: {}{})",

@@ -99,6 +99,17 @@ impl Reader<'_> {
         let index = &self.g.index;
         let phrase = pieces.join(" ");
         let typo = self.typo_in(&range);
+        if let Some((objects, end)) = self.numbered_list(range.end, &phrase) {
+            return Some(self.make_head(
+                range.start..end,
+                objects,
+                Tier::Name,
+                true,
+                phrase.clone(),
+                &phrase,
+                typo.clone(),
+            ));
+        }
         if let Some(head) = self.named_head(range.clone(), pieces, &phrase, typo.as_ref()) {
             return Some(head);
         }
@@ -231,6 +242,89 @@ impl Reader<'_> {
                 detail: format!("\"{w}\": the objects the modifier names"),
             },
             typo: None,
+        })
+    }
+
+    /// A kind and several instance numbers (`desks 3 to 6`, `stools 1 and 4`, `chairs
+    /// 9-12`, `tables 1, 2 and 5`): `phrase` ends in the first number (or a range written
+    /// as one word) and the list goes on from token `end`. The objects of every number and
+    /// the token after the list; `None` unless every number names an object of the kind.
+    fn numbered_list(&self, end: usize, phrase: &str) -> Option<(Vec<usize>, usize)> {
+        const MAX_RANGE: u32 = 200;
+        let span = |w: &str| -> Option<Vec<u32>> {
+            let (a, b) = w.split_once(['-', '–'])?;
+            let (a, b) = (a.parse::<u32>().ok()?, b.parse::<u32>().ok()?);
+            (a < b && b - a <= MAX_RANGE).then(|| (a..=b).collect())
+        };
+        let mut end = end;
+        // "chairs 9-12": the range is one token after the kind's words.
+        let (base, mut numbers) = match self.word(end).and_then(span) {
+            Some(numbers) => {
+                end += 1;
+                (phrase, numbers)
+            }
+            None => {
+                let (base, last) = phrase.rsplit_once(' ')?;
+                (
+                    base,
+                    span(last).or_else(|| Some(vec![last.parse::<u32>().ok()?]))?,
+                )
+            }
+        };
+        let number_at = |k: usize| match self.tokens.get(k).map(|t| &t.kind) {
+            Some(Kind::Number(n)) if n.fract() == 0.0 && *n >= 0.0 && !self.unit_follows(k + 1) => {
+                u32::try_from(*n as u64).ok()
+            }
+            _ => None,
+        };
+        let mut j = end;
+        loop {
+            let joiner = if self.is_word(j, &["and", "&"]) {
+                1
+            } else if matches!(self.tokens.get(j).map(|t| &t.kind), Some(Kind::Punct(','))) {
+                if self.is_word(j + 1, &["and"]) {
+                    2
+                } else {
+                    1
+                }
+            } else {
+                0
+            };
+            let range_word = self.is_word(j, &["to", "through", "thru", "till", "until"])
+                || matches!(
+                    self.tokens.get(j).map(|t| &t.kind),
+                    Some(Kind::Punct('-' | '–'))
+                );
+            if joiner > 0 {
+                if let Some(n) = number_at(j + joiner) {
+                    numbers.push(n);
+                    j += joiner + 1;
+                    continue;
+                }
+            } else if range_word {
+                let from = *numbers.last()?;
+                if let Some(to) = number_at(j + 1).filter(|&t| t > from && t - from <= MAX_RANGE) {
+                    numbers.extend(from + 1..=to);
+                    j += 2;
+                    continue;
+                }
+            }
+            break;
+        }
+        if numbers.len() < 2 {
+            return None;
+        }
+        let mut bases = vec![base.to_string()];
+        bases.extend(self.g.lexicon.singulars(base));
+        bases.extend(words::singular(base));
+        bases.into_iter().find_map(|b| {
+            let mut objects: Vec<usize> = Vec::new();
+            for &n in &numbers {
+                objects.extend(self.g.index.numbered(&b, n)?);
+            }
+            objects.sort_unstable();
+            objects.dedup();
+            Some((objects, j))
         })
     }
 
@@ -490,6 +584,37 @@ mod tests {
         );
         // Quoted names always win.
         means("living_room", "move the 'sofa' left", &[&["sofa"]]);
+    }
+
+    #[test]
+    fn a_kind_with_a_list_or_a_range_of_numbers() {
+        // The dining room's chairs: 'chair', 'chair 2', 'chair 3', 'chair 4'.
+        means(
+            "dining_room",
+            "move chairs 2 and 4 left",
+            &[&["chair 2", "chair 4"]],
+        );
+        means(
+            "dining_room",
+            "move chairs 2, 3 and 4 left 10 cm",
+            &[&["chair 3", "chair 2", "chair 4"]],
+        );
+        means(
+            "dining_room",
+            "move chairs 2 to 4 left",
+            &[&["chair 3", "chair 2", "chair 4"]],
+        );
+        means(
+            "dining_room",
+            "move chairs 3-4 left",
+            &[&["chair 3", "chair 4"]],
+        );
+        // An amount is no number of the list; a number no chair has is no list.
+        means("dining_room", "move chair 2 and 3 m left", &[&["chair 2"]]);
+        assert_ne!(
+            head("dining_room", "move chairs 2 and 9 left", 1).map(|h| h.0),
+            Some(1..5)
+        );
     }
 
     #[test]

@@ -607,15 +607,11 @@ impl NameIndex {
     }
 
     /// The objects a name and an instance number name (`wood chair 1` for
-    /// `Chair_Wood.001`, whose name reads as "wood chair"), when that is not a name itself.
-    /// By its kind too (`stool 2` for `Stool_Bar.002`) when every object of that kind has
-    /// a number: then the numbers are how they are told apart.
+    /// `Chair_Wood.001`, whose name reads as "wood chair"), when that is not a name itself;
+    /// by any word that names them (`stool 2` for `Stool_Bar.002`, `desk 5` for `Student
+    /// Desk 05` beside an unnumbered `Teacher Desk`): the number is what tells them apart.
     pub fn numbered(&self, base: &str, number: u32) -> Option<Vec<usize>> {
-        let hit = self.lookup(base).filter(|h| {
-            h.tier == Tier::Name
-                || (h.tier == Tier::Category
-                    && h.objects.iter().all(|&o| self.numbers[o].is_some()))
-        })?;
+        let hit = self.lookup(base)?;
         let out: Vec<usize> = hit
             .objects
             .into_iter()

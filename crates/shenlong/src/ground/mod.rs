@@ -253,6 +253,36 @@ impl Grounder {
         self.ground_with_selection(instruction, scene, &[])
     }
 
+    /// The kind of object an instruction that grounds to nothing speaks of ("move the
+    /// window left": `window`): a word after a determiner that the lexicon knows as a kind
+    /// of object, as typed.
+    fn absent_kind(&self, text: &str) -> Option<String> {
+        let tokens = words::tokenize(text);
+        tokens.windows(2).find_map(|pair| {
+            let det = pair[0].word()?;
+            let word = pair[1].word()?;
+            let known = self.lexicon.knows(word)
+                || self
+                    .lexicon
+                    .singulars(word)
+                    .iter()
+                    .any(|s| self.lexicon.knows(s));
+            // Place nouns ("the window", "the door") are kinds a person looks for too.
+            let grammar = crate::discourse::is_discourse_word(word)
+                || words::is_verb(word)
+                || words::side_word(word).is_some()
+                || words::size_word(word).is_some()
+                || words::ordinal(word).is_some()
+                || words::count_word(word).is_some();
+            (matches!(
+                det,
+                "the" | "a" | "an" | "that" | "this" | "my" | "those" | "these"
+            ) && known
+                && !grammar)
+                .then(|| word.to_string())
+        })
+    }
+
     /// [`Grounder::ground`] where the user has objects selected: "it", "them", "the
     /// selection" or "the selected object(s)" with no object named before them mean
     /// those objects (a pronoun after a named object still refers back to it).
@@ -265,7 +295,8 @@ impl Grounder {
         scene: &Scene,
         selection: &[usize],
     ) -> Result<Grounding, GroundError> {
-        let text = instruction.trim();
+        let marked = words::imperial_marks(instruction.trim());
+        let text = marked.as_ref();
         if text.is_empty() {
             return Err(GroundError::Empty);
         }
@@ -290,6 +321,19 @@ impl Grounder {
             phrases.insert(0, phrase);
         }
         if phrases.is_empty() {
+            let names = scene
+                .objects
+                .iter()
+                .take(6)
+                .map(|o| o.name.clone())
+                .collect();
+            if let Some(word) = self.absent_kind(text) {
+                return Err(GroundError::Absent {
+                    word,
+                    names,
+                    total: scene.objects.len(),
+                });
+            }
             return Err(GroundError::NoObject {
                 names: scene
                     .objects

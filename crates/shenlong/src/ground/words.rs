@@ -36,6 +36,60 @@ impl Token {
     }
 }
 
+/// Feet and inches written with marks (`2'6"`, `6"`, `3′`, `18″`) as words (`2 ft 6 in`,
+/// `6 in`, `3 ft`, `18 in`), so that one reading of lengths serves them. A mark after a
+/// number is a unit unless it closes a quoted name (`'Chair 2'`): a `'` or `"` with an
+/// odd number of the same quote opened before it is a closing quote.
+#[must_use]
+pub fn imperial_marks(text: &str) -> std::borrow::Cow<'_, str> {
+    if !text.contains(['\'', '"', '′', '″']) {
+        return std::borrow::Cow::Borrowed(text);
+    }
+    let chars: Vec<char> = text.chars().collect();
+    let mut out = String::with_capacity(text.len() + 8);
+    // Quotes opened so far, by character (a mark that was a unit is not counted).
+    let (mut singles, mut doubles) = (0usize, 0usize);
+    for (k, &c) in chars.iter().enumerate() {
+        // A number standing alone ends here: digits (and a point) after a space, a
+        // bracket or the start, not the end of a name (`SM_Chair_02'`).
+        let run = chars[..k]
+            .iter()
+            .rev()
+            .take_while(|d| d.is_ascii_digit() || **d == '.')
+            .count();
+        // `chair 2's back` is a possessive, not feet.
+        let letter_follows = chars.get(k + 1).is_some_and(|d| d.is_alphabetic());
+        let after_number = run > 0
+            && !letter_follows
+            && chars[k - 1].is_ascii_digit()
+            && chars[k - run].is_ascii_digit()
+            && (k == run || !(chars[k - run - 1].is_alphanumeric() || chars[k - run - 1] == '_'));
+        let unit = match c {
+            '\'' if after_number && singles % 2 == 0 => Some("ft"),
+            '"' if after_number && doubles % 2 == 0 => Some("in"),
+            '′' if after_number => Some("ft"),
+            '″' if after_number => Some("in"),
+            _ => None,
+        };
+        if let Some(unit) = unit {
+            out.push(' ');
+            out.push_str(unit);
+            if chars.get(k + 1).is_some_and(char::is_ascii_digit) {
+                out.push(' ');
+            }
+            continue;
+        }
+        let in_word = k > 0 && chars[k - 1].is_alphanumeric();
+        match c {
+            '\'' if !in_word || singles % 2 == 1 => singles += 1,
+            '"' => doubles += 1,
+            _ => {}
+        }
+        out.push(c);
+    }
+    std::borrow::Cow::Owned(out)
+}
+
 const QUOTES: &[(char, char)] = &[('\'', '\''), ('"', '"'), ('‘', '’'), ('“', '”'), ('`', '`')];
 
 /// Splits an instruction into tokens. Quoted names (`'…'`, `"…"`, `‘…’`, `“…”`) are one
@@ -848,6 +902,26 @@ pub(crate) fn is_relative_filler(w: &str) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn feet_and_inches_marks_are_units_but_quotes_stay_quotes() {
+        for (typed, read) in [
+            ("move it 2'6\" left", "move it 2 ft 6 in left"),
+            ("bin: 6\" forward", "bin: 6 in forward"),
+            ("push it 3′ back", "push it 3 ft back"),
+            ("raise it 1.5\"", "raise it 1.5 in"),
+            ("move 'Chair 2' 1' left", "move 'Chair 2' 1 ft left"),
+            ("move \"Desk 5\" 6\" right", "move \"Desk 5\" 6 in right"),
+            ("move the sofa's cushion 2 m", "move the sofa's cushion 2 m"),
+            ("move SM_Chair_02' left", "move SM_Chair_02' left"),
+            (
+                "turn chair 2's back to the board",
+                "turn chair 2's back to the board",
+            ),
+        ] {
+            assert_eq!(imperial_marks(typed), read, "{typed}");
+        }
+    }
 
     #[test]
     fn tokens_keep_their_spans() {

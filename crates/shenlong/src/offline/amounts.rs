@@ -248,7 +248,8 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
                 if !inches_not {
                     c.mark(i..i + len + 1);
                     c.mark_by(i);
-                    return Some(Length::Metres(n * unit));
+                    let rest = smaller_part(c, i + len + 1, unit);
+                    return Some(Length::Metres(n * unit + rest));
                 }
             }
             let is_angle = c.word(i + len).and_then(angle_unit).is_some()
@@ -269,6 +270,29 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
         }
     }
     vague_length(c)
+}
+
+/// The second part of a compound length after a part in `unit` ends at token `j`: "6 in"
+/// of `2 ft 6 in`, "and 20 cm" of `1 m and 20 cm`, in a smaller unit; its words read.
+/// Zero where none follows.
+fn smaller_part(c: &mut Clause, j: usize, unit: f64) -> f64 {
+    let start = if c.words_at(j, &["and"]) { j + 1 } else { j };
+    let Some((m, len)) = number_at(c, start) else {
+        return 0.0;
+    };
+    let Some(smaller) = c.word(start + len).and_then(length_unit) else {
+        return 0.0;
+    };
+    let inches_not = c.word(start + len) == Some("in")
+        && matches!(
+            c.word(start + len + 1),
+            Some("front" | "the" | "a" | "back")
+        );
+    if smaller >= unit || inches_not || !c.free(start) {
+        return 0.0;
+    }
+    c.mark(j..start + len + 1);
+    m * smaller
 }
 
 /// A vague length ("a good bit", "a bit", "a tiny bit", "a lot"), its words read.

@@ -12,7 +12,7 @@
 //! | `forward till it hits the wall`, `till it reaches the back wall` | `all the way forward`, `all the way back` |
 //! | `all the way to the left wall`, `all the way back to the wall` | `against the left wall`, `against the back wall` |
 //! | `point X1 at X2`, `aim X1 at X2`, `so it points at X2`, `pointing towards X2` | `turn X1 face X2`, `so it faces X2`, `facing X2` |
-//! | `X1 needs to go 2 feet left`, `X1 should be moved …`, `X1 has to move …` | `X1 2 feet left` (a move: the objects named, then where) |
+//! | `X1 needs to go 2 feet left`, `X1 should be moved …`, `X1 has to move …`, `X1 should be 1 m to the left`, `could X1 go …`, `can X1 be moved …` | `X1 2 feet left` (a move: the objects named, then where) |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
 
 use super::amounts;
@@ -276,14 +276,47 @@ fn needs_to_go(c: &mut Clause) {
         let moved = [
             "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
         ];
-        let end = if one_of(c, k, &["go", "move"]) {
+        let end = if one_of(c, k, &["go", "move", "sit", "stand"]) {
             k + 1
         } else if c.words_at(k, &["be"]) && one_of(c, k + 1, &moved) {
             k + 2
+        } else if c.words_at(k, &["be"]) && c.token(k + 1).is_some() {
+            // "X1 should be 1 m to the left", "X1 needs to be on X2": where it is to be.
+            k + 1
         } else {
             continue;
         };
         c.mark(i..end);
         return;
+    }
+    // A question with the objects inside: "could X1 go …", "can X1 be moved …".
+    if one_of(c, 0, &modal) {
+        let mut k = 1;
+        while matches!(c.token(k), Some(super::words::Token::Variable(_)))
+            || c.words_at(k, &["and"])
+                && matches!(c.token(k + 1), Some(super::words::Token::Variable(_)))
+        {
+            k += 1;
+        }
+        if k == 1 {
+            return;
+        }
+        let end = if one_of(c, k, &["go", "move", "sit", "stand"]) {
+            k + 1
+        } else if c.words_at(k, &["be"])
+            && one_of(
+                c,
+                k + 1,
+                &[
+                    "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
+                ],
+            )
+        {
+            k + 2
+        } else {
+            return;
+        };
+        c.mark(0..1);
+        c.mark(k..end);
     }
 }

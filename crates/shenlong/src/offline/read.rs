@@ -56,18 +56,17 @@ pub(crate) struct Reader<'a> {
 /// What one clause asks: each variable with one step, in order.
 pub(super) type Produced = Vec<(usize, Step)>;
 
-/// The message for words the translator could not read.
+/// The message for words the translator could not read: those words (the clause, objects
+/// as X1 …, only when none of it was read). Front ends add their own advice (the CLI
+/// names `--llm`).
 pub(crate) fn not_read(unread: &str, clause: &str) -> String {
     if unread == clause || unread.is_empty() {
         format!(
-            "the offline translator could not read \"{}\"; rephrase it, or use a language model (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
+            "the offline translator could not read \"{}\"; rephrase it",
             clause.trim()
         )
     } else {
-        format!(
-            "the offline translator could not read \"{unread}\" in \"{}\"; rephrase it, or use a language model (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
-            clause.trim()
-        )
+        format!("the offline translator could not read \"{unread}\"; rephrase it")
     }
 }
 

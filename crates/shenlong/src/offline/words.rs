@@ -105,7 +105,47 @@ pub(crate) fn tokenize(query: &str) -> Vec<Token> {
         }
     }
     flush(&mut word, &mut tokens);
+    subject_then_amount(&mut tokens);
     tokens
+}
+
+/// "X1: 30 cm left", "X1, 10 cm back": the objects named first, then, after a colon or a
+/// comma, how far and where, with no verb. The separator joins them into one clause (a
+/// list's comma, "X1, X2 and X3", is kept).
+fn subject_then_amount(tokens: &mut Vec<Token>) {
+    let subjects = tokens
+        .iter()
+        .take_while(|t| matches!(t, Token::Variable(_)) || **t == Token::Word("and".into()))
+        .count();
+    if subjects == 0 || tokens.get(subjects) != Some(&Token::Separator) {
+        return;
+    }
+    let amount_or_way = match tokens.get(subjects + 1) {
+        Some(Token::Number(_)) => true,
+        Some(Token::Word(w)) => matches!(
+            w.as_str(),
+            "a" | "an"
+                | "half"
+                | "about"
+                | "around"
+                | "roughly"
+                | "approximately"
+                | "left"
+                | "right"
+                | "forward"
+                | "forwards"
+                | "back"
+                | "backward"
+                | "backwards"
+                | "up"
+                | "down"
+                | "slightly"
+        ),
+        _ => false,
+    };
+    if amount_or_way {
+        tokens.remove(subjects);
+    }
 }
 
 /// `2m` → (2, "m"), `90deg` → (90, "deg").
