@@ -139,6 +139,9 @@ pub struct Grounder {
     index: NameIndex,
     lexicon: &'static Lexicon,
     objects: usize,
+    /// The names with brackets (`Chair (2)`, `Lamp [left]`), lower-cased, longest first:
+    /// typed as they are, they are those objects.
+    bracketed: Vec<String>,
 }
 
 /// A head noun found at a position.
@@ -236,11 +239,53 @@ impl Grounder {
     /// Indexes a scene's names with a given lexicon.
     #[must_use]
     pub fn with_lexicon(scene: &Scene, lexicon: &'static Lexicon) -> Self {
+        let mut bracketed: Vec<String> = scene
+            .objects
+            .iter()
+            .filter(|o| o.name.contains(['(', ')', '[', ']']) && !o.name.contains(['\'', '"']))
+            .map(|o| o.name.to_lowercase())
+            .collect();
+        bracketed.sort_by_key(|n| std::cmp::Reverse(n.len()));
         Self {
             index: NameIndex::new(scene, lexicon),
             lexicon,
             objects: scene.objects.len(),
+            bracketed,
         }
+    }
+
+    /// The instruction with each name with brackets typed as it is (`move Chair (2)
+    /// left`) quoted, as a quoted name always means its object. Names already inside
+    /// quotes, or inside a longer word, are left alone.
+    fn quote_bracketed<'t>(&self, text: &'t str) -> std::borrow::Cow<'t, str> {
+        if self.bracketed.is_empty() || !text.contains(['(', '[']) {
+            return std::borrow::Cow::Borrowed(text);
+        }
+        let mut out = text.to_string();
+        for name in &self.bracketed {
+            let lower = out.to_lowercase();
+            // Lower-casing may change byte lengths outside ASCII: only a text it keeps.
+            if lower.len() != out.len() {
+                break;
+            }
+            let Some(at) = lower
+                .match_indices(name.as_str())
+                .map(|(i, _)| i)
+                .find(|&i| {
+                    let before = lower[..i].chars().next_back();
+                    let after = lower[i + name.len()..].chars().next();
+                    let quotes_before = lower[..i].matches(['\'', '"']).count();
+                    !before.is_some_and(char::is_alphanumeric)
+                        && !after.is_some_and(char::is_alphanumeric)
+                        && quotes_before % 2 == 0
+                })
+            else {
+                continue;
+            };
+            out.insert(at + name.len(), '"');
+            out.insert(at, '"');
+        }
+        std::borrow::Cow::Owned(out)
     }
 
     /// Finds the phrases of `instruction` that name objects of `scene` (the scene this
@@ -295,7 +340,8 @@ impl Grounder {
         scene: &Scene,
         selection: &[usize],
     ) -> Result<Grounding, GroundError> {
-        let marked = words::imperial_marks(instruction.trim());
+        let quoted = self.quote_bracketed(instruction.trim());
+        let marked = words::imperial_marks(&quoted);
         let text = marked.as_ref();
         if text.is_empty() {
             return Err(GroundError::Empty);

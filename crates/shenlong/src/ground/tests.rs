@@ -159,3 +159,24 @@ fn pronouns_with_nothing_before_them_mean_the_selection() {
         Err(GroundError::NoObject { .. })
     ));
 }
+
+#[test]
+fn names_typed_as_they_are_and_kinds_the_scene_lacks() {
+    let mut s = scene("dining_room");
+    s.objects[0].name = "Chair (2)".into();
+    s.objects[1].name = "Lamp [left]".into();
+    assert_eq!(g(&s, "move Chair (2) right 1 m").unwrap(), [["Chair (2)"]]);
+    assert_eq!(g(&s, "push lamp [LEFT] back").unwrap(), [["Lamp [left]"]]);
+    // Already quoted, it stays as it was.
+    assert_eq!(g(&s, "move 'Chair (2)' left").unwrap(), [["Chair (2)"]]);
+    // A kind of object the scene has none of is said so, by its word.
+    let e = g(&s, "move the window left").unwrap_err();
+    assert!(
+        matches!(&e, GroundError::Absent { word, .. } if word == "window"),
+        "{e}"
+    );
+    assert!(
+        e.to_string().starts_with("there is no window in the scene"),
+        "{e}"
+    );
+}

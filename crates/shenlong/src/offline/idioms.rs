@@ -258,6 +258,61 @@ fn pointing(c: &mut Clause) {
     }
 }
 
+/// Whether the words from `i` say where something is to be, as a move reads it: a
+/// relation ("on X2", "next to X2", "closer to X2"), or an amount and a direction ("1 m to
+/// the left", "20 cm further back"). Anything else ("1 m from the wall", "bigger") is not
+/// read as a move.
+fn where_to_be(c: &Clause, i: usize) -> bool {
+    const RELATIONS: [&str; 19] = [
+        "on",
+        "onto",
+        "next",
+        "beside",
+        "by",
+        "near",
+        "against",
+        "under",
+        "underneath",
+        "below",
+        "beneath",
+        "above",
+        "between",
+        "inside",
+        "closer",
+        "nearer",
+        "further",
+        "farther",
+        "facing",
+    ];
+    const DIRECTIONS: [&str; 10] = [
+        "left",
+        "right",
+        "forward",
+        "forwards",
+        "back",
+        "backward",
+        "backwards",
+        "up",
+        "down",
+        "higher",
+    ];
+    if one_of(c, i, &RELATIONS) {
+        return true;
+    }
+    let Some((_, len)) = amounts::number_at(c, i) else {
+        return false;
+    };
+    let unit = i + len;
+    if c.word(unit).and_then(super::words::length_unit).is_none() {
+        return false;
+    }
+    let mut k = unit + 1;
+    while one_of(c, k, &["to", "the", "further", "farther", "more"]) {
+        k += 1;
+    }
+    one_of(c, k, &DIRECTIONS)
+}
+
 /// `X1 needs to go …`, `X1 should be moved …`, `X1 has to move …`: the words after the
 /// objects that say they are to move, read; the clause is then a move of the objects.
 fn needs_to_go(c: &mut Clause) {
@@ -280,7 +335,7 @@ fn needs_to_go(c: &mut Clause) {
             k + 1
         } else if c.words_at(k, &["be"]) && one_of(c, k + 1, &moved) {
             k + 2
-        } else if c.words_at(k, &["be"]) && c.token(k + 1).is_some() {
+        } else if c.words_at(k, &["be"]) && where_to_be(c, k + 1) {
             // "X1 should be 1 m to the left", "X1 needs to be on X2": where it is to be.
             k + 1
         } else {
