@@ -202,6 +202,18 @@ impl Reader<'_> {
                 })?;
                 objects = kept;
             }
+            Post::Line(line) => {
+                objects = select::in_line(self.scene, &objects, line).ok_or_else(|| {
+                    GroundError::NoPick {
+                        phrase: at.clone(),
+                        reason: format!(
+                            "{} do not stand in such rows or columns, or there is no such one; name one ('{}')",
+                            error::list(&self.names(&objects)),
+                            self.names(&objects[..1]).join("")
+                        ),
+                    }
+                })?;
+            }
             Post::Middle => {
                 let picked = select::middle(self.scene, &objects)
                     .ok_or_else(|| self.too_close(&at, &objects, "in the middle"))?;

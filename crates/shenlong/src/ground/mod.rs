@@ -31,6 +31,7 @@
 //! the geometric picks, `index` the names, `hold` the phrases held in place.
 
 mod attach;
+mod depend;
 mod error;
 mod exclude;
 mod head;
@@ -200,6 +201,8 @@ enum Post {
     Relation(Relation, Vec<usize>),
     /// A place in the room: "in the corner", "in the middle of the room", "on the wall".
     Room(select::RoomPlace),
+    /// A row or column the objects stand in: "in the back row", "in row 3".
+    Line(select::Line),
 }
 
 /// Whether a noun phrase stands on its own, or names the other object of a modifier
@@ -342,7 +345,8 @@ impl Grounder {
     ) -> Result<Grounding, GroundError> {
         let quoted = self.quote_bracketed(instruction.trim());
         let marked = words::imperial_marks(&quoted);
-        let text = marked.as_ref();
+        let lined = words::line_of_objects(&marked);
+        let text = lined.as_ref();
         if text.is_empty() {
             return Err(GroundError::Empty);
         }
@@ -722,6 +726,8 @@ impl<'a> Reader<'a> {
                 Some(head) if self.opens_ok(&head) => {
                     let end = head.range.end;
                     let np = self.noun_phrase(head, &bound, Mode::Main)?;
+                    let np = self.with_dependents(np)?;
+                    let end = end.max(np.range.end);
                     self.commit(np, &mut phrases, &mut nps);
                     k = end;
                 }

@@ -28,6 +28,9 @@ impl Reader<'_> {
         {
             j += 1;
         }
+        if let Some(line) = self.line_at(j) {
+            return Ok(Some(line));
+        }
         if let Some(place) = self.side_place_at(j) {
             return Ok(Some(place));
         }
@@ -73,6 +76,58 @@ impl Reader<'_> {
             }
         }
         Ok(None)
+    }
+
+    /// A row or column at token `j`, and where it ends: `in the back row`, `in the front
+    /// row`, `in the second row`, `in the last row`, `in the middle row`, `in the left
+    /// column`, `in row 3`, `of the third column`. Rows count from the front, columns
+    /// from the left.
+    fn line_at(&self, j: usize) -> Option<(Post, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        if !matches!(w(j), "in" | "on" | "of" | "at" | "from") {
+            return None;
+        }
+        let line_word = |k: usize| match w(k) {
+            "row" | "rows" | "line" => Some(false),
+            "column" | "columns" | "col" => Some(true),
+            _ => None,
+        };
+        // "in row 3", "in column 2".
+        if let Some(columns) = line_word(j + 1) {
+            let n = match self.tokens.get(j + 2).map(|t| &t.kind) {
+                Some(Kind::Number(n)) if n.fract() == 0.0 && *n >= 1.0 && *n < 1000.0 => {
+                    *n as usize
+                }
+                _ => return None,
+            };
+            let line = if columns {
+                select::Line::Column(n)
+            } else {
+                select::Line::Row(n)
+            };
+            return Some((Post::Line(line), j + 3));
+        }
+        if w(j + 1) != "the" {
+            return None;
+        }
+        let which = w(j + 2);
+        let columns = line_word(j + 3)?;
+        let line = match (which, columns) {
+            ("front", false) => select::Line::Row(1),
+            ("back" | "rear", false) => select::Line::Row(usize::MAX),
+            ("left", true) => select::Line::Column(1),
+            ("right", true) => select::Line::Column(usize::MAX),
+            ("middle" | "center" | "centre", _) => select::Line::Middle { columns },
+            (other, _) => {
+                let n = words::ordinal(other)?;
+                if columns {
+                    select::Line::Column(n)
+                } else {
+                    select::Line::Row(n)
+                }
+            }
+        };
+        Some((Post::Line(line), j + 4))
     }
 
     /// The floor, a side or the middle at token `j`, and where it ends: `on the floor`, `on

@@ -461,3 +461,98 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
         [] => None,
     }
 }
+
+/// Which line of objects a phrase names: "the back row", "the second row", "the left
+/// column", "row 3".
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Line {
+    /// A row (objects side by side across the room, left to right), counted from the
+    /// front: the `n`th (1-based; `usize::MAX` the last).
+    Row(usize),
+    /// A column (objects one behind another), counted from the left.
+    Column(usize),
+    /// The middle row or column (`columns` when a column), of an odd number of them.
+    Middle { columns: bool },
+}
+
+/// The lines the objects stand in: rows (by the depth of their centres, front first) or
+/// columns (by their left-right centres, left first). A new line starts where the next
+/// centre is further on than half the objects' median extent along that axis; `None`
+/// when they make fewer than two lines.
+#[must_use]
+pub(crate) fn lines(scene: &Scene, objects: &[usize], columns: bool) -> Option<Vec<Vec<usize>>> {
+    let b = boxes(scene, objects);
+    let axis = if columns { 0 } else { 2 };
+    let mut extents: Vec<f64> = b.iter().map(|x| x.size()[axis]).collect();
+    extents.sort_by(f64::total_cmp);
+    let tolerance = 0.5 * extents.get(extents.len() / 2).copied().unwrap_or(0.0);
+    let mut order: Vec<(f64, usize)> = b
+        .iter()
+        .zip(objects)
+        .map(|(x, &o)| (x.center()[axis], o))
+        .collect();
+    // Rows from the front (+z first); columns from the left (−x first).
+    if columns {
+        order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    } else {
+        order.sort_by(|a, b| b.0.total_cmp(&a.0));
+    }
+    let mut out: Vec<Vec<usize>> = Vec::new();
+    let mut last = f64::NAN;
+    for (c, o) in order {
+        if out.is_empty() || (c - last).abs() > tolerance {
+            out.push(Vec::new());
+        }
+        if let Some(line) = out.last_mut() {
+            line.push(o);
+        }
+        last = c;
+    }
+    // One object standing apart is no line of its own when it is of another family than
+    // the lines (the teacher's desk behind rows of numbered student desks); one of the
+    // same family makes the lines unclear.
+    if out.iter().any(|l| l.len() >= 2) {
+        let families: Vec<String> = out
+            .iter()
+            .filter(|l| l.len() >= 2)
+            .flatten()
+            .map(|&o| family(&scene.objects[o].name))
+            .collect();
+        let mut kept = Vec::with_capacity(out.len());
+        for line in out {
+            match line.as_slice() {
+                [one] if families.contains(&family(&scene.objects[*one].name)) => return None,
+                [_] => {}
+                _ => kept.push(line),
+            }
+        }
+        out = kept;
+    }
+    (out.len() >= 2).then_some(out)
+}
+
+/// A name without its instance number: `exam desk` for `Exam Desk 05`, `chair` for
+/// `Chair_02` (lower case).
+fn family(name: &str) -> String {
+    name.to_lowercase()
+        .trim_end_matches(|c: char| c.is_ascii_digit() || " _.-#()".contains(c))
+        .to_string()
+}
+
+/// The objects of one line ([`lines`]); `None` when they stand in no such lines or there
+/// is no such one.
+#[must_use]
+pub(crate) fn in_line(scene: &Scene, objects: &[usize], line: Line) -> Option<Vec<usize>> {
+    let (columns, n) = match line {
+        Line::Row(n) => (false, n),
+        Line::Column(n) => (true, n),
+        Line::Middle { columns } => (columns, 0),
+    };
+    let all = lines(scene, objects, columns)?;
+    let index = match line {
+        Line::Middle { .. } => (all.len() % 2 == 1).then_some(all.len() / 2)?,
+        _ if n == usize::MAX => all.len() - 1,
+        _ => n.checked_sub(1).filter(|&k| k < all.len())?,
+    };
+    all.into_iter().nth(index)
+}

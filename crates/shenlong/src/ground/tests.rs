@@ -180,3 +180,126 @@ fn names_typed_as_they_are_and_kinds_the_scene_lacks() {
         "{e}"
     );
 }
+
+/// An exam hall: three rows of four numbered desks, each with a stool behind it, and a
+/// teacher's desk standing apart at the back.
+fn exam_hall() -> Scene {
+    use glam::{DQuat, DVec3};
+    let mut s = Scene::new("exam hall");
+    let mut k = 1;
+    for row in 0..3 {
+        for col in 0..4 {
+            let (x, z) = (-3.0 + 2.0 * f64::from(col), -2.0 + 2.0 * f64::from(row));
+            let desk = DVec3::new(1.2, 0.75, 0.6);
+            let stool = DVec3::new(0.4, 0.45, 0.4);
+            s.objects.push(
+                crate::scene::Object::new_box(
+                    format!("Exam Desk {k:02}"),
+                    desk,
+                    DVec3::new(x, 0.0, z),
+                    DQuat::IDENTITY,
+                    1.0,
+                )
+                .unwrap(),
+            );
+            s.objects.push(
+                crate::scene::Object::new_box(
+                    format!("Stool {k}"),
+                    stool,
+                    DVec3::new(x, 0.0, z + 0.6),
+                    DQuat::IDENTITY,
+                    1.0,
+                )
+                .unwrap(),
+            );
+            k += 1;
+        }
+    }
+    s.objects.push(
+        crate::scene::Object::new_box(
+            "Invigilator Desk",
+            DVec3::new(1.6, 0.75, 0.8),
+            DVec3::new(0.0, 0.0, -4.0),
+            DQuat::IDENTITY,
+            1.0,
+        )
+        .unwrap(),
+    );
+    s
+}
+
+#[test]
+fn rows_and_columns_of_alike_objects() {
+    let s = exam_hall();
+    let names = |text: &str| g(&s, text).unwrap_or_else(|e| panic!("{text}: {e}"));
+    // Rows count from the front (+z); the teacher's desk standing apart is no row.
+    assert_eq!(
+        names("move the desks in the back row back 20 cm"),
+        [[
+            "Exam Desk 01",
+            "Exam Desk 02",
+            "Exam Desk 03",
+            "Exam Desk 04"
+        ]]
+    );
+    assert_eq!(
+        names("move the back row of desks back 20 cm"),
+        [[
+            "Exam Desk 01",
+            "Exam Desk 02",
+            "Exam Desk 03",
+            "Exam Desk 04"
+        ]]
+    );
+    assert_eq!(
+        names("move the stools in the front row left"),
+        [["Stool 9", "Stool 10", "Stool 11", "Stool 12"]]
+    );
+    assert_eq!(
+        names("move the desks in row 2 forward"),
+        [[
+            "Exam Desk 05",
+            "Exam Desk 06",
+            "Exam Desk 07",
+            "Exam Desk 08"
+        ]]
+    );
+    assert_eq!(
+        names("move the desks in the left column right"),
+        [["Exam Desk 01", "Exam Desk 05", "Exam Desk 09"]]
+    );
+    assert_eq!(
+        names("the left stool in the back row, 20 cm right"),
+        [["Stool 1"]]
+    );
+    // One desk of a row is not said: refused naming the row.
+    let e = g(&s, "move the desk in the back row left").unwrap_err();
+    assert!(e.mentions().len() == 4, "{e}");
+    // No fourth row.
+    assert!(g(&s, "move the desks in the fourth row left").is_err());
+    // The one-of-a-kind desk is only a line of its own when nothing else is.
+    let mut lone = exam_hall();
+    lone.objects.last_mut().unwrap().name = "Exam Desk 13".into();
+    assert!(g(&lone, "move the desks in the back row left").is_err());
+}
+
+#[test]
+fn an_object_and_what_belongs_to_it() {
+    let s = exam_hall();
+    let names = |text: &str| g(&s, text).unwrap_or_else(|e| panic!("{text}: {e}"));
+    assert_eq!(
+        names("move desk 2 and its stool left 30 cm"),
+        [["Exam Desk 02", "Stool 2"]]
+    );
+    assert_eq!(
+        names("move desks 1 and 2 along with their stools back"),
+        [["Exam Desk 01", "Exam Desk 02", "Stool 1", "Stool 2"]]
+    );
+    assert_eq!(
+        names("push desk 7 with its stool forward"),
+        [["Exam Desk 07", "Stool 7"]]
+    );
+    // The teacher's desk has no stool drawn up to it: refused, not guessed.
+    let e = g(&s, "move the invigilator desk and its stool left").unwrap_err();
+    assert!(e.to_string().contains("no stool"), "{e}");
+}

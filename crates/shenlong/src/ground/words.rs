@@ -90,6 +90,41 @@ pub fn imperial_marks(text: &str) -> std::borrow::Cow<'_, str> {
     std::borrow::Cow::Owned(out)
 }
 
+/// "the back row of desks", "the second column of chairs" said as "the desks in the back
+/// row", "the chairs in the second column": the objects first, so that the line is read
+/// as the modifier after them. One word after `of` (and its `the`) is the objects'.
+#[must_use]
+pub fn line_of_objects(text: &str) -> std::borrow::Cow<'_, str> {
+    let tokens = tokenize(text);
+    let w = |k: usize| tokens.get(k).and_then(Token::word).unwrap_or("");
+    for k in 0..tokens.len() {
+        let which = w(k + 1);
+        let line = matches!(w(k + 2), "row" | "column" | "line");
+        let which_ok = side_word(which).is_some()
+            || ordinal(which).is_some()
+            || matches!(which, "middle" | "centre" | "center");
+        if w(k) != "the" || !line || !which_ok || w(k + 3) != "of" {
+            continue;
+        }
+        let noun = if w(k + 4) == "the" { k + 5 } else { k + 4 };
+        let Some(objects) = tokens.get(noun).and_then(Token::word) else {
+            continue;
+        };
+        if !objects.ends_with('s') {
+            continue;
+        }
+        let start = tokens[k].span.start;
+        let end = tokens[noun].span.end;
+        let rewritten = format!(
+            "the {} in the {which} {}",
+            &text[tokens[noun].span.clone()],
+            w(k + 2)
+        );
+        return std::borrow::Cow::Owned(format!("{}{rewritten}{}", &text[..start], &text[end..]));
+    }
+    std::borrow::Cow::Borrowed(text)
+}
+
 const QUOTES: &[(char, char)] = &[('\'', '\''), ('"', '"'), ('‘', '’'), ('“', '”'), ('`', '`')];
 
 /// Splits an instruction into tokens. Quoted names (`'…'`, `"…"`, `‘…’`, `“…”`) are one
@@ -921,6 +956,23 @@ mod tests {
         ] {
             assert_eq!(imperial_marks(typed), read, "{typed}");
         }
+    }
+
+    #[test]
+    fn a_line_of_objects_is_said_objects_first() {
+        assert_eq!(
+            line_of_objects("move the back row of desks 20 cm back"),
+            "move the desks in the back row 20 cm back"
+        );
+        assert_eq!(
+            line_of_objects("shift the second column of the chairs left"),
+            "shift the chairs in the second column left"
+        );
+        assert_eq!(line_of_objects("move the desk left"), "move the desk left");
+        assert_eq!(
+            line_of_objects("the row of the desk"),
+            "the row of the desk"
+        );
     }
 
     #[test]

@@ -1,0 +1,104 @@
+//! Dependents: what belongs to the objects a phrase names, said after it — "table 4 and
+//! its chairs", "the desk with its stool", "the beds along with their tables" — found from
+//! the scene: what rests on one of them, or stands drawn up to one of them (nearer to it
+//! than to anything else, within [`DRAWN_UP_METRES`] of its footprint).
+
+use super::{GroundError, Np, Reader, Reason, ReasonKind};
+use crate::scene::Scene;
+
+/// How far a chair may stand from its table's footprint and still be drawn up to it.
+const DRAWN_UP_METRES: f64 = 0.5;
+
+/// The words that join dependents to a phrase, longest first.
+const JOINS: &[&[&str]] = &[
+    &["along", "with"],
+    &["together", "with"],
+    &["and", "also"],
+    &["and"],
+    &["with"],
+    &["plus"],
+];
+
+impl Reader<'_> {
+    /// `np` with the dependents said right after it ("and its chairs"), when they are;
+    /// unchanged otherwise.
+    ///
+    /// # Errors
+    /// Dependents of a kind none of whose objects belong to the phrase's objects.
+    pub(super) fn with_dependents(&mut self, mut np: Np) -> Result<Np, GroundError> {
+        let k = np.range.end;
+        let Some(join) = JOINS.iter().find(|j| {
+            j.iter()
+                .enumerate()
+                .all(|(i, w)| self.is_word(k + i, &[w]) && !self.consumed[k + i])
+        }) else {
+            return Ok(np);
+        };
+        let owner = k + join.len();
+        if !self.is_word(owner, &["its", "their"]) {
+            return Ok(np);
+        }
+        let Some(head) = self.head_at(owner + 1) else {
+            return Ok(np);
+        };
+        let kind: Vec<usize> = head
+            .literal
+            .iter()
+            .chain(&head.objects)
+            .copied()
+            .filter(|o| !np.objects.contains(o))
+            .collect();
+        let mut found: Vec<usize> = kind
+            .iter()
+            .copied()
+            .filter(|&d| belongs_to(self.scene, d, &np.objects, &kind))
+            .collect();
+        found.sort_unstable();
+        found.dedup();
+        let range = np.range.start..head.range.end;
+        if found.is_empty() {
+            return Err(GroundError::NoPick {
+                phrase: self.span_text(&range),
+                reason: format!(
+                    "no {} rests on or is drawn up to {}",
+                    head.text,
+                    super::error::list(&self.names(&np.objects))
+                ),
+            });
+        }
+        np.reasons.push(Reason {
+            kind: ReasonKind::Group,
+            detail: format!(
+                "{} rest on or are drawn up to it",
+                super::error::list(&self.names(&found))
+            ),
+        });
+        np.objects.extend(found);
+        np.range = range;
+        Ok(np)
+    }
+}
+
+/// Whether object `d` belongs to one of `owners`: it rests on one, or stands drawn up to
+/// one — the nearest object to it that is not of its own kind (`kind`) is an owner, within
+/// [`DRAWN_UP_METRES`] of its footprint.
+fn belongs_to(scene: &Scene, d: usize, owners: &[usize], kind: &[usize]) -> bool {
+    if scene.objects[d]
+        .support
+        .is_some_and(|s| owners.contains(&s))
+    {
+        return true;
+    }
+    let b = scene.objects[d].world_aabb();
+    let gap = |o: usize| {
+        let c = scene.objects[o].world_aabb();
+        let dx = (c.min.x - b.max.x).max(b.min.x - c.max.x).max(0.0);
+        let dz = (c.min.z - b.max.z).max(b.min.z - c.max.z).max(0.0);
+        dx.hypot(dz)
+    };
+    let nearest = (0..scene.objects.len())
+        .filter(|&o| o != d && !kind.contains(&o))
+        .map(|o| (gap(o), o))
+        .min_by(|a, b| a.0.total_cmp(&b.0));
+    nearest.is_some_and(|(g, o)| g <= DRAWN_UP_METRES && owners.contains(&o))
+}
