@@ -54,6 +54,20 @@ impl Reader<'_> {
 
     /// The longest name, category or synonym starting at token `k`.
     pub(super) fn head_at(&self, k: usize) -> Option<Head> {
+        if k >= self.tokens.len() {
+            return None;
+        }
+        // "the tall object", "the thing by the door": a word for any object, even where
+        // an exported name holds it (`Object_3`), unless a number makes it that name.
+        let numbered = matches!(
+            self.tokens.get(k + 1).map(|t| &t.kind),
+            Some(Kind::Number(_))
+        ) && !self.unit_follows(k + 2);
+        if !numbered {
+            if let Some(generic) = self.generic_at(k) {
+                return Some(generic);
+            }
+        }
         if let Some(head) = self.identifier_at(k) {
             return Some(head);
         }
@@ -218,7 +232,14 @@ impl Reader<'_> {
     /// A generic noun at token `k` (`everything`, `the things`, `the thing`, `whatever`):
     /// every object, for the modifier after it to say which.
     fn generic_at(&self, k: usize) -> Option<Head> {
-        let w = self.words[k].as_deref().unwrap_or("");
+        // ("object" is also a prefix exported names carry, which name matching drops.)
+        let w = self
+            .words
+            .get(k)?
+            .as_deref()
+            .filter(|w| !w.is_empty())
+            .or_else(|| self.word(k))
+            .unwrap_or("");
         // "the thing on the cupboard" is one object; "everything on the shelf", "whatever's
         // on top of the bookcase" all that the modifier names.
         let plural = match w {

@@ -417,6 +417,15 @@ impl Builder {
                 self.add(&tail, target, Tier::Category, via);
                 kinds.push((tail, false));
             }
+            // One word of a longer name with its head: 'coffee round table'
+            // (`Table_Coffee_Round`) is a coffee table as well as a round table.
+            if let [modifiers @ .., _, head] = w.as_slice() {
+                for m in modifiers {
+                    let pair = format!("{m} {head}");
+                    self.add(&pair, target, Tier::Category, via);
+                    kinds.push((pair, false));
+                }
+            }
             descriptors.extend(w.iter().map(|&s| Box::<str>::from(s)));
         }
     }

@@ -299,6 +299,14 @@ fn an_object_and_what_belongs_to_it() {
         names("push desk 7 with its stool forward"),
         [["Exam Desk 07", "Stool 7"]]
     );
+    // Cut short, or with a word for any object: answered, never a panic.
+    for text in [
+        "move desk 2 and its",
+        "move desk 2 with their",
+        "move the object",
+    ] {
+        let _ = g(&s, text);
+    }
     // The teacher's desk has no stool drawn up to it: refused, not guessed.
     let e = g(&s, "move the invigilator desk and its stool left").unwrap_err();
     assert!(e.to_string().contains("no stool"), "{e}");
