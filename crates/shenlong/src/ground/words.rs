@@ -633,6 +633,21 @@ pub(crate) fn opens_phrase(w: &str) -> bool {
                 | "touching"
                 | "disturb"
                 | "disturbing"
+                // A question or a wish about an object: "could stool 3 go …", "I want
+                // desk 5 …", "I'd like table 2 …".
+                | "can"
+                | "could"
+                | "would"
+                | "will"
+                | "should"
+                | "must"
+                | "might"
+                | "may"
+                | "want"
+                | "wants"
+                | "like"
+                | "need"
+                | "needs"
         )
 }
 
