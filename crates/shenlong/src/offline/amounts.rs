@@ -243,8 +243,7 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
         if let Some((n, len)) = number_at(c, i) {
             if let Some(unit) = c.word(i + len).and_then(length_unit) {
                 // "2 in front of" is not inches.
-                let inches_not = c.word(i + len) == Some("in")
-                    && matches!(c.word(i + len + 1), Some("front" | "the" | "a" | "back"));
+                let inches_not = not_inches(c, i + len);
                 if !inches_not {
                     c.mark(i..i + len + 1);
                     c.mark_by(i);
@@ -272,6 +271,14 @@ pub(crate) fn length(c: &mut Clause, bare: bool) -> Option<Length> {
     vague_length(c)
 }
 
+/// Whether the `in` at `k` starts a place, not inches: `in front of`, `in the …`, `in a
+/// …`, `in back of` ("6 in back" is six inches back).
+fn not_inches(c: &Clause, k: usize) -> bool {
+    c.word(k) == Some("in")
+        && (matches!(c.word(k + 1), Some("front" | "the" | "a"))
+            || c.word(k + 1) == Some("back") && c.word(k + 2) == Some("of"))
+}
+
 /// The second part of a compound length after a part in `unit` ends at token `j`: "6 in"
 /// of `2 ft 6 in`, "and 20 cm" of `1 m and 20 cm`, in a smaller unit; its words read.
 /// Zero where none follows.
@@ -283,11 +290,7 @@ fn smaller_part(c: &mut Clause, j: usize, unit: f64) -> f64 {
     let Some(smaller) = c.word(start + len).and_then(length_unit) else {
         return 0.0;
     };
-    let inches_not = c.word(start + len) == Some("in")
-        && matches!(
-            c.word(start + len + 1),
-            Some("front" | "the" | "a" | "back")
-        );
+    let inches_not = not_inches(c, start + len);
     if smaller >= unit || inches_not || !c.free(start) {
         return 0.0;
     }

@@ -354,6 +354,8 @@ fn joins_objects(tokens: &[Token], i: usize, current: &[Token]) -> bool {
             Token::Word(w) if matches!(
                 w.as_str(),
                 "between" | "swap" | "exchange" | "switch" | "interchange" | "trade"
+                    // "in the middle of X2 and X3" is between them.
+                    | "middle" | "centre" | "center"
             )
         )
     });

@@ -14,6 +14,8 @@
 //! | `point X1 at X2`, `aim X1 at X2`, `so it points at X2`, `pointing towards X2` | `turn X1 face X2`, `so it faces X2`, `facing X2` |
 //! | `X1 needs to go 2 feet left`, `X1 should be moved …`, `X1 has to move …`, `X1 should be 1 m to the left`, `could X1 go …`, `can X1 be moved …` | `X1 2 feet left` (a move: the objects named, then where) |
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
+//! | `in the middle of X2`, `to the centre of X2`, `onto the center of X2` | `on X2` (on its top, centred: a rug's middle is on the rug) |
+//! | `in the middle of X2 and X3` | `between X2 and X3` |
 
 use super::amounts;
 use super::clause::Clause;
@@ -37,6 +39,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     right_up_against(c);
     until_touching(c);
     pointing(c);
+    middle_of_an_object(c);
     needs_to_go(c);
     all_the_way_to(c);
     flush(c);
@@ -220,6 +223,29 @@ fn until_touching(c: &mut Clause) {
     }
 }
 
+/// The middle of an object is on it, centred: `in the middle of X2` → `on X2` (and the
+/// middle of two objects is between them: `in the middle of X2 and X3` → `between X2 and
+/// X3`). The room's middle ("the middle of the room") is another place, read elsewhere.
+fn middle_of_an_object(c: &mut Clause) {
+    let is_var =
+        |c: &Clause, k: usize| matches!(c.token(k), Some(super::words::Token::Variable(_)));
+    for i in 0..c.len() {
+        if !one_of(c, i, &["in", "to", "into", "at", "onto"])
+            || !c.words_at(i + 1, &["the"])
+            || !one_of(c, i + 2, &["middle", "centre", "center"])
+            || !c.words_at(i + 3, &["of"])
+            || !is_var(c, i + 4)
+        {
+            continue;
+        }
+        let two = c.words_at(i + 5, &["and"]) && is_var(c, i + 6);
+        // The word before the target says it; the words before it are read.
+        c.mark(i..i + 3);
+        c.replace(i + 3, if two { "between" } else { "on" });
+        return;
+    }
+}
+
 /// Pointing is facing: `point X1 at X2` / `aim X1 towards X2` → `turn X1 face X2`; `points
 /// at`, `pointing at`, `point at` → `faces`, `facing`, `face`.
 fn pointing(c: &mut Clause) {
@@ -344,8 +370,12 @@ fn needs_to_go(c: &mut Clause) {
         c.mark(i..end);
         return;
     }
-    // A question with the objects inside: "could X1 go …", "can X1 be moved …".
-    if one_of(c, 0, &modal) {
+    // A question with the objects inside: "could X1 go …", "can X1 be moved …" (its
+    // modal typed as people type it: "coudl", "cna").
+    let modal_first = c.free(0)
+        && c.word(0)
+            .is_some_and(|w| modal.contains(&crate::discourse::canonical(w)));
+    if modal_first {
         let mut k = 1;
         while matches!(c.token(k), Some(super::words::Token::Variable(_)))
             || c.words_at(k, &["and"])

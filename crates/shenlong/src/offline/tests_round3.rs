@@ -702,3 +702,63 @@ fn the_red_one_after_the_blue_mug_is_the_red_mug() {
     assert!(b.center().distance(r.center()) < 0.3, "{b:?} {r:?}");
     assert_eq!(moved(&s, &a, "Mug_Red"), DVec3::ZERO);
 }
+
+/// Where an object's box ended up: its centre.
+fn centre_of(s: &Scene, name: &str) -> DVec3 {
+    s.objects[s.find(name).unwrap()].world_aabb().center()
+}
+
+#[test]
+fn round_four_amounts_frames_and_the_middle_of_an_object() {
+    let s = exported();
+    let moved = |text: &str, name: &str| {
+        let after = run(&s, text);
+        centre_of(&after, name) - centre_of(&s, name)
+    };
+    let near = |a: DVec3, b: DVec3| (a - b).length() < 1e-6;
+    // Feet and inches, with marks or words; a compound length.
+    assert!(near(
+        moved("move the ottoman 2'6\" back", "Ottoman"),
+        DVec3::new(0.0, 0.0, -0.762)
+    ));
+    assert!(near(
+        moved("move the ottoman 2 ft 6 in back", "Ottoman"),
+        DVec3::new(0.0, 0.0, -0.762)
+    ));
+    // No verb: the objects, then how far and where.
+    assert!(near(
+        moved("ottoman: 30 cm left", "Ottoman"),
+        DVec3::new(-0.3, 0.0, 0.0)
+    ));
+    assert!(near(
+        moved("the ottoman, 10 cm forward", "Ottoman"),
+        DVec3::new(0.0, 0.0, 0.1)
+    ));
+    // Obligations and questions about the object.
+    assert!(near(
+        moved("the ottoman should be 1 m to the left", "Ottoman"),
+        DVec3::new(-1.0, 0.0, 0.0)
+    ));
+    assert!(near(
+        moved("coudl the ottoman go 20 cm forward", "Ottoman"),
+        DVec3::new(0.0, 0.0, 0.2)
+    ));
+    // "should be" before anything but a relation or an amount with a direction: refused.
+    refused(&s, "the ottoman should be 1 m from the wall", &[]);
+    // The middle of an object is on it, centred; of two, between them.
+    let after = run(&s, "put the remote in the middle of the ottoman");
+    let (remote, table) = (
+        after.objects[after.find("Remote_TV").unwrap()].world_aabb(),
+        after.objects[after.find("Ottoman").unwrap()].world_aabb(),
+    );
+    assert!((remote.min.y - table.max.y).abs() < 1e-6, "{remote:?}");
+    assert!((remote.center().x - table.center().x).abs() < 1e-6);
+    assert!((remote.center().z - table.center().z).abs() < 1e-6);
+    let after = run(&s, "put the remote in the middle of the wooden chairs");
+    let mid = (centre_of(&s, "Chair_Wood") + centre_of(&s, "Chair_Wood.001")) / 2.0;
+    let o = centre_of(&after, "Remote_TV");
+    assert!(
+        (o.x - mid.x).abs() < 1e-6 && (o.z - mid.z).abs() < 1e-6,
+        "{o} {mid}"
+    );
+}
