@@ -161,7 +161,7 @@ fn search(
     saved: &mut Vec<(usize, Aabb)>,
 ) -> Result<(), ResolveError> {
     let setup = Instant::now();
-    let groups = groups(scene, moved);
+    let groups = rigid(groups(scene, moved), before, after);
     let floor = scene.floor();
     let room = scene.bounds;
     let collisions = find_collisions_in(grid, before, after, &groups, floor, room.as_ref());
@@ -451,6 +451,68 @@ fn groups(scene: &Scene, moved: &[usize]) -> Vec<Vec<usize>> {
         groups.push(group);
     }
     groups
+}
+
+/// The most objects a rigid group ([`rigid`]) joins.
+const MAX_RIGID: usize = 16;
+
+/// Groups moved together as one thing join: edited groups whose first objects moved by the
+/// same translation, unturned and unscaled, and stood within half a metre of each other
+/// before (a table and the chairs drawn up to it, moved by "table 4 and its chairs") are
+/// placed as one, so that clearing an obstacle keeps them together. Large group edits of
+/// one motion (every chair of a hall) stay apart: a join is at most [`MAX_RIGID`] objects,
+/// and groups are compared only within one motion of at most 64 groups.
+fn rigid(groups: Vec<Vec<usize>>, before: &[Aabb], after: &[Aabb]) -> Vec<Vec<usize>> {
+    const NEAR: f64 = 0.5;
+    let motion = |g: &[usize]| {
+        let r = g[0];
+        let same_size = (after[r].size() - before[r].size()).length() < 1e-9;
+        same_size.then(|| after[r].center() - before[r].center())
+    };
+    let gap = |a: &Aabb, b: &Aabb| {
+        let dx = (b.min.x - a.max.x).max(a.min.x - b.max.x).max(0.0);
+        let dz = (b.min.z - a.max.z).max(a.min.z - b.max.z).max(0.0);
+        dx.hypot(dz)
+    };
+    let motions: Vec<Option<glam::DVec3>> = groups.iter().map(|g| motion(g)).collect();
+    let mut parent: Vec<usize> = (0..groups.len()).collect();
+    let find = |parent: &mut Vec<usize>, mut i: usize| {
+        while parent[i] != i {
+            parent[i] = parent[parent[i]];
+            i = parent[i];
+        }
+        i
+    };
+    let mut size: Vec<usize> = groups.iter().map(Vec::len).collect();
+    for a in 0..groups.len() {
+        let Some(ma) = motions[a] else { continue };
+        if ma.length() < 1e-9 {
+            continue;
+        }
+        let same: Vec<usize> = (a + 1..groups.len())
+            .filter(|&b| motions[b].is_some_and(|mb| (mb - ma).length() < 1e-6))
+            .take(65)
+            .collect();
+        if same.len() > 64 {
+            continue;
+        }
+        for b in same {
+            if gap(&before[groups[a][0]], &before[groups[b][0]]) > NEAR {
+                continue;
+            }
+            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+            if ra != rb && size[ra] + size[rb] <= MAX_RIGID {
+                parent[rb] = ra;
+                size[ra] += size[rb];
+            }
+        }
+    }
+    let mut joined: Vec<Vec<usize>> = vec![Vec::new(); groups.len()];
+    for (i, g) in groups.into_iter().enumerate() {
+        let r = find(&mut parent, i);
+        joined[r].extend(g);
+    }
+    joined.into_iter().filter(|g| !g.is_empty()).collect()
 }
 
 /// Checks candidate placements of one group.

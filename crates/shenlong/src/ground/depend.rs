@@ -80,8 +80,8 @@ impl Reader<'_> {
 }
 
 /// Whether object `d` belongs to one of `owners`: it rests on one, or stands drawn up to
-/// one — the nearest object to it that is not of its own kind (`kind`) is an owner, within
-/// [`DRAWN_UP_METRES`] of its footprint.
+/// one — the nearest object standing up (taller than 5 cm: not a rug) that is not of its
+/// own kind (`kind`) is an owner, within [`DRAWN_UP_METRES`] of its footprint.
 fn belongs_to(scene: &Scene, d: usize, owners: &[usize], kind: &[usize]) -> bool {
     if scene.objects[d]
         .support
@@ -96,8 +96,10 @@ fn belongs_to(scene: &Scene, d: usize, owners: &[usize], kind: &[usize]) -> bool
         let dz = (c.min.z - b.max.z).max(b.min.z - c.max.z).max(0.0);
         dx.hypot(dz)
     };
+    // (A rug under it is not what it is drawn up to: only objects that stand up count.)
     let nearest = (0..scene.objects.len())
         .filter(|&o| o != d && !kind.contains(&o))
+        .filter(|&o| scene.objects[o].world_aabb().size().y > 0.05)
         .map(|o| (gap(o), o))
         .min_by(|a, b| a.0.total_cmp(&b.0));
     nearest.is_some_and(|(g, o)| g <= DRAWN_UP_METRES && owners.contains(&o))

@@ -16,6 +16,7 @@
 //! | `pull X1 out from X2`, `out from under X2` | `away from X2` |
 //! | `in the middle of X2`, `to the centre of X2`, `onto the center of X2` | `on X2` (on its top, centred: a rug's middle is on the rug) |
 //! | `in the middle of X2 and X3` | `between X2 and X3` |
+//! | `somewhere on X2`, `somewhere near X2` | `on X2`, `near X2` |
 
 use super::amounts;
 use super::clause::Clause;
@@ -40,6 +41,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     until_touching(c);
     pointing(c);
     middle_of_an_object(c);
+    somewhere(c);
     needs_to_go(c);
     all_the_way_to(c);
     flush(c);
@@ -243,6 +245,25 @@ fn middle_of_an_object(c: &mut Clause) {
         c.mark(i..i + 3);
         c.replace(i + 3, if two { "between" } else { "on" });
         return;
+    }
+}
+
+/// `somewhere on X2`, `somewhere near X2`: the place the relation gives (where it fits
+/// best) is somewhere; the word is read.
+fn somewhere(c: &mut Clause) {
+    for i in 0..c.len() {
+        if c.words_at(i, &["somewhere"])
+            && one_of(
+                c,
+                i + 1,
+                &[
+                    "on", "onto", "in", "near", "next", "by", "beside", "under", "against",
+                ],
+            )
+        {
+            c.mark(i..i + 1);
+            return;
+        }
     }
 }
 

@@ -228,6 +228,31 @@ impl<'s> Known<'s> {
         best
     }
 
+    /// Whether variables `others` are smaller things standing within half a metre of
+    /// variable `lead`'s box (a table and the chairs drawn up to it, each with under two
+    /// thirds of its footprint): one thing to move together.
+    pub(crate) fn unit_with(&self, lead: usize, others: &[usize]) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let Some(a) = objects.get(lead).map(|&o| boxes[o]) else {
+            return false;
+        };
+        others.iter().all(|&v| {
+            objects.get(v).is_some_and(|&o| {
+                let b = boxes[o];
+                let footprint = |x: &crate::geometry::Aabb| x.size().x * x.size().z;
+                if footprint(&b) * 1.5 > footprint(&a) {
+                    return false;
+                }
+                let dx = (b.min.x - a.max.x).max(a.min.x - b.max.x).max(0.0);
+                let dz = (b.min.z - a.max.z).max(a.min.z - b.max.z).max(0.0);
+                dx.hypot(dz) <= 0.5
+            })
+        })
+    }
+
     /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
     /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
     /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the

@@ -403,10 +403,17 @@ impl Reader<'_> {
             (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
             _ => None,
         };
+        // "table 4 and its chairs towards the door": a table with what stands drawn up
+        // to it goes as one, along the first's line (each on its own line would pull
+        // them apart); "the chairs closer to the table" go each its own way.
+        let together = matches!(relation, Relation::Closer(_) | Relation::Away(_))
+            && subjects.len() > 1
+            && self.facts.known.unit_with(subjects[0], &subjects[1..]);
         subjects
             .iter()
             .map(|&s| {
-                let v = self.vector(relation, s, targets, text)?;
+                let lead = if together { subjects[0] } else { s };
+                let v = self.vector(relation, lead, targets, text)?;
                 match near {
                     Some(n) => self.near.insert(s, n),
                     None => self.near.remove(&s),

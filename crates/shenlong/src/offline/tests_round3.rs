@@ -762,3 +762,31 @@ fn round_four_amounts_frames_and_the_middle_of_an_object() {
         "{o} {mid}"
     );
 }
+
+#[test]
+fn a_table_and_what_is_drawn_up_to_it_move_as_one() {
+    let s = exported();
+    let after = run(
+        &s,
+        "move the round table and its chairs 30 cm towards the tv stand",
+    );
+    let delta = |name: &str| centre_of(&after, name) - centre_of(&s, name);
+    // The chair drawn up to the table goes with it, along the table's line; the other
+    // wooden chair stands apart and stays.
+    let (table, chair) = (delta("Table_Round"), delta("Chair_Wood.001"));
+    assert!((table.length() - 0.3).abs() < 1e-6, "{table}");
+    assert!((table - chair).length() < 1e-6, "{table} {chair}");
+    assert!(delta("Chair_Wood").length() < 1e-9);
+    // Moved as one into the way of the other chair and the wall: cleared as one.
+    let after = run(&s, "move the round table and its chairs 2 m left");
+    let delta = |name: &str| centre_of(&after, name) - centre_of(&s, name);
+    let (table, chair) = (delta("Table_Round"), delta("Chair_Wood.001"));
+    assert!((table - chair).length() < 1e-6, "{table} {chair}");
+    // Several chairs closer to a table go each their own way.
+    let after = run(&s, "move the wooden chairs 10 cm closer to the round table");
+    let (a, b) = (
+        centre_of(&after, "Chair_Wood") - centre_of(&s, "Chair_Wood"),
+        centre_of(&after, "Chair_Wood.001") - centre_of(&s, "Chair_Wood.001"),
+    );
+    assert!((a - b).length() > 1e-3, "{a} {b}");
+}
