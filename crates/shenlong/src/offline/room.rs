@@ -55,6 +55,36 @@ fn nearer_wall(s: usize, e: usize) -> Expr {
     )
 }
 
+/// "away from the wall": `amount` metres straight out from a wall — the one named
+/// (`wall`: its axis and side), else the nearest of the four.
+pub(crate) fn away_from_wall(s: usize, wall: Option<(usize, f64)>, amount: f64) -> Expr {
+    // Out from the nearer wall along axis `e`: towards the room's centre.
+    let out = |e: usize| {
+        let p = max_side(s, e);
+        scaled_axis(mul(num(amount), sub(num(1.0), mul(num(2.0), p))), e)
+    };
+    match wall {
+        Some((e, sign)) => scaled_axis(num(-sign * amount), e),
+        None => {
+            let distance = |e: usize| {
+                let half = dot(sub(room("max"), room("min")), axis(e));
+                sub(
+                    div(half, num(2.0)),
+                    call(
+                        "abs",
+                        vec![dot(sub(var(s, "center"), room("center")), axis(e))],
+                    ),
+                )
+            };
+            let x_nearer = step(sub(distance(2), distance(0)));
+            add(
+                mul(x_nearer.clone(), out(0)),
+                mul(sub(num(1.0), x_nearer), out(2)),
+            )
+        }
+    }
+}
+
 /// The translation that takes subject `s` to a place in the room.
 pub(crate) fn place(p: Place, s: usize) -> Expr {
     let centre = |e: usize| along(sub(room("center"), var(s, "center")), e);

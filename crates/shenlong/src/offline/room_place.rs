@@ -21,6 +21,8 @@ pub(super) enum RoomPlace {
     Towards(Direction),
     /// To a side of the room ("to the back of the room"): against that wall.
     ToSide(Direction),
+    /// Straight out from a wall (the one named, else the nearest) by so many metres.
+    AwayFromWall(Option<Direction>, f64),
 }
 
 impl RoomPlace {
@@ -32,6 +34,7 @@ impl RoomPlace {
             Self::At(place) => room::place(place, s),
             Self::Towards((e, sign)) => room::far(s, e, sign, true),
             Self::ToSide((e, sign)) => room::all_the_way(s, e, sign),
+            Self::AwayFromWall(wall, amount) => room::away_from_wall(s, wall, amount),
         }
     }
 }
@@ -181,6 +184,16 @@ fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
     }
     mark_room_words(c);
     let wall = side.map(|(_, d)| d);
+    // "away from the wall", "20 cm away from the left wall": straight out from it.
+    if let Some(a) = c.find(&["away", "from"]).filter(|&a| a < i) {
+        c.mark(a..a + 2);
+        let amount = match super::amounts::length(c, false) {
+            Some(super::amounts::Length::Metres(m)) => m,
+            None => super::amounts::DEFAULT_METRES,
+            Some(_) => return Err("an amount away from a wall must be a length".into()),
+        };
+        return Ok(Some(RoomPlace::AwayFromWall(wall, amount)));
+    }
     Ok(Some(RoomPlace::At(Place::Wall(wall))))
 }
 

@@ -743,6 +743,15 @@ fn round_four_amounts_frames_and_the_middle_of_an_object() {
         moved("coudl the ottoman go 20 cm forward", "Ottoman"),
         DVec3::new(0.0, 0.0, 0.2)
     ));
+    // Away from a wall: straight out from the nearest one, or the one named.
+    assert!(near(
+        moved("pull the sofa 30 cm away from the wall", "Sofa_Fabric"),
+        DVec3::new(0.0, 0.0, 0.3)
+    ));
+    assert!(near(
+        moved("move the ottoman 20 cm away from the right wall", "Ottoman"),
+        DVec3::new(-0.2, 0.0, 0.0)
+    ));
     // "should be" before anything but a relation or an amount with a direction: refused.
     refused(&s, "the ottoman should be 1 m from the wall", &[]);
     // The middle of an object is on it, centred; of two, between them.
