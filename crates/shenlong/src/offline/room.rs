@@ -85,6 +85,27 @@ pub(crate) fn away_from_wall(s: usize, wall: Option<(usize, f64)>, amount: f64) 
     }
 }
 
+/// "to the other side of the room": mirrored through the room's centre along the
+/// horizontal axis on which it stands furthest from the centre (for its room: the
+/// offset over the room's half size).
+pub(crate) fn other_side_of_room(s: usize) -> Expr {
+    let offset = |e: usize| dot(sub(var(s, "center"), room("center")), axis(e));
+    let share = |e: usize| {
+        div(
+            call("abs", vec![offset(e)]),
+            div(dot(sub(room("max"), room("min")), axis(e)), num(2.0)),
+        )
+    };
+    let x_further = step(sub(share(0), share(2)));
+    add(
+        mul(x_further.clone(), scaled_axis(mul(num(-2.0), offset(0)), 0)),
+        mul(
+            sub(num(1.0), x_further),
+            scaled_axis(mul(num(-2.0), offset(2)), 2),
+        ),
+    )
+}
+
 /// The translation that takes subject `s` to a place in the room.
 pub(crate) fn place(p: Place, s: usize) -> Expr {
     let centre = |e: usize| along(sub(room("center"), var(s, "center")), e);

@@ -23,6 +23,8 @@ pub(super) enum RoomPlace {
     ToSide(Direction),
     /// Straight out from a wall (the one named, else the nearest) by so many metres.
     AwayFromWall(Option<Direction>, f64),
+    /// Mirrored through the room's centre ("to the other side of the room").
+    OtherSide,
 }
 
 impl RoomPlace {
@@ -35,6 +37,7 @@ impl RoomPlace {
             Self::Towards((e, sign)) => room::far(s, e, sign, true),
             Self::ToSide((e, sign)) => room::all_the_way(s, e, sign),
             Self::AwayFromWall(wall, amount) => room::away_from_wall(s, wall, amount),
+            Self::OtherSide => room::other_side_of_room(s),
         }
     }
 }
@@ -213,6 +216,26 @@ fn centre(c: &mut Clause, action: Action, has_room: bool) -> Result<Option<RoomP
     Ok(Some(RoomPlace::At(Place::Centre)))
 }
 
+/// "to the other side of the room", "across the room": mirrored through its centre.
+fn other_side(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
+    for i in 0..c.len() {
+        let other_side = c.words_at(i, &["the", "other", "side", "of", "the"])
+            && c.word(i + 5).is_some_and(is_room_word);
+        let across = c.words_at(i, &["across", "the"]) && c.word(i + 2).is_some_and(is_room_word);
+        if other_side || across {
+            need_room(c, has_room)?;
+            let end = if other_side { i + 6 } else { i + 3 };
+            c.mark(i..end);
+            if i > 0 && (c.words_at(i - 1, &["on"]) || c.words_at(i - 1, &["over"])) {
+                c.mark(i - 1..i);
+            }
+            mark_to_the(c, i);
+            return Ok(Some(RoomPlace::OtherSide));
+        }
+    }
+    Ok(None)
+}
+
 /// "towards the back of the room" (a way towards that wall), "to the front of the room"
 /// (against it).
 fn side_of_room(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
@@ -249,6 +272,9 @@ pub(super) fn room_place(
     has_room: bool,
 ) -> Result<Option<RoomPlace>, String> {
     if let Some(place) = floor(c) {
+        return Ok(Some(place));
+    }
+    if let Some(place) = other_side(c, has_room)? {
         return Ok(Some(place));
     }
     if let Some(place) = corner(c, has_room)? {
@@ -294,6 +320,13 @@ mod tests {
             [max[0] - 1.2, 0.0, 0.0]
         ));
         assert!(close(m("centre X1 in the room"), [-1.0, 0.0, -0.3]));
+        // The other side: mirrored along x, where it stands furthest out (x 1.0 of a
+        // half width, z 0.3).
+        assert!(close(
+            m("move X1 to the other side of the room"),
+            [-2.0, 0.0, 0.0]
+        ));
+        assert!(close(m("move X1 across the room"), [-2.0, 0.0, 0.0]));
         assert!(close(
             m("move X1 to the middle of the kitchen"),
             [-1.0, 0.0, -0.3]
