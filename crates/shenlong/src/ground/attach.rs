@@ -203,6 +203,10 @@ impl Reader<'_> {
                 objects = kept;
             }
             Post::Line(line) => {
+                let columns = matches!(
+                    line,
+                    select::Line::Column(_) | select::Line::Middle { columns: true }
+                );
                 objects = select::in_line(self.scene, &objects, line).ok_or_else(|| {
                     GroundError::NoPick {
                         phrase: at.clone(),
@@ -213,6 +217,18 @@ impl Reader<'_> {
                         ),
                     }
                 })?;
+                // "the second desk in the front row": along the line as it is read, a row
+                // from the left, a column from the front.
+                if let Some(o) = ordinal.take() {
+                    let from = if columns {
+                        Direction::Side(words::Axis::Z, 1.0)
+                    } else {
+                        Direction::Side(words::Axis::X, -1.0)
+                    };
+                    let picked = select::nth(self.scene, &objects, o, from)
+                        .ok_or_else(|| self.too_close(&at, &objects, words))?;
+                    objects = vec![picked];
+                }
             }
             Post::Middle => {
                 let picked = select::middle(self.scene, &objects)

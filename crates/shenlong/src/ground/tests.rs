@@ -272,6 +272,19 @@ fn rows_and_columns_of_alike_objects() {
         names("the left stool in the back row, 20 cm right"),
         [["Stool 1"]]
     );
+    // An ordinal counts along the line: a row from the left, a column from the front.
+    assert_eq!(
+        names("move the second desk in the front row left"),
+        [["Exam Desk 10"]]
+    );
+    assert_eq!(
+        names("move the last desk in row 2 back"),
+        [["Exam Desk 08"]]
+    );
+    assert_eq!(
+        names("move the second desk in the left column left"),
+        [["Exam Desk 05"]]
+    );
     // One desk of a row is not said: refused naming the row.
     let e = g(&s, "move the desk in the back row left").unwrap_err();
     assert!(e.mentions().len() == 4, "{e}");
