@@ -410,6 +410,8 @@ impl Reader<'_> {
             "one" => (false, false),
             "ones" => (true, false),
             "others" => (true, true),
+            // ("each other" is the two objects named, not another one.)
+            "other" if k > 0 && self.is_word(k - 1, &["each"]) => return None,
             "other"
                 if !self.head_follows(k + 1)
                     && !self.is_word(k + 1, &["one", "ones"])

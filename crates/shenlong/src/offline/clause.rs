@@ -60,6 +60,13 @@ impl Clause {
             .all(|(k, w)| self.free(i + k) && self.word(i + k) == Some(*w))
     }
 
+    /// Replaces the token at `i` (an idiom read as the construct it stands for).
+    pub fn set(&mut self, i: usize, token: Token) {
+        if let Some(t) = self.tokens.get_mut(i) {
+            *t = token;
+        }
+    }
+
     /// Replaces the word at `i` (a typo by what it stands for).
     pub fn replace(&mut self, i: usize, word: &str) {
         if let Some(t) = self.tokens.get_mut(i) {

@@ -17,6 +17,7 @@
 //! | `in the middle of X2`, `to the centre of X2`, `onto the center of X2` | `on X2` (on its top, centred: a rug's middle is on the rug) |
 //! | `in the middle of X2 and X3` | `between X2 and X3` |
 //! | `somewhere on X2`, `somewhere near X2` | `on X2`, `near X2` |
+//! | `put X1 and X2 next to each other`, `… side by side`, `… beside each other`, `… together` | `put X2 next to X1` (the first stays) |
 
 use super::amounts;
 use super::clause::Clause;
@@ -42,6 +43,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     pointing(c);
     middle_of_an_object(c);
     somewhere(c);
+    each_other(c);
     needs_to_go(c);
     all_the_way_to(c);
     flush(c);
@@ -264,6 +266,43 @@ fn somewhere(c: &mut Clause) {
             c.mark(i..i + 1);
             return;
         }
+    }
+}
+
+/// Two objects next to each other: `X1 and X2 next to each other` (`side by side`,
+/// `beside each other`, `together`) → `X2 next to X1`, the first staying where it is.
+fn each_other(c: &mut Clause) {
+    use super::words::Token;
+    const TOGETHER: [&[&str]; 5] = [
+        &["next", "to", "each", "other"],
+        &["beside", "each", "other"],
+        &["side", "by", "side"],
+        &["alongside", "each", "other"],
+        &["together"],
+    ];
+    for a in 0..c.len() {
+        let (Some(&Token::Variable(first)), Some(&Token::Variable(second))) =
+            (c.token(a), c.token(a + 2))
+        else {
+            continue;
+        };
+        if !c.words_at(a + 1, &["and"]) || matches!(c.token(a + 3), Some(Token::Variable(_))) {
+            continue;
+        }
+        let Some(words) = TOGETHER.iter().find(|w| c.words_at(a + 3, w)) else {
+            continue;
+        };
+        let end = a + 3 + words.len();
+        // Only the two: not a list of three, nor two after another object.
+        if a > 0 && matches!(c.token(a - 1), Some(Token::Variable(_))) {
+            continue;
+        }
+        c.set(a, Token::Variable(second));
+        c.set(a + 1, Token::Word("next".into()));
+        c.set(a + 2, Token::Word("to".into()));
+        c.set(a + 3, Token::Variable(first));
+        c.mark(a + 4..end);
+        return;
     }
 }
 

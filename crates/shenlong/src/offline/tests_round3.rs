@@ -799,3 +799,25 @@ fn a_table_and_what_is_drawn_up_to_it_move_as_one() {
     );
     assert!((a - b).length() > 1e-3, "{a} {b}");
 }
+
+#[test]
+fn two_objects_next_to_each_other() {
+    let s = exported();
+    for text in [
+        "put the wooden chairs next to each other",
+        "put Chair_Wood and Chair_Wood.001 side by side",
+    ] {
+        let after = run(&s, text);
+        // The first stays; the second stands beside it, 5 cm off, on the floor.
+        assert!((centre_of(&after, "Chair_Wood") - centre_of(&s, "Chair_Wood")).length() < 1e-9);
+        let (a, b) = (
+            after.objects[after.find("Chair_Wood").unwrap()].world_aabb(),
+            after.objects[after.find("Chair_Wood.001").unwrap()].world_aabb(),
+        );
+        let gap = (b.min.x - a.max.x)
+            .max(a.min.x - b.max.x)
+            .max((b.min.z - a.max.z).max(a.min.z - b.max.z));
+        assert!((gap - 0.05).abs() < 1e-6, "{text}: {gap}");
+        assert!(b.min.y.abs() < 1e-9);
+    }
+}
