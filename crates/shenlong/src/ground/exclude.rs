@@ -39,7 +39,7 @@ impl Reader<'_> {
             };
             let plural = head.plural;
             let text = head.text.clone();
-            let np = self.noun_phrase(head, bound, Mode::Nested)?;
+            let np = self.noun_phrase(head, bound, Mode::LeftOut)?;
             if np.objects.len() > 1 && !plural {
                 return Err(self.ambiguous(&np.range, &text, &np.objects, 2));
             }

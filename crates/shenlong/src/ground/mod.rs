@@ -213,6 +213,10 @@ enum Mode {
     Main,
     /// The other object of a modifier (`the side table` in `the book on the side table`).
     Nested,
+    /// A phrase left out of a group (`the one by the door` in `all the chairs except the
+    /// one by the door`): it reads a modifier after it, as a phrase on its own does, but
+    /// leaves nothing out itself.
+    LeftOut,
 }
 
 /// The instruction's words with corrections, shared by the readers.

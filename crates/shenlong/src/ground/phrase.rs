@@ -297,7 +297,7 @@ impl Reader<'_> {
         bound: &[usize],
         mode: Mode,
     ) -> Result<Option<(Post, usize)>, GroundError> {
-        let post = if mode == Mode::Main {
+        let post = if mode != Mode::Nested {
             self.post_modifier(draft.end, bound)?
         } else {
             None

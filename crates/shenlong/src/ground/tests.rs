@@ -324,3 +324,31 @@ fn an_object_and_what_belongs_to_it() {
     let e = g(&s, "move the invigilator desk and its stool left").unwrap_err();
     assert!(e.to_string().contains("no stool"), "{e}");
 }
+
+#[test]
+fn a_left_out_phrase_reads_its_own_modifier() {
+    let s = exam_hall();
+    let left_out = |text: &str| {
+        let moved: Vec<String> = g(&s, text).unwrap_or_else(|e| panic!("{text}: {e}"))[0].clone();
+        let mut out: Vec<String> = (1..=12)
+            .map(|k| format!("Stool {k}"))
+            .filter(|n| !moved.contains(n))
+            .collect();
+        out.sort();
+        out
+    };
+    assert_eq!(
+        left_out("move all the stools except the one by desk 5 back"),
+        ["Stool 5"]
+    );
+    assert_eq!(
+        left_out("move all the stools except the ones in the back row back"),
+        ["Stool 1", "Stool 2", "Stool 3", "Stool 4"]
+    );
+    // One that is not one: refused, naming them.
+    assert!(g(
+        &s,
+        "move all the stools except the one in the back row back"
+    )
+    .is_err());
+}
