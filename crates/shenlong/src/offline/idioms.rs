@@ -17,6 +17,7 @@
 //! | `in the middle of X2`, `to the centre of X2`, `onto the center of X2` | `on X2` (on its top, centred: a rug's middle is on the rug) |
 //! | `in the middle of X2 and X3` | `between X2 and X3` |
 //! | `somewhere on X2`, `somewhere near X2` | `on X2`, `near X2` |
+//! | `to the other end of X2`, `at the far end of X2` | `to the other side of X2` (mirrored through its centre: on a counter, its other end) |
 //! | `put X1 and X2 next to each other`, `… side by side`, `… beside each other`, `… together` | `put X2 next to X1` (the first stays) |
 
 use super::amounts;
@@ -44,6 +45,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     middle_of_an_object(c);
     somewhere(c);
     each_other(c);
+    other_end(c);
     needs_to_go(c);
     all_the_way_to(c);
     flush(c);
@@ -303,6 +305,26 @@ fn each_other(c: &mut Clause) {
         c.set(a + 3, Token::Variable(first));
         c.mark(a + 4..end);
         return;
+    }
+}
+
+/// `to the other end of X2` (`the far end of X2`): the other side of it, mirrored through
+/// its centre along the axis the object stands furthest out on — on a counter, its other
+/// end, on its top.
+fn other_end(c: &mut Clause) {
+    for i in 0..c.len() {
+        if one_of(c, i, &["other", "far", "opposite"])
+            && c.words_at(i + 1, &["end", "of"])
+            && matches!(c.token(i + 3), Some(super::words::Token::Variable(_)))
+        {
+            c.replace(i, "other");
+            c.replace(i + 1, "side");
+            // "at the far end of X2" is where it goes: "to".
+            if i >= 2 && c.words_at(i - 2, &["at", "the"]) {
+                c.replace(i - 2, "to");
+            }
+            return;
+        }
     }
 }
 

@@ -821,3 +821,24 @@ fn two_objects_next_to_each_other() {
         assert!(b.min.y.abs() < 1e-9);
     }
 }
+
+#[test]
+fn the_other_end_of_a_surface() {
+    let s = exported();
+    // The books lie right of the coffee table's centre (x 0.2 of its 1 m): to its other end
+    // is as far left, on its top.
+    for text in [
+        "move the books to the other end of the coffee table",
+        "put the books at the far end of the coffee table",
+    ] {
+        let after = run(&s, text);
+        let (b, t) = (
+            centre_of(&after, "Books_Stack"),
+            centre_of(&s, "Table_Coffee"),
+        );
+        assert!((b.x - (t.x - 0.2)).abs() < 1e-6, "{text}: {b}");
+        let books = after.objects[after.find("Books_Stack").unwrap()].world_aabb();
+        let table = after.objects[after.find("Table_Coffee").unwrap()].world_aabb();
+        assert!((books.min.y - table.max.y).abs() < 1e-6, "{text}");
+    }
+}
