@@ -33,13 +33,18 @@ fn settings(
     }
 }
 
-fn app(save: Option<std::path::PathBuf>) -> Arc<App> {
-    let scene = shenlong::examples::build("workshop").unwrap();
-    let file = shenlong::format::SceneFile {
+/// A scene as a file read from nowhere (no document to write back into).
+fn file_of(scene: shenlong::scene::Scene) -> shenlong::format::SceneFile {
+    shenlong::format::SceneFile {
         scene,
         document: shenlong::format::Document::None,
         path: None,
-    };
+    }
+}
+
+fn app(save: Option<std::path::PathBuf>) -> Arc<App> {
+    let scene = shenlong::examples::build("workshop").unwrap();
+    let file = file_of(scene);
     App::new(file, settings(None, true, save))
 }
 
@@ -245,11 +250,7 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
         mock_llm::Reply::Content("{\"X1\": \"T(1 * e1)\"}".into()),
     ]);
     let scene = shenlong::examples::build("workshop").unwrap();
-    let file = shenlong::format::SceneFile {
-        scene,
-        document: shenlong::format::Document::None,
-        path: None,
-    };
+    let file = file_of(scene);
     // The server is started with the model; a request may choose it (or "offline").
     let app = App::new(
         file,
@@ -595,11 +596,7 @@ fn the_history_keeps_within_its_byte_budget() {
             .unwrap(),
         );
     }
-    let file = shenlong::format::SceneFile {
-        scene,
-        document: shenlong::format::Document::None,
-        path: None,
-    };
+    let file = file_of(scene);
     let mut session = Session::new(file, None);
     let one_step = 2 * 2_000 * (std::mem::size_of::<shenlong::scene::Object>() + 8);
     session.set_history_budget(3 * one_step + one_step / 2);
@@ -655,11 +652,7 @@ fn serve_over_loopback_within(
 
 /// The workshop, as a scene file with no document.
 fn workshop_file() -> shenlong::format::SceneFile {
-    shenlong::format::SceneFile {
-        scene: shenlong::examples::build("workshop").unwrap(),
-        document: shenlong::format::Document::None,
-        path: None,
-    }
+    file_of(shenlong::examples::build("workshop").unwrap())
 }
 
 /// A GET over loopback: the status, or the transport error (the server stopped).
@@ -761,11 +754,7 @@ async fn a_refusal_among_thousands_answers_a_few_choices_and_the_total() {
             .unwrap(),
         );
     }
-    let file = shenlong::format::SceneFile {
-        scene,
-        document: shenlong::format::Document::None,
-        path: None,
-    };
+    let file = file_of(scene);
     let app = App::new(file, settings(None, true, None));
     let body = json!({"instruction": "move the chair 1 m left"}).to_string();
     let (status, answer, bytes) = call(&app, "POST", "/api/edit", Some(&body)).await;

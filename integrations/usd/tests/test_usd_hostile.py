@@ -22,11 +22,7 @@ except ImportError:  # pragma: no cover - reported by the runner
     raise unittest.SkipTest("usd-core is not installed (pip install usd-core)")
 
 
-def binary() -> str:
-    path = os.environ.get("SHENLONG_BIN")
-    if not path:
-        raise unittest.SkipTest("SHENLONG_BIN is not set to the shenlong binary")
-    return os.path.abspath(path)
+from test_usd_e2e import binary  # the one way these tests find the shenlong binary
 
 
 def run(*args: str) -> tuple[subprocess.CompletedProcess, float]:

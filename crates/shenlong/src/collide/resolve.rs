@@ -461,20 +461,23 @@ const MAX_RIGID: usize = 16;
 /// before (a table and the chairs drawn up to it, moved by "table 4 and its chairs") are
 /// placed as one, so that clearing an obstacle keeps them together. Large group edits of
 /// one motion (every chair of a hall) stay apart: a join is at most [`MAX_RIGID`] objects,
-/// and groups are compared only within one motion of at most 64 groups.
+/// and groups are compared only within one motion (to a micrometre) of at most 64 groups,
+/// found by one pass over the groups.
 fn rigid(groups: Vec<Vec<usize>>, before: &[Aabb], after: &[Aabb]) -> Vec<Vec<usize>> {
     const NEAR: f64 = 0.5;
-    let motion = |g: &[usize]| {
+    const MAX_COMPARED: usize = 64;
+    // The groups of each motion: its translation in micrometres.
+    let mut by_motion: std::collections::HashMap<[i64; 3], Vec<usize>> =
+        std::collections::HashMap::new();
+    for (k, g) in groups.iter().enumerate() {
         let r = g[0];
-        let same_size = (after[r].size() - before[r].size()).length() < 1e-9;
-        same_size.then(|| after[r].center() - before[r].center())
-    };
-    let gap = |a: &Aabb, b: &Aabb| {
-        let dx = (b.min.x - a.max.x).max(a.min.x - b.max.x).max(0.0);
-        let dz = (b.min.z - a.max.z).max(a.min.z - b.max.z).max(0.0);
-        dx.hypot(dz)
-    };
-    let motions: Vec<Option<glam::DVec3>> = groups.iter().map(|g| motion(g)).collect();
+        let m = after[r].center() - before[r].center();
+        let unturned = (after[r].size() - before[r].size()).length() < 1e-9;
+        if unturned && m.length() >= 1e-9 {
+            let key = (m * 1e6).round().to_array().map(|x| x as i64);
+            by_motion.entry(key).or_default().push(k);
+        }
+    }
     let mut parent: Vec<usize> = (0..groups.len()).collect();
     let find = |parent: &mut Vec<usize>, mut i: usize| {
         while parent[i] != i {
@@ -484,26 +487,17 @@ fn rigid(groups: Vec<Vec<usize>>, before: &[Aabb], after: &[Aabb]) -> Vec<Vec<us
         i
     };
     let mut size: Vec<usize> = groups.iter().map(Vec::len).collect();
-    for a in 0..groups.len() {
-        let Some(ma) = motions[a] else { continue };
-        if ma.length() < 1e-9 {
-            continue;
-        }
-        let same: Vec<usize> = (a + 1..groups.len())
-            .filter(|&b| motions[b].is_some_and(|mb| (mb - ma).length() < 1e-6))
-            .take(65)
-            .collect();
-        if same.len() > 64 {
-            continue;
-        }
-        for b in same {
-            if gap(&before[groups[a][0]], &before[groups[b][0]]) > NEAR {
-                continue;
-            }
-            let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
-            if ra != rb && size[ra] + size[rb] <= MAX_RIGID {
-                parent[rb] = ra;
-                size[ra] += size[rb];
+    for same in by_motion.values().filter(|s| s.len() <= MAX_COMPARED) {
+        for (n, &a) in same.iter().enumerate() {
+            for &b in &same[n + 1..] {
+                if before[groups[a][0]].floor_gap(&before[groups[b][0]]) > NEAR {
+                    continue;
+                }
+                let (ra, rb) = (find(&mut parent, a), find(&mut parent, b));
+                if ra != rb && size[ra] + size[rb] <= MAX_RIGID {
+                    parent[rb] = ra;
+                    size[ra] += size[rb];
+                }
             }
         }
     }

@@ -4,6 +4,7 @@
 //! than to anything else, within [`DRAWN_UP_METRES`] of its footprint).
 
 use super::{GroundError, Np, Reader, Reason, ReasonKind};
+use crate::geometry::Aabb;
 use crate::scene::Scene;
 
 /// How far a chair may stand from its table's footprint and still be drawn up to it.
@@ -48,10 +49,11 @@ impl Reader<'_> {
             .copied()
             .filter(|o| !np.objects.contains(o))
             .collect();
+        let boxes = self.scene.world_aabbs();
         let mut found: Vec<usize> = kind
             .iter()
             .copied()
-            .filter(|&d| belongs_to(self.scene, d, &np.objects, &kind))
+            .filter(|&d| belongs_to(self.scene, &boxes, d, &np.objects, &kind))
             .collect();
         found.sort_unstable();
         found.dedup();
@@ -82,25 +84,17 @@ impl Reader<'_> {
 /// Whether object `d` belongs to one of `owners`: it rests on one, or stands drawn up to
 /// one — the nearest object standing up (taller than 5 cm: not a rug) that is not of its
 /// own kind (`kind`) is an owner, within [`DRAWN_UP_METRES`] of its footprint.
-fn belongs_to(scene: &Scene, d: usize, owners: &[usize], kind: &[usize]) -> bool {
+fn belongs_to(scene: &Scene, boxes: &[Aabb], d: usize, owners: &[usize], kind: &[usize]) -> bool {
     if scene.objects[d]
         .support
         .is_some_and(|s| owners.contains(&s))
     {
         return true;
     }
-    let b = scene.objects[d].world_aabb();
-    let gap = |o: usize| {
-        let c = scene.objects[o].world_aabb();
-        let dx = (c.min.x - b.max.x).max(b.min.x - c.max.x).max(0.0);
-        let dz = (c.min.z - b.max.z).max(b.min.z - c.max.z).max(0.0);
-        dx.hypot(dz)
-    };
     // (A rug under it is not what it is drawn up to: only objects that stand up count.)
     let nearest = (0..scene.objects.len())
-        .filter(|&o| o != d && !kind.contains(&o))
-        .filter(|&o| scene.objects[o].world_aabb().size().y > 0.05)
-        .map(|o| (gap(o), o))
+        .filter(|&o| o != d && !kind.contains(&o) && boxes[o].size().y > 0.05)
+        .map(|o| (boxes[d].floor_gap(&boxes[o]), o))
         .min_by(|a, b| a.0.total_cmp(&b.0));
     nearest.is_some_and(|(g, o)| g <= DRAWN_UP_METRES && owners.contains(&o))
 }

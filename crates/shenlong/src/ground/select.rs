@@ -234,13 +234,6 @@ pub(crate) enum Direction {
     From(DVec3),
 }
 
-/// Horizontal gap between two boxes' footprints (0 when they overlap).
-fn footprint_gap(a: &Aabb, b: &Aabb) -> f64 {
-    let dx = (a.min.x - b.max.x).max(b.min.x - a.max.x).max(0.0);
-    let dz = (a.min.z - b.max.z).max(b.min.z - a.max.z).max(0.0);
-    (dx * dx + dz * dz).sqrt()
-}
-
 /// Gap between two boxes in 3D (0 when they touch or overlap).
 fn gap(a: &Aabb, b: &Aabb) -> f64 {
     let d = (a.min - b.max).max(b.min - a.max).max(DVec3::ZERO);
@@ -316,7 +309,7 @@ fn inside(a: &Aabb, b: &Aabb) -> bool {
 /// Whether `upper` rests on `lower`: its support, or its bottom on the other's top over it.
 fn rests_on(scene: &Scene, (upper, ub): (usize, &Aabb), (lower, lb): (usize, &Aabb)) -> bool {
     scene.objects[upper].support == Some(lower)
-        || ((ub.min.y - lb.max.y).abs() < 0.05 && footprint_gap(ub, lb) <= 0.0)
+        || ((ub.min.y - lb.max.y).abs() < 0.05 && ub.floor_gap(lb) <= 0.0)
 }
 
 /// How well a candidate stands in `relation` to a target (smaller is better), or `None`
@@ -332,11 +325,11 @@ fn relation_key(
         Relation::Carries => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
         Relation::Inside => inside(cb, tb).then_some(0.0)?,
         Relation::From => (rests_on(scene, (c, cb), (t, tb)) || inside(cb, tb)).then_some(0.0)?,
-        Relation::Under => (footprint_gap(cb, tb) <= 0.0
+        Relation::Under => (cb.floor_gap(tb) <= 0.0
             && cb.center().y < tb.center().y
             && scene.objects[c].support != Some(t))
         .then_some(0.0)?,
-        Relation::Above => (cb.min.y >= tb.max.y - 0.05).then(|| footprint_gap(cb, tb))?,
+        Relation::Above => (cb.min.y >= tb.max.y - 0.05).then(|| cb.floor_gap(tb))?,
         Relation::Near => Some(gap(cb, tb)).filter(|g| *g <= NEAR_LIMIT)?,
         Relation::Nearest => gap(cb, tb),
         Relation::Farthest => -(cb.center() - tb.center()).length(),
@@ -531,12 +524,11 @@ pub(crate) fn lines(scene: &Scene, objects: &[usize], columns: bool) -> Option<V
     (out.len() >= 2).then_some(out)
 }
 
-/// A name without its instance number: `exam desk` for `Exam Desk 05`, `chair` for
-/// `Chair_02` (lower case).
+/// A name without its instance number, as names are compared: `exam desk` for `Exam Desk
+/// 05`, `stool bar` for `Stool_Bar.002`.
 fn family(name: &str) -> String {
-    name.to_lowercase()
-        .trim_end_matches(|c: char| c.is_ascii_digit() || " _.-#()".contains(c))
-        .to_string()
+    let normalized = super::words::normalize(name);
+    super::words::split_number(&normalized).0.to_string()
 }
 
 /// The objects of one line ([`lines`]); `None` when they stand in no such lines or there

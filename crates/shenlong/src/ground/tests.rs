@@ -184,47 +184,17 @@ fn names_typed_as_they_are_and_kinds_the_scene_lacks() {
 /// An exam hall: three rows of four numbered desks, each with a stool behind it, and a
 /// teacher's desk standing apart at the back.
 fn exam_hall() -> Scene {
-    use glam::{DQuat, DVec3};
     let mut s = Scene::new("exam hall");
     let mut k = 1;
     for row in 0..3 {
         for col in 0..4 {
             let (x, z) = (-3.0 + 2.0 * f64::from(col), -2.0 + 2.0 * f64::from(row));
-            let desk = DVec3::new(1.2, 0.75, 0.6);
-            let stool = DVec3::new(0.4, 0.45, 0.4);
-            s.objects.push(
-                crate::scene::Object::new_box(
-                    format!("Exam Desk {k:02}"),
-                    desk,
-                    DVec3::new(x, 0.0, z),
-                    DQuat::IDENTITY,
-                    1.0,
-                )
-                .unwrap(),
-            );
-            s.objects.push(
-                crate::scene::Object::new_box(
-                    format!("Stool {k}"),
-                    stool,
-                    DVec3::new(x, 0.0, z + 0.6),
-                    DQuat::IDENTITY,
-                    1.0,
-                )
-                .unwrap(),
-            );
+            s.push_box(&format!("Exam Desk {k:02}"), [1.2, 0.75, 0.6], [x, 0.0, z]);
+            s.push_box(&format!("Stool {k}"), [0.4, 0.45, 0.4], [x, 0.0, z + 0.6]);
             k += 1;
         }
     }
-    s.objects.push(
-        crate::scene::Object::new_box(
-            "Invigilator Desk",
-            DVec3::new(1.6, 0.75, 0.8),
-            DVec3::new(0.0, 0.0, -4.0),
-            DQuat::IDENTITY,
-            1.0,
-        )
-        .unwrap(),
-    );
+    s.push_box("Invigilator Desk", [1.6, 0.75, 0.8], [0.0, 0.0, -4.0]);
     s
 }
 

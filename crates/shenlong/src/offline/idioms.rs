@@ -421,68 +421,69 @@ fn where_to_be(c: &Clause, i: usize) -> bool {
     one_of(c, k, &DIRECTIONS)
 }
 
-/// `X1 needs to go …`, `X1 should be moved …`, `X1 has to move …`: the words after the
-/// objects that say they are to move, read; the clause is then a move of the objects.
-fn needs_to_go(c: &mut Clause) {
-    let modal = [
-        "needs", "need", "has", "have", "should", "must", "ought", "wants", "want", "can", "could",
+/// The modal verbs of an obligation, a wish or a question ("needs to go", "could X1 go").
+const MODALS: [&str; 11] = [
+    "needs", "need", "has", "have", "should", "must", "ought", "wants", "want", "can", "could",
+];
+
+/// The words at `k` that say the objects are to move — `go`, `move`, `sit`, `stand`, `be
+/// moved` (`shifted`, `pushed` …) — and the token after them.
+fn to_move_at(c: &Clause, k: usize) -> Option<usize> {
+    const MOVED: [&str; 7] = [
+        "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
     ];
+    if one_of(c, k, &["go", "move", "sit", "stand"]) {
+        Some(k + 1)
+    } else if c.words_at(k, &["be"]) && one_of(c, k + 1, &MOVED) {
+        Some(k + 2)
+    } else {
+        None
+    }
+}
+
+/// `X1 needs to go …`, `X1 should be moved …`, `X1 has to move …`, `X1 should be 1 m to
+/// the left`: the words after the objects that say they are to move, read; the clause is
+/// then a move of the objects. Else a question with the objects inside ([`could_it_go`]).
+fn needs_to_go(c: &mut Clause) {
     for i in 1..c.len() {
         let after_objects = matches!(c.token(i - 1), Some(super::words::Token::Variable(_)));
-        if !after_objects || !one_of(c, i, &modal) {
+        if !after_objects || !one_of(c, i, &MODALS) {
             continue;
         }
         let mut k = i + 1;
         if c.words_at(k, &["to"]) {
             k += 1;
         }
-        let moved = [
-            "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
-        ];
-        let end = if one_of(c, k, &["go", "move", "sit", "stand"]) {
-            k + 1
-        } else if c.words_at(k, &["be"]) && one_of(c, k + 1, &moved) {
-            k + 2
-        } else if c.words_at(k, &["be"]) && where_to_be(c, k + 1) {
-            // "X1 should be 1 m to the left", "X1 needs to be on X2": where it is to be.
-            k + 1
-        } else {
-            continue;
-        };
-        c.mark(i..end);
-        return;
+        // "X1 should be 1 m to the left", "X1 needs to be on X2": where it is to be.
+        let to_be = || (c.words_at(k, &["be"]) && where_to_be(c, k + 1)).then_some(k + 1);
+        if let Some(end) = to_move_at(c, k).or_else(to_be) {
+            c.mark(i..end);
+            return;
+        }
     }
-    // A question with the objects inside: "could X1 go …", "can X1 be moved …" (its
-    // modal typed as people type it: "coudl", "cna").
+    could_it_go(c);
+}
+
+/// A question with the objects inside: "could X1 go …", "can X1 be moved …" (its modal
+/// typed as people type it: "coudl", "cna").
+fn could_it_go(c: &mut Clause) {
     let modal_first = c.free(0)
         && c.word(0)
-            .is_some_and(|w| modal.contains(&crate::discourse::canonical(w)));
-    if modal_first {
-        let mut k = 1;
-        while matches!(c.token(k), Some(super::words::Token::Variable(_)))
-            || c.words_at(k, &["and"])
-                && matches!(c.token(k + 1), Some(super::words::Token::Variable(_)))
-        {
-            k += 1;
-        }
-        if k == 1 {
-            return;
-        }
-        let end = if one_of(c, k, &["go", "move", "sit", "stand"]) {
-            k + 1
-        } else if c.words_at(k, &["be"])
-            && one_of(
-                c,
-                k + 1,
-                &[
-                    "moved", "shifted", "pushed", "placed", "put", "slid", "nudged",
-                ],
-            )
-        {
-            k + 2
-        } else {
-            return;
-        };
+            .is_some_and(|w| MODALS.contains(&crate::discourse::canonical(w)));
+    if !modal_first {
+        return;
+    }
+    let mut k = 1;
+    while matches!(c.token(k), Some(super::words::Token::Variable(_)))
+        || c.words_at(k, &["and"])
+            && matches!(c.token(k + 1), Some(super::words::Token::Variable(_)))
+    {
+        k += 1;
+    }
+    if k == 1 {
+        return;
+    }
+    if let Some(end) = to_move_at(c, k) {
         c.mark(0..1);
         c.mark(k..end);
     }

@@ -246,9 +246,7 @@ impl<'s> Known<'s> {
                 if footprint(&b) * 1.5 > footprint(&a) {
                     return false;
                 }
-                let dx = (b.min.x - a.max.x).max(a.min.x - b.max.x).max(0.0);
-                let dz = (b.min.z - a.max.z).max(a.min.z - b.max.z).max(0.0);
-                dx.hypot(dz) <= 0.5
+                a.floor_gap(&b) <= 0.5
             })
         })
     }

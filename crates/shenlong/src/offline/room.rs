@@ -55,6 +55,27 @@ fn nearer_wall(s: usize, e: usize) -> Expr {
     )
 }
 
+/// `along(0)` where subject `s` is nearer an x wall than a z wall, else `along(2)`: what
+/// to do at the nearest of the four walls (compared by the distances to the nearer wall of
+/// each axis).
+fn at_nearest_wall(s: usize, along: impl Fn(usize) -> Expr) -> Expr {
+    let distance = |e: usize| {
+        let half = dot(sub(room("max"), room("min")), axis(e));
+        sub(
+            div(half, num(2.0)),
+            call(
+                "abs",
+                vec![dot(sub(var(s, "center"), room("center")), axis(e))],
+            ),
+        )
+    };
+    let x_nearer = step(sub(distance(2), distance(0)));
+    add(
+        mul(x_nearer.clone(), along(0)),
+        mul(sub(num(1.0), x_nearer), along(2)),
+    )
+}
+
 /// "away from the wall": `amount` metres straight out from a wall — the one named
 /// (`wall`: its axis and side), else the nearest of the four.
 pub(crate) fn away_from_wall(s: usize, wall: Option<(usize, f64)>, amount: f64) -> Expr {
@@ -65,23 +86,7 @@ pub(crate) fn away_from_wall(s: usize, wall: Option<(usize, f64)>, amount: f64) 
     };
     match wall {
         Some((e, sign)) => scaled_axis(num(-sign * amount), e),
-        None => {
-            let distance = |e: usize| {
-                let half = dot(sub(room("max"), room("min")), axis(e));
-                sub(
-                    div(half, num(2.0)),
-                    call(
-                        "abs",
-                        vec![dot(sub(var(s, "center"), room("center")), axis(e))],
-                    ),
-                )
-            };
-            let x_nearer = step(sub(distance(2), distance(0)));
-            add(
-                mul(x_nearer.clone(), out(0)),
-                mul(sub(num(1.0), x_nearer), out(2)),
-            )
-        }
+        None => at_nearest_wall(s, out),
     }
 }
 
@@ -117,25 +122,7 @@ pub(crate) fn place(p: Place, s: usize) -> Expr {
             add(x, z)
         }
         Place::Wall(Some((e, sign))) => to_wall(s, e, sign),
-        Place::Wall(None) => {
-            // The nearest of the four walls: compare the distances to the nearer x wall and
-            // the nearer z wall.
-            let distance = |e: usize| {
-                let half = dot(sub(room("max"), room("min")), axis(e));
-                sub(
-                    div(half, num(2.0)),
-                    call(
-                        "abs",
-                        vec![dot(sub(var(s, "center"), room("center")), axis(e))],
-                    ),
-                )
-            };
-            let x_nearer = step(sub(distance(2), distance(0)));
-            add(
-                mul(x_nearer.clone(), nearer_wall(s, 0)),
-                mul(sub(num(1.0), x_nearer), nearer_wall(s, 2)),
-            )
-        }
+        Place::Wall(None) => at_nearest_wall(s, |e| nearer_wall(s, e)),
     }
 }
 
