@@ -251,3 +251,18 @@ fn a_compressed_package_is_refused_before_anything_inflates() {
     std::fs::write(&bomb, zip).unwrap();
     refused(&bomb, "compressed");
 }
+
+#[test]
+fn a_huge_self_contained_layer_is_read_within_the_childs_budget() {
+    // Two million empty prims: a layer Shenlong reads itself, whose tree grows to
+    // gigabytes. It is read in the reading child, so its time budget (4 s here) ends it
+    // and this process answers in one line.
+    let dir = tempfile::tempdir().unwrap();
+    let mut text = format!("{HEADER}def Xform \"World\"\n{{\n");
+    for k in 0..2_000_000 {
+        text.push_str(&format!("def Xform \"P{k}\" {{}}\n"));
+    }
+    text.push_str("def Cube \"A\" {}\n}\n");
+    let file = write(dir.path(), "huge.usda", &text);
+    refused(&file, "took more than 4 s");
+}

@@ -2,8 +2,8 @@
 //! transforms Shenlong edits, everything else kept exactly.
 //!
 //! - **Reading**: a `.usda` that needs no composition is read by Shenlong's own layer
-//!   reader ([`layer`]) in this process; any other stage is composed by the `openusd` crate
-//!   in a child process ([`sandbox`]). Both are walked alike ([`walk`], [`xform`]).
+//!   reader ([`layer`]); any other stage is composed by the `openusd` crate. Either runs in
+//!   the reading child process, within its time and memory budget ([`sandbox`]). Both are walked alike ([`walk`], [`xform`]).
 //! - **Objects** are the prims of kind `component` where the stage uses model kinds; else
 //!   the prims directly under the default prim (or under the root when none is set) — each
 //!   one that has geometry below it.
@@ -486,14 +486,17 @@ pub fn read(
     if container == UsdContainer::Usdz {
         check_package(path)?;
     }
-    let walked = match own_walk(path, container, options)? {
-        Some(walked) => walked,
-        None => {
-            let budget = sandbox::Budget::for_bytes(size);
-            let bytes = sandbox::run(budget, || walk(path, options).map(|w| w.encode()))?;
-            wire::Walked::decode(&bytes)?
-        }
-    };
+    // Either reader runs in the reading child, within its time and memory budget: a few
+    // megabytes of prims make gigabytes of tree, which must not be this process's.
+    let budget = sandbox::Budget::for_bytes(size);
+    let bytes = sandbox::run(budget, || {
+        let walked = match own_walk(path, container, options)? {
+            Some(walked) => walked,
+            None => walk(path, options)?,
+        };
+        Ok(walked.encode())
+    })?;
+    let walked = wire::Walked::decode(&bytes)?;
     let frame = walked.frame.in_units(options.units);
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("stage");
     let front = match frame.up {

@@ -1,11 +1,12 @@
 //! Shenlong's own reader of a self-contained `.usda` layer: the layer's prims, their
 //! types, kinds, activity and the attributes the walk needs ([`super::xform::wanted`]),
-//! read in one pass over its tokens ([`super::lex`]), in this process.
+//! read in one pass over its tokens ([`super::lex`]).
 //!
 //! It reads only layers that need no composition: one layer of `def`s, with no
 //! sublayers, references, payloads, inherits, specializes, variants, `over`s or
 //! `class`es. For those, a stage is exactly its layer, and reading it costs about what
-//! lexing its text costs (no composition engine, no child process). Anything else — and
+//! lexing its text costs (no composition engine). It runs in the reading child process as
+//! the composing reader does ([`super::sandbox`]): its memory grows with the prims. Anything else — and
 //! anything this reader does not know — it leaves to the composing reader
 //! ([`Parsed::Compose`]), which reads it as before. Nothing here recurses: prims and
 //! values nest on explicit stacks, bounded in depth.
