@@ -1,5 +1,5 @@
-//! The five placements of issue 25, each on a scene authored here with the same
-//! arrangement as the report (and names other than the dev suites' scenes), through the
+//! The five placements of issue 25 and the wrong edits of issue 41 (family 9), each on a
+//! scene authored here with the same arrangement as the report (and names other than the dev suites' scenes), through the
 //! whole pipeline (offline translator, collision resolution). Each test asserts where the
 //! object ends up — its level, its footprint, its gap and what it overlaps — never a
 //! string.
@@ -224,4 +224,62 @@ fn on_a_dresser_next_to_a_lamp_is_one_destination() {
         "mug {g:.2} m from the lamp, {to_box:.2} m from the box"
     );
     overlaps_nothing(&s, "mug");
+}
+
+/// The living room of issue 41's family 9: two side tables with names that end in their
+/// side, a lamp on the left one; a bench with a coffee machine flush with its left end.
+const SIDE_TABLES: &str = r#"{
+  "name": "lounge",
+  "bounds": {"min": [-3.5, 0, -3], "max": [3.5, 3, 3]},
+  "objects": [
+    {"name": "Sofa", "position": [0, 0, -2.0], "size": [2.0, 0.85, 0.9]},
+    {"name": "Side Table Left", "position": [-1.4, 0, -2.0], "size": [0.5, 0.55, 0.5]},
+    {"name": "Side Table Right", "position": [1.4, 0, -2.0], "size": [0.5, 0.55, 0.5]},
+    {"name": "Lamp", "position": [-1.4, 0.55, -2.0], "size": [0.3, 0.5, 0.3], "on": "Side Table Left"},
+    {"name": "Coffee Table", "position": [1.5, 0, 0.3], "size": [1.0, 0.45, 0.6]},
+    {"name": "Bench", "position": [-2.0, 0, 1.5], "size": [1.6, 0.9, 0.6]},
+    {"name": "Coffee Machine", "position": [-2.625, 0.9, 1.5], "size": [0.35, 0.4, 0.35], "on": "Bench"},
+    {"name": "Cup", "position": [1.1, 0.45, 0.5], "size": [0.09, 0.1, 0.09], "on": "Coffee Table"}
+  ]
+}"#;
+
+#[test]
+fn a_lamp_sent_to_the_other_side_table_stands_on_it() {
+    for instruction in [
+        "move the lamp to the other side table",
+        "move the lamp to the right side table",
+        "put the lamp on the side table on the right",
+    ] {
+        let mut s = scene(SIDE_TABLES);
+        run(&mut s, instruction);
+        rests_on(&s, "Lamp", "Side Table Right");
+        overlaps_nothing(&s, "Lamp");
+        // The coffee table (further right than either side table) is not "the side
+        // table on the right".
+        assert_eq!(
+            aabb(&s, "Coffee Table"),
+            aabb(&scene(SIDE_TABLES), "Coffee Table")
+        );
+    }
+}
+
+#[test]
+fn a_cup_beside_a_machine_on_a_bench_stays_on_the_bench_or_is_refused() {
+    // Behind the machine there is room on the bench only closer than the usual gap.
+    let mut s = scene(SIDE_TABLES);
+    run(&mut s, "put the cup behind the coffee machine");
+    rests_on(&s, "Cup", "Bench");
+    assert!(aabb(&s, "Cup").max.z <= aabb(&s, "Coffee Machine").min.z + 1e-9);
+    overlaps_nothing(&s, "Cup");
+    // To its left is over the bench's end: refused, the scene as it was.
+    let mut s = scene(SIDE_TABLES);
+    let translator = OfflineTranslator::new();
+    let refused = edit(
+        &mut s,
+        "put the cup to the left of the coffee machine",
+        &translator,
+        &EditOptions::default(),
+    );
+    assert!(refused.is_err(), "the cup was put over the bench's edge");
+    assert_eq!(aabb(&s, "Cup"), aabb(&scene(SIDE_TABLES), "Cup"));
 }

@@ -46,6 +46,9 @@ struct PoseFields {
     rotation: Option<Range<usize>>,
     /// The value of `scale`, if the field is there.
     scale: Option<Range<usize>>,
+    /// The value of `on`, if the field is there, and the support it names (`None` for
+    /// `null`): rewritten when an edit leaves the object resting elsewhere.
+    on: Option<(Range<usize>, Option<usize>)>,
     /// The pose as the file has it.
     read: Similarity,
 }
@@ -257,6 +260,11 @@ fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), Fo
         }
     }
     resolve_on_fields(text, &on_fields, &mut scene, &by_name)?;
+    for &(i, _) in &on_fields {
+        if let Some((_, support)) = &mut fields[i].on {
+            *support = scene.objects[i].support;
+        }
+    }
     scene.detect_supports();
     Ok((scene, fields))
 }
@@ -466,6 +474,7 @@ fn object_from_raw<'a>(
         position: span(text, position_raw),
         rotation: o.rotation.map(|r| span(text, r)),
         scale: o.scale.map(|r| span(text, r)),
+        on: o.on.map(|r| (span(text, r), None)),
         read: Similarity {
             translation: position,
             rotation,
@@ -634,6 +643,17 @@ fn patched(scene: &Scene, document: &JsonDocument) -> String {
             )),
             _ => {}
         }
+        // An object the file put `on` a support and that rests elsewhere now (a lamp moved
+        // from its table to the floor) names its new support, or `null`: a stale name
+        // would carry it with the old table when the file is read again.
+        if let Some((range, read)) = &fields.on {
+            if object.support != *read {
+                let now = object.support.map_or(Value::Null, |s| {
+                    Value::String(scene.objects[s].name.clone())
+                });
+                edits.push((range.clone(), 0, now.to_string()));
+            }
+        }
     }
     edits.sort_by_key(|(range, order, _)| (range.start, *order));
     let text = &document.text;
@@ -797,6 +817,40 @@ mod tests {
             .filter(|(a, b)| a != b)
             .collect();
         assert_eq!(changed.len(), 2, "{changed:?}");
+    }
+
+    #[test]
+    fn an_on_field_names_where_the_object_rests_after_the_edit() {
+        let text = r#"{"objects": [
+  {"name": "Table", "size": [1, 0.8, 1], "position": [0, 0, 0]},
+  {"name": "Lamp", "size": [0.2, 0.4, 0.2], "position": [0, 0.8, 0], "on": "Table"},
+  {"name": "Shelf", "size": [1, 1, 0.4], "position": [3, 0, 0]},
+  {"name": "Vase", "size": [0.1, 0.3, 0.1], "position": [0.3, 0.8, 0], "on": "Table"}
+]}"#;
+        let mut loaded = read(text, "x").unwrap();
+        // The lamp goes to the floor; the vase onto the shelf, as an edit re-detects them.
+        let down = Multivector::translator(DVec3::new(1.5, -0.8, 0.0));
+        loaded.scene.apply(1, &down, false).unwrap();
+        let over = Multivector::translator(DVec3::new(2.7, 0.2, 0.0));
+        loaded.scene.apply(3, &over, false).unwrap();
+        for i in [1, 3] {
+            loaded.scene.objects[i].support_from_file = false;
+        }
+        loaded.scene.detect_supports();
+        let written = write(&loaded.scene, Some(&loaded.document));
+        let v: Value = serde_json::from_str(&written).unwrap();
+        assert_eq!(v["objects"][1]["on"], Value::Null);
+        assert_eq!(v["objects"][3]["on"], "Shelf");
+        // Read again, the table carries neither.
+        let again = read(&written, "x").unwrap();
+        assert_eq!(again.scene.objects[1].support, None);
+        assert_eq!(again.scene.objects[3].support, Some(2));
+        // An object still on its support keeps its field as written.
+        let unchanged = write(
+            &read(text, "x").unwrap().scene,
+            Some(&read(text, "x").unwrap().document),
+        );
+        assert_eq!(unchanged, format!("{text}\n"));
     }
 
     #[test]

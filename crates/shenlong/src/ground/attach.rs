@@ -92,14 +92,23 @@ impl Reader<'_> {
                 _
             ))
         );
+        // "put the lamp on the side table on the right" with two side tables: "on the
+        // right" says which side table, not where the lamp goes; the clause goes on only
+        // after it.
+        let own_place_of_targets = |p: &Post, p_end: usize| match p {
+            Post::Relation(_, targets) if targets.len() > 1 => {
+                self.side_place_at(p_end).map_or(p_end, |(_, end)| end)
+            }
+            _ => p_end,
+        };
         // "the thing on the cupboard", "everything on the shelf": a generic noun says
         // nothing of which without its modifier, so the modifier is never a destination.
         let describes = !rest_of_destination
-            && post.as_ref().is_some_and(|(_, p_end)| {
+            && post.as_ref().is_some_and(|(p, p_end)| {
                 source
                     || head.generic
                     || super::hold::cue_before(&self.tokens, start)
-                    || self.clause_goes_on(*p_end)
+                    || self.clause_goes_on(own_place_of_targets(p, *p_end))
                     || self.verb_takes_no_place(start)
                     || destination
             });

@@ -7,7 +7,8 @@
 //! - Engine prefixes (`SM_`, `SK_`, `BP_`, `GEO_`, `Mesh_`, `obj_`, `Prop_`) and mesh
 //!   suffixes (`_geo`, `_mesh`, `_LOD0`) are dropped.
 //! - A trailing number (`.001`, `_01`, ` 2`) is an instance number.
-//! - A trailing `L` / `R` / `Left` / `Right` part (Blender's mirror convention) is a side.
+//! - A trailing `L` / `R` / `Left` / `Right` part (Blender's mirror convention) is a side,
+//!   as is a trailing side word of a name written with spaces (`Side Table Left`).
 //! - The head noun is found with the lexicon whichever side of an underscore it stands on:
 //!   `Vase_Ceramic` is a ceramic vase (the head first, as Blender and game engines order
 //!   `Category_Variant`), `TV_Stand` a TV stand (the words as written, a compound the
@@ -144,11 +145,20 @@ pub fn read(name: &str, lexicon: &Lexicon) -> Identifier {
 /// [`read`] by the name's parts.
 fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
     let mut parts = parts(name);
-    // A part of several words that ends in a number (`chair 2`, `FloorLamp01`): split it.
-    if let Some(last) = parts.last_mut() {
-        if last.len() > 1 && last.last().is_some_and(|w| is_number(w)) {
-            let n = last.pop().unwrap_or_default();
-            parts.push(vec![n]);
+    // A part of several words that ends in a number or a side (`chair 2`, `FloorLamp01`,
+    // `Side Table Left`, `Speaker L 2`): split them off, each its own part, in order.
+    if let Some(at) = parts.len().checked_sub(1) {
+        for _ in 0..2 {
+            let part = &mut parts[at];
+            let splits = part.len() > 1
+                && part
+                    .last()
+                    .is_some_and(|w| is_number(w) || side_of(w).is_some());
+            if !splits {
+                break;
+            }
+            let w = part.pop().unwrap_or_default();
+            parts.insert(at + 1, vec![w]);
         }
     }
     if parts.len() > 1 && single(&parts[0]).is_some_and(|w| PREFIXES.contains(&w)) {
@@ -285,6 +295,18 @@ mod tests {
         assert_eq!(r("Sofa_geo").base, "sofa");
         // A name that is only a side word keeps it.
         assert_eq!(r("Left").base, "left");
+        // Written with spaces, a trailing side is a side too, before or after a number.
+        for (name, number) in [("Side Table Left", None), ("Speaker L 2", Some(2))] {
+            let id = r(name);
+            assert_eq!(
+                (id.side, id.number),
+                (Some(NameSide::Left), number),
+                "{name}"
+            );
+        }
+        assert_eq!(r("Side Table Left").base, "side table");
+        assert_eq!(r("Speaker L 2").base, "speaker");
+        assert_eq!(r("Night Stand Right").side, Some(NameSide::Right));
     }
 
     #[test]

@@ -133,7 +133,7 @@ impl Reader<'_> {
     /// The floor, a side or the middle at token `j`, and where it ends: `on the floor`, `on
     /// the left`, `on the far right`, `on the left-hand side`, `on the right wall`, `at the
     /// front`, `in the middle`.
-    fn side_place_at(&self, j: usize) -> Option<(Post, usize)> {
+    pub(super) fn side_place_at(&self, j: usize) -> Option<(Post, usize)> {
         let w = |k: usize| self.word(k).unwrap_or("");
         if matches!(w(j), "on" | "at")
             && w(j + 1) == "the"

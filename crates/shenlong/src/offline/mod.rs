@@ -251,20 +251,31 @@ impl<'s> Known<'s> {
         })
     }
 
-    /// Whether variable `s` is a small thing that `to X2` puts on `t`'s top ("carry the
-    /// mug over to the coffee table"): its footprint fits on `t`'s, it has under a
-    /// twentieth of `t`'s volume, and `t`'s top is within reach (1.3 m). A chair "to the
-    /// table" is not small beside it and goes to its place on the floor.
+    /// Whether variable `s` is a thing that `to X2` puts on `t`'s top ("carry the mug over
+    /// to the coffee table", "move the lamp to the other side table"): its footprint fits
+    /// on `t`'s, `t`'s top is within reach (1.3 m), and it is either small beside `t`
+    /// (under a twentieth of its volume) or stands on a surface now — what rests on one
+    /// table and is sent to another goes onto it, not onto the floor beside it. A chair
+    /// "to the table" is neither and goes to its place on the floor.
     pub(crate) fn small_onto(&self, s: usize, t: usize) -> bool {
         let (Some(a), Some(b)) = (self.sizes.get(s), self.sizes.get(t)) else {
             return false;
         };
         let volume = |v: &[f64; 3]| v[0] * v[1] * v[2];
-        a[0] <= b[0]
-            && a[2] <= b[2]
-            && volume(a) * 20.0 < volume(b)
-            && b[1] <= 1.3
-            && !self.stays_on_floor(s)
+        let fits = a[0] <= b[0] && a[2] <= b[2] && b[1] <= 1.3 && !self.stays_on_floor(s);
+        fits && (volume(a) * 20.0 < volume(b) || self.on_a_surface_to_a_surface(s, t))
+    }
+
+    /// Whether variable `s` rests on another object's top now and `t` has a top to stand
+    /// on: `t` stands on the floor or on something (it does not hang on a wall).
+    fn on_a_surface_to_a_surface(&self, s: usize, t: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return false;
+        };
+        scene.objects[a].support.is_some_and(|on| on != b) && !scene.hangs(b)
     }
 }
 
@@ -466,25 +477,111 @@ impl Known<'_> {
         };
         order
             .into_iter()
-            .find_map(|(e, sign)| {
-                // The subject set GAP from that face and centred along it.
-                let mut offset = tc - mc;
-                offset.y = 0.0;
-                offset[e] = if sign > 0.0 {
-                    target.max[e] + GAP - me.min[e]
-                } else {
-                    target.min[e] - GAP - me.max[e]
-                };
-                me.translated(offset)
-                    .footprint_within(&top)
-                    .then_some(relations::Relation::Side(e, sign))
-            })
+            .find_map(|(e, sign)| Self::side_within(&me, &target, &top, e, sign))
             .ok_or_else(|| {
                 format!(
                     "'{}' does not fit next to '{}' on '{}': there is no room on any side of it; say where else it should go",
                     scene.objects[a].name, scene.objects[b].name, scene.objects[surface].name
                 )
             })
+    }
+}
+
+impl Known<'_> {
+    /// The gap from `target`'s face on axis `e` toward `sign` at which box `me`, centred
+    /// along that face, lies within `top`'s footprint: [`GAP`] where it fits so, else the
+    /// largest smaller gap (down to touching) that fits; `None` where it does not fit even
+    /// touching.
+    fn gap_beside(
+        me: &crate::geometry::Aabb,
+        target: &crate::geometry::Aabb,
+        top: &crate::geometry::Aabb,
+        e: usize,
+        sign: f64,
+    ) -> Option<f64> {
+        let at = |gap: f64| {
+            let mut offset = target.center() - me.center();
+            offset.y = 0.0;
+            offset[e] = if sign > 0.0 {
+                target.max[e] + gap - me.min[e]
+            } else {
+                target.min[e] - gap - me.max[e]
+            };
+            me.translated(offset).footprint_within(top)
+        };
+        if at(GAP) {
+            return Some(GAP);
+        }
+        let size = me.max[e] - me.min[e];
+        let room = if sign > 0.0 {
+            top.max[e] - target.max[e] - size
+        } else {
+            target.min[e] - top.min[e] - size
+        };
+        // A hair inside the edge, so that rounding never leaves it over it.
+        let gap = (room - 1e-6).min(GAP);
+        (gap >= 0.0 && at(gap)).then_some(gap)
+    }
+
+    /// The relation that sets `me` on the side of `target` on axis `e` toward `sign`
+    /// within `top`: [`relations::Relation::Side`], or [`relations::Relation::SideGap`]
+    /// closer than [`GAP`] where only that fits; `None` where it does not fit.
+    fn side_within(
+        me: &crate::geometry::Aabb,
+        target: &crate::geometry::Aabb,
+        top: &crate::geometry::Aabb,
+        e: usize,
+        sign: f64,
+    ) -> Option<relations::Relation> {
+        Self::gap_beside(me, target, top, e, sign).map(|gap| {
+            if gap >= GAP {
+                relations::Relation::Side(e, sign)
+            } else {
+                relations::Relation::SideGap(e, sign, gap)
+            }
+        })
+    }
+
+    /// For "to the left of `t`" (a side `e`, `sign`) where `t` rests on a surface and `s`
+    /// does not stay on the floor: the relation that keeps `s` on that surface's top —
+    /// nothing put on a surface overhangs it — or `Ok(None)` where `t` rests on nothing.
+    ///
+    /// # Errors
+    /// One line naming the three, when `s` does not fit on that side.
+    pub(crate) fn side_on_its_support(
+        &self,
+        s: usize,
+        t: usize,
+        e: usize,
+        sign: f64,
+    ) -> Result<Option<relations::Relation>, String> {
+        let Some((scene, objects)) = self.scene else {
+            return Ok(None);
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return Ok(None);
+        };
+        let Some(surface) = scene.objects[b].support else {
+            return Ok(None);
+        };
+        if surface == a || self.stays_on_floor(s) {
+            return Ok(None);
+        }
+        let (me, target, top) = (
+            scene.objects[a].world_aabb(),
+            scene.objects[b].world_aabb(),
+            scene.objects[surface].world_aabb(),
+        );
+        match Self::side_within(&me, &target, &top, e, sign) {
+            Some(relation) => Ok(Some(relation)),
+            None => Err(format!(
+                "'{}' does not fit {} '{}' on '{}': it would hang over the edge; say where else it should go",
+                scene.objects[a].name,
+                relations::side_name(e, sign),
+                scene.objects[b].name,
+                scene.objects[surface].name
+            )),
+        }
     }
 }
 

@@ -396,6 +396,7 @@ impl Reader<'_> {
                 Relation::NextTo
                 | Relation::NextToOn(_)
                 | Relation::Side(..)
+                | Relation::SideGap(..)
                 | Relation::Against
                 | Relation::AgainstAlong(..),
                 &[t, ..],
@@ -461,6 +462,17 @@ impl Reader<'_> {
                 }
                 None => relation,
             },
+            // "to the left of the machine" on a bench: only where it stays on the bench.
+            Relation::Side(e, sign) if as_is => match known.side_on_its_support(s, t, e, sign)? {
+                Some(side) => {
+                    let d = known.float_above_support(t);
+                    if d > 0.0 {
+                        level = Level::Under(d);
+                    }
+                    side
+                }
+                None => relation,
+            },
             Relation::NextToOn(y) if as_is && unmoved(y) => {
                 level = Level::Surface(y);
                 known.side_on_surface(s, t, y)?.unwrap_or(relation)
@@ -474,7 +486,11 @@ impl Reader<'_> {
         };
         let beside = matches!(
             relation,
-            Relation::NextTo | Relation::Side(..) | Relation::To | Relation::Between
+            Relation::NextTo
+                | Relation::Side(..)
+                | Relation::SideGap(..)
+                | Relation::To
+                | Relation::Between
         );
         if beside && as_is && known.grounded_beside(s, t) {
             level = Level::Floor;

@@ -43,6 +43,19 @@ pub(crate) fn boxed(k: usize, attribute: &str, steps: &Steps) -> Expr {
     }
 }
 
+/// How a person says the side of an object on axis `e` toward `sign`: `to the right of`,
+/// `to the left of`, `in front of`, `behind`, `above`, `below`.
+pub(crate) fn side_name(e: usize, sign: f64) -> &'static str {
+    match (e, sign > 0.0) {
+        (0, true) => "to the right of",
+        (0, false) => "to the left of",
+        (1, true) => "above",
+        (1, false) => "below",
+        (_, true) => "in front of",
+        (_, false) => "behind",
+    }
+}
+
 /// The relations a clause may name.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Relation {
@@ -52,6 +65,9 @@ pub(crate) enum Relation {
     Under,
     /// Against one side: (axis, sign).
     Side(usize, f64),
+    /// As [`Relation::Side`], the given gap (metres, under [`GAP`]) from the target's face:
+    /// what fits on the surface the target rests on only closer to it than [`GAP`].
+    SideGap(usize, f64, f64),
     /// Next to, beside, by, near: the side of the target nearest the object.
     NextTo,
     /// Next to the target on the surface it rests on (`on X2 next to X3`, the variable of
@@ -133,7 +149,8 @@ pub(crate) fn vector(
             centre(0),
             centre(2),
         ]),
-        Relation::Side(e, sign) => side(s, t, steps, e, sign, level),
+        Relation::Side(e, sign) => side(s, t, steps, e, sign, level, GAP),
+        Relation::SideGap(e, sign, gap) => side(s, t, steps, e, sign, level, gap),
         Relation::NextTo => next_to(s, t, steps, level, boxed(s, "center", steps), GAP),
         Relation::NextToOn(surface) => next_to(
             s,
@@ -188,10 +205,10 @@ pub(crate) fn vector(
 
 /// Against the face of target `t` on side (axis `e`, `sign`), [`GAP`] from it, centred on
 /// it across, standing on `level`.
-fn side(s: usize, t: usize, steps: &Steps, e: usize, sign: f64, level: Expr) -> Expr {
+fn side(s: usize, t: usize, steps: &Steps, e: usize, sign: f64, level: Expr, gap: f64) -> Expr {
     let b = |attribute: &str| boxed(t, attribute, steps);
     let a = |attribute: &str| boxed(s, attribute, steps);
-    let gap = num(GAP);
+    let gap = num(gap);
     let other = 2 - e;
     let along_axis = if sign > 0.0 {
         scaled_axis(
