@@ -20,6 +20,7 @@ pub mod format;
 pub mod geometry;
 pub mod ground;
 pub mod io;
+pub(crate) mod lex;
 pub mod llm;
 pub mod offline;
 pub mod pipeline;

@@ -224,3 +224,30 @@ fn bad_suites_fail_before_anything_runs() {
     assert!(err(&base.replace("\"name\": \"t\",", "")).contains("missing field `name`"));
     assert!(err("{").contains("invalid suite at line 1"));
 }
+
+#[test]
+fn a_query_runs_on_the_scenes_it_names_by_name_or_file_and_no_other_name_passes() {
+    let dir = tempfile::tempdir().unwrap();
+    std::fs::write(
+        dir.path().join("hall.json"),
+        r#"{"name": "exam hall", "objects": [{"name": "desk", "size": [1, 0.75, 0.6], "position": [0, 0, 0]}]}"#,
+    )
+    .unwrap();
+    let suite = |scenes: &str| {
+        let text = format!(
+            r#"{{"name": "t", "scenes": ["hall.json"], "queries": [{{"id": "q", "category": "simple", "text": "move the desk left", "scenes": [{scenes}], "expect": [{{"check": "moved", "object": "desk", "delta": [-1, 0, 0]}}]}}]}}"#
+        );
+        Suite::parse(&text, dir.path()).unwrap()
+    };
+    for named in [r#""exam hall""#, r#""hall.json""#] {
+        let s = suite(named);
+        let scenes = s.load_scenes().unwrap();
+        assert_eq!(instances(&s, &scenes).len(), 1, "{named}");
+    }
+    let s = suite(r#""hall""#);
+    let e = s.load_scenes().unwrap_err().message;
+    assert!(
+        e.contains("scenes names 'hall'") && e.contains("exam hall"),
+        "{e}"
+    );
+}

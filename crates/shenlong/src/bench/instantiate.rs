@@ -92,11 +92,11 @@ pub fn instantiate(
     scene: &Scene,
 ) -> Vec<Instance> {
     let query: &Query = &suite.queries[query_index];
-    if query
-        .scenes
-        .as_ref()
-        .is_some_and(|names| !names.iter().any(|n| n == &scene.name))
-    {
+    if query.scenes.as_ref().is_some_and(|names| {
+        !names
+            .iter()
+            .any(|n| suite.names_scene(n, scene_index, scene))
+    }) {
         return Vec::new();
     }
     let mut rng = SplitMix64::new(

@@ -123,7 +123,39 @@ impl Suite {
             };
             out.push(scene);
         }
+        self.check_query_scenes(&out)?;
         Ok(out)
+    }
+
+    /// Whether `name`, from a query's `scenes`, means scene `index` (read as `scene`): its
+    /// name, or the file name the suite lists it by (`boardroom.json`).
+    #[must_use]
+    pub fn names_scene(&self, name: &str, index: usize, scene: &crate::scene::Scene) -> bool {
+        name == scene.name
+            || matches!(self.scenes.get(index), Some(SceneSource::File(path))
+                if path.file_name().is_some_and(|f| f == name))
+    }
+
+    /// Every scene a query's `scenes` lists is one of the suite's: a query that runs
+    /// nowhere is a mistake in the suite, not a query to skip.
+    fn check_query_scenes(&self, scenes: &[crate::scene::Scene]) -> Result<(), SuiteError> {
+        for (i, q) in self.queries.iter().enumerate() {
+            for name in q.scenes.iter().flatten() {
+                let known = scenes
+                    .iter()
+                    .enumerate()
+                    .any(|(k, scene)| self.names_scene(name, k, scene));
+                if !known {
+                    let names: Vec<&str> = scenes.iter().map(|s| s.name.as_str()).collect();
+                    return Err(err(format!(
+                        "queries[{i}] ('{}'): scenes names '{name}', which is none of the suite's scenes (named {})",
+                        q.id,
+                        names.join(", ")
+                    )));
+                }
+            }
+        }
+        Ok(())
     }
 }
 

@@ -15,98 +15,103 @@ pub(crate) enum Token {
     Separator,
 }
 
-/// Splits a templated query into tokens: `1.5m` → 1.5, `m`; `3/4` → 0.75; `°` → degrees;
-/// `%` → percent; hyphenated words are split (`forward-left`) except known compounds
-/// (`counter-clockwise`).
+/// Splits a templated query into tokens, over the one tokenizer of instructions
+/// ([`crate::lex`], quotes read as marks): `1.5m` → 1.5, `m`; `3/4` → 0.75; `°` →
+/// degrees; `%` → percent; words joined by `_` are split, and hyphenated ones too
+/// (`forward-left`) except known compounds (`counter-clockwise`); `,` `;` `.` `!` `?` `:`
+/// separate; other marks are dropped.
 pub(crate) fn tokenize(query: &str) -> Vec<Token> {
-    let lower = query
-        .to_lowercase()
-        .replace('’', "'")
-        .replace('°', " degrees ")
-        .replace('%', " percent ")
-        .replace("counter-clockwise", "counterclockwise")
-        .replace("anti-clockwise", "anticlockwise")
-        .replace("counter clockwise", "counterclockwise")
-        .replace("anti clockwise", "anticlockwise");
-    let mut tokens = Vec::new();
-    let mut word = String::new();
-    let flush = |word: &mut String, tokens: &mut Vec<Token>| {
-        if word.is_empty() {
-            return;
-        }
-        let w = std::mem::take(word);
-        let w = w
-            .trim_matches(|c: char| c == '.' || c == '\'' || c == '-')
-            .to_string();
-        if w.is_empty() {
-            return;
-        }
-        if let Some(n) = w
-            .strip_prefix('x')
-            .and_then(|d| d.parse::<usize>().ok())
-            .filter(|n| *n >= 1)
-        {
-            tokens.push(Token::Variable(n - 1));
-        } else if let Some((a, b)) = w
-            .split_once('/')
-            .and_then(|(a, b)| Some((a.parse::<f64>().ok()?, b.parse::<f64>().ok()?)))
-            .filter(|(_, b)| *b != 0.0)
-        {
-            tokens.push(Token::Number(a / b));
-        } else if let Ok(n) = w.parse::<f64>() {
-            if n.is_finite() {
-                tokens.push(Token::Number(n));
-            }
-        } else if let Some((n, unit)) = split_number_unit(&w) {
-            tokens.push(Token::Number(n));
-            tokens.push(Token::Word(unit));
-        } else if w.contains('-') && !w.starts_with('-') {
-            for part in w.split('-').filter(|p| !p.is_empty()) {
-                // "20cm-ish": a number with its unit stays one.
-                match (part.parse::<f64>(), split_number_unit(part)) {
-                    (Ok(n), _) if n.is_finite() => tokens.push(Token::Number(n)),
-                    (_, Some((n, unit))) => {
-                        tokens.push(Token::Number(n));
-                        tokens.push(Token::Word(unit));
+    use crate::lex::{tokenize_with, Kind, Quotes};
+    let lexed = tokenize_with(query, Quotes::Marks);
+    let mut tokens = Vec::with_capacity(lexed.len());
+    let mut k = 0;
+    while k < lexed.len() {
+        match &lexed[k].kind {
+            Kind::Number(a) => match (lexed.get(k + 1), lexed.get(k + 2)) {
+                // "3/4", "1 / 2": a fraction.
+                (Some(slash), Some(b)) if slash.kind == Kind::Punct('/') => match b.kind {
+                    Kind::Number(b) if b != 0.0 => {
+                        tokens.push(Token::Number(a / b));
+                        k += 3;
+                        continue;
                     }
-                    _ => tokens.push(Token::Word(part.to_string())),
+                    _ => tokens.push(Token::Number(*a)),
+                },
+                _ => tokens.push(Token::Number(*a)),
+            },
+            Kind::Word(w) => {
+                let compound = |first: &str| {
+                    matches!(first, "counter" | "anti")
+                        && lexed.get(k + 1).and_then(crate::lex::Token::word) == Some("clockwise")
+                };
+                if compound(w) {
+                    tokens.push(Token::Word(format!("{w}clockwise")));
+                    k += 2;
+                    continue;
+                }
+                for part in w.split('_').filter(|p| !p.is_empty()) {
+                    word_tokens(part, &mut tokens);
                 }
             }
-        } else {
-            // A typo of a word the reader knows is read as that word ("degress",
-            // "foward"); real words never are.
-            let w = if let Some(fixed) = function_word_typo(&w) {
-                fixed.to_string()
-            } else if is_a_word(&w) {
-                w
-            } else {
-                correct(&w).map_or(w, str::to_string)
-            };
-            tokens.push(Token::Word(w));
+            Kind::Quoted(name) => word_tokens(name, &mut tokens),
+            Kind::Punct(',' | ';' | '.' | '!' | '?' | ':') => tokens.push(Token::Separator),
+            Kind::Punct('°') => tokens.push(Token::Word("degrees".into())),
+            Kind::Punct('%') => tokens.push(Token::Word("percent".into())),
+            Kind::Punct(_) => {}
         }
-    };
-    let chars: Vec<char> = lower.chars().collect();
-    for (i, &c) in chars.iter().enumerate() {
-        let joins_number =
-            c == '.' && !word.is_empty() && chars.get(i + 1).is_some_and(char::is_ascii_digit);
-        if c.is_alphanumeric()
-            || c == '/'
-            || c == '\''
-            || joins_number
-            || (c == '-'
-                && (!word.is_empty() || chars.get(i + 1).is_some_and(char::is_ascii_digit)))
-        {
-            word.push(c);
-        } else {
-            flush(&mut word, &mut tokens);
-            if matches!(c, ',' | ';' | '.' | '!' | '?' | ':') {
-                tokens.push(Token::Separator);
-            }
-        }
+        k += 1;
     }
-    flush(&mut word, &mut tokens);
     subject_then_amount(&mut tokens);
     tokens
+}
+
+/// The reader's tokens of one word of the tokenizer: a variable (`x2`), a number, a
+/// number with its unit (`1.5m`), the parts of a hyphenated word with their numbers and
+/// units (`20cm-ish`), or the word, a typo of a word the reader knows read as that word
+/// ("degress", "foward"; real words never are).
+fn word_tokens(word: &str, tokens: &mut Vec<Token>) {
+    let w = word
+        .trim_matches(|c: char| c == '.' || c == '\'' || c == '-')
+        .replace("counter-clockwise", "counterclockwise")
+        .replace("anti-clockwise", "anticlockwise");
+    if w.is_empty() {
+        return;
+    }
+    if let Some(n) = w
+        .strip_prefix('x')
+        .and_then(|d| d.parse::<usize>().ok())
+        .filter(|n| *n >= 1)
+    {
+        tokens.push(Token::Variable(n - 1));
+    } else if let Ok(n) = w.parse::<f64>() {
+        if n.is_finite() {
+            tokens.push(Token::Number(n));
+        }
+    } else if let Some((n, unit)) = split_number_unit(&w) {
+        tokens.push(Token::Number(n));
+        tokens.push(Token::Word(unit));
+    } else if w.contains('-') {
+        for part in w.split('-').filter(|p| !p.is_empty()) {
+            // "20cm-ish": a number with its unit stays one.
+            match (part.parse::<f64>(), split_number_unit(part)) {
+                (Ok(n), _) if n.is_finite() => tokens.push(Token::Number(n)),
+                (_, Some((n, unit))) => {
+                    tokens.push(Token::Number(n));
+                    tokens.push(Token::Word(unit));
+                }
+                _ => tokens.push(Token::Word(part.to_string())),
+            }
+        }
+    } else {
+        let w = if let Some(fixed) = function_word_typo(&w) {
+            fixed.to_string()
+        } else if is_a_word(&w) {
+            w
+        } else {
+            correct(&w).map_or(w, str::to_string)
+        };
+        tokens.push(Token::Word(w));
+    }
 }
 
 /// "X1: 30 cm left", "X1, 10 cm back": the objects named first, then, after a colon or a
