@@ -530,8 +530,25 @@ impl Reader<'_> {
         k < self.tokens.len() && self.head_at(k).is_some()
     }
 
+    /// Whether the head's text is one token that reads as an exported identifier, not a
+    /// word: letters and digits run together (`pTorus1`, `mesh22`), an underscore or a
+    /// period inside it, or a capital after a lower-case letter.
+    fn looks_exported(&self, head: &Head) -> bool {
+        if head.range.len() != 1 {
+            return false;
+        }
+        let raw = &self.text[self.tokens[head.range.start].span.clone()];
+        let chars: Vec<char> = raw.chars().collect();
+        let mixed = chars.windows(2).any(|p| {
+            (p[0].is_alphabetic() && p[1].is_ascii_digit())
+                || (p[0].is_lowercase() && p[1].is_uppercase())
+        });
+        mixed || (raw.contains(['_', '.']) && chars.iter().all(|c| !c.is_whitespace()))
+    }
+
     /// Whether the words before a head let it start a noun phrase: a determiner, a verb,
-    /// a preposition, a conjunction or punctuation, or the start.
+    /// a preposition, a conjunction or punctuation, or the start; an exported name opens
+    /// one anywhere.
     pub(super) fn opens_ok(&self, head: &Head) -> bool {
         let k = self.premodifier_start(head.range.start);
         let det = k > 0 && self.word(k - 1).is_some_and(words::is_determiner);
@@ -539,6 +556,11 @@ impl Reader<'_> {
             return true;
         }
         let h = head.range.start;
+        // An object's exact name written as a tool exports it (`pTorus1`, `SM_Lamp_02`,
+        // `Chair.001`) means that object wherever it stands ("give pTorus1 a spin").
+        if head.tier == Tier::Name && self.looks_exported(head) {
+            return true;
+        }
         let w = self.word(h).unwrap_or("");
         // A single grammar word ("can you…", "stand it up", "turn it counter clockwise")
         // or an anaphor ("one", "other") is a noun only after a determiner.

@@ -146,14 +146,15 @@ pub fn read(name: &str, lexicon: &Lexicon) -> Identifier {
 fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
     let mut parts = parts(name);
     // A part of several words that ends in a number or a side (`chair 2`, `FloorLamp01`,
-    // `Side Table Left`, `Speaker L 2`): split them off, each its own part, in order.
+    // `Side Table Left`, `Speaker Left 2`): split them off, each its own part, in order.
     if let Some(at) = parts.len().checked_sub(1) {
         for _ in 0..2 {
             let part = &mut parts[at];
+            // Only whole side words: a letter after a number is a unit (`Beaker 1L`).
             let splits = part.len() > 1
                 && part
                     .last()
-                    .is_some_and(|w| is_number(w) || side_of(w).is_some());
+                    .is_some_and(|w| is_number(w) || matches!(w.as_str(), "left" | "right"));
             if !splits {
                 break;
             }
@@ -296,7 +297,7 @@ mod tests {
         // A name that is only a side word keeps it.
         assert_eq!(r("Left").base, "left");
         // Written with spaces, a trailing side is a side too, before or after a number.
-        for (name, number) in [("Side Table Left", None), ("Speaker L 2", Some(2))] {
+        for (name, number) in [("Side Table Left", None), ("Speaker Left 2", Some(2))] {
             let id = r(name);
             assert_eq!(
                 (id.side, id.number),
@@ -305,7 +306,9 @@ mod tests {
             );
         }
         assert_eq!(r("Side Table Left").base, "side table");
-        assert_eq!(r("Speaker L 2").base, "speaker");
+        assert_eq!(r("Speaker Left 2").base, "speaker");
+        // A letter after a number is a unit, not a side.
+        assert_eq!(r("Beaker 1L").side, None);
         assert_eq!(r("Night Stand Right").side, Some(NameSide::Right));
     }
 

@@ -369,6 +369,10 @@ pub(crate) fn angle(c: &mut Clause) -> Option<f64> {
         }
     }
     for i in 0..c.len() {
+        if let Some(len) = small_turn_at(c, i) {
+            c.mark(i..i + len);
+            return Some(BIT_DEGREES);
+        }
         for words in BIT {
             if c.free(i) && c.words_at(i, words) {
                 c.mark(i..i + words.len());
@@ -378,4 +382,27 @@ pub(crate) fn angle(c: &mut Clause) -> Option<f64> {
         }
     }
     None
+}
+
+/// A turn named as a small one ("a slight turn", "a little twist", "a small spin", "a
+/// gentle nudge round"): an article, a word of smallness, a noun of turning. Its length
+/// in tokens at `i`.
+fn small_turn_at(c: &Clause, i: usize) -> Option<usize> {
+    let small = |w: &str| {
+        matches!(
+            w,
+            "slight" | "small" | "little" | "tiny" | "wee" | "gentle" | "quick" | "minor"
+        )
+    };
+    let turn = |w: &str| {
+        matches!(
+            w,
+            "turn" | "spin" | "twist" | "rotation" | "swivel" | "tilt" | "angle"
+        )
+    };
+    let free = |k: usize| c.free(k);
+    let article = matches!(c.word(i), Some("a" | "an")) && free(i);
+    let at = if article { i + 1 } else { i };
+    (c.word(at).is_some_and(small) && c.word(at + 1).is_some_and(turn) && free(at) && free(at + 1))
+        .then_some(at + 2 - i)
 }

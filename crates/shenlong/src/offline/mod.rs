@@ -336,6 +336,48 @@ impl Known<'_> {
         Self::side_on(scene, a, b, surface).map(Some)
     }
 
+    /// How a message names variable `v`: its object's name in quotes, or `X{v+1}` where
+    /// nothing is known of the scene.
+    pub(crate) fn label(&self, v: usize) -> String {
+        self.scene
+            .and_then(|(scene, objects)| {
+                objects
+                    .get(v)
+                    .map(|&o| format!("'{}'", scene.objects[o].name))
+            })
+            .unwrap_or_else(|| format!("X{}", v + 1))
+    }
+
+    /// Whether moving variable `s` along `way` (a horizontal direction) takes it towards
+    /// variable `t` — `t`'s centre lies ahead of `s`'s along it; `None` where nothing is
+    /// known of the scene.
+    pub(crate) fn heads_towards(&self, s: usize, t: usize, way: glam::DVec3) -> Option<bool> {
+        let (scene, objects) = self.scene?;
+        let (a, b) = (*objects.get(s)?, *objects.get(t)?);
+        let mut to =
+            scene.objects[b].world_aabb().center() - scene.objects[a].world_aabb().center();
+        to.y = 0.0;
+        Some(to.dot(way) > 1e-9)
+    }
+
+    /// Whether subject `s` stands alongside one face of target `t`: its centre within the
+    /// target's footprint across one horizontal axis and outside it along the other (a
+    /// chair at a table's side), so "away from `t`" is straight out from that face.
+    pub(crate) fn alongside(&self, s: usize, t: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return false;
+        };
+        let (c, target) = (
+            scene.objects[a].world_aabb().center(),
+            scene.objects[b].world_aabb(),
+        );
+        let within = |e: usize| c[e] >= target.min[e] && c[e] <= target.max[e];
+        within(0) != within(2)
+    }
+
     /// How far target `t` floats above the top of the surface it rests on (metres, 0 when
     /// it stands on it or rests on nothing): ProcTHOR's data sets some objects a few
     /// centimetres above their tables.

@@ -51,6 +51,9 @@ pub(crate) struct Reader<'a> {
     /// Whether the relation being read puts its subjects on the floor ("on the floor next
     /// to X2"), whatever the target stands on.
     pub(super) on_floor: bool,
+    /// The subjects and directions of the last clause when it was a shift ("move X1 a bit
+    /// to the right"): what a following "towards X2" may only explain.
+    pub(super) last_shift: Option<(Vec<usize>, Vec<Direction>)>,
 }
 
 /// What one clause asks: each variable with one step, in order.
@@ -175,6 +178,7 @@ impl<'a> Reader<'a> {
             on_floor: false,
             last_action: None,
             last_steps: Vec::new(),
+            last_shift: None,
         }
     }
 
@@ -184,9 +188,13 @@ impl<'a> Reader<'a> {
     /// A word of the clause not read (quoted), or a variable beyond those bound.
     pub fn clause(&mut self, c: &mut Clause) -> Result<(), String> {
         prepare(c);
+        let shifted = self.last_shift.take();
         // A clause of fillers only ("…, thanks"): nothing to do.
         if c.unread().is_empty() {
             return Ok(());
+        }
+        if let Some(explained) = self.gloss(c, shifted.as_ref()) {
+            return explained;
         }
         let produced = if let Some(repeated) = self.repeat(c) {
             repeated
@@ -200,6 +208,62 @@ impl<'a> Reader<'a> {
             return Err(not_read(&unread.join(" "), &c.text()));
         }
         self.record(produced)
+    }
+
+    /// "move X1 a bit to the right, towards X2": a clause of only "towards X2" (or
+    /// "closer to", "nearer to", "in the direction of") after a shift says why, not a
+    /// second move. It is read when `X2` lies ahead of every subject along the shift's
+    /// direction, and refused, naming both, where the shift takes one away from it.
+    /// `None` for any other clause.
+    fn gloss(
+        &self,
+        c: &mut Clause,
+        shifted: Option<&(Vec<usize>, Vec<Direction>)>,
+    ) -> Option<Result<(), String>> {
+        let (subjects, dirs) = shifted?;
+        let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
+        let words: Vec<&str> = free.iter().map(|&i| c.word(i).unwrap_or("")).collect();
+        let lead = match words.as_slice() {
+            ["towards" | "toward", ..] => 1,
+            ["closer" | "nearer", "to", ..] => 2,
+            ["in", "the", "direction", "of", ..] => 4,
+            _ => return None,
+        };
+        let rest = &free[lead..];
+        let target = match rest {
+            [v] => *v,
+            [the, v] if c.word(*the) == Some("the") => *v,
+            _ => return None,
+        };
+        let Some(Token::Variable(t)) = c.token(target) else {
+            return None;
+        };
+        let t = *t;
+        if subjects.contains(&t) {
+            return None;
+        }
+        let mut way = glam::DVec3::ZERO;
+        for &(e, sign) in dirs {
+            way[e] += sign;
+        }
+        way.y = 0.0;
+        if way.length() < 1e-9 {
+            return None;
+        }
+        for &s in subjects {
+            if self.facts.known.heads_towards(s, t, way) == Some(false) {
+                let known = self.facts.known;
+                return Some(Err(format!(
+                    "moving {} that way takes it away from {}, not towards it: say which you mean",
+                    known.label(s),
+                    known.label(t)
+                )));
+            }
+        }
+        for &i in &free {
+            c.mark(i..i + 1);
+        }
+        Some(Ok(()))
     }
 
     /// A topic ("Cushion_Blue: move it 15 cm right"): a clause of objects named alone,

@@ -473,6 +473,9 @@ impl Reader<'_> {
                 }
                 None => relation,
             },
+            Relation::Away(amount) if as_is && known.alongside(s, t) => {
+                Relation::AwayFromFace(amount)
+            }
             Relation::NextToOn(y) if as_is && unmoved(y) => {
                 level = Level::Surface(y);
                 known.side_on_surface(s, t, y)?.unwrap_or(relation)

@@ -87,6 +87,7 @@ impl Reader<'_> {
                 c.mark(i..i + 1);
             }
         }
+        self.last_shift = Some((subjects.to_vec(), dirs.clone()));
         let mut out = Vec::new();
         for &s in subjects {
             let parts = dirs
@@ -116,8 +117,8 @@ impl Reader<'_> {
         for &s in subjects {
             let Some(((e, sign), gap)) = self.facts.known.drawn_up_to(s) else {
                 return Some(Err(format!(
-                    "X{} is drawn up to nothing to push it in or pull it out from, in \"{text}\": say where",
-                    s + 1
+                    "{} is drawn up to nothing to push it in or pull it out from, in \"{text}\": say where",
+                    self.facts.known.label(s)
                 )));
             };
             let sign = if inwards { sign } else { -sign };
@@ -170,8 +171,8 @@ impl Reader<'_> {
             Some(Length::UntilBlocked) => {
                 let run = self.facts.known.run(s, e, sign).ok_or_else(|| {
                     format!(
-                        "nothing stops X{} that way in \"{text}\": say how far",
-                        s + 1
+                        "nothing stops {} that way in \"{text}\": say how far",
+                        self.facts.known.label(s)
                     )
                 })?;
                 scaled_axis(num(sign * run), e)

@@ -214,52 +214,7 @@ pub(crate) fn angle_unit(w: &str) -> Option<f64> {
     })
 }
 
-/// What a verb does.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Action {
-    /// Move, put, place, push, lift (with an implied direction for some).
-    Move,
-    /// Rotate, turn, spin.
-    Rotate,
-    /// Scale, resize, grow, shrink.
-    Scale,
-    /// Swap two objects' places.
-    Swap,
-    /// Align one with another, or line several up.
-    Align,
-    /// Take, pick up, grab: holds the objects for a later clause (`… and put it on X2`).
-    Take,
-    /// Centre (in the room).
-    Centre,
-    /// Straighten, square with the walls.
-    Straighten,
-}
-
-/// A verb: its action and an implied direction (`lift` = up).
-pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
-    use Action::*;
-    Some(match w {
-        "move" | "moved" | "moving" | "shift" | "shifted" | "push" | "pushed" | "slide"
-        | "nudge" | "translate" | "put" | "place" | "placed" | "set" | "bring" | "position"
-        | "reposition" | "relocate" | "carry" | "drag" | "pull" | "stack" | "pile" | "sit"
-        | "stand" | "roll" | "shove" | "scoot" | "send" | "hang" | "mount" | "get" | "stick"
-        | "leave" | "lay" | "shuffle" => (Move, None),
-        "take" | "grab" | "pick" | "fetch" => (Take, None),
-        "swap" | "exchange" | "switch" | "interchange" | "trade" => (Swap, None),
-        "align" | "line" => (Align, None),
-        "raise" | "raised" | "lift" | "lifted" | "elevate" | "hoist" => (Move, Some((1, 1.0))),
-        "lower" | "lowered" | "drop" | "sink" => (Move, Some((1, -1.0))),
-        "rotate" | "rotated" | "turn" | "turned" | "spin" | "twist" | "revolve" | "flip"
-        | "swivel" | "pivot" | "angle" | "give" => (Rotate, None),
-        "scale" | "scaled" | "resize" | "resized" | "enlarge" | "grow" | "shrink" | "double"
-        | "halve" | "triple" | "magnify" | "reduce" | "make" | "shrunk" => (Scale, None),
-        "center" | "centre" => (Centre, None),
-        "straighten" | "square" => (Straighten, None),
-        // Every other verb that moves an object to a place (the WordNet-derived list).
-        w if crate::ground::verbs::motion_verb(w).is_some() => (Move, None),
-        _ => return None,
-    })
-}
+pub(crate) use crate::ground::verbs::{verb, Action};
 
 /// A direction word as (axis 0..2, sign).
 pub(crate) fn direction(w: &str) -> Option<(usize, f64)> {

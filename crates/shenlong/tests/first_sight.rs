@@ -1,0 +1,108 @@
+//! Issue 41's mechanisms on scenes authored here, through the whole pipeline (grounding,
+//! the offline translator, collision resolution): each test asserts where objects end
+//! up, or that the edit was refused and the scene left as it was.
+
+use shenlong::format::json;
+use shenlong::geometry::Aabb;
+use shenlong::offline::OfflineTranslator;
+use shenlong::pipeline::{edit, EditOptions};
+use shenlong::scene::Scene;
+
+fn scene(text: &str) -> Scene {
+    json::read(text, "case").unwrap().scene
+}
+
+fn aabb(scene: &Scene, name: &str) -> Aabb {
+    scene.objects[scene.find(name).unwrap()].world_aabb()
+}
+
+/// The scene after `instruction`, or the refusal's message (the scene then unchanged).
+fn after(text: &str, instruction: &str) -> Result<Scene, String> {
+    let mut s = scene(text);
+    let translator = OfflineTranslator::new();
+    match edit(&mut s, instruction, &translator, &EditOptions::default()) {
+        Ok(_) => Ok(s),
+        Err(e) => {
+            let before = scene(text);
+            for (a, b) in s.objects.iter().zip(&before.objects) {
+                assert_eq!(a.world_aabb(), b.world_aabb(), "a refusal moved {}", a.name);
+            }
+            Err(e.message)
+        }
+    }
+}
+
+/// How far `name` moved (centre to centre).
+fn moved(before: &str, after: &Scene, name: &str) -> glam::DVec3 {
+    aabb(after, name).center() - aabb(&scene(before), name).center()
+}
+
+/// A Maya export: meaningless names, one per primitive.
+const STUDIO: &str = r#"{
+  "name": "studio",
+  "bounds": {"min": [-6, 0, -5], "max": [6, 4, 5]},
+  "objects": [
+    {"name": "pCube6", "position": [2.5, 0, 2.5], "size": [0.6, 0.75, 0.45]},
+    {"name": "pTorus1", "position": [2.6, 0.75, 2.5], "size": [0.25, 0.05, 0.25]},
+    {"name": "pCone1", "position": [-1.5, 0, 0], "size": [0.3, 0.5, 0.3]}
+  ]
+}"#;
+
+#[test]
+fn an_exported_name_means_its_object_after_any_word() {
+    // "give" is no verb of placing, and no determiner comes before the name.
+    let s = after(STUDIO, "give pTorus1 a small spin").unwrap();
+    let turned = s.objects[s.find("pTorus1").unwrap()].similarity().rotation;
+    assert!(turned.to_axis_angle().1 > 0.1, "pTorus1 did not turn");
+    let s = after(STUDIO, "please give pCone1 a quarter turn").unwrap();
+    let turned = s.objects[s.find("pCone1").unwrap()].similarity().rotation;
+    assert!((turned.to_axis_angle().1.to_degrees() - 90.0).abs() < 1e-6);
+}
+
+/// A board room: chairs along both long sides of a table, a laptop on it.
+const BOARDROOM: &str = r#"{
+  "name": "boardroom",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "Conference Table", "position": [0, 0, 0], "size": [4.0, 0.75, 1.2]},
+    {"name": "Chair 01", "position": [-1.5, 0, -0.9], "size": [0.5, 0.9, 0.5]},
+    {"name": "Chair 02", "position": [1.5, 0, -0.9], "size": [0.5, 0.9, 0.5]},
+    {"name": "Chair 07", "position": [-1.5, 0, 0.9], "size": [0.5, 0.9, 0.5]},
+    {"name": "Laptop", "position": [0, 0.75, 0], "size": [0.35, 0.03, 0.25]}
+  ]
+}"#;
+
+#[test]
+fn away_from_a_table_is_straight_out_from_the_side_a_chair_is_at() {
+    let s = after(
+        BOARDROOM,
+        "move chair 1 and chair 7 half a metre away from the table",
+    )
+    .unwrap();
+    let one = moved(BOARDROOM, &s, "Chair 01");
+    let seven = moved(BOARDROOM, &s, "Chair 07");
+    assert!(one.x.abs() < 1e-6 && (one.z + 0.5).abs() < 1e-6, "{one}");
+    assert!(
+        seven.x.abs() < 1e-6 && (seven.z - 0.5).abs() < 1e-6,
+        "{seven}"
+    );
+}
+
+#[test]
+fn towards_after_a_direction_explains_it_or_is_refused() {
+    // Chair 02 lies to the laptop's right: "towards chair 02" says why, not a second move.
+    let s = after(
+        BOARDROOM,
+        "move the laptop a bit to the right, towards chair 02",
+    )
+    .unwrap();
+    let d = moved(BOARDROOM, &s, "Laptop");
+    assert!(d.x > 0.05 && d.z.abs() < 1e-9, "{d}");
+    // Chair 01 lies to its left: the two halves disagree, and nothing moves.
+    let e = after(
+        BOARDROOM,
+        "move the laptop a bit to the right, towards chair 01",
+    )
+    .unwrap_err();
+    assert!(e.contains("Laptop") && e.contains("Chair 01"), "{e}");
+}
