@@ -114,14 +114,26 @@ pub(crate) fn tokenize_with(text: &str, quotes: Quotes) -> Vec<Token> {
                 continue;
             }
             let lower = raw.to_lowercase().replace('’', "'");
+            let span = start..end_of(j);
+            if let Some(words) = run_together(&lower) {
+                // "abit": "a" on its first letter, "bit" on the rest.
+                let split = start + words[0].len();
+                tokens.push(Token {
+                    kind: Kind::Word(words[0].to_string()),
+                    span: start..split,
+                });
+                tokens.push(Token {
+                    kind: Kind::Word(words[1].to_string()),
+                    span: split..span.end,
+                });
+                k = j;
+                continue;
+            }
             let kind = match lower.parse::<f64>() {
                 Ok(n) if n.is_finite() => Kind::Number(n),
-                _ => Kind::Word(lower),
+                _ => Kind::Word(function_word_typo(&lower).map_or(lower, str::to_string)),
             };
-            tokens.push(Token {
-                kind,
-                span: start..end_of(j),
-            });
+            tokens.push(Token { kind, span });
             k = j;
             continue;
         }
@@ -153,4 +165,83 @@ fn camel_parts(chars: &[(usize, char)]) -> Option<Vec<(usize, usize)>> {
     }
     cuts.push(chars.len());
     Some(cuts.windows(2).map(|w| (w[0], w[1])).collect())
+}
+
+/// The classic typos of the words that glue a sentence (`teh`, `adn`): swaps no other
+/// word is spelt as. Both readers see the word meant.
+fn function_word_typo(w: &str) -> Option<&'static str> {
+    Some(match w {
+        "teh" | "hte" => "the",
+        "adn" | "nad" => "and",
+        "taht" => "that",
+        "wiht" | "wtih" => "with",
+        "nto" => "not",
+        _ => return None,
+    })
+}
+
+/// Two short words typed as one (`abit`, `alittle`, `alot`): the two words.
+fn run_together(w: &str) -> Option<[&'static str; 2]> {
+    Some(match w {
+        "abit" => ["a", "bit"],
+        "alittle" => ["a", "little"],
+        "alot" => ["a", "lot"],
+        "atad" => ["a", "tad"],
+        _ => return None,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn words(text: &str, quotes: Quotes) -> Vec<String> {
+        tokenize_with(text, quotes)
+            .into_iter()
+            .map(|t| match t.kind {
+                Kind::Word(w) => w,
+                Kind::Number(n) => format!("#{n}"),
+                Kind::Quoted(q) => format!("'{q}'"),
+                Kind::Punct(c) => c.to_string(),
+            })
+            .collect()
+    }
+
+    #[test]
+    fn names_numbers_and_quotes() {
+        assert_eq!(
+            words(
+                "Move 'Chair 2' 1.5m, SM_Lamp_02 and Chair.001",
+                Quotes::Names
+            ),
+            [
+                "move",
+                "'Chair 2'",
+                "1.5m",
+                ",",
+                "sm_lamp_02",
+                "and",
+                "chair.001"
+            ]
+        );
+        // Quotes as marks: the words inside are words.
+        assert_eq!(
+            words("move 'Chair 2' left", Quotes::Marks),
+            ["move", "'", "chair", "#2", "'", "left"]
+        );
+        assert_eq!(
+            words("GroupB sofa's", Quotes::Names),
+            ["group", "b", "sofa's"]
+        );
+    }
+
+    #[test]
+    fn glue_word_typos_are_the_words_meant_with_their_spans() {
+        assert_eq!(
+            words("move teh bin abit left adn back", Quotes::Names),
+            ["move", "the", "bin", "a", "bit", "left", "and", "back"]
+        );
+        let t = tokenize("nudge it abit");
+        assert_eq!((t[2].span.clone(), t[3].span.clone()), (9..10, 10..13));
+    }
 }

@@ -320,7 +320,9 @@ impl Grounder {
                     .iter()
                     .any(|s| self.lexicon.knows(s));
             // Place nouns ("the window", "the door") are kinds a person looks for too.
+            // The floor, the walls and the room are always there, named or not.
             let grammar = crate::discourse::is_discourse_word(word)
+                || words::is_room_part(word)
                 || words::is_verb(word)
                 || words::side_word(word).is_some()
                 || words::size_word(word).is_some()

@@ -179,6 +179,9 @@ fn names_typed_as_they_are_and_kinds_the_scene_lacks() {
         e.to_string().starts_with("there is no window in the scene"),
         "{e}"
     );
+    // The floor and the walls are always there: never "there is no floor".
+    let e = g(&s, "move the gizmo on the floor by the wall").unwrap_err();
+    assert!(matches!(e, GroundError::NoObject { .. }), "{e}");
 }
 
 /// An exam hall: three rows of four numbered desks, each with a stool behind it, and a

@@ -301,6 +301,21 @@ fn smaller_part(c: &mut Clause, j: usize, unit: f64) -> f64 {
     m * smaller
 }
 
+/// Whether the clause's amount is a vague one ("a bit", "a good bit", "slightly"): the
+/// first length [`length`] would read there is one of those phrases. Nothing is marked.
+pub(crate) fn says_vague(c: &Clause) -> bool {
+    let mut probe = c.clone();
+    probe.until_blocked = false;
+    let before: Vec<bool> = (0..probe.len()).map(|i| probe.free(i)).collect();
+    let Some(Length::Metres(_)) = length(&mut probe, true) else {
+        return false;
+    };
+    // The words the length read: a vague phrase has no number and no unit among them.
+    (0..probe.len())
+        .filter(|&i| before[i] && !probe.free(i))
+        .all(|i| matches!(probe.token(i), Some(Token::Word(w)) if length_unit(w).is_none()))
+}
+
 /// A vague length ("a good bit", "a bit", "a tiny bit", "a lot"), its words read.
 fn vague_length(c: &mut Clause) -> Option<Length> {
     for i in 0..c.len() {

@@ -29,6 +29,7 @@ mod arrange;
 mod build;
 mod clause;
 mod idioms;
+mod mutual;
 mod read;
 mod relate;
 mod relations;

@@ -443,6 +443,10 @@ impl<'a> Reader<'a> {
                 return self.relate_to_pronoun(c, r, &targets, text);
             }
         }
+        // Objects moved relative to one another: "X1 and X2 closer together".
+        if let Some(produced) = self.mutual(c, text) {
+            return produced;
+        }
         // A relation to another object.
         if let Some(r) = find_relation(c) {
             return self.relate(c, r, text);

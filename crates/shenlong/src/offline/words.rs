@@ -103,9 +103,7 @@ fn word_tokens(word: &str, tokens: &mut Vec<Token>) {
             }
         }
     } else {
-        let w = if let Some(fixed) = function_word_typo(&w) {
-            fixed.to_string()
-        } else if is_a_word(&w) {
+        let w = if is_a_word(&w) {
             w
         } else {
             correct(&w).map_or(w, str::to_string)
@@ -317,19 +315,6 @@ const KNOWN: &[&str] = &[
     "little",
     "around",
 ];
-
-/// The classic typos of the words that glue a sentence (`teh`, `adn`): swaps no other
-/// word is spelt as.
-fn function_word_typo(w: &str) -> Option<&'static str> {
-    Some(match w {
-        "teh" | "hte" => "the",
-        "adn" | "nad" => "and",
-        "taht" => "that",
-        "wiht" | "wtih" => "with",
-        "nto" => "not",
-        _ => return None,
-    })
-}
 
 /// Whether a word is one the reader or the lexicon knows as it is (a verb, a direction, a
 /// unit, an object noun): never read as a typo of another ("stick" is not "stack").
