@@ -106,3 +106,51 @@ fn towards_after_a_direction_explains_it_or_is_refused() {
     .unwrap_err();
     assert!(e.contains("Laptop") && e.contains("Chair 01"), "{e}");
 }
+
+/// A patio from a game engine: two armchairs, a parasol pair, a planter.
+const PATIO: &str = r#"{
+  "name": "patio",
+  "bounds": {"min": [-6, 0, -6], "max": [6, 4, 6]},
+  "objects": [
+    {"name": "SM_Armchair_01", "position": [-2, 0, 0], "size": [0.8, 0.9, 0.8]},
+    {"name": "SM_Armchair_02", "position": [2, 0, 0], "size": [0.8, 0.9, 0.8]},
+    {"name": "SM_Parasol_A", "position": [-4, 0, -4], "size": [0.5, 2.4, 0.5]},
+    {"name": "SM_Parasol_B", "position": [4, 0, -4], "size": [0.5, 2.4, 0.5]},
+    {"name": "BP_Planter_Small_01", "position": [0, 0, -3], "size": [0.4, 0.5, 0.4]}
+  ]
+}"#;
+
+fn yaw_degrees(s: &Scene, name: &str) -> f64 {
+    let q = s.objects[s.find(name).unwrap()].similarity().rotation;
+    let (axis, angle) = q.to_axis_angle();
+    (angle * axis.y.signum()).to_degrees()
+}
+
+#[test]
+fn obligations_wishes_and_the_passive_are_the_move_they_ask_for() {
+    let s = after(PATIO, "the small planter needs to come forward a bit").unwrap();
+    assert!(moved(PATIO, &s, "BP_Planter_Small_01").z > 0.05);
+    let s = after(PATIO, "SM_Parasol_A should be way further to the right").unwrap();
+    assert!(moved(PATIO, &s, "SM_Parasol_A").x > 0.5);
+    let s = after(
+        PATIO,
+        "SM_Armchair_01 and SM_Armchair_02 get turned 90 degrees anticlockwise",
+    )
+    .unwrap();
+    for chair in ["SM_Armchair_01", "SM_Armchair_02"] {
+        assert!((yaw_degrees(&s, chair) - 90.0).abs() < 1e-6, "{chair}");
+    }
+}
+
+#[test]
+fn two_named_then_swap_them_and_relative_moves() {
+    let s = after(PATIO, "SM_Parasol_A and SM_Parasol_B: swap 'em").unwrap();
+    assert!((moved(PATIO, &s, "SM_Parasol_A").x - 8.0).abs() < 1e-9);
+    assert!((moved(PATIO, &s, "SM_Parasol_B").x + 8.0).abs() < 1e-9);
+    let s = after(PATIO, "move the two armchairs 1 m closer together").unwrap();
+    assert!((moved(PATIO, &s, "SM_Armchair_01").x - 0.5).abs() < 1e-9);
+    assert!((moved(PATIO, &s, "SM_Armchair_02").x + 0.5).abs() < 1e-9);
+    let s = after(PATIO, "spread the two armchairs a little further apart").unwrap();
+    assert!(moved(PATIO, &s, "SM_Armchair_01").x < -0.05);
+    assert!(moved(PATIO, &s, "SM_Armchair_02").x > 0.05);
+}

@@ -31,6 +31,17 @@ impl Reader<'_> {
     /// floor level.
     pub(super) fn swap(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
         let vars = c.variables();
+        if vars.is_empty() && self.last_subjects.len() == 2 {
+            // "X1 and X2: swap them" ("swap 'em", "swap the two"): the two named before.
+            let pronoun = (0..c.len())
+                .find(|&i| c.free(i) && matches!(c.word(i), Some("them" | "em" | "both" | "they")));
+            if let Some(i) = pronoun {
+                c.mark(i..i + 1);
+                c.mark_every(&["places", "positions", "round", "around", "over"]);
+                let (a, b) = (self.last_subjects[0], self.last_subjects[1]);
+                return Ok(Self::swapped(a, b));
+            }
+        }
         if vars.len() < 2 {
             return Err(not_read(text, text));
         }
@@ -43,6 +54,11 @@ impl Reader<'_> {
                         | "places"
                         | "place"
                         | "spots"
+                        | "spot"
+                        | "corners"
+                        | "corner"
+                        | "sides"
+                        | "seats"
                         | "of"
                         | "with"
                         | "and"
@@ -58,6 +74,12 @@ impl Reader<'_> {
         c.mark(vars[0].0..vars[0].0 + 1);
         c.mark(vars[1].0..vars[1].0 + 1);
         self.last_subjects = vec![a, b];
+        Ok(Self::swapped(a, b))
+    }
+
+    /// Each of `a` and `b` to the other's place, centred where it stood, on its floor
+    /// level.
+    fn swapped(a: usize, b: usize) -> Produced {
         let to = |from: usize, to: usize| {
             sum([
                 along(sub(var(to, "center"), var(from, "center")), 0),
@@ -65,10 +87,10 @@ impl Reader<'_> {
                 along(sub(var(to, "min"), var(from, "min")), 1),
             ])
         };
-        Ok(vec![
+        vec![
             (a, Step::Translate(to(a, b))),
             (b, Step::Translate(to(b, a))),
-        ])
+        ]
     }
 
     /// "align X1 with X2" (along x, or the axis named): centred on X2 along that axis.

@@ -47,6 +47,7 @@ pub(crate) fn rewrite(c: &mut Clause) {
     each_other(c);
     other_end(c);
     needs_to_go(c);
+    passive(c);
     all_the_way_to(c);
     flush(c);
     out_from(c);
@@ -454,14 +455,80 @@ fn needs_to_go(c: &mut Clause) {
         if c.words_at(k, &["to"]) {
             k += 1;
         }
-        // "X1 should be 1 m to the left", "X1 needs to be on X2": where it is to be.
-        let to_be = || (c.words_at(k, &["be"]) && where_to_be(c, k + 1)).then_some(k + 1);
+        // "X1 and X2 should both face X3", "… should all turn": the quantifier is read.
+        let quantified = one_of(c, k, &["both", "all", "each"]);
+        if quantified {
+            k += 1;
+        }
+        // "X1 should be 1 m to the left", "X1 needs to be on X2", "X1 should be way
+        // further to the right": where it is to be.
+        let to_be = || {
+            if !c.words_at(k, &["be"]) {
+                return None;
+            }
+            // The vague amount stays for the reader of amounts.
+            let after = k + 1 + vague_words_at(c, k + 1);
+            where_to_be(c, after).then_some(k + 1)
+        };
         if let Some(end) = to_move_at(c, k).or_else(to_be) {
             c.mark(i..end);
             return;
         }
+        // "X1 needs to face X2", "X1 should swap with X2", "X1 has to turn": the modal
+        // (and its `to`) read, the verb left for the clause's reader.
+        let verb_follows = c
+            .word(k)
+            .is_some_and(|w| super::words::verb(w).is_some() || matches!(w, "face" | "come"));
+        if verb_follows {
+            if c.words_at(k, &["come"]) {
+                c.mark(k..k + 1);
+            }
+            c.mark(i..k);
+            return;
+        }
     }
     could_it_go(c);
+}
+
+/// How many words at `i` say a vague amount before where something is to be ("way",
+/// "a bit", "much", "slightly"): those are the amount's, read by the reader later.
+fn vague_words_at(c: &Clause, i: usize) -> usize {
+    const VAGUE: [&[&str]; 7] = [
+        &["a", "little", "bit"],
+        &["a", "bit"],
+        &["a", "little"],
+        &["way"],
+        &["much"],
+        &["slightly"],
+        &["far"],
+    ];
+    VAGUE
+        .iter()
+        .find(|w| c.words_at(i, w))
+        .map_or(0, |w| w.len())
+}
+
+/// "X1 and X2 get turned 90 degrees", "X1 is to be moved left", "X3 gets pushed back":
+/// the auxiliary after the objects is read, so the participle is the clause's verb.
+fn passive(c: &mut Clause) {
+    for i in 1..c.len() {
+        let after_objects = matches!(c.token(i - 1), Some(super::words::Token::Variable(_)));
+        if !after_objects || !c.free(i) {
+            continue;
+        }
+        let aux = match c.word(i) {
+            Some("get" | "gets" | "got" | "are" | "is" | "be" | "been") => 1,
+            _ => continue,
+        };
+        let participle = c.word(i + aux).is_some_and(|w| {
+            (w.ends_with("ed") || matches!(w, "put" | "set" | "spun" | "slid" | "shrunk"))
+                && super::words::verb(w).is_some()
+        });
+        if participle {
+            c.mark(i..i + aux);
+            return;
+        }
+    }
 }
 
 /// A question with the objects inside: "could X1 go …", "can X1 be moved …" (its modal

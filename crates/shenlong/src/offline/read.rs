@@ -154,7 +154,7 @@ fn mark_pronouns(c: &mut Clause, cut: Option<usize>) {
             && cut.is_none_or(|k| i < k)
             && (matches!(
                 c.word(i),
-                Some("it" | "them" | "both" | "they" | "everything" | "these" | "those")
+                Some("it" | "them" | "em" | "both" | "they" | "everything" | "these" | "those")
             ) || (matches!(c.word(i), Some("all" | "each"))
                 && c.words_at(i + 1, &["of", "them"])))
         {
