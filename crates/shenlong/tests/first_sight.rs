@@ -154,3 +154,27 @@ fn two_named_then_swap_them_and_relative_moves() {
     assert!(moved(PATIO, &s, "SM_Armchair_01").x < -0.05);
     assert!(moved(PATIO, &s, "SM_Armchair_02").x > 0.05);
 }
+
+#[test]
+fn a_turn_slightly_towards_something_is_part_of_the_way_and_a_code_letter_is_no_kind() {
+    // Chair 01 faces +Z (the table); the screen stands far to its right.
+    let room = BOARDROOM.replace(
+        r#"{"name": "Laptop""#,
+        r#"{"name": "Screen", "position": [4.5, 0, -0.9], "size": [0.2, 1.5, 1.2]},
+    {"name": "Laptop""#,
+    );
+    let s = after(&room, "turn chair 1 slightly towards the screen").unwrap();
+    let full = after(&room, "turn chair 1 to face the screen").unwrap();
+    let (part, whole) = (yaw_degrees(&s, "Chair 01"), yaw_degrees(&full, "Chair 01"));
+    assert!(whole > 45.0, "{whole}");
+    assert!((part - 15.0).abs() < 1e-6, "{part}");
+    // "the BBQ a bit": the 'A' of SM_Parasol_A is a code, not a kind of object.
+    let patio = PATIO.replace(
+        r#"{"name": "BP_Planter_Small_01""#,
+        r#"{"name": "SM_BBQ_Grill", "position": [0, 0, 3], "size": [1.0, 1.0, 0.6]},
+    {"name": "BP_Planter_Small_01""#,
+    );
+    let s = after(&patio, "shift the BBQ a bit forward").unwrap();
+    assert!(moved(&patio, &s, "SM_BBQ_Grill").z > 0.05);
+    assert_eq!(moved(&patio, &s, "SM_Parasol_A"), glam::DVec3::ZERO);
+}

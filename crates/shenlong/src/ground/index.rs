@@ -413,6 +413,11 @@ impl Builder {
             let w: Vec<&str> = kind.split(' ').collect();
             let via = self.via(&kind);
             for k in 1..w.len() {
+                // A letter or a lone digit ends names as a code (`Parasol_A`, `Bench A 1`),
+                // never as what the object is: "the BBQ a bit" is no parasol.
+                if k == w.len() - 1 && w[k].chars().count() == 1 {
+                    continue;
+                }
                 let tail = w[k..].join(" ");
                 self.add(&tail, target, Tier::Category, via);
                 kinds.push((tail, false));

@@ -271,10 +271,29 @@ impl Reader<'_> {
             return Err(not_read(text, text));
         }
         self.last_subjects = subjects.clone();
+        // "turn X1 slightly towards X2", "30 degrees towards X2", "so it faces more
+        // towards X2": that far round towards facing it, never past it.
+        let mut limit = super::amounts::angle(c);
+        if let Some(i) = c.find(&["more"]).filter(|&i| c.free(i)) {
+            c.mark(i..i + 1);
+            limit = limit.or(Some(super::amounts::BIT_DEGREES));
+        }
         for i in 0..c.len() {
             if matches!(
                 c.word(i),
-                Some("around" | "round" | "so" | "that" | "is" | "it" | "them" | "they" | "are")
+                Some(
+                    "around"
+                        | "round"
+                        | "so"
+                        | "that"
+                        | "is"
+                        | "it"
+                        | "them"
+                        | "they"
+                        | "are"
+                        | "faces"
+                        | "face"
+                )
             ) {
                 c.mark(i..i + 1);
             }
@@ -293,6 +312,18 @@ impl Reader<'_> {
                 let mut angle = sub(heading(d), heading(var(s, "front")));
                 if f.away {
                     angle = add(angle, name("pi"));
+                }
+                if let Some(most) = limit {
+                    // The turn the short way round (−π … π), at most `most` degrees.
+                    let short = call(
+                        "atan2",
+                        vec![call("sin", vec![angle.clone()]), call("cos", vec![angle])],
+                    );
+                    let bound = degrees(most.abs());
+                    angle = call(
+                        "max",
+                        vec![neg(bound.clone()), call("min", vec![short, bound])],
+                    );
                 }
                 (s, Step::Turn(rotor(angle, (2, 0))))
             })
