@@ -138,8 +138,14 @@ pub(crate) fn tokenize_with(text: &str, quotes: Quotes) -> Vec<Token> {
             continue;
         }
         if !c.is_whitespace() {
+            // `&` and `+` between words are the words people read them as.
+            let kind = match c {
+                '&' => Kind::Word("and".into()),
+                '+' => Kind::Word("plus".into()),
+                _ => Kind::Punct(c),
+            };
             tokens.push(Token {
-                kind: Kind::Punct(c),
+                kind,
                 span: start..end_of(k + 1),
             });
         }
@@ -240,6 +246,10 @@ mod tests {
         assert_eq!(
             words("move teh bin abit left adn back", Quotes::Names),
             ["move", "the", "bin", "a", "bit", "left", "and", "back"]
+        );
+        assert_eq!(
+            words("desk & chair + lamp", Quotes::Names),
+            ["desk", "and", "chair", "plus", "lamp"]
         );
         let t = tokenize("nudge it abit");
         assert_eq!((t[2].span.clone(), t[3].span.clone()), (9..10, 10..13));

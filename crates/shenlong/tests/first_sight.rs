@@ -178,3 +178,42 @@ fn a_turn_slightly_towards_something_is_part_of_the_way_and_a_code_letter_is_no_
     assert!(moved(&patio, &s, "SM_BBQ_Grill").z > 0.05);
     assert_eq!(moved(&patio, &s, "SM_Parasol_A"), glam::DVec3::ZERO);
 }
+
+/// A lab bench with a beaker on it, and a stool drawn up to it.
+const LAB: &str = r#"{
+  "name": "lab",
+  "bounds": {"min": [-5, 0, -5], "max": [5, 3, 5]},
+  "objects": [
+    {"name": "Bench B1", "position": [0, 0, 0], "size": [2.0, 0.9, 0.75]},
+    {"name": "Beaker 500ml", "position": [0.3, 0.9, 0], "size": [0.1, 0.15, 0.1]},
+    {"name": "Hot Plate", "position": [-0.4, 0.9, 0], "size": [0.3, 0.1, 0.3]},
+    {"name": "Stool 1", "position": [0, 0, 0.8], "size": [0.4, 0.6, 0.4]},
+    {"name": "Bin", "position": [3, 0, 3], "size": [0.4, 0.5, 0.4]}
+  ]
+}"#;
+
+#[test]
+fn what_goes_along_with_a_moved_object_goes_with_it_and_nothing_else_does() {
+    for instruction in [
+        "move bench B1 back 30cm, with everything on it",
+        "move bench B1 back 30cm and take whatever's on it along",
+        "move bench B1 back 30cm, keeping what's on it on it",
+    ] {
+        let s = after(LAB, instruction).unwrap_or_else(|e| panic!("{instruction}: {e}"));
+        for name in ["Bench B1", "Beaker 500ml", "Hot Plate"] {
+            let d = moved(LAB, &s, name);
+            assert!(
+                (d.z + 0.3).abs() < 1e-9 && d.x.abs() < 1e-9,
+                "{instruction}: {name} {d}"
+            );
+        }
+        assert_eq!(
+            moved(LAB, &s, "Stool 1"),
+            glam::DVec3::ZERO,
+            "{instruction}"
+        );
+    }
+    // The bin stands on the floor: "with the bin" is not what goes along.
+    let e = after(LAB, "move bench B1 back 30cm, with the bin").unwrap_err();
+    assert!(e.contains("could not read"), "{e}");
+}

@@ -24,6 +24,7 @@
 //! straightening's snap — evaluated directly; the reply it reports is printed from them.
 //! An instruction any word of which is unread is refused, quoting the unread words.
 
+mod along;
 pub mod amounts;
 mod arrange;
 mod build;
@@ -347,6 +348,14 @@ impl Known<'_> {
                     .map(|&o| format!("'{}'", scene.objects[o].name))
             })
             .unwrap_or_else(|| format!("X{}", v + 1))
+    }
+
+    /// Whether variable `v`'s object rests on variable `s`'s, directly or on what rests on
+    /// it (what moving `s` carries); `None` where nothing is known of the scene.
+    pub(crate) fn rests_on(&self, v: usize, s: usize) -> Option<bool> {
+        let (scene, objects) = self.scene?;
+        let (a, b) = (*objects.get(v)?, *objects.get(s)?);
+        Some(scene.carried_by(b).contains(&a))
     }
 
     /// Whether moving variable `s` along `way` (a horizontal direction) takes it towards

@@ -54,6 +54,8 @@ pub(crate) struct Reader<'a> {
     /// The subjects and directions of the last clause when it was a shift ("move X1 a bit
     /// to the right"): what a following "towards X2" may only explain.
     pub(super) last_shift: Option<(Vec<usize>, Vec<Direction>)>,
+    /// What the last clause produced: what "…, with everything on it" adds to.
+    last_produced: Produced,
 }
 
 /// What one clause asks: each variable with one step, in order.
@@ -179,6 +181,7 @@ impl<'a> Reader<'a> {
             last_action: None,
             last_steps: Vec::new(),
             last_shift: None,
+            last_produced: Vec::new(),
         }
     }
 
@@ -196,13 +199,29 @@ impl<'a> Reader<'a> {
         if let Some(explained) = self.gloss(c, shifted.as_ref()) {
             return explained;
         }
-        let produced = if let Some(repeated) = self.repeat(c) {
+        // "…, with everything on it": a clause of what goes along with the last one's.
+        let last = std::mem::take(&mut self.last_produced);
+        let mut probe = c.clone();
+        if let Some(along) = self.goes_along(&mut probe, &last) {
+            if probe.unread().is_empty() {
+                *c = probe;
+                self.last_produced = last;
+                return self.record(along);
+            }
+        }
+        let mut produced = if let Some(repeated) = self.repeat(c) {
             repeated
         } else if self.topic(c) {
             return Ok(());
         } else {
             self.read(c)?
         };
+        // "move X1 back 30 cm with everything on it": the rest of this clause.
+        if !c.unread().is_empty() {
+            if let Some(along) = self.goes_along(c, &produced) {
+                produced.extend(along);
+            }
+        }
         let unread = c.unread();
         if !unread.is_empty() {
             return Err(not_read(&unread.join(" "), &c.text()));
@@ -295,6 +314,7 @@ impl<'a> Reader<'a> {
     /// # Errors
     /// A variable beyond those bound.
     fn record(&mut self, produced: Produced) -> Result<(), String> {
+        self.last_produced.clone_from(&produced);
         if let Some(&(first, _)) = produced.first() {
             self.last_steps = produced
                 .iter()

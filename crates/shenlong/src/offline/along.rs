@@ -1,0 +1,144 @@
+//! What is said to go along with a moved object: "move X1 back 30 cm, with everything on
+//! it", "… with X2" (what rests on it, named), "swap X1 with X3, including what's on
+//! them", "rotate X1 a quarter turn, keeping what's on it on it", "take whatever's on it
+//! along". A small grammar over the clause's free words:
+//!
+//! `LEAD THING [ON] [TAIL]` — LEAD: with, including, keeping, keep, take, taking,
+//! bringing, plus, along with, together with; THING: variables, or the words for what is on
+//! something (everything, whatever's, what's, the stuff, their things …); ON: on it, on
+//! them, on top; TAIL: on it, on them, along, with it, with them, too, as well.
+//!
+//! What rests on a moved object goes with it anyway; the phrase is read when every object
+//! it names rests (directly or through others) on one of the moved ones, which then take
+//! the same steps. Otherwise it is left unread and the instruction refused: "with X2" for
+//! something standing elsewhere is not a request this reader can check.
+
+use super::clause::Clause;
+use super::read::{Produced, Reader};
+use super::words::Token;
+use std::ops::Range;
+
+/// The words that open the phrase, longest first.
+const LEADS: &[&[&str]] = &[
+    &["along", "with"],
+    &["together", "with"],
+    &["and", "take"],
+    &["and", "keep"],
+    &["with"],
+    &["including"],
+    &["keeping"],
+    &["keep"],
+    &["take"],
+    &["taking"],
+    &["bringing"],
+    &["plus"],
+];
+
+/// The words for what is on something, with what may come before them.
+const THINGS: &[&[&str]] = &[
+    &["everything", "that's"],
+    &["everything"],
+    &["whatever's"],
+    &["whatever", "is"],
+    &["what's"],
+    &["what", "is"],
+    &["all", "the", "stuff"],
+    &["the", "stuff"],
+    &["its", "stuff"],
+    &["their", "stuff"],
+    &["the", "things"],
+    &["its", "things"],
+    &["their", "things"],
+    &["stuff"],
+];
+
+/// Where it is.
+const ONS: &[&[&str]] = &[
+    &["on", "top", "of", "it"],
+    &["on", "it"],
+    &["on", "them"],
+    &["on", "top"],
+];
+
+/// What may close the phrase.
+const TAILS: &[&[&str]] = &[
+    &["on", "it"],
+    &["on", "them"],
+    &["along"],
+    &["with", "it"],
+    &["with", "them"],
+    &["too"],
+    &["as", "well"],
+];
+
+/// The phrase in `c`: its tokens and the variables it names (empty for "everything on
+/// it").
+fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
+    let longest = |at: usize, options: &[&[&str]]| {
+        options
+            .iter()
+            .find(|w| (at..at + w.len()).all(|k| c.free(k)) && c.words_at(at, w))
+            .map(|w| w.len())
+    };
+    for i in 0..c.len() {
+        let Some(lead) = longest(i, LEADS) else {
+            continue;
+        };
+        let mut k = i + lead;
+        let mut named = Vec::new();
+        while let Some(Token::Variable(v)) = c.token(k).filter(|_| c.free(k)) {
+            named.push(*v);
+            k += 1;
+            if c.words_at(k, &["and"]) && matches!(c.token(k + 1), Some(Token::Variable(_))) {
+                k += 1;
+            }
+        }
+        if named.is_empty() {
+            let Some(thing) = longest(k, THINGS) else {
+                continue;
+            };
+            let Some(on) = longest(k + thing, ONS) else {
+                continue;
+            };
+            k += thing + on;
+        }
+        if let Some(tail) = longest(k, TAILS) {
+            k += tail;
+        }
+        // The phrase ends the clause (a separator may follow).
+        let ends = (k..c.len()).all(|j| matches!(c.token(j), Some(Token::Separator)) || !c.free(j));
+        if ends {
+            return Some((i..k, named));
+        }
+    }
+    None
+}
+
+impl Reader<'_> {
+    /// Reads the phrase of what goes along with `moved` (the subjects this clause or the
+    /// last one moved, with their steps): its words marked, each object it names given
+    /// the steps of the object it rests on. `None` where the clause has no such phrase or
+    /// it names something that rests on none of them.
+    pub(super) fn goes_along(&self, c: &mut Clause, moved: &Produced) -> Option<Produced> {
+        let (range, named) = phrase(c)?;
+        let subjects: Vec<usize> = moved.iter().map(|(v, _)| *v).collect();
+        if subjects.is_empty() {
+            return None;
+        }
+        let mut out = Vec::new();
+        for &v in &named {
+            let carrier = subjects
+                .iter()
+                .copied()
+                .find(|&s| self.facts.known.rests_on(v, s) == Some(true))?;
+            out.extend(
+                moved
+                    .iter()
+                    .filter(|(s, _)| *s == carrier)
+                    .map(|(_, step)| (v, step.clone())),
+            );
+        }
+        c.mark(range);
+        Some(out)
+    }
+}
