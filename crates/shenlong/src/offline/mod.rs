@@ -370,22 +370,23 @@ impl Known<'_> {
         Some(to.dot(way) > 1e-9)
     }
 
-    /// Whether subject `s` stands alongside one face of target `t`: its centre within the
-    /// target's footprint across one horizontal axis and outside it along the other (a
-    /// chair at a table's side), so "away from `t`" is straight out from that face.
-    pub(crate) fn alongside(&self, s: usize, t: usize) -> bool {
-        let Some((scene, objects)) = self.scene else {
-            return false;
-        };
-        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
-            return false;
-        };
+    /// The horizontal axis along which subject `s` stands out from one face of target `t`:
+    /// its centre within the target's footprint across the other axis and outside it
+    /// along this one (a chair at a table's side), so "away from `t`" is straight out from
+    /// that face. `None` otherwise, or where nothing is known of the scene.
+    pub(crate) fn alongside(&self, s: usize, t: usize) -> Option<usize> {
+        let (scene, objects) = self.scene?;
+        let (a, b) = (*objects.get(s)?, *objects.get(t)?);
         let (c, target) = (
             scene.objects[a].world_aabb().center(),
             scene.objects[b].world_aabb(),
         );
         let within = |e: usize| c[e] >= target.min[e] && c[e] <= target.max[e];
-        within(0) != within(2)
+        match (within(0), within(2)) {
+            (true, false) => Some(2),
+            (false, true) => Some(0),
+            _ => None,
+        }
     }
 
     /// How far target `t` floats above the top of the surface it rests on (metres, 0 when

@@ -51,6 +51,9 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     ),
     (&["further", "away", "from"], RelKind::Away),
     (&["farther", "away", "from"], RelKind::Away),
+    // "pull X1 back from X2", "out from X2": away from it.
+    (&["further", "out", "from"], RelKind::Away),
+    (&["further", "back", "from"], RelKind::Away),
     (
         &["to", "the", "left", "of"],
         RelKind::Fixed(Relation::Side(0, -1.0)),
@@ -92,6 +95,8 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     (&["up", "against"], RelKind::Fixed(Relation::Against)),
     (&["halfway", "between"], RelKind::Fixed(Relation::Between)),
     (&["away", "from"], RelKind::Away),
+    (&["back", "from"], RelKind::Away),
+    (&["out", "from"], RelKind::Away),
     (&["further", "from"], RelKind::Away),
     (&["farther", "from"], RelKind::Away),
     (&["closer", "to"], RelKind::Closer),
@@ -473,9 +478,10 @@ impl Reader<'_> {
                 }
                 None => relation,
             },
-            Relation::Away(amount) if as_is && known.alongside(s, t) => {
-                Relation::AwayFromFace(amount)
-            }
+            Relation::Away(amount) if as_is => match known.alongside(s, t) {
+                Some(e) => Relation::AwayFromFace(amount, e),
+                None => relation,
+            },
             Relation::NextToOn(y) if as_is && unmoved(y) => {
                 level = Level::Surface(y);
                 known.side_on_surface(s, t, y)?.unwrap_or(relation)

@@ -95,8 +95,9 @@ pub(crate) enum Relation {
     /// Away from by an amount.
     Away(f64),
     /// Away from the face of the target the subject stands alongside, straight out from
-    /// it, by the amount (a chair pulled away from the long side of a table).
-    AwayFromFace(f64),
+    /// it along the axis given, by the amount (a chair pulled away from the long side of
+    /// a table).
+    AwayFromFace(f64, usize),
     /// Closer by an amount, or halfway with none.
     Closer(Option<f64>),
     /// Onto the floor beside it (`off X2`).
@@ -189,9 +190,10 @@ pub(crate) fn vector(
             let f = flat(sub(b("center"), a("center")));
             neg(mul(num(amount), div(f.clone(), call("abs", vec![f]))))
         }
-        Relation::AwayFromFace(amount) => {
-            let f = from_nearest_face(s, t, steps);
-            mul(num(amount), div(f.clone(), call("abs", vec![f])))
+        Relation::AwayFromFace(amount, e) => {
+            // Straight out along axis `e`, on the subject's side of the target.
+            let d = dot(sub(a("center"), b("center")), axis(e));
+            scaled_axis(mul(num(amount), div(d.clone(), call("abs", vec![d]))), e)
         }
         Relation::Closer(amount) => {
             let f = flat(sub(b("center"), a("center")));
@@ -233,26 +235,6 @@ fn side(s: usize, t: usize, steps: &Steps, e: usize, sign: f64, level: Expr, gap
         along(sub(b("center"), a("center")), other),
         level,
     ])
-}
-
-/// The horizontal way from target `t`'s footprint to subject `s`'s centre: from the
-/// nearest point of the footprint, so that a chair at a long table's side goes straight
-/// out from that side, not along the line from the table's centre; where the centre lies
-/// over the footprint, from the target's centre (a term a billionth as long otherwise).
-fn from_nearest_face(s: usize, t: usize, steps: &Steps) -> Expr {
-    let b = |attribute: &str| boxed(t, attribute, steps);
-    let a = |attribute: &str| boxed(s, attribute, steps);
-    let clamp = |e: usize| {
-        let c = dot(a("center"), axis(e));
-        let lo = dot(b("min"), axis(e));
-        let hi = dot(b("max"), axis(e));
-        scaled_axis(call("max", vec![lo, call("min", vec![c, hi])]), e)
-    };
-    let nearest = add(clamp(0), clamp(2));
-    add(
-        sub(flat(a("center")), nearest),
-        mul(num(1e-9), flat(sub(a("center"), b("center")))),
-    )
 }
 
 /// Mirrored through target `t`, along the horizontal axis subject `s` is offset from it

@@ -187,9 +187,25 @@ fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
     }
     mark_room_words(c);
     let wall = side.map(|(_, d)| d);
-    // "away from the wall", "20 cm away from the left wall": straight out from it.
-    if let Some(a) = c.find(&["away", "from"]).filter(|&a| a < i) {
-        c.mark(a..a + 2);
+    // "away from the wall", "20 cm away from the left wall", "a bit further from the
+    // wall", "out from the wall": straight out from it.
+    let away = [
+        &["further", "away", "from"][..],
+        &["farther", "away", "from"],
+        &["away", "from"],
+        &["further", "from"],
+        &["farther", "from"],
+        &["out", "from"],
+        &["back", "from"],
+    ]
+    .iter()
+    .find_map(|w| {
+        c.find(w)
+            .filter(|&a| a < i && c.free(a))
+            .map(|a| (a, w.len()))
+    });
+    if let Some((a, len)) = away {
+        c.mark(a..a + len);
         let amount = match super::amounts::length(c, false) {
             Some(super::amounts::Length::Metres(m)) => m,
             None => super::amounts::DEFAULT_METRES,
