@@ -217,3 +217,20 @@ fn what_goes_along_with_a_moved_object_goes_with_it_and_nothing_else_does() {
     let e = after(LAB, "move bench B1 back 30cm, with the bin").unwrap_err();
     assert!(e.contains("could not read"), "{e}");
 }
+
+#[test]
+fn a_modelling_tools_primitives_answer_to_what_they_look_like() {
+    let studio = STUDIO.replace(
+        r#"{"name": "pCone1""#,
+        r#"{"name": "pSphere1", "position": [-3.0, 0, 2.6], "size": [0.25, 0.25, 0.25]},
+    {"name": "pSphere2", "position": [1.5, 0, 0], "size": [0.65, 0.65, 0.65]},
+    {"name": "pCone1""#,
+    );
+    let s = after(&studio, "push the big ball 1 m to the right").unwrap();
+    assert!((moved(&studio, &s, "pSphere2").x - 1.0).abs() < 1e-9);
+    assert_eq!(moved(&studio, &s, "pSphere1"), glam::DVec3::ZERO);
+    let s = after(&studio, "move the ring 1m left").unwrap();
+    assert!((moved(&studio, &s, "pTorus1").x + 1.0).abs() < 1e-9);
+    let e = after(&studio, "put the ball on pCube6").unwrap_err();
+    assert!(e.contains("pSphere1") && e.contains("pSphere2"), "{e}");
+}

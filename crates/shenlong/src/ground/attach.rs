@@ -274,9 +274,9 @@ impl Reader<'_> {
                 format!("the {} is not {words}", self.name(objects[0]))
             } else {
                 format!(
-                    "no single {} is clearly {words} (the {}s here are {})",
+                    "no single {} is clearly {words} (the {} here are {})",
                     head.text,
-                    head.text,
+                    error::plural(&head.text),
                     error::list(&self.names(objects))
                 )
             },

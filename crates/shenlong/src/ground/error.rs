@@ -111,6 +111,28 @@ fn did_you_mean(suggestions: &[String]) -> String {
     }
 }
 
+/// The plural of a noun for messages: `boxes`, `benches`, `shelves` left aside — `-es`
+/// after s, x, z, ch and sh, `-ies` after a consonant and y, else `-s`.
+#[must_use]
+pub(crate) fn plural(noun: &str) -> String {
+    let consonant_y = noun.ends_with('y')
+        && noun
+            .chars()
+            .rev()
+            .nth(1)
+            .is_some_and(|c| !"aeiou".contains(c));
+    if ["s", "x", "z", "ch", "sh"]
+        .iter()
+        .any(|e| noun.ends_with(e))
+    {
+        format!("{noun}es")
+    } else if consonant_y {
+        format!("{}ies", &noun[..noun.len() - 1])
+    } else {
+        format!("{noun}s")
+    }
+}
+
 /// `a, b and c`; long lists shortened: `a, b, c, …, z (12 objects)`.
 pub(crate) fn list(names: &[String]) -> String {
     match names.len() {
@@ -178,6 +200,23 @@ impl GroundError {
             GroundError::Count { found, .. } => found,
             GroundError::NoObject { names, .. } => names,
             _ => &[],
+        }
+    }
+}
+
+#[cfg(test)]
+mod plural_tests {
+    #[test]
+    fn plurals_for_messages() {
+        for (one, many) in [
+            ("box", "boxes"),
+            ("bench", "benches"),
+            ("lamp", "lamps"),
+            ("body", "bodies"),
+            ("tray", "trays"),
+            ("glass", "glasses"),
+        ] {
+            assert_eq!(super::plural(one), many);
         }
     }
 }

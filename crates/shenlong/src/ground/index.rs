@@ -36,6 +36,18 @@ pub(crate) enum Tier {
     NameWord,
 }
 
+/// What a modelling tool's primitive shape looks like to a person.
+fn shape_words(primitive: &str) -> &'static [&'static str] {
+    match primitive {
+        "cube" => &["box", "block"],
+        "sphere" | "icosphere" | "uvsphere" => &["ball", "sphere", "globe"],
+        "cylinder" => &["cylinder", "column"],
+        "torus" => &["ring", "donut", "doughnut"],
+        "plane" => &["sheet", "panel"],
+        _ => &[],
+    }
+}
+
 /// How a broader word `hyper` names an object called `kind`: as its category where `kind`
 /// is a closed compound ending in it ('textbook' is a book as 'exercise book' is, and
 /// 'armchair' a chair as 'desk chair' is), else as a hypernym.
@@ -327,6 +339,7 @@ impl Builder {
             }
         }
         self.add_lexicon(target, &kinds, lexicon);
+        self.add_shapes(target, &kinds);
         self.add_name_words(target, id, lexicon);
         descriptors.retain(|d| d.chars().any(char::is_alphabetic));
         self.index
@@ -455,6 +468,23 @@ impl Builder {
                         self.add(s, target, hypernym_tier(kind, s), via);
                     }
                 }
+            }
+        }
+    }
+
+    /// A modelling tool's primitive (`pCube7`, `Sphere.002`, `pTorus1`: the names Maya
+    /// and Blender give the shapes they make) answers to what the shape looks like: a
+    /// cube is a box, a sphere a ball. Only a kind that is the primitive's word alone.
+    fn add_shapes(&mut self, target: Target, kinds: &[(String, bool)]) {
+        for (kind, _) in kinds {
+            let last = kind.rsplit(' ').next().unwrap_or("");
+            let primitive = kind == last || kind.split(' ').count() == 2 && kind.starts_with("p ");
+            if !primitive {
+                continue;
+            }
+            let via = self.via(kind);
+            for &look in shape_words(last) {
+                self.add(look, target, Tier::Synonym, via);
             }
         }
     }

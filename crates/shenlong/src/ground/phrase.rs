@@ -259,7 +259,10 @@ impl Reader<'_> {
         if group && matches!(p, Post::Relation(Relation::Nearest | Relation::Farthest, _)) {
             return Err(GroundError::NoPick {
                 phrase: at,
-                reason: format!("say how many ('the two {}s {words}')", head.text),
+                reason: format!(
+                    "say how many ('the two {} {words}')",
+                    error::plural(&head.text)
+                ),
             });
         }
         let wanted = if head.generic || filter {

@@ -148,9 +148,9 @@ impl Reader<'_> {
                     return Err(GroundError::NoPick {
                         phrase: self.span_text(&(start..head.range.end)),
                         reason: format!(
-                            "no {} is {d}: the {}s here are {}",
+                            "no {} is {d}: the {} here are {}",
                             head.text,
-                            head.text,
+                            error::plural(&head.text),
                             error::list(&self.names(&objects))
                         ),
                     });
@@ -289,9 +289,9 @@ impl Reader<'_> {
             return Err(GroundError::NoPick {
                 phrase: phrase.to_string(),
                 reason: format!(
-                    "say how many ('the two {} {}s') or name them",
+                    "say how many ('the two {} {}') or name them",
                     superlative(w),
-                    head.text
+                    error::plural(&head.text)
                 ),
             });
         }
@@ -303,9 +303,9 @@ impl Reader<'_> {
                     phrase: phrase.to_string(),
                     reason: match e {
                         SizeError::ComparesTwo => format!(
-                            "\"{w}\" compares two, but {} {}s fit ({}); say 'the {}' or name one",
+                            "\"{w}\" compares two, but {} {} fit ({}); say 'the {}' or name one",
                             objects.len(),
-                            head.text,
+                            error::plural(&head.text),
                             error::list(&self.names(&objects)),
                             superlative(w)
                         ),
