@@ -234,3 +234,17 @@ fn a_modelling_tools_primitives_answer_to_what_they_look_like() {
     let e = after(&studio, "put the ball on pCube6").unwrap_err();
     assert!(e.contains("pSphere1") && e.contains("pSphere2"), "{e}");
 }
+
+#[test]
+fn a_remark_about_an_object_before_what_to_do_with_it() {
+    let s = after(
+        BOARDROOM,
+        "the laptop is way too far left, move it a bit to the right",
+    );
+    // "too far left" names a direction: not a remark, and nothing is guessed.
+    assert!(s.is_err());
+    let s = after(BOARDROOM, "chair 1 is sticking out, push it back a bit").unwrap();
+    assert!((moved(BOARDROOM, &s, "Chair 01").z + 0.1).abs() < 1e-9);
+    // A remark alone asks for nothing.
+    assert!(after(BOARDROOM, "chair 1 is sticking out").is_err());
+}

@@ -689,7 +689,10 @@ pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<En
     let facts = Facts { variables, known };
     let tokens = words::tokenize(query);
     let mut reader = Reader::new(&facts);
-    for mut c in clause::split(&tokens) {
+    let clauses = clause::split(&tokens);
+    let last = clauses.len().saturating_sub(1);
+    for (k, mut c) in clauses.into_iter().enumerate() {
+        reader.more_follow = k < last;
         reader.clause(&mut c)?;
     }
     if reader.steps.is_empty() {

@@ -56,6 +56,9 @@ pub(crate) struct Reader<'a> {
     pub(super) last_shift: Option<(Vec<usize>, Vec<Direction>)>,
     /// What the last clause produced: what "…, with everything on it" adds to.
     last_produced: Produced,
+    /// Whether more clauses follow the one being read: a remark about the objects ("X1 is
+    /// way too low, bring it up") is read only before what is to be done.
+    pub(super) more_follow: bool,
 }
 
 /// What one clause asks: each variable with one step, in order.
@@ -182,6 +185,7 @@ impl<'a> Reader<'a> {
             last_steps: Vec::new(),
             last_shift: None,
             last_produced: Vec::new(),
+            more_follow: false,
         }
     }
 
@@ -211,7 +215,7 @@ impl<'a> Reader<'a> {
         }
         let mut produced = if let Some(repeated) = self.repeat(c) {
             repeated
-        } else if self.topic(c) {
+        } else if self.topic(c) || self.remark(c) {
             return Ok(());
         } else {
             self.read(c)?
@@ -283,6 +287,56 @@ impl<'a> Reader<'a> {
             c.mark(i..i + 1);
         }
         Some(Ok(()))
+    }
+
+    /// A remark about the objects before what is to be done with them ("X1 is way too low,
+    /// bring it up", "X1 is sticking out, push it in"): the objects, `is` (`are`, `looks`,
+    /// `seems`), and words that ask nothing the reader knows — no verb, direction, number
+    /// or other object (a relation word without an object relates nothing). They are what "it" and "them" mean next; read, it is `true`. Only
+    /// where more clauses follow: a remark alone asks for nothing.
+    fn remark(&mut self, c: &mut Clause) -> bool {
+        if !self.more_follow {
+            return false;
+        }
+        let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
+        let named = free
+            .iter()
+            .take_while(|&&i| {
+                matches!(c.token(i), Some(Token::Variable(_))) || c.words_at(i, &["and"])
+            })
+            .count();
+        let subjects: Vec<usize> = free[..named]
+            .iter()
+            .filter_map(|&i| match c.token(i) {
+                Some(Token::Variable(v)) => Some(*v),
+                _ => None,
+            })
+            .collect();
+        let copula = free.get(named).is_some_and(|&i| {
+            matches!(
+                c.word(i),
+                Some("is" | "are" | "looks" | "look" | "seems" | "seem")
+            )
+        });
+        let rest = free.get(named + 1..).unwrap_or(&[]);
+        let asks_nothing = !rest.is_empty()
+            && rest.iter().all(|&i| match c.token(i) {
+                // "is sticking out": a state, not a request.
+                Some(Token::Word(w)) => {
+                    (words::verb(w).is_none() || w.ends_with("ing"))
+                        && words::direction(w).is_none()
+                        && words::length_unit(w).is_none()
+                }
+                _ => false,
+            });
+        if subjects.is_empty() || !copula || !asks_nothing {
+            return false;
+        }
+        for &i in &free {
+            c.mark(i..i + 1);
+        }
+        self.last_subjects = subjects;
+        true
     }
 
     /// A topic ("Cushion_Blue: move it 15 cm right"): a clause of objects named alone,

@@ -195,7 +195,11 @@ fn mark_relation(c: &mut Clause, r: &Found) {
     }
     if r.range.start > 0 {
         let p = r.range.start - 1;
-        if matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across")) && c.free(p) {
+        // "push X1 in toward X2": `in` before a move towards something says the same.
+        let toward = matches!(c.word(r.range.start), Some("toward" | "towards" | "to"));
+        let particle = matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across"))
+            || toward && c.word(p) == Some("in");
+        if particle && c.free(p) {
             c.mark(p..p + 1);
         }
     }
