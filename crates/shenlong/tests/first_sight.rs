@@ -248,3 +248,37 @@ fn a_remark_about_an_object_before_what_to_do_with_it() {
     // A remark alone asks for nothing.
     assert!(after(BOARDROOM, "chair 1 is sticking out").is_err());
 }
+
+/// Two benches, each with things on it.
+const TWO_BENCHES: &str = r#"{
+  "name": "lab",
+  "bounds": {"min": [-5, 0, -5], "max": [5, 3, 5]},
+  "objects": [
+    {"name": "Bench A1", "position": [-2, 0, 0], "size": [2.0, 0.9, 0.75]},
+    {"name": "Bench A2", "position": [2, 0, 0], "size": [2.0, 0.9, 0.75]},
+    {"name": "Microscope", "position": [1.6, 0.9, 0], "size": [0.3, 0.4, 0.3]},
+    {"name": "Beaker 250ml", "position": [2.5, 0.9, 0], "size": [0.08, 0.12, 0.08]},
+    {"name": "Beaker 1L", "position": [-2.5, 0.9, 0], "size": [0.13, 0.19, 0.13]},
+    {"name": "Centrifuge", "position": [-1.6, 0.9, 0], "size": [0.4, 0.3, 0.4]},
+    {"name": "Instructor Desk", "position": [3.5, 0, 3], "size": [1.2, 0.75, 0.6]},
+    {"name": "Laptop", "position": [3.5, 0.75, 3], "size": [0.35, 0.03, 0.25]}
+  ]
+}"#;
+
+#[test]
+fn the_same_bench_as_and_whichever_bench_is_closest() {
+    let s = after(
+        TWO_BENCHES,
+        "move the beaker on the same bench as the microscope 10cm left",
+    )
+    .unwrap();
+    assert!((moved(TWO_BENCHES, &s, "Beaker 250ml").x + 0.1).abs() < 1e-9);
+    assert_eq!(moved(TWO_BENCHES, &s, "Beaker 1L"), glam::DVec3::ZERO);
+    let s = after(
+        TWO_BENCHES,
+        "put the laptop on whichever bench is closest to the instructor desk",
+    )
+    .unwrap();
+    let (laptop, bench) = (aabb(&s, "Laptop"), aabb(&s, "Bench A2"));
+    assert!((laptop.min.y - bench.max.y).abs() < 1e-6, "{laptop:?}");
+}

@@ -103,7 +103,9 @@ impl Reader<'_> {
         };
         // "the thing on the cupboard", "everything on the shelf": a generic noun says
         // nothing of which without its modifier, so the modifier is never a destination.
+        let same_as = matches!(post, Some((Post::Relation(Relation::SameAs, _), _)));
         let describes = !rest_of_destination
+            && !same_as
             && post.as_ref().is_some_and(|(p, p_end)| {
                 source
                     || head.generic

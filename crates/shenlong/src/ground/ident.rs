@@ -85,6 +85,19 @@ fn side_of(word: &str) -> Option<NameSide> {
     }
 }
 
+/// A code that tells alike objects apart: a single letter (`A` of `Parasol_A`), any but
+/// the sides' `l` and `r`, or a letter and digits (`A1` of `Bench A1`).
+fn code_letter(w: &str) -> bool {
+    let mut chars = w.chars();
+    let Some(first) = chars.next() else {
+        return false;
+    };
+    let rest: Vec<char> = chars.collect();
+    first.is_alphabetic()
+        && (rest.is_empty() && first != 'l' && first != 'r'
+            || !rest.is_empty() && rest.iter().all(char::is_ascii_digit))
+}
+
 /// The parts of a name, each as its normalised words.
 fn parts(name: &str) -> Vec<Vec<String>> {
     name.split(['_', '-', '.', '#', '(', ')', ',', '/', ':', '|'])
@@ -150,16 +163,22 @@ fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
     if let Some(at) = parts.len().checked_sub(1) {
         for _ in 0..2 {
             let part = &mut parts[at];
-            // Only whole side words: a letter after a number is a unit (`Beaker 1L`).
+            // Only whole side words: a letter after a number is a unit (`Beaker 1L`). A
+            // lone letter after a word is a code (`Bench A1`, `Table B`).
             let splits = part.len() > 1
-                && part
-                    .last()
-                    .is_some_and(|w| is_number(w) || matches!(w.as_str(), "left" | "right"));
+                && part.last().is_some_and(|w| {
+                    is_number(w) || matches!(w.as_str(), "left" | "right") || code_letter(w)
+                })
+                && !(part.len() > 1 && is_number(&part[part.len() - 2]));
             if !splits {
                 break;
             }
             let w = part.pop().unwrap_or_default();
-            parts.insert(at + 1, vec![w]);
+            // A code written after the kind with a space (`Bench A1`) says which bench;
+            // one given its own part (`Notebook_A5`) may be a kind's word, as below.
+            if !code_letter(&w) || w.chars().count() == 1 {
+                parts.insert(at + 1, vec![w]);
+            }
         }
     }
     if parts.len() > 1 && single(&parts[0]).is_some_and(|w| PREFIXES.contains(&w)) {
@@ -167,7 +186,9 @@ fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
     }
     let mut number = None;
     let mut side = None;
-    // Trailing number, side and mesh suffixes, in any order (`SideTable_L.001`).
+    let mut coded = false;
+    // Trailing number, side, code letter and mesh suffixes, in any order
+    // (`SideTable_L.001`, `Bench A1`).
     while parts.len() > 1 {
         let Some(w) = single(&parts[parts.len() - 1]).map(str::to_string) else {
             break;
@@ -177,6 +198,9 @@ fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
         } else if let Some(s) = side_of(&w).filter(|_| side.is_none()) {
             side = Some(s);
         } else if SUFFIXES.contains(&w.as_str()) {
+        } else if code_letter(&w) && w.chars().count() == 1 && !coded {
+            // `Parasol_A`, `Bench A1`: a code that tells alike objects apart, not a kind.
+            coded = true;
         } else {
             break;
         }
@@ -309,6 +333,21 @@ mod tests {
         assert_eq!(r("Speaker Left 2").base, "speaker");
         // A letter after a number is a unit, not a side.
         assert_eq!(r("Beaker 1L").side, None);
+        // A lone letter is a code among alike objects, not their kind.
+        for (name, number) in [
+            ("Bench A1", None),
+            ("SM_Parasol_A", None),
+            ("Table B", None),
+        ] {
+            let id = r(name);
+            assert_eq!((id.side, id.number), (None, number), "{name}");
+            assert!(
+                !id.base.ends_with(" a") && !id.base.ends_with(" b"),
+                "{name}: {}",
+                id.base
+            );
+        }
+        assert_eq!(r("Bench A1").base, "bench");
         assert_eq!(r("Night Stand Right").side, Some(NameSide::Right));
     }
 

@@ -300,7 +300,15 @@ impl Reader<'_> {
         bound: &[usize],
         mode: Mode,
     ) -> Result<Option<(Post, usize)>, GroundError> {
-        let post = if mode != Mode::Nested {
+        // A nested phrase reads no modifier of its own, but "the same bench as the
+        // microscope" (in "the beaker on the same bench as the microscope") says which
+        // bench — once: a chain of them is not followed.
+        let same_as = || {
+            (draft.start..draft.end).any(|i| self.word(i) == Some("same"))
+                && self.word(draft.end) == Some("as")
+                && !(draft.end + 1..draft.end + 5).any(|i| self.word(i) == Some("same"))
+        };
+        let post = if mode != Mode::Nested || same_as() {
             self.post_modifier(draft.end, bound)?
         } else {
             None

@@ -41,6 +41,13 @@ impl Reader<'_> {
         if w == "from" {
             return self.origin_at(j, bound);
         }
+        // "the same bench as the centrifuge": the bench the centrifuge stands on.
+        let same_before = (k.saturating_sub(4)..k).any(|i| self.word(i) == Some("same"));
+        if w == "as" && same_before {
+            if let Some((targets, end)) = self.nested_np(j + 1, bound)? {
+                return Ok(Some((Post::Relation(Relation::SameAs, targets), end)));
+            }
+        }
         // with the lamp (on it), that has the clock on it, holding the vase.
         if matches!(
             w,
@@ -266,7 +273,7 @@ impl Reader<'_> {
     }
 
     /// A relation word group at `j` and where its object starts.
-    fn relation_at(&self, j: usize) -> Option<(Relation, usize)> {
+    pub(super) fn relation_at(&self, j: usize) -> Option<(Relation, usize)> {
         let w = |k: usize| self.word(k).unwrap_or("");
         let four = (w(j), w(j + 1), w(j + 2), w(j + 3));
         let by_four = match four {
@@ -309,7 +316,7 @@ impl Reader<'_> {
     /// The other object(s) of a modifier (`the side table` in `the book on the side
     /// table`): one object, or every object a still ambiguous phrase fits (`the phone on
     /// the chair` looks at every chair).
-    fn nested_np(
+    pub(super) fn nested_np(
         &self,
         j: usize,
         bound: &[usize],

@@ -31,6 +31,9 @@ pub(crate) enum Relation {
     From,
     /// Carrying it (`the desk with the lamp on it`).
     Carries,
+    /// Carrying it, said as "the same N as it" (`the same bench as the microscope`): it
+    /// always says which, wherever the phrase stands.
+    SameAs,
     /// Inside its box (`the apple in the fridge`).
     Inside,
     /// Under it.
@@ -60,7 +63,7 @@ impl Relation {
     pub fn can_be_a_destination(self) -> bool {
         !matches!(
             self,
-            Self::Nearest | Self::Farthest | Self::Carries | Self::Off | Self::From
+            Self::Nearest | Self::Farthest | Self::Carries | Self::SameAs | Self::Off | Self::From
         )
     }
 }
@@ -279,6 +282,7 @@ pub(crate) fn by_relation(
             | Relation::From
             | Relation::Under
             | Relation::Carries
+            | Relation::SameAs
             | Relation::Inside
     ) {
         // Membership relations: all that stand in it, when that is the number wanted.
@@ -322,7 +326,7 @@ fn relation_key(
 ) -> Option<f64> {
     let key = match relation {
         Relation::On | Relation::Off => rests_on(scene, (c, cb), (t, tb)).then_some(0.0)?,
-        Relation::Carries => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
+        Relation::Carries | Relation::SameAs => rests_on(scene, (t, tb), (c, cb)).then_some(0.0)?,
         Relation::Inside => inside(cb, tb).then_some(0.0)?,
         Relation::From => (rests_on(scene, (c, cb), (t, tb)) || inside(cb, tb)).then_some(0.0)?,
         Relation::Under => (cb.floor_gap(tb) <= 0.0

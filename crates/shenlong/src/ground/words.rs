@@ -312,6 +312,8 @@ pub(crate) fn is_determiner(w: &str) -> bool {
             | "all"
             | "every"
             | "each"
+            // "whichever bench is closest to the desk": the one the modifier picks.
+            | "whichever"
             | "any"
     )
 }
