@@ -175,6 +175,12 @@ fn a_turn_slightly_towards_something_is_part_of_the_way_and_a_code_letter_is_no_
     {"name": "BP_Planter_Small_01""#,
     );
     let s = after(&patio, "shift the BBQ a bit forward").unwrap();
+    // Two words of a name typed as one: "the bbqgrill" is `SM_BBQ_Grill`.
+    let one_word = after(&patio, "shift the bbqgrill a bit forward").unwrap();
+    assert_eq!(
+        moved(&patio, &one_word, "SM_BBQ_Grill"),
+        moved(&patio, &s, "SM_BBQ_Grill")
+    );
     assert!(moved(&patio, &s, "SM_BBQ_Grill").z > 0.05);
     assert_eq!(moved(&patio, &s, "SM_Parasol_A"), glam::DVec3::ZERO);
 }

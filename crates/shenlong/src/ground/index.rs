@@ -332,6 +332,23 @@ impl Builder {
         self.add_names(target, written, id, &mut descriptors);
         let mut kinds = self.add_kinds(target, id, &labels);
         self.add_tails(target, &mut kinds, &mut descriptors);
+        // Words of a kind next to each other typed as one ("the firepit" for
+        // `SM_FirePit_Round`, "the sidetable").
+        for (kind, _) in &kinds {
+            let w: Vec<&str> = kind.split(' ').collect();
+            for a in 0..w.len() {
+                for b in a + 2..=w.len() {
+                    let list = self
+                        .index
+                        .compact
+                        .entry(w[a..b].concat().into())
+                        .or_default();
+                    if list.last() != Some(&target.0) {
+                        list.push(target.0);
+                    }
+                }
+            }
+        }
         for attribute in &labels.attributes {
             for w in attribute.split(' ') {
                 descriptors.insert(w.into());
