@@ -372,8 +372,9 @@ impl Known<'_> {
 
     /// The horizontal axis along which subject `s` stands out from one face of target `t`:
     /// its centre within the target's footprint across the other axis and outside it
-    /// along this one (a chair at a table's side), so "away from `t`" is straight out from
-    /// that face. `None` otherwise, or where nothing is known of the scene.
+    /// along this one, within [`TUCK_REACH`] of that face (a chair at a table's side), so
+    /// "away from `t`" is straight out from that face. `None` otherwise, or where nothing
+    /// is known of the scene.
     pub(crate) fn alongside(&self, s: usize, t: usize) -> Option<usize> {
         let (scene, objects) = self.scene?;
         let (a, b) = (*objects.get(s)?, *objects.get(t)?);
@@ -382,11 +383,16 @@ impl Known<'_> {
             scene.objects[b].world_aabb(),
         );
         let within = |e: usize| c[e] >= target.min[e] && c[e] <= target.max[e];
-        match (within(0), within(2)) {
-            (true, false) => Some(2),
-            (false, true) => Some(0),
-            _ => None,
-        }
+        let e = match (within(0), within(2)) {
+            (true, false) => 2,
+            (false, true) => 0,
+            _ => return None,
+        };
+        // Drawn up to that face (within reach of it), as a chair to a table: something
+        // standing metres off is moved away along the line between them.
+        let me = scene.objects[a].world_aabb();
+        let gap = (me.min[e] - target.max[e]).max(target.min[e] - me.max[e]);
+        (gap <= TUCK_REACH).then_some(e)
     }
 
     /// How far target `t` floats above the top of the surface it rests on (metres, 0 when
