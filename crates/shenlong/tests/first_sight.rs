@@ -288,3 +288,24 @@ fn the_same_bench_as_and_whichever_bench_is_closest() {
     let (laptop, bench) = (aabb(&s, "Laptop"), aabb(&s, "Bench A2"));
     assert!((laptop.min.y - bench.max.y).abs() < 1e-6, "{laptop:?}");
 }
+
+#[test]
+fn roughly_before_a_place_and_together_on_a_surface() {
+    let s = after(TWO_BENCHES, "put the beakers roughly together on bench A1").unwrap();
+    let bench = aabb(&s, "Bench A1");
+    for beaker in ["Beaker 250ml", "Beaker 1L"] {
+        let b = aabb(&s, beaker);
+        assert!((b.min.y - bench.max.y).abs() < 1e-6, "{beaker} {b:?}");
+        assert!(
+            b.min.x >= bench.min.x - 1e-9 && b.max.x <= bench.max.x + 1e-9,
+            "{beaker}"
+        );
+    }
+    let s = after(
+        TWO_BENCHES,
+        "put the laptop roughly in the middle of bench A1",
+    )
+    .unwrap();
+    let (laptop, bench) = (aabb(&s, "Laptop"), aabb(&s, "Bench A1"));
+    assert!((laptop.min.y - bench.max.y).abs() < 1e-6, "{laptop:?}");
+}

@@ -139,7 +139,8 @@ impl Clause {
 
     /// Marks read the words that say an amount is approximate — `about`, `roughly`,
     /// `approximately`, `around` right before a number, `or so`, `or thereabouts`,
-    /// `give or take` and `-ish` after one: the amount is read as given.
+    /// `give or take` and `-ish` after one: the amount is read as given; and `roughly`
+    /// before a place ("roughly in the middle of X2"): the place is read as given.
     fn mark_approximations(&mut self) {
         let number_at = |c: &Self, i: usize| match c.tokens.get(i) {
             Some(Token::Number(_)) => true,
@@ -156,9 +157,30 @@ impl Clause {
                     matches!(self.tokens.get(i + 1), Some(Token::Number(_)))
                         || self.word(i + 2).and_then(words::length_unit).is_some()
                 }
-                Some(
-                    "about" | "roughly" | "approximately" | "approx" | "circa" | "maybe" | "like",
-                ) => number_at(self, i + 1),
+                // "put X1 roughly in the middle of X2", "roughly together": where it goes,
+                // as near as that.
+                Some("roughly" | "approximately" | "approx") => {
+                    number_at(self, i + 1)
+                        || matches!(
+                            self.word(i + 1),
+                            Some(
+                                "in" | "on"
+                                    | "at"
+                                    | "to"
+                                    | "onto"
+                                    | "next"
+                                    | "near"
+                                    | "by"
+                                    | "beside"
+                                    | "between"
+                                    | "together"
+                                    | "under"
+                                    | "against"
+                                    | "where"
+                            )
+                        )
+                }
+                Some("about" | "circa" | "maybe" | "like") => number_at(self, i + 1),
                 _ => false,
             };
             if before_number && self.free(i) {

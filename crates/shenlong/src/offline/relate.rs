@@ -326,7 +326,10 @@ impl Reader<'_> {
             }
         }
         if relation == Relation::On && subjects.len() > 1 {
-            // "put the mug and the bowl on the dresser": side by side on it.
+            // "put the mug and the bowl (together) on the dresser": side by side on it.
+            if let Some(i) = c.find(&["together"]).filter(|&i| c.free(i)) {
+                c.mark(i..i + 1);
+            }
             self.last_subjects = subjects.clone();
             return Ok(subjects
                 .iter()
