@@ -309,3 +309,17 @@ fn roughly_before_a_place_and_together_on_a_surface() {
     let (laptop, bench) = (aabb(&s, "Laptop"), aabb(&s, "Bench A1"));
     assert!((laptop.min.y - bench.max.y).abs() < 1e-6, "{laptop:?}");
 }
+
+#[test]
+fn its_bench_is_what_it_stands_on_and_two_targets_are_never_one() {
+    // "its bench" is Bench B1, the one the stool is drawn up to.
+    let s = after(LAB, "move stool 1 10 cm closer to its bench").unwrap();
+    let d = moved(LAB, &s, "Stool 1");
+    assert!(d.x.abs() < 1e-9 && (d.z + 0.1).abs() < 1e-9, "{d}");
+    // Two objects to go closer to, with nothing saying which: refused, nothing moved.
+    let e = after(
+        TWO_BENCHES,
+        "move the microscope 10 cm closer to the centrifuge and the laptop",
+    );
+    assert!(e.is_err(), "moved towards one of two");
+}

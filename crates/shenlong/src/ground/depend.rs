@@ -81,6 +81,53 @@ impl Reader<'_> {
     }
 }
 
+impl Reader<'_> {
+    /// "its bench", "their tables" at token `k` (the possessive) with the objects named
+    /// last (`owned`): the objects of the head's kind that they rest on or are drawn up to
+    /// ("stool 12 … its bench", "the beaker … its bench"). `None` where no head follows,
+    /// nothing was named before, or none of the kind owns them.
+    pub(super) fn possessed_at(&self, k: usize, owned: &[usize]) -> Option<Np> {
+        if owned.is_empty() || !self.is_word(k, &["its", "their"]) || self.consumed[k] {
+            return None;
+        }
+        let head = self.head_at(k + 1)?;
+        if head.generic {
+            return None;
+        }
+        let boxes = self.scene.world_aabbs();
+        let owners: Vec<usize> = head
+            .objects
+            .iter()
+            .copied()
+            .filter(|&c| {
+                !owned.contains(&c)
+                    && owned.iter().any(|&a| {
+                        self.scene.carried_by(c).contains(&a)
+                            || belongs_to(self.scene, &boxes, a, &[c], owned)
+                    })
+            })
+            .collect();
+        if owners.is_empty() {
+            return None;
+        }
+        let range = k..head.range.end;
+        Some(Np {
+            reasons: vec![Reason {
+                kind: ReasonKind::Group,
+                detail: format!(
+                    "{} what {} rests on or is drawn up to",
+                    super::error::list(&self.names(&owners)),
+                    super::error::list(&self.names(owned))
+                ),
+            }],
+            pool: owners.clone(),
+            objects: owners,
+            head: head.text.clone(),
+            range,
+        })
+    }
+}
+
 /// Whether object `d` belongs to one of `owners`: it rests on one, or stands drawn up to
 /// one — the nearest object standing up (taller than 5 cm: not a rug) that is not of its
 /// own kind (`kind`) is an owner, within [`DRAWN_UP_METRES`] of its footprint.

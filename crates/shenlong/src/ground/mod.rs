@@ -726,6 +726,13 @@ impl<'a> Reader<'a> {
                 k += 1;
                 continue;
             }
+            // "… its bench": what the objects named last rest on or are drawn up to.
+            if let Some(np) = self.possessed_at(k, &self.antecedent.clone()) {
+                let end = np.range.end;
+                self.commit(np, &mut phrases, &mut nps);
+                k = end;
+                continue;
+            }
             let bound: Vec<usize> = phrases.iter().flat_map(|p| p.objects.clone()).collect();
             let head = self.head_at(k).or_else(|| self.anaphor_at(k, &nps, &bound));
             match head {

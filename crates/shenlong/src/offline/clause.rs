@@ -388,8 +388,19 @@ fn joins_objects(tokens: &[Token], i: usize, current: &[Token]) -> bool {
             )
         )
     });
+    // A list that ends the instruction or its sentence ("towards X2 and X3", "with X2
+    // and X3"): the rest of this clause, not a clause of objects alone.
+    let mut k = i + 1;
+    while matches!(tokens.get(k), Some(Token::Variable(_)))
+        || word(tokens, k) == Some("and") && matches!(tokens.get(k + 1), Some(Token::Variable(_)))
+        || matches!(tokens.get(k), Some(Token::Separator))
+            && matches!(tokens.get(k + 1), Some(Token::Variable(_)))
+    {
+        k += 1;
+    }
+    let list_ends = !matches!(tokens.get(k), Some(Token::Word(_)));
     // After the verb only articles and variables so far: a list of subjects.
-    list_context || only_subjects(current)
+    list_context || list_ends || only_subjects(current)
 }
 
 /// Whether the token at `i` stays inside the clause so far (`current`): an `and` or comma

@@ -157,6 +157,18 @@ pub(super) fn find_relation(c: &Clause) -> Option<Found> {
                 let (t2, v2) = c.variable_after(and + 1)?;
                 targets.push((t2, v2));
                 end = t2 + 1;
+            } else {
+                // "closer to X3 and X4": every object named is a target (the reader then
+                // refuses what does not say which goes where).
+                while c.words_at(end, &["and"]) {
+                    match c.token(end + 1) {
+                        Some(super::words::Token::Variable(v2)) => {
+                            targets.push((end + 1, *v2));
+                            end += 2;
+                        }
+                        _ => break,
+                    }
+                }
             }
             // Articles between the marker and the object are read with it.
             let found = Found {
@@ -301,6 +313,17 @@ impl Reader<'_> {
         mark_relation(c, &r);
         let targets: Vec<usize> = r.targets.iter().map(|(_, v)| *v).collect();
         let relation = self.relation(c, &r, &subjects, &targets)?;
+        // "closer to X3 and X4", "next to their desks": which one each goes to is not
+        // said (only "between" takes two), so nothing is guessed.
+        let two_ends = matches!(relation, Relation::Between | Relation::BetweenOn(_));
+        if targets.len() > 1 && !two_ends {
+            let known = self.facts.known;
+            let names: Vec<String> = targets.iter().map(|&t| known.label(t)).collect();
+            return Err(format!(
+                "which of {} each object goes to is not said in \"{text}\": name one, or say it for each",
+                names.join(" and ")
+            ));
+        }
         // "on the floor next to X2", "down on the ground beside X2": beside X2, on the floor.
         let beside = matches!(
             relation,
