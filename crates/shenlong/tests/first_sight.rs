@@ -316,10 +316,15 @@ fn its_bench_is_what_it_stands_on_and_two_targets_are_never_one() {
     let s = after(LAB, "move stool 1 10 cm closer to its bench").unwrap();
     let d = moved(LAB, &s, "Stool 1");
     assert!(d.x.abs() < 1e-9 && (d.z + 0.1).abs() < 1e-9, "{d}");
-    // Two objects to go closer to, with nothing saying which: refused, nothing moved.
+    // Two objects each to go closer to one of two, with nothing saying which: refused,
+    // nothing moved.
     let e = after(
         TWO_BENCHES,
-        "move the microscope 10 cm closer to the centrifuge and the laptop",
+        "move the microscope and beaker 250ml 10 cm closer to the centrifuge and the laptop",
     );
     assert!(e.is_err(), "moved towards one of two");
+    // One object towards several goes towards their middle.
+    let s = after(PATIO, "move BP_Planter_Small_01 1 m towards the armchairs").unwrap();
+    let d = moved(PATIO, &s, "BP_Planter_Small_01");
+    assert!(d.x.abs() < 1e-9 && (d.z - 1.0).abs() < 1e-9, "{d}");
 }

@@ -313,10 +313,14 @@ impl Reader<'_> {
         mark_relation(c, &r);
         let targets: Vec<usize> = r.targets.iter().map(|(_, v)| *v).collect();
         let relation = self.relation(c, &r, &subjects, &targets)?;
-        // "closer to X3 and X4", "next to their desks": which one each goes to is not
-        // said (only "between" takes two), so nothing is guessed.
+        // "closer to X3 and X4" for several objects, "next to their desks": which one
+        // each goes to is not said (only "between" takes two), so nothing is guessed. One
+        // object towards or away from several goes by their middle ("towards the
+        // loungers").
         let two_ends = matches!(relation, Relation::Between | Relation::BetweenOn(_));
-        if targets.len() > 1 && !two_ends {
+        let by_middle =
+            subjects.len() == 1 && matches!(relation, Relation::Closer(_) | Relation::Away(_));
+        if targets.len() > 1 && !two_ends && !by_middle {
             let known = self.facts.known;
             let names: Vec<String> = targets.iter().map(|&t| known.label(t)).collect();
             return Err(format!(
@@ -508,7 +512,7 @@ impl Reader<'_> {
                 }
                 None => relation,
             },
-            Relation::Away(amount) if as_is => match known.alongside(s, t) {
+            Relation::Away(amount) if as_is && targets.len() == 1 => match known.alongside(s, t) {
                 Some(e) => Relation::AwayFromFace(amount, e),
                 None => relation,
             },

@@ -187,7 +187,7 @@ pub(crate) fn vector(
             sum([along(mid.clone(), 0), along(mid, 2), level])
         }
         Relation::Away(amount) => {
-            let f = flat(sub(b("center"), a("center")));
+            let f = flat(sub(middle(targets, steps), a("center")));
             neg(mul(num(amount), div(f.clone(), call("abs", vec![f]))))
         }
         Relation::AwayFromFace(amount, e) => {
@@ -196,7 +196,7 @@ pub(crate) fn vector(
             scaled_axis(mul(num(amount), div(d.clone(), call("abs", vec![d]))), e)
         }
         Relation::Closer(amount) => {
-            let f = flat(sub(b("center"), a("center")));
+            let f = flat(sub(middle(targets, steps), a("center")));
             match amount {
                 Some(x) => mul(num(x), div(f.clone(), call("abs", vec![f]))),
                 None => mul(num(0.5), f),
@@ -235,6 +235,21 @@ fn side(s: usize, t: usize, steps: &Steps, e: usize, sign: f64, level: Expr, gap
         along(sub(b("center"), a("center")), other),
         level,
     ])
+}
+
+/// The middle of `targets` (the mean of their centres; one target's centre): what
+/// "towards the loungers" goes towards.
+fn middle(targets: &[usize], steps: &Steps) -> Expr {
+    let total = targets
+        .iter()
+        .map(|&t| boxed(t, "center", steps))
+        .reduce(add)
+        .unwrap_or_else(|| num(0.0));
+    if targets.len() > 1 {
+        div(total, num(targets.len() as f64))
+    } else {
+        total
+    }
 }
 
 /// Mirrored through target `t`, along the horizontal axis subject `s` is offset from it
