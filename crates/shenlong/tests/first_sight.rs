@@ -219,6 +219,10 @@ fn what_goes_along_with_a_moved_object_goes_with_it_and_nothing_else_does() {
             "{instruction}"
         );
     }
+    // "…, stools and all": what is drawn up to it goes too.
+    let s = after(LAB, "move bench B1 back 30cm, stools and all").unwrap();
+    let d = moved(LAB, &s, "Stool 1");
+    assert!((d.z + 0.3).abs() < 1e-9 && d.x.abs() < 1e-9, "{d}");
     // The bin stands on the floor: "with the bin" is not what goes along.
     let e = after(LAB, "move bench B1 back 30cm, with the bin").unwrap_err();
     assert!(e.contains("could not read"), "{e}");

@@ -128,10 +128,75 @@ impl Reader<'_> {
     }
 }
 
+impl Reader<'_> {
+    /// "…, stools and all", "chairs and all" at token `k`: the objects of that kind that
+    /// belong to the objects named last (`owners`: resting on one, or drawn up to one), as
+    /// a phrase of their own up to the end of "and all". `None` where the words are not
+    /// that, or none of the kind belongs to them.
+    pub(super) fn and_all_at(&self, k: usize, owners: &[usize]) -> Option<Np> {
+        if owners.is_empty() || self.consumed[k] {
+            return None;
+        }
+        let head = self.head_at(k)?;
+        let end = head.range.end;
+        if head.generic
+            || !head.plural
+            || !self.is_word(end, &["and"])
+            || !self.is_word(end + 1, &["all"])
+        {
+            return None;
+        }
+        let closes = match self.tokens.get(end + 2).map(|t| &t.kind) {
+            None => true,
+            Some(super::words::Kind::Punct(c)) => matches!(c, ',' | '.' | ';' | '!' | '?'),
+            _ => false,
+        };
+        if !closes {
+            return None;
+        }
+        let kind: Vec<usize> = head
+            .objects
+            .iter()
+            .copied()
+            .filter(|o| !owners.contains(o))
+            .collect();
+        let boxes = self.scene.world_aabbs();
+        let found: Vec<usize> = kind
+            .iter()
+            .copied()
+            .filter(|&d| belongs_to(self.scene, &boxes, d, owners, &kind))
+            .collect();
+        if found.is_empty() {
+            return None;
+        }
+        Some(Np {
+            reasons: vec![Reason {
+                kind: ReasonKind::Group,
+                detail: format!(
+                    "{} rest on or are drawn up to {}",
+                    super::error::list(&self.names(&found)),
+                    super::error::list(&self.names(owners))
+                ),
+            }],
+            pool: found.clone(),
+            objects: found,
+            head: head.text.clone(),
+            // "and all" stays in the text: it tells the translator they go along.
+            range: k..end,
+        })
+    }
+}
+
 /// Whether object `d` belongs to one of `owners`: it rests on one, or stands drawn up to
 /// one — the nearest object standing up (taller than 5 cm: not a rug) that is not of its
 /// own kind (`kind`) is an owner, within [`DRAWN_UP_METRES`] of its footprint.
-fn belongs_to(scene: &Scene, boxes: &[Aabb], d: usize, owners: &[usize], kind: &[usize]) -> bool {
+pub(crate) fn belongs_to(
+    scene: &Scene,
+    boxes: &[Aabb],
+    d: usize,
+    owners: &[usize],
+    kind: &[usize],
+) -> bool {
     if scene.objects[d]
         .support
         .is_some_and(|s| owners.contains(&s))

@@ -31,7 +31,7 @@
 //! the geometric picks, `index` the names, `hold` the phrases held in place.
 
 mod attach;
-mod depend;
+pub(crate) mod depend;
 mod error;
 mod exclude;
 mod head;
@@ -726,8 +726,13 @@ impl<'a> Reader<'a> {
                 k += 1;
                 continue;
             }
-            // "… its bench": what the objects named last rest on or are drawn up to.
-            if let Some(np) = self.possessed_at(k, &self.antecedent.clone()) {
+            // "… its bench": what the objects named last rest on or are drawn up to;
+            // "…, stools and all": what belongs to them.
+            let owned = self.antecedent.clone();
+            if let Some(np) = self
+                .possessed_at(k, &owned)
+                .or_else(|| self.and_all_at(k, &owned))
+            {
                 let end = np.range.end;
                 self.commit(np, &mut phrases, &mut nps);
                 k = end;

@@ -9,8 +9,9 @@
 //! them, on top; TAIL: on it, on them, along, with it, with them, too, as well.
 //!
 //! What rests on a moved object goes with it anyway; the phrase is read when every object
-//! it names rests (directly or through others) on one of the moved ones, which then take
-//! the same steps. Otherwise it is left unread and the instruction refused: "with X2" for
+//! it names belongs to one of the moved ones — rests on it (directly or through others) or
+//! is drawn up to it (`…, X2 and X3 and all`: "stools and all") — and they then take the
+//! same steps. Otherwise it is left unread and the instruction refused: "with X2" for
 //! something standing elsewhere is not a request this reader can check.
 
 use super::clause::Clause;
@@ -62,6 +63,7 @@ const ONS: &[&[&str]] = &[
 
 /// What may close the phrase.
 const TAILS: &[&[&str]] = &[
+    &["and", "all"],
     &["on", "it"],
     &["on", "them"],
     &["along"],
@@ -81,7 +83,10 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             .map(|w| w.len())
     };
     for i in 0..c.len() {
-        let Some(lead) = longest(i, LEADS) else {
+        // "…, X2 and X3 and all" ("stools and all") needs no lead word.
+        let bare = matches!(c.token(i), Some(Token::Variable(_)))
+            && (i == 0 || !c.free(i - 1) || matches!(c.token(i - 1), Some(Token::Separator)));
+        let Some(lead) = longest(i, LEADS).or(bare.then_some(0)) else {
             continue;
         };
         let mut k = i + lead;
@@ -102,7 +107,11 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             };
             k += thing + on;
         }
-        if let Some(tail) = longest(k, TAILS) {
+        let tail = longest(k, TAILS);
+        if lead == 0 && !tail.is_some_and(|_| c.words_at(k, &["and", "all"])) {
+            continue;
+        }
+        if let Some(tail) = tail {
             k += tail;
         }
         // The phrase ends the clause (a separator may follow).
@@ -130,7 +139,7 @@ impl Reader<'_> {
             let carrier = subjects
                 .iter()
                 .copied()
-                .find(|&s| self.facts.known.rests_on(v, s) == Some(true))?;
+                .find(|&s| self.facts.known.belongs(v, s) == Some(true))?;
             out.extend(
                 moved
                     .iter()

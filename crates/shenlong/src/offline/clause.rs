@@ -408,7 +408,12 @@ fn joins_objects(tokens: &[Token], i: usize, current: &[Token]) -> bool {
 /// an amount (`a metre and a half`).
 fn stays_inside(tokens: &[Token], i: usize, current: &[Token]) -> bool {
     let is_and = word(tokens, i) == Some("and");
-    joins_objects(tokens, i, current)
+    // "…, X2 and X3 and all": the closing "and all" is the list's.
+    let and_all = is_and
+        && word(tokens, i + 1) == Some("all")
+        && !matches!(tokens.get(i + 2), Some(Token::Word(_) | Token::Variable(_)));
+    and_all
+        || joins_objects(tokens, i, current)
         || is_and && direction_near(tokens, i, -1) && direction_near(tokens, i, 1)
         || is_and
             && word(tokens, i + 1) == Some("a")

@@ -338,6 +338,19 @@ impl Known<'_> {
         Self::side_on(scene, a, b, surface).map(Some)
     }
 
+    /// Whether variable `v`'s object belongs to variable `s`'s: it rests on it (directly
+    /// or on what rests on it), or is drawn up to it as a chair to its table
+    /// ([`crate::ground::depend::belongs_to`]); `None` where nothing is known of the scene.
+    pub(crate) fn belongs(&self, v: usize, s: usize) -> Option<bool> {
+        let (scene, objects) = self.scene?;
+        let (a, b) = (*objects.get(v)?, *objects.get(s)?);
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        Some(
+            scene.carried_by(b).contains(&a)
+                || crate::ground::depend::belongs_to(scene, boxes, a, &[b], &[a]),
+        )
+    }
+
     /// How a message names variable `v`: its object's name in quotes, or `X{v+1}` where
     /// nothing is known of the scene.
     pub(crate) fn label(&self, v: usize) -> String {
@@ -348,14 +361,6 @@ impl Known<'_> {
                     .map(|&o| format!("'{}'", scene.objects[o].name))
             })
             .unwrap_or_else(|| format!("X{}", v + 1))
-    }
-
-    /// Whether variable `v`'s object rests on variable `s`'s, directly or on what rests on
-    /// it (what moving `s` carries); `None` where nothing is known of the scene.
-    pub(crate) fn rests_on(&self, v: usize, s: usize) -> Option<bool> {
-        let (scene, objects) = self.scene?;
-        let (a, b) = (*objects.get(v)?, *objects.get(s)?);
-        Some(scene.carried_by(b).contains(&a))
     }
 
     /// Whether moving variable `s` along `way` (a horizontal direction) takes it towards
