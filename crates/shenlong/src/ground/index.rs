@@ -278,6 +278,14 @@ impl Builder {
     }
 
     /// Adds a phrase for a target; a target keeps its best tier for a phrase (and the
+    /// Files `target` under a name written without its spaces (`coffeetable`), once.
+    fn add_compact(&mut self, compacted: &str, target: Target) {
+        let list = self.index.compact.entry(compacted.into()).or_default();
+        if list.last() != Some(&target.0) {
+            list.push(target.0);
+        }
+    }
+
     /// word it first came through at that tier).
     fn add(&mut self, phrase: &str, target: Target, tier: Tier, via: Via) {
         if phrase.is_empty() {
@@ -338,14 +346,7 @@ impl Builder {
             let w: Vec<&str> = kind.split(' ').collect();
             for a in 0..w.len() {
                 for b in a + 2..=w.len() {
-                    let list = self
-                        .index
-                        .compact
-                        .entry(w[a..b].concat().into())
-                        .or_default();
-                    if list.last() != Some(&target.0) {
-                        list.push(target.0);
-                    }
+                    self.add_compact(&w[a..b].concat(), target);
                 }
             }
         }
@@ -379,10 +380,7 @@ impl Builder {
         self.add(written, target, Tier::Name, Via::Name);
         self.add(base, target, Tier::Name, Via::Name);
         for b in [written, base] {
-            let list = self.index.compact.entry(compact(b).into()).or_default();
-            if list.last() != Some(&target.0) {
-                list.push(target.0);
-            }
+            self.add_compact(&compact(b), target);
         }
         if let Some(side) = id.side {
             // `SideTable_L` is "the left side table" by its name.

@@ -312,6 +312,16 @@ impl Known<'_> {
         scene.hangs(b) || (raised && self.stays_on_floor(s))
     }
 
+    /// The scene, `s`'s and `t`'s objects and the surface `t` rests on, where `s` is put
+    /// beside `t` on that surface: `t` rests on something other than `s`, and `s` does
+    /// not stay on the floor. `None` otherwise, or where nothing is known of the scene.
+    fn beside_on_support(&self, s: usize, t: usize) -> Option<(&Scene, usize, usize, usize)> {
+        let (scene, objects) = self.scene?;
+        let (a, b) = (*objects.get(s)?, *objects.get(t)?);
+        let surface = scene.objects[b].support?;
+        (surface != a && !self.stays_on_floor(s)).then_some((scene, a, b, surface))
+    }
+
     /// For "next to `t`" where `t` rests on a surface and `s` does not stay on the floor:
     /// the side of `t` on that surface where `s` fits ([`Known::side_on`]). `Ok(None)` when
     /// `t` rests on nothing or `s` stays on the floor ("next to" then keeps its face).
@@ -323,18 +333,9 @@ impl Known<'_> {
         s: usize,
         t: usize,
     ) -> Result<Option<relations::Relation>, String> {
-        let Some((scene, objects)) = self.scene else {
+        let Some((scene, a, b, surface)) = self.beside_on_support(s, t) else {
             return Ok(None);
         };
-        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
-            return Ok(None);
-        };
-        let Some(surface) = scene.objects[b].support else {
-            return Ok(None);
-        };
-        if surface == a || self.stays_on_floor(s) {
-            return Ok(None);
-        }
         Self::side_on(scene, a, b, surface).map(Some)
     }
 
@@ -619,18 +620,9 @@ impl Known<'_> {
         e: usize,
         sign: f64,
     ) -> Result<Option<relations::Relation>, String> {
-        let Some((scene, objects)) = self.scene else {
+        let Some((scene, a, b, surface)) = self.beside_on_support(s, t) else {
             return Ok(None);
         };
-        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
-            return Ok(None);
-        };
-        let Some(surface) = scene.objects[b].support else {
-            return Ok(None);
-        };
-        if surface == a || self.stays_on_floor(s) {
-            return Ok(None);
-        }
         let (me, target, top) = (
             scene.objects[a].world_aabb(),
             scene.objects[b].world_aabb(),

@@ -6,11 +6,10 @@
 //! each moves half of it; a vague amount ("a bit apart") is each one's move.
 
 use super::amounts::{self, Length};
-use super::build::{add, call, div, flat, mul, num, sub};
+use super::build::{call, div, flat, mul, num, sub};
 use super::clause::Clause;
 use super::read::{not_read, Produced, Reader};
-use super::relations::{boxed, Step};
-use crate::expr::Expr;
+use super::relations::{boxed, middle, Step};
 
 /// Which way the subjects go relative to one another.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -79,15 +78,7 @@ impl Reader<'_> {
             None => EACH_BY_DEFAULT,
             Some(_) => return Some(Err(not_read(text, text))),
         };
-        let middle = |steps: &super::relations::Steps| -> Expr {
-            let total = subjects
-                .iter()
-                .map(|&s| boxed(s, "center", steps))
-                .reduce(add)
-                .unwrap_or_else(|| num(0.0));
-            div(total, num(subjects.len() as f64))
-        };
-        let centre = middle(&self.steps);
+        let centre = middle(&subjects, &self.steps);
         let sign = match way {
             Way::Together => -1.0,
             Way::Apart => 1.0,

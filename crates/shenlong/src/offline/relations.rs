@@ -238,8 +238,8 @@ fn side(s: usize, t: usize, steps: &Steps, e: usize, sign: f64, level: Expr, gap
 }
 
 /// The middle of `targets` (the mean of their centres; one target's centre): what
-/// "towards the loungers" goes towards.
-fn middle(targets: &[usize], steps: &Steps) -> Expr {
+/// "towards the loungers" goes towards, and what objects spread apart from.
+pub(crate) fn middle(targets: &[usize], steps: &Steps) -> Expr {
     let total = targets
         .iter()
         .map(|&t| boxed(t, "center", steps))
