@@ -138,16 +138,30 @@ pub(crate) fn tokenize_with(text: &str, quotes: Quotes) -> Vec<Token> {
             continue;
         }
         if !c.is_whitespace() {
-            // `&` and `+` between words are the words people read them as.
+            // `&`, `+` and arrows between words are the words people read them as.
+            let arrow = c == '-' && chars.get(k + 1).is_some_and(|&(_, d)| d == '>');
+            let end = if arrow { k + 2 } else { k + 1 };
+            // An arrow before a place is "to"; before an amount, it only separates
+            // ("bin → 30 cm left"), as a colon does.
+            let amount_after = chars[end..]
+                .iter()
+                .find(|&&(_, d)| !d.is_whitespace())
+                .is_some_and(|&(_, d)| d.is_ascii_digit());
             let kind = match c {
                 '&' => Kind::Word("and".into()),
                 '+' => Kind::Word("plus".into()),
+                '→' | '⇒' | '⟶' if amount_after => Kind::Punct(':'),
+                '→' | '⇒' | '⟶' => Kind::Word("to".into()),
+                _ if arrow && amount_after => Kind::Punct(':'),
+                _ if arrow => Kind::Word("to".into()),
                 _ => Kind::Punct(c),
             };
             tokens.push(Token {
                 kind,
-                span: start..end_of(k + 1),
+                span: start..end_of(end),
             });
+            k = end;
+            continue;
         }
         k += 1;
     }
@@ -250,6 +264,16 @@ mod tests {
         assert_eq!(
             words("desk & chair + lamp", Quotes::Names),
             ["desk", "and", "chair", "plus", "lamp"]
+        );
+        assert_eq!(
+            words(
+                "lamp → floor, bin -> corner, cup → 3 cm left",
+                Quotes::Names
+            ),
+            [
+                "lamp", "to", "floor", ",", "bin", "to", "corner", ",", "cup", ":", "#3", "cm",
+                "left"
+            ]
         );
         let t = tokenize("nudge it abit");
         assert_eq!((t[2].span.clone(), t[3].span.clone()), (9..10, 10..13));

@@ -332,3 +332,121 @@ fn its_bench_is_what_it_stands_on_and_two_targets_are_never_one() {
     let d = moved(PATIO, &s, "BP_Planter_Small_01");
     assert!(d.x.abs() < 1e-9 && (d.z - 1.0).abs() < 1e-9, "{d}");
 }
+
+/// A Blender export of primitives: nothing in a name says what the object is. A table
+/// with two things on it, a low long bench against the left wall, a stack of two boxes
+/// by the right wall, two equal tall posts, a flat plate on the floor and a small box.
+const PRIMITIVES: &str = r#"{
+  "name": "primitives",
+  "bounds": {"min": [-4, 0, -4], "max": [4, 3, 4]},
+  "objects": [
+    {"name": "Cube.001", "position": [-2, 0, 0], "size": [1.6, 0.75, 0.8]},
+    {"name": "Sphere.001", "position": [-2.3, 0.75, 0], "size": [0.2, 0.2, 0.2]},
+    {"name": "Cube.002", "position": [-1.6, 0.75, 0], "size": [0.2, 0.2, 0.2]},
+    {"name": "Cube.003", "position": [-3.78, 0, 1.5], "size": [0.4, 0.45, 1.6]},
+    {"name": "Cube.004", "position": [3, 0, -2], "size": [0.5, 0.4, 0.5]},
+    {"name": "Cube.005", "position": [3, 0.4, -2], "size": [0.45, 0.3, 0.45]},
+    {"name": "Cylinder.001", "position": [-1, 0, -3], "size": [0.3, 2.0, 0.3]},
+    {"name": "Cylinder.002", "position": [2, 0, -3], "size": [0.3, 2.0, 0.3]},
+    {"name": "Plane.001", "position": [1, 0, 2], "size": [2.0, 0.02, 1.5]},
+    {"name": "Cube.006", "position": [0, 0, 3], "size": [0.22, 0.22, 0.22]}
+  ]
+}"#;
+
+fn close(v: glam::DVec3, want: [f64; 3]) -> bool {
+    (v - glam::DVec3::from(want)).length() < 1e-6
+}
+
+#[test]
+fn objects_with_names_that_say_nothing_are_found_by_what_their_boxes_look_like() {
+    let p = PRIMITIVES;
+    // A table: things rest on it at table height (the stacked box is no table).
+    let s = after(p, "move the big table 1 m back").unwrap();
+    for name in ["Cube.001", "Sphere.001", "Cube.002"] {
+        assert!(close(moved(p, &s, name), [0.0, 0.0, -1.0]), "{name}");
+    }
+    // A bench: low and long; a stack: a box with one of its size on top.
+    let s = after(p, "move the long low bench 30 cm forward").unwrap();
+    assert!(close(moved(p, &s, "Cube.003"), [0.0, 0.0, 0.3]));
+    let s = after(p, "move the stack by the right wall 20 cm to the left").unwrap();
+    for name in ["Cube.004", "Cube.005"] {
+        assert!(close(moved(p, &s, name), [-0.2, 0.0, 0.0]), "{name}");
+    }
+    // Shapes: flat, skinny.
+    let s = after(p, "move the flat thing 10 cm left").unwrap();
+    assert!(close(moved(p, &s, "Plane.001"), [-0.1, 0.0, 0.0]));
+    let s = after(p, "the skinny thing on the left, move it back 10 cm").unwrap();
+    assert!(close(moved(p, &s, "Cylinder.001"), [0.0, 0.0, -0.1]));
+    assert!(close(moved(p, &s, "Cylinder.002"), [0.0; 3]));
+    // By a wall: every object within a metre of it.
+    let s = after(p, "move the thing by the left wall 10 cm forward").unwrap();
+    assert!(close(moved(p, &s, "Cube.003"), [0.0, 0.0, 0.1]));
+    // No such thing: no table-like box is a bench's shape, nothing is refused silently.
+    let refused = after(p, "move the table by the front wall 10 cm left").unwrap_err();
+    assert!(refused.contains("Cube.001"), "{refused}");
+}
+
+#[test]
+fn a_plain_size_word_picks_the_few_that_stand_out_or_refuses_naming_them() {
+    let p = PRIMITIVES;
+    // Two small boxes stand out from four bigger ones: "the small box" is either.
+    let refused = after(p, "move the small box 10 cm left").unwrap_err();
+    assert!(
+        refused.contains("Cube.002") && refused.contains("Cube.006"),
+        "{refused}"
+    );
+    assert!(!refused.contains("Cube.004"), "{refused}");
+    let s = after(p, "move the two small boxes 10 cm left").unwrap();
+    for name in ["Cube.002", "Cube.006"] {
+        assert!(close(moved(p, &s, name), [-0.1, 0.0, 0.0]), "{name}");
+    }
+    // Two posts equally tall: refused, naming them.
+    let refused = after(p, "move the tall cylinder 10 cm left").unwrap_err();
+    assert!(
+        refused.contains("Cylinder.001") && refused.contains("Cylinder.002"),
+        "{refused}"
+    );
+}
+
+#[test]
+fn walls_the_room_s_middle_and_another_object_s_place() {
+    let p = PRIMITIVES;
+    let s = after(p, "move Cube.006 a bit closer to the back wall").unwrap();
+    assert!(close(moved(p, &s, "Cube.006"), [0.0, 0.0, -0.1]));
+    // Halfway to the front wall, short of its clearance.
+    let s = after(p, "move Cube.006 closer to the front wall").unwrap();
+    let dz = moved(p, &s, "Cube.006").z;
+    assert!(dz > 0.3 && dz < 0.45, "{dz}");
+    // A bit towards the room's middle, not all the way.
+    let s = after(p, "move Cube.006 a bit towards the middle of the room").unwrap();
+    assert!(close(moved(p, &s, "Cube.006"), [0.0, 0.0, -0.1]));
+    // Each where the other was: a swap said in two halves.
+    let s = after(
+        p,
+        "put Cube.006 where Cylinder.002 is and Cylinder.002 where Cube.006 is",
+    )
+    .unwrap();
+    assert!(close(moved(p, &s, "Cube.006"), [2.0, 0.0, -6.0]));
+    assert!(close(moved(p, &s, "Cylinder.002"), [-2.0, 0.0, 6.0]));
+}
+
+#[test]
+fn arrows_and_what_goes_along() {
+    let p = PRIMITIVES;
+    let s = after(p, "Cube.006 → 30 cm left").unwrap();
+    assert!(close(moved(p, &s, "Cube.006"), [-0.3, 0.0, 0.0]));
+    let s = after(p, "Sphere.001 -> floor").unwrap();
+    assert!(aabb(&s, "Sphere.001").min.y.abs() < 1e-9);
+    let s = after(
+        p,
+        "move Cube.001 and Cube.004 20 cm left, with everything on them",
+    )
+    .unwrap();
+    for name in ["Cube.001", "Sphere.001", "Cube.002", "Cube.004", "Cube.005"] {
+        assert!(close(moved(p, &s, name), [-0.2, 0.0, 0.0]), "{name}");
+    }
+    let s = after(p, "move Cube.001 20 cm right with its stuff").unwrap();
+    for name in ["Cube.001", "Sphere.001", "Cube.002"] {
+        assert!(close(moved(p, &s, name), [0.2, 0.0, 0.0]), "{name}");
+    }
+}

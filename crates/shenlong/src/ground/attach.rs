@@ -111,6 +111,7 @@ impl Reader<'_> {
                     || head.generic
                     || super::hold::cue_before(&self.tokens, start)
                     || self.clause_goes_on(own_place_of_targets(p, *p_end))
+                    || self.topic_before(start, *p_end)
                     || self.verb_takes_no_place(start)
                     || destination
             });
@@ -338,6 +339,12 @@ impl Reader<'_> {
                         | "nearer"
                         | "half"
                         | "twice"
+                        | "towards"
+                        | "toward"
+                        | "further"
+                        | "farther"
+                        | "apart"
+                        | "together"
                 )
         };
         // Another destination right after ("move the mug on the shelf to the coffee
@@ -357,16 +364,37 @@ impl Reader<'_> {
         false
     }
 
+    /// Whether the phrase from token `start` to `end` is a topic the instruction names
+    /// first and then says what to do with: no verb before it, and after it a dash, colon
+    /// or comma and a verb ("the long bench against the left wall - pull it out a bit").
+    /// Its modifier then says which object, never where it goes.
+    fn topic_before(&self, start: usize, end: usize) -> bool {
+        let separated = matches!(
+            self.tokens.get(end).map(|t| &t.kind),
+            Some(Kind::Punct(',' | '-' | '—' | '–' | ':' | ';'))
+        );
+        let verb_after = (end + 1..(end + 4).min(self.tokens.len()))
+            .any(|k| self.word(k).is_some_and(words::is_verb));
+        let verb_before = (0..start).any(|k| self.word(k).is_some_and(words::is_verb));
+        separated && verb_after && !verb_before
+    }
+
     /// Whether the verb of the clause before token `k` takes no place to put the object
-    /// (`rotate`, `scale`, `lift`): then `the tv on the stand` describes the tv.
+    /// (`rotate`, `scale`, `lift`, `spread`, `swap`): then `the tv on the stand` describes
+    /// the tv.
     fn verb_takes_no_place(&self, k: usize) -> bool {
         for t in self.tokens[..k.min(self.tokens.len())].iter().rev() {
             match &t.kind {
                 Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
                 Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
                 Kind::Word(w) if words::is_verb(w) => {
+                    // Moving objects apart or trading their places puts them nowhere.
                     return words::turns_or_scales(w)
-                        || matches!(w.as_str(), "lift" | "raise" | "lower" | "elevate");
+                        || matches!(
+                            w.as_str(),
+                            "lift" | "raise" | "lower" | "elevate" | "spread" | "separate"
+                        )
+                        || matches!(super::verbs::verb(w), Some((super::verbs::Action::Swap, _)));
                 }
                 _ => {}
             }

@@ -11,6 +11,7 @@
 //! only after a determiner ("can you…", "turn it counter clockwise") opens no phrase.
 
 use super::index::{self, Tier};
+use super::profile;
 use super::{grammar_word, words, Head, Np, Reader, Reason, ReasonKind};
 use std::ops::Range;
 use words::Kind;
@@ -76,6 +77,47 @@ impl Reader<'_> {
             .rev()
             .find_map(|len| self.head_of_words(k..ends[len - 1], &pieces[..len]))
             .or_else(|| self.generic_at(k))
+            .or_else(|| self.profile_at(k))
+    }
+
+    /// A word for what an object looks like at token `k` (`table`, `bench`, `stack`) that
+    /// no name answers to: the objects with names that say nothing whose box fits it
+    /// ([`profile`](super::profile)).
+    fn profile_at(&self, k: usize) -> Option<Head> {
+        let w = self.word(k)?;
+        let (profile, plural, one) = profile::noun(w)?;
+        if self.g.index.anonymous.is_empty() {
+            return None;
+        }
+        let loads = profile::loads(self.scene);
+        let objects: Vec<usize> = self
+            .g
+            .index
+            .anonymous
+            .iter()
+            .copied()
+            .filter(|&o| profile::fits(self.scene, o, &loads[o], profile))
+            .collect();
+        if objects.is_empty() {
+            return None;
+        }
+        let text = one.to_string();
+        Some(Head {
+            range: k..k + 1,
+            literal: objects.clone(),
+            objects,
+            generic: false,
+            tier: Tier::Hypernym,
+            plural,
+            reason: Reason {
+                kind: ReasonKind::Category,
+                detail: format!(
+                    "\"{w}\": by its box, a {text} (its name says nothing of what it is)"
+                ),
+            },
+            text,
+            typo: None,
+        })
     }
 
     /// The words from token `k` that may be part of a name (a `#` or `number` before a
@@ -242,6 +284,10 @@ impl Reader<'_> {
             .unwrap_or("");
         // "the thing on the cupboard" is one object; "everything on the shelf", "whatever's
         // on top of the bookcase" all that the modifier names.
+        // "with its stuff", "their things": what is on them, which the translator reads.
+        if k > 0 && self.is_word(k - 1, &["its", "their"]) {
+            return None;
+        }
         let plural = match w {
             "everything" | "things" | "stuff" | "items" | "objects" | "whatever" | "whatever's" => {
                 true

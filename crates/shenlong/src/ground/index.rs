@@ -243,6 +243,9 @@ pub(crate) struct NameIndex {
     vocabulary: Vec<Vec<Box<str>>>,
     /// The longest term, in words.
     pub max_words: usize,
+    /// The objects whose names say nothing of what they are (`pCube1`, `Object_12`), with
+    /// no alias or category: what [`profile`](super::profile) words may name.
+    pub anonymous: Vec<usize>,
 }
 
 /// What makes objects named alike: the name without its number (as written, and as read:
@@ -561,6 +564,12 @@ impl NameIndex {
             b.index.group_of.push(g);
             b.index.numbers.push(id.number);
             b.index.names.push(&name);
+            if object.labels.aliases.is_empty()
+                && object.labels.category.is_none()
+                && super::profile::is_anonymous(&id)
+            {
+                b.index.anonymous.push(i as usize);
+            }
         }
         let mut index = b.index;
         let mut vocabulary: FxHashSet<&str> = FxHashSet::default();

@@ -43,6 +43,7 @@ pub mod lexicon;
 mod phrase;
 mod post;
 mod pre;
+mod profile;
 mod select;
 pub mod verbs;
 pub mod words;
@@ -234,6 +235,9 @@ struct Reader<'a> {
     /// The objects of the last phrase grounded: what "it" after a relation word means
     /// (`… not the lamp on it`).
     antecedent: Vec<usize>,
+    /// The objects of the last list of phrases grounded ("X1 and X2"): what "them" after
+    /// a relation word means.
+    group: Vec<usize>,
 }
 
 impl Grounder {
@@ -606,6 +610,7 @@ impl<'a> Reader<'a> {
             typos: vec![None; n],
             consumed: vec![false; n],
             antecedent: Vec::new(),
+            group: Vec::new(),
         };
         reader.correct_typos();
         reader
@@ -770,6 +775,21 @@ impl<'a> Reader<'a> {
             objects: np.objects.clone(),
             reasons: np.reasons.clone(),
         });
+        // "the benches and the shelf … on them": a list joined by "and" or commas is
+        // what "them" means.
+        let joined = nps.last().is_some_and(|prev| {
+            let gap = prev.range.end..np.range.start;
+            (1..=2).contains(&gap.len())
+                && gap.clone().all(|i| {
+                    self.is_word(i, &["and", "plus"])
+                        || matches!(self.tokens[i].kind, Kind::Punct(','))
+                })
+        });
+        if joined {
+            self.group.extend(np.objects.iter().copied());
+        } else {
+            self.group.clone_from(&np.objects);
+        }
         self.antecedent.clone_from(&np.objects);
         nps.push(np);
     }

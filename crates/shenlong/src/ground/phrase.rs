@@ -265,7 +265,10 @@ impl Reader<'_> {
                 ),
             });
         }
-        let wanted = if head.generic || filter {
+        // "everything on the shelf" is all it names; "the thing on the left" one, the one
+        // furthest that way.
+        let one_at_a_side = matches!(draft.count, Count::One) && matches!(p, Post::Side(..));
+        let wanted = if (head.generic && !one_at_a_side) || filter {
             usize::MAX
         } else {
             wanted
@@ -409,7 +412,9 @@ impl Reader<'_> {
         if let Some(o) = ordinal {
             objects = self.pick_numbered(&head, o, objects, &mut reasons, &phrase)?;
         }
-        if head.generic && end == head.range.end {
+        // "everything", "the thing" with nothing after it to say which — unless the words
+        // before it did ("the flat thing").
+        if head.generic && end == head.range.end && objects.len() == head.objects.len() {
             return Err(GroundError::NoPick {
                 phrase,
                 reason: "say which things ('everything on the table')".into(),

@@ -231,6 +231,9 @@ impl Reader<'_> {
     /// `in the middle of the room` (or of the kitchen, …), `on the wall`.
     fn room_place_at(&self, j: usize) -> Option<(Post, usize)> {
         let w = |k: usize| self.word(k).unwrap_or("");
+        if let Some(by) = self.by_wall_at(j) {
+            return Some(by);
+        }
         if !(matches!(w(j), "in" | "at" | "on" | "against") && w(j + 1) == "the") {
             return None;
         }
@@ -270,6 +273,25 @@ impl Reader<'_> {
             }
             _ => None,
         }
+    }
+
+    /// One wall of the room, after a word of nearness at token `j`, and where it ends: `by
+    /// the left wall`, `near the back wall`, `next to the far right wall`, `along the
+    /// front wall`.
+    fn by_wall_at(&self, j: usize) -> Option<(Post, usize)> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        let mut s = match (w(j), w(j + 1)) {
+            ("by" | "near" | "beside" | "along" | "alongside", "the") => j + 2,
+            ("next" | "close" | "near", "to") if w(j + 2) == "the" => j + 3,
+            _ => return None,
+        };
+        // "the far right wall"; "the far wall" is the back one.
+        if w(s) == "far" && words::side_word(w(s + 1)).is_some() {
+            s += 1;
+        }
+        let (axis, sign) = words::side_word(w(s))?;
+        (axis != words::Axis::Y && w(s + 1) == "wall")
+            .then_some((Post::Room(select::RoomPlace::ByWall(axis, sign)), s + 2))
     }
 
     /// A relation word group at `j` and where its object starts.
@@ -325,13 +347,14 @@ impl Reader<'_> {
             return Ok(self.scene.find(name).map(|i| (vec![i], j + 1)));
         }
         // "the lamp on it": the object named last ("them": the objects).
-        let pronoun = match self.word(j) {
-            Some("it") => self.antecedent.len() == 1,
-            Some("them") => self.antecedent.len() > 1,
-            _ => false,
-        };
-        if pronoun {
-            return Ok(Some((self.antecedent.clone(), j + 1)));
+        match self.word(j) {
+            Some("it") if self.antecedent.len() == 1 => {
+                return Ok(Some((self.antecedent.clone(), j + 1)));
+            }
+            Some("them") if self.group.len() > 1 => {
+                return Ok(Some((self.group.clone(), j + 1)));
+            }
+            _ => {}
         }
         // Skip the determiner and modifiers to the head.
         let mut h = j;

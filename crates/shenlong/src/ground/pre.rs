@@ -52,6 +52,7 @@ impl Reader<'_> {
                 words::side_parts(w).is_some()
                     || words::normalize(w).is_empty()
                     || words::size_word(w).is_some()
+                    || words::shape_word(w).is_some()
                     || words::ordinal(w).is_some()
                     || words::count_word(w).is_some()
                     || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
@@ -133,16 +134,21 @@ impl Reader<'_> {
                 continue;
             }
             let d = words::normalize(w);
+            let shape = words::shape_word(w);
             let fits: Vec<usize> = objects
                 .iter()
                 .copied()
-                .filter(|&o| self.g.index.describes(o, &d))
+                .filter(|&o| match shape {
+                    Some(shape) => select::has_shape(self.scene, o, shape),
+                    None => self.g.index.describes(o, &d),
+                })
                 .collect();
             if fits.is_empty() {
                 // A colour or material must pick; a word of another object's
                 // name ("the dining chair") says nothing about these.
                 if words::is_colour(w)
                     || words::is_colour(&d)
+                    || shape.is_some()
                     || self.g.index.attribute_words.contains(d.as_str())
                 {
                     return Err(GroundError::NoPick {
@@ -285,7 +291,18 @@ impl Reader<'_> {
         reasons: &mut Vec<Reason>,
         phrase: &str,
     ) -> Result<Vec<usize>, GroundError> {
+        let (measure, sign, degree) = words::size_word(w).expect("a size word");
         if matches!(count, Count::All) && objects.len() > 1 {
+            // "the small boxes": the few that stand out as small.
+            if degree == words::Degree::Plain {
+                if let Some(group) = select::by_size_group(self.scene, &objects, measure, sign) {
+                    reasons.push(modifier(&format!(
+                        "\"{w}\" picked {}",
+                        error::list(&self.names(&group))
+                    )));
+                    return Ok(group);
+                }
+            }
             return Err(GroundError::NoPick {
                 phrase: phrase.to_string(),
                 reason: format!(
@@ -295,7 +312,6 @@ impl Reader<'_> {
                 ),
             });
         }
-        let (measure, sign, degree) = words::size_word(w).expect("a size word");
         let n = count.wanted(objects.len());
         let picked =
             select::by_size(self.scene, &objects, measure, sign, degree, n).map_err(|e| {
@@ -313,6 +329,11 @@ impl Reader<'_> {
                             "{} are too close in size to tell which is {w}; name one ('{}')",
                             error::list(&self.names(&objects)),
                             self.name(objects[0])
+                        ),
+                        SizeError::Several(group) => format!(
+                            "{} are all {w}; name one ('{}')",
+                            error::list(&self.names(&group)),
+                            self.name(group[0])
                         ),
                     },
                 }

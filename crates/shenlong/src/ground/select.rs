@@ -2,7 +2,7 @@
 //! order along a direction, and by relation to another object. Every pick needs a clear
 //! winner: when two candidates are too close to call, nothing is picked.
 
-use super::words::{Axis, Degree, Measure};
+use super::words::{Axis, Degree, Measure, Shape};
 use crate::geometry::Aabb;
 use crate::scene::Scene;
 use glam::DVec3;
@@ -177,10 +177,37 @@ pub(crate) fn by_size(
     degree: Degree,
     need: usize,
 ) -> Result<Vec<usize>, SizeError> {
+    let keys = size_keys(scene, candidates, measure, sign);
     if degree != Degree::Superlative && candidates.len() > 2 && need == 1 {
-        return Err(SizeError::ComparesTwo);
+        // "the small box" among nine: the few that stand out as small, if any do.
+        return match (degree, standout(candidates, &keys)) {
+            (Degree::Plain, Some(group)) if group.len() == 1 => Ok(group),
+            (Degree::Plain, Some(group)) => Err(SizeError::Several(group)),
+            _ => Err(SizeError::ComparesTwo),
+        };
     }
-    let keys: Vec<f64> = boxes(scene, candidates)
+    take_extreme(candidates, &keys, need, |a, b| b - a > SIZE_RATIO.ln()).ok_or(SizeError::TooClose)
+}
+
+/// The candidates a plain size word names as a group (`the small boxes`): those that stand
+/// out by [`STANDOUT_RATIO`] from the rest at that end, at most half of them.
+pub(crate) fn by_size_group(
+    scene: &Scene,
+    candidates: &[usize],
+    measure: Measure,
+    sign: f64,
+) -> Option<Vec<usize>> {
+    if candidates.len() <= 2 {
+        return None;
+    }
+    standout(candidates, &size_keys(scene, candidates, measure, sign))
+}
+
+/// Per candidate, its size by `measure` as a sorting key: the log of the size, smallest
+/// key first for the end `sign` names (`sign` +1: the biggest first). The log makes "10 %
+/// bigger" a fixed margin.
+fn size_keys(scene: &Scene, candidates: &[usize], measure: Measure, sign: f64) -> Vec<f64> {
+    boxes(scene, candidates)
         .iter()
         .map(|b| {
             let s = b.size();
@@ -189,20 +216,51 @@ pub(crate) fn by_size(
                 Measure::Height => s.y,
                 Measure::Length => s.x.max(s.z),
             };
-            // Smallest key first: the log makes "10 % bigger" a fixed margin.
             -sign * m.max(1e-12).ln()
         })
-        .collect();
-    take_extreme(candidates, &keys, need, |a, b| b - a > SIZE_RATIO.ln()).ok_or(SizeError::TooClose)
+        .collect()
+}
+
+/// A size ratio that sets a few objects apart from the rest ("the small boxes" are at
+/// least this many times smaller than every other box).
+pub(crate) const STANDOUT_RATIO: f64 = 1.6;
+
+/// The fewest candidates at the small-key end that stand apart from all the others by
+/// [`STANDOUT_RATIO`], at most half of them; `None` when no such group stands out.
+fn standout(candidates: &[usize], keys: &[f64]) -> Option<Vec<usize>> {
+    let mut order: Vec<usize> = (0..candidates.len()).collect();
+    order.sort_by(|&a, &b| keys[a].total_cmp(&keys[b]));
+    (1..=candidates.len() / 2)
+        .find(|&k| keys[order[k]] - keys[order[k - 1]] > STANDOUT_RATIO.ln())
+        .map(|k| order[..k].iter().map(|&i| candidates[i]).collect())
+}
+
+/// Whether `object`'s box has the shape a shape word names.
+#[must_use]
+pub(crate) fn has_shape(scene: &Scene, object: usize, shape: Shape) -> bool {
+    let s = scene.objects[object].world_aabb().size();
+    let (wide, deep, high) = (s.x.max(s.z), s.x.min(s.z), s.y);
+    let slender = wide <= 0.5 * high;
+    match shape {
+        Shape::Flat => high <= 0.25 * deep,
+        Shape::Slender => slender,
+        Shape::Thin => {
+            let mut d = [s.x, s.y, s.z];
+            d.sort_by(f64::total_cmp);
+            slender || d[0] <= 0.25 * d[1]
+        }
+    }
 }
 
 /// Why a size word picked nothing.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub(crate) enum SizeError {
-    /// `bigger` with more than two candidates.
+    /// `bigger` with more than two candidates, or a plain word with none standing out.
     ComparesTwo,
     /// The sizes are too close to call.
     TooClose,
+    /// A plain word (`the small box`) with several standing out alike: these.
+    Several(Vec<usize>),
 }
 
 /// The `k`-th candidate (from 1; `usize::MAX` = the last) counted along a direction, or by
@@ -354,7 +412,12 @@ pub(crate) enum RoomPlace {
     Middle,
     /// On a wall: hanging on it or standing against it.
     Wall,
+    /// By one wall (`by the left wall`): within [`BY_WALL_REACH`] of it.
+    ByWall(Axis, f64),
 }
+
+/// How close to a wall an object "by the wall" is (the gap between its box and the wall).
+pub(crate) const BY_WALL_REACH: f64 = 1.0;
 
 /// How close to a wall an object "on the wall" is.
 pub(crate) const WALL_GAP: f64 = 0.05;
@@ -368,7 +431,8 @@ pub(crate) const MIDDLE_REACH: f64 = 0.25;
 /// both walls of the corner, within [`MIDDLE_REACH`] of the room's smaller extent of the
 /// middle), the one nearest it,
 /// with a clear margin over the next ([`DISTANCE_MARGIN`], [`DISTANCE_RATIO`]); or every
-/// one within [`WALL_GAP`] of a wall. `None` when none is clearly there.
+/// one within [`WALL_GAP`] of a wall, or [`BY_WALL_REACH`] of the wall named. `None` when
+/// none is clearly there.
 pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> Option<Vec<usize>> {
     let room = scene.bounds?;
     let b = boxes(scene, candidates);
@@ -393,15 +457,19 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
                     .map(|corner| (c - corner).length())
                     .fold(f64::INFINITY, f64::min)
             }
-            RoomPlace::Wall => 0.0,
+            RoomPlace::Wall | RoomPlace::ByWall(..) => 0.0,
         }
     };
-    if place == RoomPlace::Wall {
-        let against = |bx: &Aabb| {
-            bx.min.x - room.min.x <= WALL_GAP
-                || room.max.x - bx.max.x <= WALL_GAP
-                || bx.min.z - room.min.z <= WALL_GAP
-                || room.max.z - bx.max.z <= WALL_GAP
+    if matches!(place, RoomPlace::Wall | RoomPlace::ByWall(..)) {
+        // Along a wall, nearer or further from it says nothing of which: every one there.
+        let against = |bx: &Aabb| match place {
+            RoomPlace::ByWall(axis, sign) => wall_gap(&room, bx, axis, sign) <= BY_WALL_REACH,
+            _ => {
+                bx.min.x - room.min.x <= WALL_GAP
+                    || room.max.x - bx.max.x <= WALL_GAP
+                    || bx.min.z - room.min.z <= WALL_GAP
+                    || room.max.z - bx.max.z <= WALL_GAP
+            }
         };
         let kept: Vec<usize> = candidates
             .iter()
@@ -441,7 +509,7 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
             let extent = (room.max.x - room.min.x).min(room.max.z - room.min.z);
             (flat(bx.center()) - flat(room.center())).length() <= MIDDLE_REACH * extent
         }
-        RoomPlace::Wall => true,
+        RoomPlace::Wall | RoomPlace::ByWall(..) => true,
     };
     let mut order: Vec<(f64, usize)> = b
         .iter()
@@ -456,6 +524,16 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
             (d1 - d0 > DISTANCE_MARGIN && *d1 > d0 * DISTANCE_RATIO).then(|| vec![*first])
         }
         [] => None,
+    }
+}
+
+/// The gap between a box and the room's wall on side (`axis`, `sign`).
+fn wall_gap(room: &Aabb, b: &Aabb, axis: Axis, sign: f64) -> f64 {
+    let a = axis as usize;
+    if sign < 0.0 {
+        b.min[a] - room.min[a]
+    } else {
+        room.max[a] - b.max[a]
     }
 }
 

@@ -90,7 +90,9 @@ pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
         | "nudge" | "translate" | "put" | "place" | "placed" | "set" | "bring" | "position"
         | "reposition" | "relocate" | "carry" | "drag" | "pull" | "stack" | "pile" | "sit"
         | "stand" | "roll" | "shove" | "scoot" | "send" | "hang" | "mount" | "get" | "stick"
-        | "leave" | "lay" | "shuffle" | "spread" | "separate" => (Move, None),
+        | "leave" | "lay" | "shuffle" | "spread" | "separate"
+        // "X1 goes on X2" ("go" alone opens "go ahead and …").
+        | "goes" => (Move, None),
         "take" | "grab" | "pick" | "fetch" => (Take, None),
         "swap" | "exchange" | "switch" | "interchange" | "trade" => (Swap, None),
         "align" | "line" => (Align, None),

@@ -460,7 +460,7 @@ pub(crate) fn size_word(w: &str) -> Option<(Measure, f64, Degree)> {
         "tall" => (Height, 1.0, Plain),
         "taller" => (Height, 1.0, Comparative),
         "tallest" => (Height, 1.0, Superlative),
-        "short" => (Height, -1.0, Plain),
+        "short" | "low" => (Height, -1.0, Plain),
         "shorter" => (Height, -1.0, Comparative),
         "shortest" => (Height, -1.0, Superlative),
         "long" | "wide" => (Length, 1.0, Plain),
@@ -469,6 +469,27 @@ pub(crate) fn size_word(w: &str) -> Option<(Measure, f64, Degree)> {
         "narrow" => (Length, -1.0, Plain),
         "narrower" => (Length, -1.0, Comparative),
         "narrowest" => (Length, -1.0, Superlative),
+        _ => return None,
+    })
+}
+
+/// What a shape word says of an object's box, whatever the object is called.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Shape {
+    /// `flat`: much lower than it is wide and deep (a mat, a plate, a board lying down).
+    Flat,
+    /// `skinny`, `slender`: much taller than it is wide (a pole, a column, a floor lamp).
+    Slender,
+    /// `thin`: slender, or much thinner one way than the others (a panel, a board).
+    Thin,
+}
+
+/// The shape word `w` (`flat`, `skinny`, `thin` …), read from an object's box.
+pub(crate) fn shape_word(w: &str) -> Option<Shape> {
+    Some(match w {
+        "flat" | "flattish" => Shape::Flat,
+        "skinny" | "slender" | "slim" | "spindly" | "lanky" => Shape::Slender,
+        "thin" => Shape::Thin,
         _ => return None,
     })
 }

@@ -51,6 +51,7 @@ const THINGS: &[&[&str]] = &[
     &["its", "things"],
     &["their", "things"],
     &["stuff"],
+    &["things"],
 ];
 
 /// Where it is.
@@ -94,18 +95,30 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
         while let Some(Token::Variable(v)) = c.token(k).filter(|_| c.free(k)) {
             named.push(*v);
             k += 1;
-            if c.words_at(k, &["and"]) && matches!(c.token(k + 1), Some(Token::Variable(_))) {
+            // "X3, X4 and X5".
+            let joiner = (c.words_at(k, &["and"]) || matches!(c.token(k), Some(Token::Separator)))
+                && matches!(c.token(k + 1), Some(Token::Variable(_)));
+            if joiner {
                 k += 1;
             }
         }
         if named.is_empty() {
+            // ("its" may be read already, as a possessive.)
+            if !c.free(k) && matches!(c.word(k), Some("its" | "their")) {
+                k += 1;
+            }
             let Some(thing) = longest(k, THINGS) else {
                 continue;
             };
-            let Some(on) = longest(k + thing, ONS) else {
-                continue;
-            };
-            k += thing + on;
+            // "its stuff", "their things" say whose; "the stuff" needs "on it".
+            let whose = (k..k + thing)
+                .chain(k.checked_sub(1))
+                .any(|j| matches!(c.word(j), Some("its" | "their")));
+            match longest(k + thing, ONS) {
+                Some(on) => k += thing + on,
+                None if whose => k += thing,
+                None => continue,
+            }
         }
         let tail = longest(k, TAILS);
         if lead == 0 && !tail.is_some_and(|_| c.words_at(k, &["and", "all"])) {

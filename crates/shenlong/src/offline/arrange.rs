@@ -8,6 +8,16 @@ use super::read::{not_read, Produced, Reader};
 use super::relations::{boxed, Step, GAP};
 use super::words::Token;
 
+/// From where `from` stands to where `to` stands before the edit: centred there, its
+/// bottom on `to`'s bottom.
+fn to_place_of(from: usize, to: usize) -> crate::expr::Expr {
+    sum([
+        along(sub(var(to, "center"), var(from, "center")), 0),
+        along(sub(var(to, "center"), var(from, "center")), 2),
+        along(sub(var(to, "min"), var(from, "min")), 1),
+    ])
+}
+
 /// The axis named by "along the x axis" (for align), its words read.
 fn named_axis(c: &mut Clause) -> Option<usize> {
     let i = c.find(&["axis"])?;
@@ -80,17 +90,46 @@ impl Reader<'_> {
     /// Each of `a` and `b` to the other's place, centred where it stood, on its floor
     /// level.
     fn swapped(a: usize, b: usize) -> Produced {
-        let to = |from: usize, to: usize| {
-            sum([
-                along(sub(var(to, "center"), var(from, "center")), 0),
-                along(sub(var(to, "center"), var(from, "center")), 2),
-                along(sub(var(to, "min"), var(from, "min")), 1),
-            ])
-        };
         vec![
-            (a, Step::Translate(to(a, b))),
-            (b, Step::Translate(to(b, a))),
+            (a, Step::Translate(to_place_of(a, b))),
+            (b, Step::Translate(to_place_of(b, a))),
         ]
+    }
+
+    /// "put X1 where X2 is", "X1 goes where X2 was": X1 to the place X2 stands in before
+    /// the edit, centred there on its floor level, as one half of a swap ("… and X2 where
+    /// X1 is" is the other half, read against the scene as it was). `None` when the clause
+    /// says no such place.
+    pub(super) fn where_is(
+        &mut self,
+        c: &mut Clause,
+        text: &str,
+    ) -> Option<Result<Produced, String>> {
+        let w = (0..c.len()).find(|&i| {
+            c.free(i)
+                && c.word(i) == Some("where")
+                && matches!(c.token(i + 1), Some(Token::Variable(_)))
+                && matches!(
+                    c.word(i + 2),
+                    Some("is" | "was" | "stands" | "stood" | "sits" | "sat" | "are" | "were")
+                )
+        })?;
+        let Some(Token::Variable(t)) = c.token(w + 1).cloned() else {
+            return None;
+        };
+        c.mark(w..w + 3);
+        c.mark_every(&["now", "currently", "right", "to", "goes", "go"]);
+        let subjects = match self.required_subjects(c, text) {
+            Ok(s) => s,
+            Err(e) => return Some(Err(e)),
+        };
+        Some(match subjects.as_slice() {
+            [s] if *s != t => Ok(vec![(*s, Step::Translate(to_place_of(*s, t)))]),
+            _ => Err(format!(
+                "only one object can go where another is, in \"{}\"",
+                text.trim()
+            )),
+        })
     }
 
     /// "align X1 with X2" (along x, or the axis named): centred on X2 along that axis.

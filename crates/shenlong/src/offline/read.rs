@@ -523,6 +523,10 @@ impl<'a> Reader<'a> {
         if let Some(produced) = self.mutual(c, text) {
             return produced;
         }
+        // "put X1 where X2 is".
+        if let Some(produced) = self.where_is(c, text) {
+            return produced;
+        }
         // A relation to another object.
         if let Some(r) = find_relation(c) {
             return self.relate(c, r, text);

@@ -90,6 +90,47 @@ pub(crate) fn away_from_wall(s: usize, wall: Option<(usize, f64)>, amount: f64) 
     }
 }
 
+/// "a bit towards the middle of the room": along the floor towards the room's centre by
+/// `amount` (never past it), or halfway with none.
+pub(crate) fn towards_centre(s: usize, amount: Option<f64>) -> Expr {
+    let f = flat(sub(room("center"), var(s, "center")));
+    match amount {
+        Some(x) => {
+            let length = call("abs", vec![f.clone()]);
+            // (At the centre already: no way towards it, and no motion.)
+            let share = div(
+                call("min", vec![num(x), length.clone()]),
+                call("max", vec![num(1e-9), length]),
+            );
+            mul(share, f)
+        }
+        None => mul(num(0.5), f),
+    }
+}
+
+/// "a bit closer to the back wall": towards a wall (the one named, else the nearest) by
+/// `amount`, never closer than [`CLEARANCE`]; with no amount, halfway to it.
+pub(crate) fn towards_wall(s: usize, wall: Option<(usize, f64)>, amount: Option<f64>) -> Expr {
+    let by = |e: usize, sign: f64| {
+        let left = room_left(s, e, sign);
+        let length = match amount {
+            Some(x) => call("min", vec![num(x), left]),
+            None => mul(num(0.5), left),
+        };
+        scaled_axis(mul(num(sign), length), e)
+    };
+    match wall {
+        Some((e, sign)) => by(e, sign),
+        None => at_nearest_wall(s, |e| {
+            let p = max_side(s, e);
+            add(
+                mul(p.clone(), by(e, 1.0)),
+                mul(sub(num(1.0), p), by(e, -1.0)),
+            )
+        }),
+    }
+}
+
 /// "to the other side of the room": mirrored through the room's centre along the
 /// horizontal axis on which it stands furthest from the centre (for its room: the
 /// offset over the room's half size).

@@ -25,6 +25,12 @@ pub(super) enum RoomPlace {
     AwayFromWall(Option<Direction>, f64),
     /// Mirrored through the room's centre ("to the other side of the room").
     OtherSide,
+    /// Towards the room's centre by so many metres, or halfway with no amount ("a bit
+    /// towards the middle of the room").
+    TowardsCentre(Option<f64>),
+    /// Closer to a wall (the one named, else the nearest) by so many metres, or halfway
+    /// with no amount ("a bit closer to the back wall").
+    CloserToWall(Option<Direction>, Option<f64>),
 }
 
 impl RoomPlace {
@@ -38,6 +44,8 @@ impl RoomPlace {
             Self::ToSide((e, sign)) => room::all_the_way(s, e, sign),
             Self::AwayFromWall(wall, amount) => room::away_from_wall(s, wall, amount),
             Self::OtherSide => room::other_side_of_room(s),
+            Self::TowardsCentre(amount) => room::towards_centre(s, amount),
+            Self::CloserToWall(wall, amount) => room::towards_wall(s, wall, amount),
         }
     }
 }
@@ -118,6 +126,9 @@ fn floor(c: &mut Clause) -> Option<RoomPlace> {
         &["onto", "the", "floor"],
         &["to", "the", "floor"],
         &["on", "the", "ground"],
+        &["to", "floor"],
+        &["on", "floor"],
+        &["onto", "floor"],
         &["to", "the", "ground"],
         &["onto", "the", "ground"],
     ] {
@@ -204,6 +215,28 @@ fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
             .filter(|&a| a < i && c.free(a))
             .map(|a| (a, w.len()))
     });
+    // "a bit closer to the back wall", "nearer the wall": part of the way to it.
+    let closer = [
+        &["closer", "to"][..],
+        &["nearer", "to"],
+        &["closer"],
+        &["nearer"],
+    ]
+    .iter()
+    .find_map(|w| {
+        c.find(w)
+            .filter(|&a| a < i && c.free(a))
+            .map(|a| (a, w.len()))
+    });
+    if let Some((a, len)) = closer {
+        c.mark(a..a + len);
+        let amount = match super::amounts::length(c, false) {
+            Some(super::amounts::Length::Metres(m)) => Some(m),
+            None => None,
+            Some(_) => return Err("an amount closer to a wall must be a length".into()),
+        };
+        return Ok(Some(RoomPlace::CloserToWall(wall, amount)));
+    }
     if let Some((a, len)) = away {
         c.mark(a..a + len);
         let amount = match super::amounts::length(c, false) {
@@ -224,11 +257,32 @@ fn centre(c: &mut Clause, action: Action, has_room: bool) -> Result<Option<RoomP
     if centre_word.is_none() && action != Action::Centre {
         return Ok(None);
     }
+    // "the middle of X3" is an object's middle, not the room's.
+    if centre_word.is_some_and(|i| {
+        c.words_at(i + 1, &["of"])
+            && matches!(c.token(i + 2), Some(super::words::Token::Variable(_)))
+    }) {
+        return Ok(None);
+    }
     need_room(c, has_room)?;
+    // "towards the middle of the room" goes part of the way: the amount said, else half.
+    let towards = centre_word.filter(|&i| {
+        i >= 2 && (c.words_at(i - 2, &["towards", "the"]) || c.words_at(i - 2, &["toward", "the"]))
+    });
     if let Some(i) = centre_word {
         c.mark(i..i + 1);
     }
     mark_room_words(c);
+    if towards.is_some() {
+        let amount = match super::amounts::length(c, false) {
+            Some(super::amounts::Length::Metres(m)) => Some(m),
+            None => None,
+            Some(_) => {
+                return Err("an amount towards the middle of the room must be a length".into())
+            }
+        };
+        return Ok(Some(RoomPlace::TowardsCentre(amount)));
+    }
     Ok(Some(RoomPlace::At(Place::Centre)))
 }
 

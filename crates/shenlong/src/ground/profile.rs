@@ -1,0 +1,179 @@
+//! What a person calls an object whose name says nothing of what it is (`pCube1`,
+//! `polySurface7`, `group4_mesh`, `Object_12`): read from its box and from what rests on
+//! it. A table is something with things on it at table height, a bench a low and long box,
+//! a stack a box with another of about its size on top.
+//!
+//! Only such anonymous objects answer to these words, and only where no object's name,
+//! category or synonym does: in a scene with a `Dining Table`, "the table" is that table.
+
+use super::ident::Identifier;
+use crate::geometry::Aabb;
+use crate::scene::Scene;
+
+/// A kind of object a person recognises by its box.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Profile {
+    /// A table, desk or counter: something rests on it, its top at table height.
+    Surface,
+    /// A bench: low, and long for its depth.
+    Bench,
+    /// A stack or pile: another object of about its footprint rests on it.
+    Stack,
+}
+
+/// A table's top is at least this high above the floor, in metres…
+const SURFACE_MIN_TOP: f64 = 0.3;
+/// …and at most this high.
+const SURFACE_MAX_TOP: f64 = 1.3;
+/// A bench is at most this high, in metres…
+const BENCH_MAX_HEIGHT: f64 = 0.6;
+/// …at least this long…
+const BENCH_MIN_LENGTH: f64 = 1.0;
+/// …and at least this many times longer than deep.
+const BENCH_MIN_RATIO: f64 = 2.5;
+/// What rests on a stack's base covers at least this share of the base's top.
+const STACK_MIN_COVER: f64 = 0.5;
+
+/// The profile a noun names, whether it is plural, and its singular: `table`, `desks`,
+/// `bench`, `stack`.
+#[must_use]
+pub(crate) fn noun(w: &str) -> Option<(Profile, bool, &'static str)> {
+    const NOUNS: &[(&str, Profile)] = &[
+        ("table", Profile::Surface),
+        ("desk", Profile::Surface),
+        ("counter", Profile::Surface),
+        ("worktop", Profile::Surface),
+        ("workbench", Profile::Surface),
+        ("bench", Profile::Bench),
+        ("stack", Profile::Stack),
+        ("pile", Profile::Stack),
+    ];
+    NOUNS.iter().find_map(|&(one, profile)| {
+        if w == one {
+            Some((profile, false, one))
+        } else {
+            let rest = w.strip_prefix(one)?;
+            matches!(rest, "s" | "es").then_some((profile, true, one))
+        }
+    })
+}
+
+/// The words of exported names that say what a node is to the tool, not what the object
+/// is to a person: a modelling tool's primitives and its words for nodes.
+const EMPTY_WORDS: &[&str] = &[
+    "cube",
+    "box",
+    "sphere",
+    "icosphere",
+    "uvsphere",
+    "cylinder",
+    "cone",
+    "torus",
+    "plane",
+    "circle",
+    "mesh",
+    "group",
+    "grp",
+    "object",
+    "obj",
+    "geo",
+    "geometry",
+    "node",
+    "poly",
+    "surface",
+    "polysurface",
+    "shape",
+    "null",
+    "instance",
+    "model",
+    "part",
+    "pasted",
+    "transform",
+    "body",
+    "solid",
+];
+
+/// Whether a name read as `id` says nothing of what its object is: every word of it is a
+/// primitive, a word for a node, a single letter or a number.
+#[must_use]
+pub(crate) fn is_anonymous(id: &Identifier) -> bool {
+    std::iter::once(&id.base)
+        .chain(id.other.as_ref())
+        .flat_map(|kind| kind.split(' '))
+        .all(|w| w.len() <= 1 || w.chars().all(|c| c.is_ascii_digit()) || EMPTY_WORDS.contains(&w))
+}
+
+/// Per object, the objects resting directly on it (built once per lookup, in one pass).
+#[must_use]
+pub(crate) fn loads(scene: &Scene) -> Vec<Vec<usize>> {
+    let mut on = vec![Vec::new(); scene.objects.len()];
+    for (i, o) in scene.objects.iter().enumerate() {
+        if let Some(s) = o.support.filter(|&s| s != i && s < on.len()) {
+            on[s].push(i);
+        }
+    }
+    on
+}
+
+/// Whether `object`'s box, and what rests on it (`load`: the objects resting on it),
+/// fits `profile`.
+#[must_use]
+pub(crate) fn fits(scene: &Scene, object: usize, load: &[usize], profile: Profile) -> bool {
+    let b = scene.objects[object].world_aabb();
+    let s = b.size();
+    let (long, deep) = (s.x.max(s.z), s.x.min(s.z));
+    let load: Vec<Aabb> = load
+        .iter()
+        .map(|&u| scene.objects[u].world_aabb())
+        .collect();
+    match profile {
+        Profile::Surface => {
+            // Things on it, none covering it as a stacked box would.
+            let top = b.max.y - scene.floor();
+            (SURFACE_MIN_TOP..=SURFACE_MAX_TOP).contains(&top)
+                && s.y <= 1.5 * long
+                && !load.is_empty()
+                && !load.iter().any(|u| stacked(&b, u))
+        }
+        Profile::Bench => {
+            s.y <= BENCH_MAX_HEIGHT && long >= BENCH_MIN_LENGTH && long >= BENCH_MIN_RATIO * deep
+        }
+        Profile::Stack => load.iter().any(|u| stacked(&b, u)),
+    }
+}
+
+/// Whether `upper`, resting on `lower`, is about its footprint: stacked on it.
+fn stacked(lower: &Aabb, upper: &Aabb) -> bool {
+    let (l, u) = (lower.size(), upper.size());
+    let (below, above) = (l.x * l.z, u.x * u.z);
+    below > 0.0 && above >= STACK_MIN_COVER * below && above <= below / STACK_MIN_COVER
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::ground::lexicon::Lexicon;
+
+    #[test]
+    fn names_of_primitives_and_nodes_say_nothing() {
+        let lexicon = Lexicon::builtin();
+        for name in [
+            "pCube1",
+            "polySurface7",
+            "group4_mesh",
+            "Object_12",
+            "Cube.004",
+        ] {
+            assert!(
+                is_anonymous(&super::super::ident::read(name, lexicon)),
+                "{name}"
+            );
+        }
+        for name in ["Table_Coffee", "SM_Chair_01", "Plant_Fern", "Lamp.001"] {
+            assert!(
+                !is_anonymous(&super::super::ident::read(name, lexicon)),
+                "{name}"
+            );
+        }
+    }
+}
