@@ -450,3 +450,92 @@ fn arrows_and_what_goes_along() {
         assert!(close(moved(p, &s, name), [0.2, 0.0, 0.0]), "{name}");
     }
 }
+
+/// Three tables in a row with things on them, two chairs drawn up, a stack of crates, a
+/// bin, and a stand mixer standing on a table.
+const CAFE: &str = r#"{
+  "name": "cafe",
+  "bounds": {"min": [-4, 0, -3], "max": [4, 3, 3]},
+  "objects": [
+    {"name": "Table_A", "position": [-2, 0, 0], "size": [1.2, 0.75, 0.8]},
+    {"name": "Table_B", "position": [0, 0, 0], "size": [1.2, 0.75, 0.8]},
+    {"name": "Table_C", "position": [2, 0, 0], "size": [1.2, 0.75, 0.8]},
+    {"name": "Plate.001", "position": [-1.8, 0.75, 0.1], "size": [0.25, 0.03, 0.25]},
+    {"name": "Plate.003", "position": [0, 0.75, 0.2], "size": [0.25, 0.03, 0.25]},
+    {"name": "Plate.002", "position": [1.8, 0.75, 0.1], "size": [0.25, 0.03, 0.25]},
+    {"name": "Red Mug", "position": [0.3, 0.75, -0.2], "size": [0.1, 0.1, 0.1]},
+    {"name": "Blue Mug", "position": [-0.3, 0.75, -0.2], "size": [0.1, 0.1, 0.1]},
+    {"name": "Mixer_Stand", "position": [-2.3, 0.75, -0.15], "size": [0.3, 0.45, 0.4]},
+    {"name": "Lamp", "position": [2.3, 0.75, -0.2], "size": [0.2, 0.4, 0.2]},
+    {"name": "Chair 1", "position": [-2, 0, 0.75], "size": [0.45, 0.9, 0.45]},
+    {"name": "Chair 2", "position": [2, 0, 0.75], "size": [0.45, 0.9, 0.45]},
+    {"name": "Crate 1", "position": [-3.5, 0, -2.4], "size": [0.6, 0.35, 0.4]},
+    {"name": "Crate 2", "position": [-3.5, 0.35, -2.4], "size": [0.6, 0.35, 0.4]},
+    {"name": "Bin", "position": [3.5, 0, -2.4], "size": [0.4, 0.6, 0.4]}
+  ]
+}"#;
+
+#[test]
+fn colours_and_sides_joined_by_and_name_one_object_each() {
+    let p = CAFE;
+    let s = after(p, "swap the red and blue mugs").unwrap();
+    assert!(close(moved(p, &s, "Red Mug"), [-0.6, 0.0, 0.0]));
+    assert!(close(moved(p, &s, "Blue Mug"), [0.6, 0.0, 0.0]));
+    let s = after(p, "move the plates on the left and right tables 10 cm back").unwrap();
+    for name in ["Plate.001", "Plate.002"] {
+        assert!(close(moved(p, &s, name), [0.0, 0.0, -0.1]), "{name}");
+    }
+    assert!(close(moved(p, &s, "Plate.003"), [0.0; 3]));
+}
+
+#[test]
+fn two_turned_to_face_each_other() {
+    let s = after(CAFE, "turn chair 1 and chair 2 to face each other").unwrap();
+    let front = |name: &str| {
+        let o = &s.objects[s.find(name).unwrap()];
+        o.similarity().rotation * glam::DVec3::Z
+    };
+    assert!((front("Chair 1") - glam::DVec3::X).length() < 1e-6);
+    assert!((front("Chair 2") + glam::DVec3::X).length() < 1e-6);
+}
+
+#[test]
+fn the_end_of_a_table_is_on_it_for_a_lamp_and_beside_it_for_a_chair() {
+    let p = CAFE;
+    let s = after(p, "move the lamp to the left end of its table").unwrap();
+    let (lamp, table) = (aabb(&s, "Lamp"), aabb(&s, "Table_C"));
+    assert!((lamp.min.y - table.max.y).abs() < 1e-9, "not on its table");
+    assert!((lamp.min.x - (table.min.x + 0.05)).abs() < 1e-6);
+    let s = after(p, "move chair 2 to the right end of table C").unwrap();
+    let (chair, table) = (aabb(&s, "Chair 2"), aabb(&s, "Table_C"));
+    assert!(chair.min.y.abs() < 1e-9 && chair.min.x >= table.max.x - 1e-9);
+}
+
+#[test]
+fn a_place_after_a_pick_by_place_is_where_it_goes() {
+    let p = CAFE;
+    // "the top crate on the floor near the bin": the top crate, put on the floor.
+    let s = after(p, "put the top crate on the floor near the bin").unwrap();
+    assert!(aabb(&s, "Crate 2").min.y.abs() < 1e-9);
+    assert!(close(moved(p, &s, "Crate 1"), [0.0; 3]));
+    // A stand mixer on a table goes onto the other table, not beside it.
+    let s = after(p, "move the mixer to table C").unwrap();
+    assert!((aabb(&s, "Mixer_Stand").min.y - 0.75).abs() < 1e-9);
+}
+
+#[test]
+fn a_nudge_casual_verbs_and_what_is_included() {
+    let p = CAFE;
+    let s = after(p, "give the bin a little nudge to the left").unwrap();
+    assert!(close(moved(p, &s, "Bin"), [-0.1, 0.0, 0.0]));
+    let s = after(p, "chuck the blue mug on table A").unwrap();
+    assert!((aabb(&s, "Blue Mug").min.y - 0.75).abs() < 1e-9);
+    assert!(aabb(&s, "Blue Mug").center().x < -1.3);
+    let s = after(p, "move table A 20 cm back, Plate.001 included").unwrap();
+    for name in ["Table_A", "Plate.001", "Mixer_Stand"] {
+        assert!(close(moved(p, &s, name), [0.0, 0.0, -0.2]), "{name}");
+    }
+    // A half turn of a table with its things: they go round with it, as carried.
+    let s = after(p, "turn table A around, Plate.001 included").unwrap();
+    assert!(close(moved(p, &s, "Plate.001"), [-0.4, 0.0, -0.2]));
+}

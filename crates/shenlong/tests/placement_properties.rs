@@ -264,7 +264,12 @@ fn gap_to_stack(scene: &Scene, a: &Aabb, after: &[Aabb], y: usize) -> f64 {
 /// Property 2 (and 3 for floor furniture).
 fn check_next_to(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Verdict {
     let a = after[x];
-    let stays = f.bound[x] && !hangs(scene, f, x);
+    // Floor furniture stays down, unless it stands on a table or counter now (a coffee
+    // machine on a counter is moved as a thing on a surface).
+    let on_a_surface = scene.objects[x]
+        .support
+        .is_some_and(|s| f.boxes[s].max.y >= f.floor + 0.3);
+    let stays = f.bound[x] && !hangs(scene, f, x) && !on_a_surface;
     let y_hangs = hangs(scene, f, y);
     let level = if (stays && f.boxes[y].min.y > f.floor + 0.05) || (y_hangs && !hangs(scene, f, x))
     {

@@ -110,15 +110,20 @@ impl Reader<'_> {
                 source
                     || head.generic
                     || super::hold::cue_before(&self.tokens, start)
-                    || self.clause_goes_on(own_place_of_targets(p, *p_end))
+                    || (self.clause_goes_on(own_place_of_targets(p, *p_end))
+                        && !self.floor_then_relation(p, *p_end))
                     || self.topic_before(start, *p_end)
                     || self.verb_takes_no_place(start)
                     || destination
             });
-        // A relation after a noun the modifiers before it already pick among ("the left
-        // stool next to the chair") is where it goes, unless it clearly describes.
-        let post = post
-            .filter(|(p, _)| !(selectors_first && !describes && matches!(p, Post::Relation(..))));
+        // A relation or place after a noun the modifiers before it already pick among
+        // ("the left stool next to the chair", "the top crate on the floor") is where it
+        // goes, unless it clearly describes.
+        let post = post.filter(|(p, _)| {
+            !(selectors_first
+                && !describes
+                && matches!(p, Post::Relation(..) | Post::Floor | Post::Room(_)))
+        });
         // "put the spoon next to the toaster" with two spoons: after a verb of placing the
         // relation is where the spoon goes, not which spoon; refuse, naming them.
         if picks && !describes && !group {
@@ -362,6 +367,17 @@ impl Reader<'_> {
             }
         }
         false
+    }
+
+    /// Whether `p` is the floor and a relation follows it at `end`: "on the floor near the
+    /// bin", "on the floor next to the desk" is one place to go, not the floor picking.
+    fn floor_then_relation(&self, p: &Post, mut end: usize) -> bool {
+        while self.is_word(end, &["somewhere", "just", "right", "roughly", "about"]) {
+            end += 1;
+        }
+        matches!(p, Post::Floor)
+            && (self.relation_at(end).is_some()
+                || self.is_word(end, &["near", "by", "beside", "behind", "between"]))
     }
 
     /// Whether the phrase from token `start` to `end` is a topic the instruction names

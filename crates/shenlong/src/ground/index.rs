@@ -36,6 +36,10 @@ pub(crate) enum Tier {
     NameWord,
 }
 
+/// A box whose smallest side is at least this share of its largest is round enough for a
+/// sphere to be called a ball.
+const ROUND_RATIO: f64 = 0.7;
+
 /// What a modelling tool's primitive shape looks like to a person.
 fn shape_words(primitive: &str) -> &'static [&'static str] {
     match primitive {
@@ -360,7 +364,15 @@ impl Builder {
             }
         }
         self.add_lexicon(target, &kinds, lexicon);
-        self.add_shapes(target, &kinds);
+        let round = {
+            let size = object.world_aabb().size();
+            let (lo, hi) = (
+                size.x.min(size.y).min(size.z),
+                size.x.max(size.y).max(size.z),
+            );
+            hi > 0.0 && lo >= ROUND_RATIO * hi
+        };
+        self.add_shapes(target, &kinds, round);
         self.add_name_words(target, id, lexicon);
         descriptors.retain(|d| d.chars().any(char::is_alphabetic));
         self.index
@@ -492,8 +504,9 @@ impl Builder {
 
     /// A modelling tool's primitive (`pCube7`, `Sphere.002`, `pTorus1`: the names Maya
     /// and Blender give the shapes they make) answers to what the shape looks like: a
-    /// cube is a box, a sphere a ball. Only a kind that is the primitive's word alone.
-    fn add_shapes(&mut self, target: Target, kinds: &[(String, bool)]) {
+    /// cube is a box, a sphere a ball (when its box is `round`). Only a kind that is the
+    /// primitive's word alone.
+    fn add_shapes(&mut self, target: Target, kinds: &[(String, bool)], round: bool) {
         for (kind, _) in kinds {
             let last = kind.rsplit(' ').next().unwrap_or("");
             let primitive = kind == last || kind.split(' ').count() == 2 && kind.starts_with("p ");
@@ -501,8 +514,11 @@ impl Builder {
                 continue;
             }
             let via = self.via(kind);
+            // A sphere squashed flat (a bean bag) is no ball.
             for &look in shape_words(last) {
-                self.add(look, target, Tier::Synonym, via);
+                if round || !matches!(look, "ball" | "globe") {
+                    self.add(look, target, Tier::Synonym, via);
+                }
             }
         }
     }

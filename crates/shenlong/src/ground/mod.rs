@@ -524,6 +524,8 @@ fn grammar_word(w: &str) -> bool {
         || words::count_word(w).is_some()
         || words::is_place_noun(w)
         || words::is_relative_filler(w)
+        || words::shape_word(w).is_some()
+        || words::is_degree_word(w)
         || matches!(
             w,
             "can"

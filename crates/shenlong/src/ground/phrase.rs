@@ -178,7 +178,7 @@ impl Reader<'_> {
         bound: &[usize],
     ) -> Result<Draft, GroundError> {
         let start = opening.start;
-        let objects = if modified {
+        let mut objects = if modified {
             head.literal.clone()
         } else {
             head.objects.clone()
@@ -187,7 +187,57 @@ impl Reader<'_> {
         if let Some(t) = &head.typo {
             reasons.push(t.clone());
         }
-        let objects = self.pick_by_words(head, &mods.picks, objects, &mut reasons, bound, start)?;
+        // "the red and blue cushions" where 'Cushion_Blue' is named "blue cushion": the
+        // head holds the last colour; the others pick among what the noun alone names.
+        let named_with_last = mods.either
+            && head.range.len() > 1
+            && self.word(head.range.start).is_some_and(words::is_colour);
+        if named_with_last {
+            let base = self
+                .head_at(head.range.start + 1)
+                .filter(|b| b.range.end == head.range.end);
+            if let Some(base) = base {
+                let mut union = objects.clone();
+                for w in &mods.picks {
+                    let one = std::slice::from_ref(w);
+                    let fits = self.pick_by_words(
+                        &base,
+                        one,
+                        base.literal.clone(),
+                        &mut reasons,
+                        bound,
+                        start,
+                    )?;
+                    for o in fits {
+                        if !union.contains(&o) {
+                            union.push(o);
+                        }
+                    }
+                }
+                objects = union;
+                reasons.push(super::modifier("each colour named its own objects"));
+            }
+        }
+        let objects = if named_with_last {
+            objects
+        } else if mods.either && mods.picks.len() > 1 {
+            // "the red and blue cushions": the red ones and the blue ones.
+            let mut union: Vec<usize> = Vec::new();
+            for w in &mods.picks {
+                let one = std::slice::from_ref(w);
+                let fits =
+                    self.pick_by_words(head, one, objects.clone(), &mut reasons, bound, start)?;
+                for o in fits {
+                    if !union.contains(&o) {
+                        union.push(o);
+                    }
+                }
+            }
+            objects.retain(|o| union.contains(o));
+            objects
+        } else {
+            self.pick_by_words(head, &mods.picks, objects, &mut reasons, bound, start)?
+        };
         let mut count = mods.count.unwrap_or(opening.count);
         if opening.outer.is_some() {
             // "the bigger of the two boxes": two fit, one is picked.

@@ -163,12 +163,18 @@ impl Reader<'_> {
             let names_a_place = |word: &str| matches!(word, "corner" | "corners");
             let corner = names_a_place(next)
                 || (words::side_word(next).is_some() && names_a_place(w(s + 2)));
-            if next != "of" && self.head_at(s + 1).is_none() && !corner {
+            // "on the left and right tables" names tables.
+            let coordinated = s + 1 < self.tokens.len() && self.coordinates(s + 1);
+            if next != "of" && self.head_at(s + 1).is_none() && !corner && !coordinated {
                 let mut end = s + 1;
                 if matches!(w(end), "side" | "end" | "wall") {
                     end += 1;
                 } else if w(end) == "hand" && w(end + 1) == "side" {
                     end += 2;
+                }
+                // "at the left end of the table" is a relation to the table.
+                if w(end) == "of" {
+                    return None;
                 }
                 return Some((Post::Side(axis, sign), end));
             }
@@ -308,6 +314,23 @@ impl Reader<'_> {
         if let Some(r) = by_four {
             return Some((r, j + 4));
         }
+        // "at the left end of the table", "on the far side of the desk".
+        if matches!(w(j), "at" | "on" | "by" | "to")
+            && w(j + 1) == "the"
+            && matches!(w(j + 3), "end" | "side")
+            && w(j + 4) == "of"
+        {
+            let r = match w(j + 2) {
+                "left" => Some(Relation::LeftOf),
+                "right" => Some(Relation::RightOf),
+                "far" | "back" => Some(Relation::Behind),
+                "near" | "front" => Some(Relation::InFront),
+                _ => None,
+            };
+            if let Some(r) = r {
+                return Some((r, j + 5));
+            }
+        }
         let (r, len) = match (w(j), w(j + 1), w(j + 2)) {
             ("on", "top", "of") => (Relation::On, 3),
             ("in", "front", "of") => (Relation::InFront, 3),
@@ -363,7 +386,7 @@ impl Reader<'_> {
                 break;
             }
             let w = self.word(h).unwrap_or("");
-            if !(words::is_determiner(w) || self.is_premodifier(h)) {
+            if !(words::is_determiner(w) || self.is_premodifier(h) || self.coordinates(h)) {
                 return Ok(None);
             }
             h += 1;

@@ -25,6 +25,9 @@ pub(super) struct Premods {
     pub sizes: Vec<String>,
     /// "the middle …".
     pub middle: bool,
+    /// "the red and blue cushions", "the left and right tables": the words before the
+    /// noun are alternatives, each naming some of the objects.
+    pub either: bool,
     /// Words that keep the objects they describe, in order: `other`, and words of names
     /// or attributes (`red`, `teacher`).
     pub picks: Vec<String>,
@@ -68,11 +71,36 @@ impl Reader<'_> {
         }
     }
 
+    /// Whether token `k` is the `and` (or comma) between two colours or two sides before
+    /// a plural noun: "the red and blue cushions", "the left and right tables".
+    pub(super) fn coordinates(&self, k: usize) -> bool {
+        let joins = self.is_word(k, &["and"]) || matches!(self.tokens[k].kind, Kind::Punct(','));
+        let alike = |i: usize| {
+            self.word(i).is_some_and(|w| {
+                words::is_colour(w) || words::side_word(w).is_some_and(|(a, _)| a != words::Axis::Y)
+            }) && !self.consumed[i]
+        };
+        joins && k > 0 && alike(k - 1) && alike(k + 1) && {
+            // Only before a plural head, after the colours or sides.
+            let mut j = k + 1;
+            while alike(j) || (j > k + 1 && self.coordinates_at_plain(j)) {
+                j += 1;
+            }
+            self.head_at(j).is_some_and(|h| h.plural)
+        }
+    }
+
+    /// A joining word at `j` (for [`Self::coordinates`]'s walk over a list).
+    fn coordinates_at_plain(&self, j: usize) -> bool {
+        self.is_word(j, &["and"])
+            || matches!(self.tokens.get(j).map(|t| &t.kind), Some(Kind::Punct(',')))
+    }
+
     /// Where the modifiers before the head at `h` start, when a determiner opens them; else
     /// `h` itself.
     pub(super) fn premodifier_start(&self, h: usize) -> usize {
         let mut k = h;
-        while k > 0 && self.is_premodifier(k - 1) {
+        while k > 0 && (self.is_premodifier(k - 1) || self.coordinates(k - 1)) {
             k -= 1;
         }
         if k < h && !(k > 0 && self.word(k - 1).is_some_and(words::is_determiner)) {
@@ -88,6 +116,8 @@ impl Reader<'_> {
         for &m in at {
             match &self.tokens[m].kind {
                 Kind::Number(x) => mods.count = Some(Count::Exactly(*x as usize)),
+                Kind::Punct(',') => mods.either = true,
+                Kind::Word(w) if w == "and" => mods.either = true,
                 Kind::Word(w) => {
                     let w = w.trim_end_matches("'s");
                     if let Some(n) = words::count_word(w) {
@@ -216,7 +246,26 @@ impl Reader<'_> {
         reasons: &mut Vec<Reason>,
         phrase: &str,
     ) -> Result<Vec<usize>, GroundError> {
-        if !mods.sides.is_empty() {
+        if mods.either && mods.sides.len() > 1 {
+            // "the left and right tables": the one furthest each way.
+            let mut union: Vec<usize> = Vec::new();
+            for (axis, sign, w) in &mods.sides {
+                let mut direction = glam::DVec3::ZERO;
+                direction[*axis as usize] = *sign;
+                let one = select::by_direction(self.scene, &objects, direction, 1)
+                    .ok_or_else(|| self.too_close(phrase, &objects, w))?;
+                for o in one {
+                    if !union.contains(&o) {
+                        union.push(o);
+                    }
+                }
+            }
+            reasons.push(modifier(&format!(
+                "each side picked {}",
+                error::list(&self.names(&union))
+            )));
+            objects = union;
+        } else if !mods.sides.is_empty() {
             objects = self.pick_by_sides(count, mods, objects, reasons, phrase)?;
         }
         for w in &mods.sizes {

@@ -25,6 +25,8 @@ pub(crate) enum Profile {
 const SURFACE_MIN_TOP: f64 = 0.3;
 /// …and at most this high.
 const SURFACE_MAX_TOP: f64 = 1.3;
+/// A table longer than 1.5 times its depth is at least this deep, in metres.
+const SURFACE_MIN_DEPTH: f64 = 0.5;
 /// A bench is at most this high, in metres…
 const BENCH_MAX_HEIGHT: f64 = 0.6;
 /// …at least this long…
@@ -130,8 +132,11 @@ pub(crate) fn fits(scene: &Scene, object: usize, load: &[usize], profile: Profil
         Profile::Surface => {
             // Things on it, none covering it as a stacked box would.
             let top = b.max.y - scene.floor();
+            // (Long, narrow and low is a chest or a shelf: a table is deep enough to sit at
+            // or square.)
             (SURFACE_MIN_TOP..=SURFACE_MAX_TOP).contains(&top)
                 && s.y <= 1.5 * long
+                && (deep >= SURFACE_MIN_DEPTH || long <= 1.5 * deep)
                 && !load.is_empty()
                 && !load.iter().any(|u| stacked(&b, u))
         }

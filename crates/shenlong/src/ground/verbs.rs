@@ -92,7 +92,9 @@ pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
         | "stand" | "roll" | "shove" | "scoot" | "send" | "hang" | "mount" | "get" | "stick"
         | "leave" | "lay" | "shuffle" | "spread" | "separate"
         // "X1 goes on X2" ("go" alone opens "go ahead and …").
-        | "goes" => (Move, None),
+        | "goes"
+        // Casual verbs of putting: "chuck the remote on the armchair".
+        | "chuck" | "toss" | "plonk" | "plop" | "bung" | "stash" => (Move, None),
         "take" | "grab" | "pick" | "fetch" => (Take, None),
         "swap" | "exchange" | "switch" | "interchange" | "trade" => (Swap, None),
         "align" | "line" => (Align, None),

@@ -473,6 +473,26 @@ pub(crate) fn size_word(w: &str) -> Option<(Measure, f64, Degree)> {
     })
 }
 
+/// Words that say how much, never an object's name or its typo ("a slight turn" is no
+/// "light").
+pub(crate) fn is_degree_word(w: &str) -> bool {
+    matches!(
+        w,
+        "slight"
+            | "slightly"
+            | "gentle"
+            | "gently"
+            | "tiny"
+            | "wee"
+            | "touch"
+            | "tad"
+            | "smidge"
+            | "nudge"
+            | "bit"
+            | "little"
+    )
+}
+
 /// What a shape word says of an object's box, whatever the object is called.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum Shape {

@@ -6,16 +6,20 @@
 //! `LEAD THING [ON] [TAIL]` — LEAD: with, including, keeping, keep, take, taking,
 //! bringing, plus, along with, together with; THING: variables, or the words for what is on
 //! something (everything, whatever's, what's, the stuff, their things …); ON: on it, on
-//! them, on top; TAIL: on it, on them, along, with it, with them, too, as well.
+//! them, on top; TAIL: on it, on them, along, with it, with them, too, as well, included.
+//! With no LEAD, the TAIL must close it: "…, X2 and all", "…, X2 included", "stuff on it
+//! included".
 //!
-//! What rests on a moved object goes with it anyway; the phrase is read when every object
-//! it names belongs to one of the moved ones — rests on it (directly or through others) or
-//! is drawn up to it (`…, X2 and X3 and all`: "stools and all") — and they then take the
-//! same steps. Otherwise it is left unread and the instruction refused: "with X2" for
+//! What rests on a moved object goes with it anyway (carried, turns included); the phrase
+//! is read when every object it names belongs to one of the moved ones — rests on it
+//! (directly or through others: nothing more to do) or is drawn up to it (`…, X2 and X3
+//! and all`: "stools and all": the same moves; a turn is not read, as it would spin each
+//! in place). Otherwise it is left unread and the instruction refused: "with X2" for
 //! something standing elsewhere is not a request this reader can check.
 
 use super::clause::Clause;
 use super::read::{Produced, Reader};
+use super::relations::Step;
 use super::words::Token;
 use std::ops::Range;
 
@@ -65,6 +69,7 @@ const ONS: &[&[&str]] = &[
 /// What may close the phrase.
 const TAILS: &[&[&str]] = &[
     &["and", "all"],
+    &["included"],
     &["on", "it"],
     &["on", "them"],
     &["along"],
@@ -84,8 +89,9 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             .map(|w| w.len())
     };
     for i in 0..c.len() {
-        // "…, X2 and X3 and all" ("stools and all") needs no lead word.
-        let bare = matches!(c.token(i), Some(Token::Variable(_)))
+        // "…, X2 and X3 and all" ("stools and all"), "…, X2 included", "stuff on it
+        // included" need no lead word.
+        let bare = (matches!(c.token(i), Some(Token::Variable(_))) || longest(i, THINGS).is_some())
             && (i == 0 || !c.free(i - 1) || matches!(c.token(i - 1), Some(Token::Separator)));
         let Some(lead) = longest(i, LEADS).or(bare.then_some(0)) else {
             continue;
@@ -121,7 +127,8 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             }
         }
         let tail = longest(k, TAILS);
-        if lead == 0 && !tail.is_some_and(|_| c.words_at(k, &["and", "all"])) {
+        let closes_bare = |k: usize| c.words_at(k, &["and", "all"]) || c.words_at(k, &["included"]);
+        if lead == 0 && !tail.is_some_and(|_| closes_bare(k)) {
             continue;
         }
         if let Some(tail) = tail {
@@ -149,16 +156,26 @@ impl Reader<'_> {
         }
         let mut out = Vec::new();
         for &v in &named {
+            let known = self.facts.known;
             let carrier = subjects
                 .iter()
                 .copied()
-                .find(|&s| self.facts.known.belongs(v, s) == Some(true))?;
-            out.extend(
-                moved
-                    .iter()
-                    .filter(|(s, _)| *s == carrier)
-                    .map(|(_, step)| (v, step.clone())),
-            );
+                .find(|&s| known.belongs(v, s) == Some(true))?;
+            // What rests on it is carried with it, turns included: nothing of its own.
+            if known.carried(v, carrier) {
+                continue;
+            }
+            // What is drawn up to it takes its moves; a turn of its own would spin it in
+            // place instead of round with the table, so that is not read.
+            let steps: Vec<&Step> = moved
+                .iter()
+                .filter(|(s, _)| *s == carrier)
+                .map(|(_, step)| step)
+                .collect();
+            if steps.iter().any(|step| matches!(step, Step::Turn(_))) {
+                return None;
+            }
+            out.extend(steps.into_iter().map(|step| (v, step.clone())));
         }
         c.mark(range);
         Some(out)

@@ -316,9 +316,34 @@ pub(crate) fn says_vague(c: &Clause) -> bool {
         .all(|i| matches!(probe.token(i), Some(Token::Word(w)) if length_unit(w).is_none()))
 }
 
-/// A vague length ("a good bit", "a bit", "a tiny bit", "a lot"), its words read.
+/// A move named as a small one ("a nudge", "a tiny nudge", "a little push", "a gentle
+/// shove"): an article, perhaps a word of smallness, a noun of pushing. Its length in
+/// tokens at `i`, and whether it is a tiny one.
+pub(super) fn small_move_at(c: &Clause, i: usize) -> Option<(usize, bool)> {
+    let push = |w: &str| matches!(w, "nudge" | "push" | "shove" | "bump" | "tap" | "budge");
+    let free = |k: usize| c.free(k);
+    if !(matches!(c.word(i), Some("a" | "an")) && free(i)) {
+        return None;
+    }
+    let small = c.word(i + 1).filter(|w| {
+        matches!(
+            *w,
+            "slight" | "small" | "little" | "tiny" | "wee" | "gentle" | "quick" | "minor"
+        )
+    });
+    let at = if small.is_some() { i + 2 } else { i + 1 };
+    (c.word(at).is_some_and(push) && (i..=at).all(free))
+        .then_some((at + 1 - i, matches!(small, Some("tiny" | "wee"))))
+}
+
+/// A vague length ("a good bit", "a bit", "a tiny bit", "a lot", "a nudge"), its words
+/// read.
 fn vague_length(c: &mut Clause) -> Option<Length> {
     for i in 0..c.len() {
+        if let Some((len, tiny)) = small_move_at(c, i) {
+            c.mark(i..i + len);
+            return Some(Length::Metres(if tiny { TINY_METRES } else { BIT_METRES }));
+        }
         for words in GOOD_BIT {
             if c.free(i) && c.words_at(i, words) {
                 c.mark(i..i + words.len());

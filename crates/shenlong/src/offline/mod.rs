@@ -268,6 +268,17 @@ impl<'s> Known<'s> {
         fits && (volume(a) * 20.0 < volume(b) || self.on_a_surface_to_a_surface(s, t))
     }
 
+    /// Whether variable `s`'s object rests on variable `t`'s now.
+    pub(crate) fn rests_on(&self, s: usize, t: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let (Some(&a), Some(&b)) = (objects.get(s), objects.get(t)) else {
+            return false;
+        };
+        scene.objects[a].support == Some(b)
+    }
+
     /// Whether variable `s` rests on another object's top now and `t` has a top to stand
     /// on: `t` stands on the floor or on something (it does not hang on a wall).
     fn on_a_surface_to_a_surface(&self, s: usize, t: usize) -> bool {
@@ -281,16 +292,26 @@ impl<'s> Known<'s> {
     }
 }
 
+/// A support whose top is at least this high above the floor is a surface things are put
+/// on (a table, a counter), not a rug or a mat, in metres.
+const SURFACE_HEIGHT: f64 = 0.3;
+
 impl Known<'_> {
     /// Whether variable `s` stays on the floor: floor furniture ([`crate::ground::kind`])
-    /// that does not hang.
+    /// that does not hang, and does not stand on a table or counter now (a stand mixer on
+    /// a prep table is moved as a thing on a surface; a chair on a rug stays down).
     pub(crate) fn stays_on_floor(&self, s: usize) -> bool {
         let Some((scene, objects)) = self.scene else {
             return false;
         };
-        objects
-            .get(s)
-            .is_some_and(|&a| crate::ground::kind::is_floor_bound(scene, a) && !scene.hangs(a))
+        let on_a_surface = |a: usize| {
+            scene.objects[a].support.is_some_and(|t| {
+                scene.objects[t].world_aabb().max.y >= scene.floor() + SURFACE_HEIGHT
+            })
+        };
+        objects.get(s).is_some_and(|&a| {
+            crate::ground::kind::is_floor_bound(scene, a) && !scene.hangs(a) && !on_a_surface(a)
+        })
     }
 
     /// Whether "next to", a side of, "to" or "between" target `t` puts subject `s` on the
@@ -350,6 +371,18 @@ impl Known<'_> {
             scene.carried_by(b).contains(&a)
                 || crate::ground::depend::belongs_to(scene, boxes, a, &[b], &[a]),
         )
+    }
+
+    /// Whether variable `v`'s object is carried by variable `s`'s: it rests on it, directly
+    /// or on what rests on it.
+    pub(crate) fn carried(&self, v: usize, s: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        match (objects.get(v), objects.get(s)) {
+            (Some(&a), Some(&b)) => scene.carried_by(b).contains(&a),
+            _ => false,
+        }
     }
 
     /// How a message names variable `v`: its object's name in quotes, or `X{v+1}` where

@@ -479,6 +479,12 @@ impl<'a> Reader<'a> {
                 None => return Err(not_read(&text, &text)),
             },
         };
+        // "give X1 a little nudge back": "give" with a push, not a turn, is a move.
+        if action == Action::Rotate
+            && (0..c.len()).any(|i| super::amounts::small_move_at(c, i).is_some())
+        {
+            action = Action::Move;
+        }
         let face_word = (0..c.len())
             .any(|i| c.free(i) && matches!(c.word(i), Some("face" | "faces" | "facing")));
         if (facing.is_some() || face_word) && matches!(action, Action::Scale | Action::Move) {

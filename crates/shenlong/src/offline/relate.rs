@@ -23,6 +23,10 @@ pub(super) enum RelKind {
     Away,
     /// Closer to the target by the amount named (halfway with none).
     Closer,
+    /// At one end or side of the target (axis, sign): on its top at that end for a small
+    /// thing that goes on it ("the lamp to the right end of its table"), else beside that
+    /// face ("chair 6 to the left end of the table").
+    End(usize, f64),
 }
 
 /// A relation phrase found in a clause.
@@ -54,6 +58,47 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     // "pull X1 back from X2", "out from X2": away from it.
     (&["further", "out", "from"], RelKind::Away),
     (&["further", "back", "from"], RelKind::Away),
+    // "to the left end of X2", "at the far end of X2", "on the right side of X2".
+    (&["to", "the", "left", "end", "of"], RelKind::End(0, -1.0)),
+    (&["to", "the", "left", "side", "of"], RelKind::End(0, -1.0)),
+    (&["to", "the", "right", "end", "of"], RelKind::End(0, 1.0)),
+    (&["to", "the", "right", "side", "of"], RelKind::End(0, 1.0)),
+    (&["to", "the", "far", "end", "of"], RelKind::End(2, -1.0)),
+    (&["to", "the", "back", "end", "of"], RelKind::End(2, -1.0)),
+    (&["to", "the", "back", "side", "of"], RelKind::End(2, -1.0)),
+    (&["to", "the", "near", "end", "of"], RelKind::End(2, 1.0)),
+    (&["to", "the", "front", "end", "of"], RelKind::End(2, 1.0)),
+    (&["to", "the", "front", "side", "of"], RelKind::End(2, 1.0)),
+    (&["at", "the", "left", "end", "of"], RelKind::End(0, -1.0)),
+    (&["at", "the", "left", "side", "of"], RelKind::End(0, -1.0)),
+    (&["at", "the", "right", "end", "of"], RelKind::End(0, 1.0)),
+    (&["at", "the", "right", "side", "of"], RelKind::End(0, 1.0)),
+    (&["at", "the", "far", "end", "of"], RelKind::End(2, -1.0)),
+    (&["at", "the", "back", "end", "of"], RelKind::End(2, -1.0)),
+    (&["at", "the", "back", "side", "of"], RelKind::End(2, -1.0)),
+    (&["at", "the", "near", "end", "of"], RelKind::End(2, 1.0)),
+    (&["at", "the", "front", "end", "of"], RelKind::End(2, 1.0)),
+    (&["at", "the", "front", "side", "of"], RelKind::End(2, 1.0)),
+    (&["on", "the", "left", "end", "of"], RelKind::End(0, -1.0)),
+    (&["on", "the", "left", "side", "of"], RelKind::End(0, -1.0)),
+    (&["on", "the", "right", "end", "of"], RelKind::End(0, 1.0)),
+    (&["on", "the", "right", "side", "of"], RelKind::End(0, 1.0)),
+    (&["on", "the", "far", "end", "of"], RelKind::End(2, -1.0)),
+    (&["on", "the", "back", "end", "of"], RelKind::End(2, -1.0)),
+    (&["on", "the", "back", "side", "of"], RelKind::End(2, -1.0)),
+    (&["on", "the", "near", "end", "of"], RelKind::End(2, 1.0)),
+    (&["on", "the", "front", "end", "of"], RelKind::End(2, 1.0)),
+    (&["on", "the", "front", "side", "of"], RelKind::End(2, 1.0)),
+    (&["by", "the", "left", "end", "of"], RelKind::End(0, -1.0)),
+    (&["by", "the", "left", "side", "of"], RelKind::End(0, -1.0)),
+    (&["by", "the", "right", "end", "of"], RelKind::End(0, 1.0)),
+    (&["by", "the", "right", "side", "of"], RelKind::End(0, 1.0)),
+    (&["by", "the", "far", "end", "of"], RelKind::End(2, -1.0)),
+    (&["by", "the", "back", "end", "of"], RelKind::End(2, -1.0)),
+    (&["by", "the", "back", "side", "of"], RelKind::End(2, -1.0)),
+    (&["by", "the", "near", "end", "of"], RelKind::End(2, 1.0)),
+    (&["by", "the", "front", "end", "of"], RelKind::End(2, 1.0)),
+    (&["by", "the", "front", "side", "of"], RelKind::End(2, 1.0)),
     (
         &["to", "the", "left", "of"],
         RelKind::Fixed(Relation::Side(0, -1.0)),
@@ -293,6 +338,8 @@ impl Reader<'_> {
             .map(|(_, k)| *k);
         let relation = match kind {
             Some(RelKind::Fixed(rel)) => rel,
+            // ("at the left end of it": beside that face.)
+            Some(RelKind::End(e, sign)) => Relation::Side(e, sign),
             Some(RelKind::Away) => Relation::Away(DEFAULT_METRES),
             Some(RelKind::Closer) | None => Relation::Closer(None),
         };
@@ -400,6 +447,16 @@ impl Reader<'_> {
                 Relation::Away(length_value(amounts::length(c, true)).unwrap_or(DEFAULT_METRES))
             }
             RelKind::Closer => Relation::Closer(length_value(amounts::length(c, true))),
+            RelKind::End(e, sign) => {
+                let known = self.facts.known;
+                let onto =
+                    |s: usize| known.small_onto(s, targets[0]) || known.rests_on(s, targets[0]);
+                if targets.len() == 1 && subjects.iter().all(|&s| onto(s)) {
+                    Relation::OnEnd(e, sign)
+                } else {
+                    Relation::Side(e, sign)
+                }
+            }
         };
         // "bring the bowl to the table": a small thing goes on the table's top.
         let to_word = c

@@ -65,6 +65,8 @@ pub(crate) enum Relation {
     Under,
     /// Against one side: (axis, sign).
     Side(usize, f64),
+    /// On the top, at one end: (axis, sign).
+    OnEnd(usize, f64),
     /// As [`Relation::Side`], the given gap (metres, under [`GAP`]) from the target's face:
     /// what fits on the surface the target rests on only closer to it than [`GAP`].
     SideGap(usize, f64, f64),
@@ -154,6 +156,25 @@ pub(crate) fn vector(
             centre(2),
         ]),
         Relation::Side(e, sign) => side(s, t, steps, e, sign, level, GAP),
+        Relation::OnEnd(e, sign) => {
+            // On the top, centred across, its face GAP inside the target's face at that end.
+            let end = if sign > 0.0 {
+                sub(
+                    sub(dot(b("max"), axis(e)), num(GAP)),
+                    dot(a("max"), axis(e)),
+                )
+            } else {
+                sub(
+                    add(dot(b("min"), axis(e)), num(GAP)),
+                    dot(a("min"), axis(e)),
+                )
+            };
+            sum([
+                scaled_axis(sub(dot(b("max"), axis(1)), dot(a("min"), axis(1))), 1),
+                centre(2 - e),
+                scaled_axis(end, e),
+            ])
+        }
         Relation::SideGap(e, sign, gap) => side(s, t, steps, e, sign, level, gap),
         Relation::NextTo => next_to(s, t, steps, level, boxed(s, "center", steps), GAP),
         Relation::NextToOn(surface) => next_to(

@@ -246,6 +246,9 @@ impl Reader<'_> {
         facing: Option<Facing>,
         text: &str,
     ) -> Result<Produced, String> {
+        if let Some(turned) = self.face_each_other(c, text) {
+            return turned;
+        }
         if let Some(f) = facing {
             return self.face(c, f, text);
         }
@@ -300,34 +303,63 @@ impl Reader<'_> {
         }
         Ok(subjects
             .iter()
-            .map(|&s| {
-                // About the vertical, so that the front (+Z) points at the target: +θ
-                // about +Y takes +Z toward +X, so θ = atan2(dx, dz); away adds a half turn.
-                // Both where earlier clauses left them ("move X1 next to X2 and turn
-                // it to face X2" faces X2 from beside it).
-                let d = sub(
-                    boxed(f.target, "center", &self.steps),
-                    boxed(s, "center", &self.steps),
-                );
-                let mut angle = sub(heading(d), heading(var(s, "front")));
-                if f.away {
-                    angle = add(angle, name("pi"));
-                }
-                if let Some(most) = limit {
-                    // The turn the short way round (−π … π), at most `most` degrees.
-                    let short = call(
-                        "atan2",
-                        vec![call("sin", vec![angle.clone()]), call("cos", vec![angle])],
-                    );
-                    let bound = degrees(most.abs());
-                    angle = call(
-                        "max",
-                        vec![neg(bound.clone()), call("min", vec![short, bound])],
-                    );
-                }
-                (s, Step::Turn(rotor(angle, (2, 0))))
-            })
+            .map(|&s| (s, self.turn_to_face(s, f.target, f.away, limit)))
             .collect())
+    }
+
+    /// The turn of subject `s` about the vertical so that its front (or back, `away`)
+    /// points at `target`, at most `limit` degrees the short way round. +θ about +Y takes
+    /// +Z toward +X, so θ = atan2(dx, dz); away adds a half turn. Both where earlier
+    /// clauses left them ("move X1 next to X2 and turn it to face X2" faces X2 from beside
+    /// it).
+    fn turn_to_face(&self, s: usize, target: usize, away: bool, limit: Option<f64>) -> Step {
+        let d = sub(
+            boxed(target, "center", &self.steps),
+            boxed(s, "center", &self.steps),
+        );
+        let mut angle = sub(heading(d), heading(var(s, "front")));
+        if away {
+            angle = add(angle, name("pi"));
+        }
+        if let Some(most) = limit {
+            // The turn the short way round (−π … π), at most `most` degrees.
+            let short = call(
+                "atan2",
+                vec![call("sin", vec![angle.clone()]), call("cos", vec![angle])],
+            );
+            let bound = degrees(most.abs());
+            angle = call(
+                "max",
+                vec![neg(bound.clone()), call("min", vec![short, bound])],
+            );
+        }
+        Step::Turn(rotor(angle, (2, 0)))
+    }
+
+    /// "turn X1 and X2 to face each other": each of two turned to face the other. `None`
+    /// when the clause does not say so.
+    fn face_each_other(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, String>> {
+        let at = (1..c.len()).find(|&i| {
+            (c.words_at(i, &["each", "other"]) || c.words_at(i, &["one", "another"]))
+                && matches!(c.word(i - 1), Some("face" | "faces" | "facing"))
+                && c.free(i - 1)
+        })?;
+        let start = if at >= 2 && c.words_at(at - 2, &["to"]) {
+            at - 2
+        } else {
+            at - 1
+        };
+        c.mark(start..at + 2);
+        let subjects = self.subjects(c, Some(start));
+        let [a, b] = subjects.as_slice() else {
+            return Some(Err(not_read(text, text)));
+        };
+        let (a, b) = (*a, *b);
+        self.last_subjects = subjects.clone();
+        Some(Ok(vec![
+            (a, self.turn_to_face(a, b, false, None)),
+            (b, self.turn_to_face(b, a, false, None)),
+        ]))
     }
 
     /// "face the same way as X2", "in the same direction as X2": its front along X2's.

@@ -330,6 +330,18 @@ fn is_a_word(w: &str) -> bool {
 /// The known word one edit (insertion, deletion, substitution, swap of neighbours) from a
 /// word of four letters or more, when exactly one is.
 pub(crate) fn correct(w: &str) -> Option<&'static str> {
+    // Short words are too close to others for edit distance: only these, as typed.
+    const SHORT: &[(&str, &str)] = &[
+        ("bak", "back"),
+        ("bck", "back"),
+        ("lft", "left"),
+        ("rgt", "right"),
+        ("fwd", "forward"),
+        ("frwd", "forward"),
+    ];
+    if let Some(&(_, meant)) = SHORT.iter().find(|(typed, _)| *typed == w) {
+        return Some(meant);
+    }
     let n = w.chars().count();
     if n < 4 || KNOWN.contains(&w) || COMMON.contains(&w) || !w.chars().all(char::is_alphabetic) {
         return None;
