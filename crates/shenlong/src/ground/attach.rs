@@ -108,6 +108,13 @@ impl Reader<'_> {
             && !same_as
             && post.as_ref().is_some_and(|(p, p_end)| {
                 source
+                    // A row or column before "and their chairs" says which tables ("the
+                    // tables in the back row and their chairs").
+                    || (matches!(p, Post::Line(_))
+                        && self.is_word(*p_end, &["and"])
+                        && self.is_word(*p_end + 1, &["its", "their"]))
+                    // "every seat round the table except …": what is left out of it.
+                    || self.is_word(*p_end, &["except", "excluding", "apart", "besides", "bar"])
                     || head.generic
                     || super::hold::cue_before(&self.tokens, start)
                     || (self.clause_goes_on(own_place_of_targets(p, *p_end))

@@ -129,9 +129,9 @@ impl Reader<'_> {
 }
 
 impl Reader<'_> {
-    /// "…, stools and all", "chairs and all" at token `k`: the objects of that kind that
-    /// belong to the objects named last (`owners`: resting on one, or drawn up to one), as
-    /// a phrase of their own up to the end of "and all". `None` where the words are not
+    /// "…, stools and all", "chairs and all", "…, chairs too" at token `k`: the objects of
+    /// that kind that belong to the objects named last (`owners`: resting on one, or drawn
+    /// up to one), as a phrase of their own up to the end of "and all". `None` where the words are not
     /// that, or none of the kind belongs to them.
     pub(super) fn and_all_at(&self, k: usize, owners: &[usize]) -> Option<Np> {
         if owners.is_empty() || self.consumed[k] {
@@ -139,14 +139,23 @@ impl Reader<'_> {
         }
         let head = self.head_at(k)?;
         let end = head.range.end;
-        if head.generic
-            || !head.plural
-            || !self.is_word(end, &["and"])
-            || !self.is_word(end + 1, &["all"])
-        {
+        // "stools and all"; after a comma also "chairs too", "chairs as well", "chairs
+        // included".
+        let after_comma =
+            k > 0 && matches!(self.tokens[k - 1].kind, super::words::Kind::Punct(','));
+        let closer = if self.is_word(end, &["and"]) && self.is_word(end + 1, &["all"]) {
+            2
+        } else if after_comma && self.is_word(end, &["too", "included"]) {
+            1
+        } else if after_comma && self.is_word(end, &["as"]) && self.is_word(end + 1, &["well"]) {
+            2
+        } else {
+            return None;
+        };
+        if head.generic || !head.plural {
             return None;
         }
-        let closes = match self.tokens.get(end + 2).map(|t| &t.kind) {
+        let closes = match self.tokens.get(end + closer).map(|t| &t.kind) {
             None => true,
             Some(super::words::Kind::Punct(c)) => matches!(c, ',' | '.' | ';' | '!' | '?'),
             _ => false,
@@ -181,7 +190,7 @@ impl Reader<'_> {
             pool: found.clone(),
             objects: found,
             head: head.text.clone(),
-            // "and all" stays in the text: it tells the translator they go along.
+            // "and all" ("too" …) stays in the text: it tells the translator they go along.
             range: k..end,
         })
     }

@@ -90,14 +90,16 @@ impl Reader<'_> {
             return None;
         }
         let loads = profile::loads(self.scene);
-        let objects: Vec<usize> = self
-            .g
-            .index
-            .anonymous
-            .iter()
-            .copied()
-            .filter(|&o| profile::fits(self.scene, o, &loads[o], profile))
-            .collect();
+        let anonymous = &self.g.index.anonymous;
+        let objects: Vec<usize> = if profile == profile::Profile::Seat {
+            profile::seats(self.scene, anonymous, &loads)
+        } else {
+            anonymous
+                .iter()
+                .copied()
+                .filter(|&o| profile::fits(self.scene, o, &loads[o], profile))
+                .collect()
+        };
         if objects.is_empty() {
             return None;
         }

@@ -60,6 +60,40 @@ const PREFIXES: &[&str] = &[
     "sm", "sk", "bp", "geo", "mesh", "obj", "object", "prop", "mdl", "model", "static",
 ];
 
+/// Materials a name may give after its kind (`Vase_Ceramic`): they describe, never name.
+const MATERIALS: &[&str] = &[
+    "wood",
+    "wooden",
+    "oak",
+    "pine",
+    "walnut",
+    "metal",
+    "steel",
+    "iron",
+    "brass",
+    "glass",
+    "plastic",
+    "ceramic",
+    "stone",
+    "marble",
+    "leather",
+    "fabric",
+    "wicker",
+    "rattan",
+    "concrete",
+    "teak",
+    "bamboo",
+    "velvet",
+    "wool",
+    "cotton",
+    "chrome",
+    "gold",
+    "silver",
+    "copper",
+    "clay",
+    "porcelain",
+];
+
 /// Suffixes that say what the node is, not what the object is.
 const SUFFIXES: &[&str] = &[
     "geo", "mesh", "lod", "lod0", "lod1", "lod2", "low", "high", "grp",
@@ -232,7 +266,20 @@ fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
         (true, true) => (written, Some(head_first)),
         (false, false) => match (headed(lexicon, &written), headed(lexicon, &head_first)) {
             (true, false) | (false, false) => (written, None),
-            (false, true) => (head_first, None),
+            // `Knife_Block`, `Plate_Stack`, `Sink_Unit`: read head first ("block knife")
+            // where only that order ends in a noun the lexicon knows, and as written too —
+            // what people call it ("the knife block") — unless its last word is a part of
+            // the room.
+            (false, true) => {
+                let last = written.rsplit(' ').next().unwrap_or("");
+                // (`Cushion_Red`, `Vase_Ceramic`: a colour or material last is no name.)
+                let describes = super::words::is_colour(last)
+                    || super::words::size_word(last).is_some()
+                    || MATERIALS.contains(&last);
+                let as_written =
+                    (!super::words::is_place_noun(last) && !describes).then_some(written);
+                (head_first, as_written)
+            }
             (true, true) => (written, Some(head_first)),
         },
     };
@@ -250,6 +297,21 @@ mod tests {
 
     fn r(name: &str) -> Identifier {
         read(name, Lexicon::builtin())
+    }
+
+    #[test]
+    fn a_name_read_head_first_answers_as_written_too_unless_a_describing_word_ends_it() {
+        let id = r("SM_Knife_Block");
+        assert_eq!(id.other.as_deref(), Some("knife block"), "{id:?}");
+        for name in ["Cushion_Red", "Clock_Wall", "Vase_Ceramic"] {
+            let id = r(name);
+            assert!(
+                id.other.as_deref().is_none_or(|o| !o.ends_with("red")
+                    && !o.ends_with("wall")
+                    && !o.ends_with("ceramic")),
+                "{name}: {id:?}"
+            );
+        }
     }
 
     #[test]

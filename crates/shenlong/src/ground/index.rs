@@ -48,6 +48,8 @@ fn shape_words(primitive: &str) -> &'static [&'static str] {
         "cylinder" => &["cylinder", "column"],
         "torus" => &["ring", "donut", "doughnut"],
         "plane" => &["sheet", "panel"],
+        // Blender's monkey head.
+        "suzanne" => &["monkey", "monkey head", "monkey's head"],
         _ => &[],
     }
 }

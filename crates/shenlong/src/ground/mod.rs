@@ -745,6 +745,14 @@ impl<'a> Reader<'a> {
                 k = end;
                 continue;
             }
+            // "the back row of tables (and their chairs)".
+            if let Some(np) = self.line_of_at(k)? {
+                let np = self.with_dependents(np)?;
+                let end = np.range.end;
+                self.commit(np, &mut phrases, &mut nps);
+                k = end;
+                continue;
+            }
             let bound: Vec<usize> = phrases.iter().flat_map(|p| p.objects.clone()).collect();
             let head = self.head_at(k).or_else(|| self.anaphor_at(k, &nps, &bound));
             match head {

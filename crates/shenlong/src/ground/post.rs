@@ -85,6 +85,94 @@ impl Reader<'_> {
         Ok(None)
     }
 
+    /// A line named before its objects at token `k`: "the back row of tables", "the
+    /// whole front row of desks", "the left column of benches", "the second row of
+    /// chairs" — the objects of the plural noun after `of` that stand in that line, as a
+    /// phrase of its own. `None` where the words are not that.
+    ///
+    /// # Errors
+    /// A second plural noun ("… of desks and chairs") whose objects stand in no such line.
+    pub(super) fn line_of_at(&self, k: usize) -> Result<Option<super::Np>, GroundError> {
+        let w = |i: usize| self.word(i).unwrap_or("");
+        let mut j = k;
+        if w(j) == "the" {
+            j += 1;
+        }
+        if matches!(w(j), "whole" | "entire") {
+            j += 1;
+        }
+        let columns = match w(j + 1) {
+            "row" => false,
+            "column" => true,
+            _ => return Ok(None),
+        };
+        if w(j + 2) != "of" || (k..j + 3).any(|i| self.consumed[i]) {
+            return Ok(None);
+        }
+        let line = match (w(j), columns) {
+            ("front", false) => select::Line::Row(1),
+            ("back" | "rear" | "last", false) => select::Line::Row(usize::MAX),
+            ("left", true) => select::Line::Column(1),
+            ("right" | "last", true) => select::Line::Column(usize::MAX),
+            ("middle" | "center" | "centre", _) => select::Line::Middle { columns },
+            (other, _) => {
+                let Some(n) = words::ordinal(other).filter(|&n| n != usize::MAX) else {
+                    return Ok(None);
+                };
+                if columns {
+                    select::Line::Column(n)
+                } else {
+                    select::Line::Row(n)
+                }
+            }
+        };
+        let mut h = j + 3;
+        if w(h) == "the" {
+            h += 1;
+        }
+        let Some(head) = self.head_at(h) else {
+            return Ok(None);
+        };
+        if !head.plural || head.generic {
+            return Ok(None);
+        }
+        let Some(mut objects) = select::in_line(self.scene, &head.objects, line) else {
+            return Ok(None);
+        };
+        let mut end = head.range.end;
+        // "the back row of desks and chairs": the row of each — or, where the second do
+        // not stand in such rows, refused (never every chair).
+        if self.is_word(end, &["and"]) {
+            if let Some(second) = self.head_at(end + 1).filter(|s| s.plural && !s.generic) {
+                let Some(more) = select::in_line(self.scene, &second.objects, line) else {
+                    return Err(GroundError::NoPick {
+                        phrase: self.span_text(&(k..second.range.end)),
+                        reason: format!(
+                            "the {} do not stand in such rows or columns; name them",
+                            super::error::plural(&second.text)
+                        ),
+                    });
+                };
+                objects.extend(more);
+                end = second.range.end;
+            }
+        }
+        Ok(Some(super::Np {
+            range: k..end,
+            reasons: vec![super::Reason {
+                kind: super::ReasonKind::Group,
+                detail: format!(
+                    "{} stand in that {}",
+                    super::error::list(&self.names(&objects)),
+                    if columns { "column" } else { "row" }
+                ),
+            }],
+            pool: head.objects.clone(),
+            objects,
+            head: head.text.clone(),
+        }))
+    }
+
     /// A row or column at token `j`, and where it ends: `in the back row`, `in the front
     /// row`, `in the second row`, `in the last row`, `in the middle row`, `in the left
     /// column`, `in row 3`, `of the third column`. Rows count from the front, columns
@@ -349,7 +437,11 @@ impl Reader<'_> {
             ("off", _, _) => (Relation::Off, 1),
             ("under" | "below" | "beneath" | "underneath", _, _) => (Relation::Under, 1),
             ("above" | "over", _, _) => (Relation::Above, 1),
-            ("beside" | "by" | "near" | "alongside" | "nearby" | "at", _, _) => (Relation::Near, 1),
+            (
+                "beside" | "by" | "near" | "alongside" | "nearby" | "at" | "around" | "round",
+                _,
+                _,
+            ) => (Relation::Near, 1),
             ("nearest" | "closest", _, _) => (Relation::Nearest, 1),
             ("behind", _, _) => (Relation::Behind, 1),
             ("in" | "inside" | "within", _, _) => (Relation::Inside, 1),

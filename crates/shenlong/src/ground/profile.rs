@@ -19,6 +19,8 @@ pub(crate) enum Profile {
     Bench,
     /// A stack or pile: another object of about its footprint rests on it.
     Stack,
+    /// A seat, chair or stool: a small box drawn up to a table ([`Profile::Surface`]).
+    Seat,
 }
 
 /// A table's top is at least this high above the floor, in metres…
@@ -33,6 +35,12 @@ const BENCH_MAX_HEIGHT: f64 = 0.6;
 const BENCH_MIN_LENGTH: f64 = 1.0;
 /// …and at least this many times longer than deep.
 const BENCH_MIN_RATIO: f64 = 2.5;
+/// A seat is at least this high, in metres…
+const SEAT_MIN_HEIGHT: f64 = 0.3;
+/// …at most this high…
+const SEAT_MAX_HEIGHT: f64 = 1.1;
+/// …and at most this wide.
+const SEAT_MAX_WIDTH: f64 = 0.7;
 /// What rests on a stack's base covers at least this share of the base's top.
 const STACK_MIN_COVER: f64 = 0.5;
 
@@ -49,6 +57,9 @@ pub(crate) fn noun(w: &str) -> Option<(Profile, bool, &'static str)> {
         ("bench", Profile::Bench),
         ("stack", Profile::Stack),
         ("pile", Profile::Stack),
+        ("seat", Profile::Seat),
+        ("chair", Profile::Seat),
+        ("stool", Profile::Seat),
     ];
     NOUNS.iter().find_map(|&(one, profile)| {
         if w == one {
@@ -144,7 +155,36 @@ pub(crate) fn fits(scene: &Scene, object: usize, load: &[usize], profile: Profil
             s.y <= BENCH_MAX_HEIGHT && long >= BENCH_MIN_LENGTH && long >= BENCH_MIN_RATIO * deep
         }
         Profile::Stack => load.iter().any(|u| stacked(&b, u)),
+        Profile::Seat => {
+            (SEAT_MIN_HEIGHT..=SEAT_MAX_HEIGHT).contains(&s.y) && long <= SEAT_MAX_WIDTH
+        }
     }
+}
+
+/// Of the `anonymous` objects, the seats: a seat's size ([`fits`]) and drawn up to one
+/// that is a table (the nearest object standing up is a table, within reach of its
+/// footprint: [`crate::ground::depend::belongs_to`]).
+#[must_use]
+pub(crate) fn seats(scene: &Scene, anonymous: &[usize], loads: &[Vec<usize>]) -> Vec<usize> {
+    let tables: Vec<usize> = anonymous
+        .iter()
+        .copied()
+        .filter(|&o| fits(scene, o, &loads[o], Profile::Surface))
+        .collect();
+    if tables.is_empty() {
+        return Vec::new();
+    }
+    let sized: Vec<usize> = anonymous
+        .iter()
+        .copied()
+        .filter(|&o| !tables.contains(&o) && fits(scene, o, &loads[o], Profile::Seat))
+        .collect();
+    let boxes = scene.world_aabbs();
+    sized
+        .iter()
+        .copied()
+        .filter(|&o| super::depend::belongs_to(scene, &boxes, o, &tables, &sized))
+        .collect()
 }
 
 /// Whether `upper`, resting on `lower`, is about its footprint: stacked on it.

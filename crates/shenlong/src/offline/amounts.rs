@@ -126,6 +126,8 @@ const GOOD_BIT: &[&[&str]] = &[
 
 /// The large-amount phrases.
 pub(super) const FAR: &[&[&str]] = &[
+    &["quite", "a", "long", "way"],
+    &["quite", "a", "lot"],
     &["a", "long", "way"],
     &["a", "good", "way"],
     &["way", "over"],

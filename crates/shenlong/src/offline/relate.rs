@@ -250,6 +250,32 @@ fn mark_relation(c: &mut Clause, r: &Found) {
     for &(i, _) in &r.targets {
         c.mark(i..i + 1);
     }
+    // "right next to", "just behind", "directly in front of": the same place.
+    if r.range.start > 0
+        && c.free(r.range.start - 1)
+        && matches!(
+            c.word(r.range.start - 1),
+            Some("right" | "just" | "directly" | "immediately")
+        )
+    {
+        c.mark(r.range.start - 1..r.range.start);
+    }
+    // "on X2, (roughly) in the middle": on it is centred on it already.
+    if matches!(r.kind, RelKind::Fixed(Relation::On)) {
+        for words in [
+            &["roughly", "in", "the", "middle"][..],
+            &["in", "the", "middle"],
+            &["in", "the", "centre"],
+            &["in", "the", "center"],
+        ] {
+            if let Some(i) = c.find(words) {
+                if (i..i + words.len()).all(|k| c.free(k)) {
+                    c.mark(i..i + words.len());
+                    break;
+                }
+            }
+        }
+    }
     if r.range.start > 0 {
         let p = r.range.start - 1;
         // "push X1 in toward X2": `in` before a move towards something says the same.
