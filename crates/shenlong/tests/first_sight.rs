@@ -632,3 +632,22 @@ fn names_read_head_first_answer_as_written_and_small_words_around_places() {
     let s = after(p, "move chair 4 forward quite a lot").unwrap();
     assert!(close(moved(p, &s, "Chair 4"), [0.0, 0.0, 1.0]));
 }
+
+#[test]
+fn what_is_not_on_a_table_says_which_table() {
+    // In the hall, desk 1 has the lamp, desk 3 the knife block, desk 4 the plate stack:
+    // desk 2 is the empty one.
+    let p = HALL;
+    let s = after(p, "move the empty desk 10 cm left").unwrap();
+    assert!(close(moved(p, &s, "Desk 2"), [-0.1, 0.0, 0.0]));
+    let s = after(p, "move the desk with nothing on it 10 cm back").unwrap();
+    assert!(close(moved(p, &s, "Desk 2"), [0.0, 0.0, -0.1]));
+    // Three desks have no lamp: refused, naming them.
+    let refused = after(p, "put Suzanne on the desk without a lamp").unwrap_err();
+    for name in ["Desk 2", "Desk 3", "Desk 4"] {
+        assert!(refused.contains(name), "{refused}");
+    }
+    // In the cafe no table is empty.
+    let refused = after(CAFE, "move the empty table 10 cm left").unwrap_err();
+    assert!(refused.contains("Table_A"), "{refused}");
+}

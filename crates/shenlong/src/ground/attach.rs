@@ -254,6 +254,24 @@ impl Reader<'_> {
                     objects = vec![picked];
                 }
             }
+            Post::Lacks(targets) => {
+                let carries = |o: usize| {
+                    self.scene.objects.iter().enumerate().any(|(i, u)| {
+                        u.support == Some(o) && targets.as_ref().is_none_or(|t| t.contains(&i))
+                    })
+                };
+                let kept: Vec<usize> = objects.iter().copied().filter(|&o| !carries(o)).collect();
+                if kept.is_empty() {
+                    return Err(GroundError::NoPick {
+                        phrase: at,
+                        reason: format!(
+                            "every one has that on it ({})",
+                            error::list(&self.names(&objects))
+                        ),
+                    });
+                }
+                objects = kept;
+            }
             Post::Middle => {
                 let picked = select::middle(self.scene, &objects)
                     .ok_or_else(|| self.too_close(&at, &objects, "in the middle"))?;

@@ -204,6 +204,9 @@ enum Post {
     Room(select::RoomPlace),
     /// A row or column the objects stand in: "in the back row", "in row 3".
     Line(select::Line),
+    /// Nothing of these rests on it ("without a lamp", "with no books on it"), or nothing
+    /// at all (`None`: "with nothing on it").
+    Lacks(Option<Vec<usize>>),
 }
 
 /// Whether a noun phrase stands on its own, or names the other object of a modifier

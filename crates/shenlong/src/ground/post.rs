@@ -48,6 +48,10 @@ impl Reader<'_> {
                 return Ok(Some((Post::Relation(Relation::SameAs, targets), end)));
             }
         }
+        // without a lamp, with no books on it, that has nothing on it.
+        if let Some(lacks) = self.lacking_at(j, bound)? {
+            return Ok(Some(lacks));
+        }
         // with the lamp (on it), that has the clock on it, holding the vase.
         if matches!(
             w,
@@ -295,6 +299,40 @@ impl Reader<'_> {
             }
         }
         Ok(None)
+    }
+
+    /// What an object lacks at token `j`: `without a lamp`, `with no books on it`, `that
+    /// has no lamp`, `that doesn't have a lamp`, `with nothing on it`.
+    fn lacking_at(&self, j: usize, bound: &[usize]) -> Result<Option<(Post, usize)>, GroundError> {
+        let w = |k: usize| self.word(k).unwrap_or("");
+        let after = match (w(j), w(j + 1), w(j + 2)) {
+            ("without", _, _) => j + 1,
+            ("with" | "has", "no" | "nothing", _) => j + 1,
+            ("doesn't" | "hasn't", "have" | "got", _) => j + 2,
+            ("does" | "has", "not", "have" | "got") => j + 3,
+            _ => return Ok(None),
+        };
+        let mut k = after;
+        if matches!(w(k), "nothing" | "anything") {
+            k += 1;
+            return Ok(Some((Post::Lacks(None), self.on_it_tail(k))));
+        }
+        if matches!(w(k), "no" | "any" | "a" | "an") {
+            k += 1;
+        }
+        let Some((targets, end)) = self.nested_np(k, bound)? else {
+            return Ok(None);
+        };
+        Ok(Some((Post::Lacks(Some(targets)), self.on_it_tail(end))))
+    }
+
+    /// Where "on it" / "on top" after what an object carries ends, from token `k`.
+    fn on_it_tail(&self, k: usize) -> usize {
+        let w = |i: usize| self.word(i).unwrap_or("");
+        match (w(k), w(k + 1)) {
+            ("on", "it" | "top" | "them") => k + 2,
+            _ => k,
+        }
     }
 
     /// What an object carries, after `with`, `has`, `holding`… at token `j`: `with the lamp

@@ -56,6 +56,7 @@ impl Reader<'_> {
                     || words::normalize(w).is_empty()
                     || words::size_word(w).is_some()
                     || words::shape_word(w).is_some()
+                    || matches!(w, "empty" | "bare")
                     || words::ordinal(w).is_some()
                     || words::count_word(w).is_some()
                     || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
@@ -165,10 +166,13 @@ impl Reader<'_> {
             }
             let d = words::normalize(w);
             let shape = words::shape_word(w);
+            // "the empty coffee table": nothing rests on it.
+            let empty = matches!(w.as_str(), "empty" | "bare");
             let fits: Vec<usize> = objects
                 .iter()
                 .copied()
                 .filter(|&o| match shape {
+                    _ if empty => !self.scene.objects.iter().any(|u| u.support == Some(o)),
                     Some(shape) => select::has_shape(self.scene, o, shape),
                     None => self.g.index.describes(o, &d),
                 })
@@ -179,6 +183,7 @@ impl Reader<'_> {
                 if words::is_colour(w)
                     || words::is_colour(&d)
                     || shape.is_some()
+                    || empty
                     || self.g.index.attribute_words.contains(d.as_str())
                 {
                     return Err(GroundError::NoPick {
