@@ -651,3 +651,61 @@ fn what_is_not_on_a_table_says_which_table() {
     let refused = after(CAFE, "move the empty table 10 cm left").unwrap_err();
     assert!(refused.contains("Table_A"), "{refused}");
 }
+
+/// Blender's default names: the first of each primitive has no number (`Cube`, `Sphere`),
+/// a door is a tall thin cube at a wall, a table with things on it.
+const BLENDER: &str = r#"{
+  "name": "blender",
+  "bounds": {"min": [-3, 0, -3], "max": [3, 3, 3]},
+  "objects": [
+    {"name": "Cube", "position": [-2, 0, -2], "size": [1.2, 0.8, 0.6]},
+    {"name": "Cube.001", "position": [0.5, 0, 0], "size": [1.0, 0.6, 0.7]},
+    {"name": "Cube.002", "position": [0.3, 0.6, 0], "size": [0.2, 0.2, 0.2]},
+    {"name": "Cube.003", "position": [2.0, 0, 2.96], "size": [0.9, 2.0, 0.06]},
+    {"name": "Sphere", "position": [-2, 0, 1], "size": [0.3, 0.3, 0.3]},
+    {"name": "Sphere.001", "position": [-1, 0, 1], "size": [0.3, 0.3, 0.3]},
+    {"name": "Sphere.002", "position": [0.7, 0.6, 0.1], "size": [0.1, 0.1, 0.1]}
+  ]
+}"#;
+
+#[test]
+fn a_capitalised_name_as_written_is_that_object_and_a_door_is_seen_by_its_box() {
+    let p = BLENDER;
+    // "Cube" as written is the object named so, not every cube.
+    let s = after(p, "put Sphere on Cube").unwrap();
+    assert!((aabb(&s, "Sphere").min.y - 0.8).abs() < 1e-9);
+    // With a determiner it is the word: every cube, refused.
+    assert!(after(p, "move the cube 10 cm left").is_err());
+    // A door: a tall thin panel at a wall.
+    let s = after(p, "move Sphere.001 a bit closer to the door").unwrap();
+    assert!(moved(p, &s, "Sphere.001").z > 0.05);
+    // The same object said again in brackets; another one there is refused.
+    let s = after(p, "move the door (Cube.003) 10 cm left").unwrap();
+    assert!(close(moved(p, &s, "Cube.003"), [-0.1, 0.0, 0.0]));
+    let refused = after(p, "move the door (Cube.001) 10 cm left").unwrap_err();
+    assert!(
+        refused.contains("Cube.003") && refused.contains("Cube.001"),
+        "{refused}"
+    );
+}
+
+#[test]
+fn lists_before_a_colon_each_and_what_goes_together_with() {
+    let p = BLENDER;
+    let s = after(p, "Sphere, Sphere.001 and Cube.002: 10 cm left each").unwrap();
+    for name in ["Sphere", "Sphere.001", "Cube.002"] {
+        assert!(close(moved(p, &s, name), [-0.1, 0.0, 0.0]), "{name}");
+    }
+    let s = after(
+        p,
+        "move Cube.001 together with everything on it 40cm to the left",
+    )
+    .unwrap();
+    for name in ["Cube.001", "Cube.002", "Sphere.002"] {
+        assert!(close(moved(p, &s, name), [-0.4, 0.0, 0.0]), "{name}");
+    }
+    let s = after(p, "slide Cube.001 a bit right with all its stuff").unwrap();
+    assert!(close(moved(p, &s, "Sphere.002"), [0.1, 0.0, 0.0]));
+    let s = after(p, "move Sphere over by Sphere.001, roughly").unwrap();
+    assert!(moved(p, &s, "Sphere").x > 0.3);
+}

@@ -22,7 +22,7 @@ impl Reader<'_> {
     fn identifier_at(&self, k: usize) -> Option<Head> {
         let w = self.word(k)?;
         if !w.contains(['_', '.']) {
-            return None;
+            return self.capitalised_at(k);
         }
         // Unity's copies: `Lamp_Bedside (1)` is its own object, never `Lamp_Bedside`.
         let copy = matches!(
@@ -42,6 +42,34 @@ impl Reader<'_> {
         let object = self.scene.find(raw)?;
         let mut head = self.make_head(
             k..end,
+            vec![object],
+            Tier::Name,
+            false,
+            words::normalize(raw),
+            raw,
+            None,
+        );
+        head.literal = vec![object];
+        Some(head)
+    }
+
+    /// An object's one-word name typed as it is written, capital and all, with no
+    /// determiner before it (`put Suzanne on Cube` beside `Cube.001` … `Cube.010`): that
+    /// object, not every cube. Not before a number (`Chair 2` is chair 2).
+    fn capitalised_at(&self, k: usize) -> Option<Head> {
+        let span = self.tokens[k].span.clone();
+        let raw = self.text.get(span)?;
+        let &object = self.g.index.capitalised.get(raw)?;
+        let determiner = k > 0 && self.word(k - 1).is_some_and(words::is_determiner);
+        let numbered = matches!(
+            self.tokens.get(k + 1).map(|t| &t.kind),
+            Some(Kind::Number(_))
+        );
+        if determiner || numbered {
+            return None;
+        }
+        let mut head = self.make_head(
+            k..k + 1,
             vec![object],
             Tier::Name,
             false,

@@ -252,6 +252,9 @@ pub(crate) struct NameIndex {
     /// The objects whose names say nothing of what they are (`pCube1`, `Object_12`), with
     /// no alias or category: what [`profile`](super::profile) words may name.
     pub anonymous: Vec<usize>,
+    /// Names of one capitalised word (`Cube`, `Cylinder`, `Suzanne` as Blender names its
+    /// first of each), as written, and the one object so named.
+    pub capitalised: FxHashMap<Box<str>, usize>,
 }
 
 /// What makes objects named alike: the name without its number (as written, and as read:
@@ -587,6 +590,14 @@ impl NameIndex {
                 && super::profile::is_anonymous(&id)
             {
                 b.index.anonymous.push(i as usize);
+            }
+            let one_word = object.name.chars().next().is_some_and(char::is_uppercase)
+                && object.name.chars().all(char::is_alphabetic);
+            if one_word {
+                b.index
+                    .capitalised
+                    .entry(object.name.as_str().into())
+                    .or_insert(i as usize);
             }
         }
         let mut index = b.index;

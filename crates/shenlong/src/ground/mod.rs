@@ -407,7 +407,8 @@ impl Grounder {
                 total: scene.objects.len(),
             });
         }
-        let (phrases, held, cuts) = separate_holds(&reader.tokens, phrases);
+        let (phrases, held, mut cuts) = separate_holds(&reader.tokens, phrases);
+        let phrases = drop_restated(text, phrases, &mut cuts, scene)?;
         if phrases.is_empty() {
             return Err(GroundError::OnlyHeld {
                 held: held
@@ -423,6 +424,57 @@ impl Grounder {
             cuts,
         })
     }
+}
+
+/// Drops a phrase in brackets right after another that names the same objects ("the
+/// door (Cube.009)"): it says again which, not another object. Its brackets and words are
+/// cut from the query.
+///
+/// # Errors
+/// A phrase in brackets that names other objects than the one before it: which is meant
+/// is not clear.
+fn drop_restated(
+    text: &str,
+    phrases: Vec<Phrase>,
+    cuts: &mut Vec<Range<usize>>,
+    scene: &Scene,
+) -> Result<Vec<Phrase>, GroundError> {
+    let mut kept: Vec<Phrase> = Vec::with_capacity(phrases.len());
+    for p in phrases {
+        let bracketed = kept.last().filter(|prev| {
+            prev.span.end <= p.span.start
+                && text[prev.span.end..p.span.start].trim() == "("
+                && text[p.span.end..].trim_start().starts_with(')')
+        });
+        match bracketed {
+            Some(prev) if prev.objects == p.objects => {
+                let open = text[..p.span.start].rfind('(').unwrap_or(p.span.start);
+                let close = p.span.end + text[p.span.end..].find(')').map_or(0, |k| k + 1);
+                cuts.push(open..close);
+            }
+            Some(prev) => {
+                let names = |objects: &[usize]| {
+                    error::list(
+                        &objects
+                            .iter()
+                            .map(|&o| scene.objects[o].name.clone())
+                            .collect::<Vec<_>>(),
+                    )
+                };
+                return Err(GroundError::NoPick {
+                    phrase: format!("{} ({})", prev.text, p.text),
+                    reason: format!(
+                        "\"{}\" is {}, not {}; say which",
+                        prev.text,
+                        names(&prev.objects),
+                        names(&p.objects)
+                    ),
+                });
+            }
+            None => kept.push(p),
+        }
+    }
+    Ok(kept)
 }
 
 /// Splits the phrases held in place ([`hold`]) from the others; a group that takes in a

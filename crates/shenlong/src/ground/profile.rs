@@ -21,6 +21,8 @@ pub(crate) enum Profile {
     Stack,
     /// A seat, chair or stool: a small box drawn up to a table ([`Profile::Surface`]).
     Seat,
+    /// A door: a tall, thin panel of a door's width standing at a wall of the room.
+    Door,
 }
 
 /// A table's top is at least this high above the floor, in metres…
@@ -41,6 +43,16 @@ const SEAT_MIN_HEIGHT: f64 = 0.3;
 const SEAT_MAX_HEIGHT: f64 = 1.1;
 /// …and at most this wide.
 const SEAT_MAX_WIDTH: f64 = 0.7;
+/// A door is at least this high, in metres…
+const DOOR_MIN_HEIGHT: f64 = 1.7;
+/// …at most this thick…
+const DOOR_MAX_THICKNESS: f64 = 0.15;
+/// …at least this wide…
+const DOOR_MIN_WIDTH: f64 = 0.6;
+/// …at most this wide…
+const DOOR_MAX_WIDTH: f64 = 1.3;
+/// …and within this of a wall.
+const DOOR_WALL_GAP: f64 = 0.2;
 /// What rests on a stack's base covers at least this share of the base's top.
 const STACK_MIN_COVER: f64 = 0.5;
 
@@ -57,6 +69,7 @@ pub(crate) fn noun(w: &str) -> Option<(Profile, bool, &'static str)> {
         ("bench", Profile::Bench),
         ("stack", Profile::Stack),
         ("pile", Profile::Stack),
+        ("door", Profile::Door),
         ("seat", Profile::Seat),
         ("chair", Profile::Seat),
         ("stool", Profile::Seat),
@@ -157,6 +170,18 @@ pub(crate) fn fits(scene: &Scene, object: usize, load: &[usize], profile: Profil
         Profile::Stack => load.iter().any(|u| stacked(&b, u)),
         Profile::Seat => {
             (SEAT_MIN_HEIGHT..=SEAT_MAX_HEIGHT).contains(&s.y) && long <= SEAT_MAX_WIDTH
+        }
+        Profile::Door => {
+            let at_wall = scene.bounds.is_some_and(|room| {
+                b.min.x - room.min.x <= DOOR_WALL_GAP
+                    || room.max.x - b.max.x <= DOOR_WALL_GAP
+                    || b.min.z - room.min.z <= DOOR_WALL_GAP
+                    || room.max.z - b.max.z <= DOOR_WALL_GAP
+            });
+            at_wall
+                && s.y >= DOOR_MIN_HEIGHT
+                && deep <= DOOR_MAX_THICKNESS
+                && (DOOR_MIN_WIDTH..=DOOR_MAX_WIDTH).contains(&long)
         }
     }
 }

@@ -109,7 +109,13 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             }
         }
         if named.is_empty() {
-            // ("its" may be read already, as a possessive.)
+            // "with all its stuff" ("its" may be read already, as a possessive).
+            if c.free(k)
+                && c.word(k) == Some("all")
+                && matches!(c.word(k + 1), Some("its" | "their"))
+            {
+                k += 1;
+            }
             if !c.free(k) && matches!(c.word(k), Some("its" | "their")) {
                 k += 1;
             }

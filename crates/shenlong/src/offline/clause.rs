@@ -179,6 +179,9 @@ impl Clause {
                                     | "where"
                             )
                         )
+                        // "…, roughly" at the end of the clause.
+                        || self.word(i + 1).is_none()
+                            && matches!(self.tokens.get(i + 1), None | Some(Token::Separator))
                 }
                 Some("about" | "circa" | "maybe" | "like") => number_at(self, i + 1),
                 _ => false,
@@ -196,6 +199,13 @@ impl Clause {
             while let Some(i) = self.find(words) {
                 self.mark(i..i + words.len());
             }
+        }
+        // "10 cm left each", "a quarter turn each": the same for every one, as it is.
+        let last = (0..self.len())
+            .rev()
+            .find(|&i| !matches!(self.tokens.get(i), Some(Token::Separator)));
+        if let Some(i) = last.filter(|&i| i > 0 && self.word(i) == Some("each") && self.free(i)) {
+            self.mark(i..i + 1);
         }
     }
 

@@ -445,6 +445,11 @@ impl<'a> Reader<'a> {
             {
                 c.mark(k..k + 1);
             }
+            // "X1 together with X2 and X3" (what the grounder found on it): one list.
+            let with = c.words_at(k, &["together", "with"]) || c.words_at(k, &["along", "with"]);
+            if with && vars.iter().any(|(j, _)| *j == k + 2) {
+                c.mark(k..k + 2);
+            }
         }
         mark_pronouns(c, cut);
         if subjects.is_empty() {

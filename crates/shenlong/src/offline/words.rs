@@ -116,10 +116,14 @@ fn word_tokens(word: &str, tokens: &mut Vec<Token>) {
 /// comma, how far and where, with no verb. The separator joins them into one clause (a
 /// list's comma, "X1, X2 and X3", is kept).
 fn subject_then_amount(tokens: &mut Vec<Token>) {
-    let subjects = tokens
-        .iter()
-        .take_while(|t| matches!(t, Token::Variable(_)) || **t == Token::Word("and".into()))
-        .count();
+    // The list: variables, "and", and commas followed by another variable.
+    let in_list = |i: usize| match &tokens[i] {
+        Token::Variable(_) => true,
+        Token::Word(w) => w == "and",
+        Token::Separator => matches!(tokens.get(i + 1), Some(Token::Variable(_))),
+        _ => false,
+    };
+    let subjects = (0..tokens.len()).take_while(|&i| in_list(i)).count();
     if subjects == 0 || tokens.get(subjects) != Some(&Token::Separator) {
         return;
     }
