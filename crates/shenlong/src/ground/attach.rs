@@ -167,33 +167,7 @@ impl Reader<'_> {
     ) -> Result<Vec<usize>, GroundError> {
         let (at, words) = (text.at.to_string(), text.words);
         match p {
-            Post::Floor => {
-                let floor = self.scene.floor();
-                let on_floor: Vec<usize> = objects
-                    .iter()
-                    .copied()
-                    .filter(|&o| {
-                        self.scene.objects[o].support.is_none()
-                            && self.scene.objects[o].world_aabb().min.y <= floor + 0.05
-                    })
-                    .collect();
-                if on_floor.is_empty() || (wanted != usize::MAX && on_floor.len() != wanted) {
-                    return Err(GroundError::NoPick {
-                        phrase: at,
-                        reason: format!(
-                            "{} on the floor ({} of {})",
-                            if on_floor.is_empty() {
-                                "none is"
-                            } else {
-                                "not one is"
-                            },
-                            on_floor.len(),
-                            error::list(&self.names(&objects))
-                        ),
-                    });
-                }
-                objects = on_floor;
-            }
+            Post::Floor => objects = self.keep_on_floor(objects, wanted, at)?,
             Post::Side(axis, sign) => {
                 if let Some(o) = ordinal.take() {
                     let picked = select::nth(self.scene, &objects, o, Direction::Side(axis, sign))
@@ -254,24 +228,7 @@ impl Reader<'_> {
                     objects = vec![picked];
                 }
             }
-            Post::Lacks(targets) => {
-                let carries = |o: usize| {
-                    self.scene.objects.iter().enumerate().any(|(i, u)| {
-                        u.support == Some(o) && targets.as_ref().is_none_or(|t| t.contains(&i))
-                    })
-                };
-                let kept: Vec<usize> = objects.iter().copied().filter(|&o| !carries(o)).collect();
-                if kept.is_empty() {
-                    return Err(GroundError::NoPick {
-                        phrase: at,
-                        reason: format!(
-                            "every one has that on it ({})",
-                            error::list(&self.names(&objects))
-                        ),
-                    });
-                }
-                objects = kept;
-            }
+            Post::Lacks(targets) => objects = self.keep_lacking(objects, targets.as_deref(), at)?,
             Post::Middle => {
                 let picked = select::middle(self.scene, &objects)
                     .ok_or_else(|| self.too_close(&at, &objects, "in the middle"))?;
@@ -297,6 +254,75 @@ impl Reader<'_> {
 
     /// The refusal for a post-modifier that keeps none of the candidates, or cannot tell
     /// one from the others.
+    /// `objects` standing on the floor (resting on nothing), `wanted` of them (any number
+    /// with `usize::MAX`); `at` is the phrase, for messages.
+    fn keep_on_floor(
+        &self,
+        objects: Vec<usize>,
+        wanted: usize,
+        at: String,
+    ) -> Result<Vec<usize>, GroundError> {
+        let floor = self.scene.floor();
+        let on_floor: Vec<usize> = objects
+            .iter()
+            .copied()
+            .filter(|&o| {
+                self.scene.objects[o].support.is_none()
+                    && self.scene.objects[o].world_aabb().min.y <= floor + 0.05
+            })
+            .collect();
+        if on_floor.is_empty() || (wanted != usize::MAX && on_floor.len() != wanted) {
+            return Err(GroundError::NoPick {
+                phrase: at,
+                reason: format!(
+                    "{} on the floor ({} of {})",
+                    if on_floor.is_empty() {
+                        "none is"
+                    } else {
+                        "not one is"
+                    },
+                    on_floor.len(),
+                    error::list(&self.names(&objects))
+                ),
+            });
+        }
+        Ok(on_floor)
+    }
+
+    /// `objects` that nothing of `targets` rests on (nothing at all with `None`): "the
+    /// table without a lamp", "the empty desk". The objects resting on something are found
+    /// in one pass over the scene.
+    fn keep_lacking(
+        &self,
+        objects: Vec<usize>,
+        targets: Option<&[usize]>,
+        at: String,
+    ) -> Result<Vec<usize>, GroundError> {
+        let carriers: std::collections::HashSet<usize> = self
+            .scene
+            .objects
+            .iter()
+            .enumerate()
+            .filter(|(i, _)| targets.is_none_or(|t| t.contains(i)))
+            .filter_map(|(_, u)| u.support)
+            .collect();
+        let kept: Vec<usize> = objects
+            .iter()
+            .copied()
+            .filter(|o| !carriers.contains(o))
+            .collect();
+        if kept.is_empty() {
+            return Err(GroundError::NoPick {
+                phrase: at,
+                reason: format!(
+                    "every one has that on it ({})",
+                    error::list(&self.names(&objects))
+                ),
+            });
+        }
+        Ok(kept)
+    }
+
     fn not_there(&self, head: &Head, objects: &[usize], text: &PostText<'_>) -> GroundError {
         let words = text.words;
         GroundError::NoPick {
