@@ -110,21 +110,12 @@ impl Reader<'_> {
         if owners.is_empty() {
             return None;
         }
-        let range = k..head.range.end;
-        Some(Np {
-            reasons: vec![Reason {
-                kind: ReasonKind::Group,
-                detail: format!(
-                    "{} what {} rests on or is drawn up to",
-                    super::error::list(&self.names(&owners)),
-                    super::error::list(&self.names(owned))
-                ),
-            }],
-            pool: owners.clone(),
-            objects: owners,
-            head: head.text.clone(),
-            range,
-        })
+        let detail = format!(
+            "{} what {} rests on or is drawn up to",
+            super::error::list(&self.names(&owners)),
+            super::error::list(&self.names(owned))
+        );
+        Some(Np::group(k..head.range.end, owners, head.text, detail))
     }
 }
 
@@ -178,21 +169,13 @@ impl Reader<'_> {
         if found.is_empty() {
             return None;
         }
-        Some(Np {
-            reasons: vec![Reason {
-                kind: ReasonKind::Group,
-                detail: format!(
-                    "{} rest on or are drawn up to {}",
-                    super::error::list(&self.names(&found)),
-                    super::error::list(&self.names(owners))
-                ),
-            }],
-            pool: found.clone(),
-            objects: found,
-            head: head.text.clone(),
-            // "and all" ("too" …) stays in the text: it tells the translator they go along.
-            range: k..end,
-        })
+        let detail = format!(
+            "{} rest on or are drawn up to {}",
+            super::error::list(&self.names(&found)),
+            super::error::list(&self.names(owners))
+        );
+        // "and all" ("too" …) stays in the text: it tells the translator they go along.
+        Some(Np::group(k..end, found, head.text, detail))
     }
 }
 

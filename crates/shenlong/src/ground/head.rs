@@ -40,17 +40,7 @@ impl Reader<'_> {
         let end = if copy { k + 4 } else { k + 1 };
         let raw = &self.text[self.tokens[k].span.start..self.tokens[end - 1].span.end];
         let object = self.scene.find(raw)?;
-        let mut head = self.make_head(
-            k..end,
-            vec![object],
-            Tier::Name,
-            false,
-            words::normalize(raw),
-            raw,
-            None,
-        );
-        head.literal = vec![object];
-        Some(head)
+        Some(self.exact_name_head(k..end, object, raw))
     }
 
     /// An object's one-word name typed as it is written, capital and all, with no
@@ -68,8 +58,14 @@ impl Reader<'_> {
         if determiner || numbered {
             return None;
         }
+        Some(self.exact_name_head(k..k + 1, object, raw))
+    }
+
+    /// The head of one object's own name typed at tokens `range` (`raw` as written): that
+    /// object only, literally too.
+    fn exact_name_head(&self, range: Range<usize>, object: usize, raw: &str) -> Head {
         let mut head = self.make_head(
-            k..k + 1,
+            range,
             vec![object],
             Tier::Name,
             false,
@@ -78,7 +74,7 @@ impl Reader<'_> {
             None,
         );
         head.literal = vec![object];
-        Some(head)
+        head
     }
 
     /// The longest name, category or synonym starting at token `k`.
@@ -117,7 +113,7 @@ impl Reader<'_> {
         if self.g.index.anonymous.is_empty() {
             return None;
         }
-        let loads = profile::loads(self.scene);
+        let loads = self.scene.resting_on_each();
         let anonymous = &self.g.index.anonymous;
         let objects: Vec<usize> = if profile == profile::Profile::Seat {
             profile::seats(self.scene, anonymous, &loads)

@@ -43,7 +43,7 @@ pub mod lexicon;
 mod phrase;
 mod post;
 mod pre;
-mod profile;
+pub(crate) mod profile;
 mod select;
 pub mod verbs;
 pub mod words;
@@ -182,6 +182,23 @@ struct Np {
     reasons: Vec<Reason>,
     /// Its head's text: what "one" stands for next.
     head: String,
+}
+
+impl Np {
+    /// A phrase at tokens `range` naming a group of objects (their pool too), for the
+    /// reason `detail`; `head` is what "one" stands for next.
+    fn group(range: Range<usize>, objects: Vec<usize>, head: String, detail: String) -> Self {
+        Self {
+            range,
+            pool: objects.clone(),
+            objects,
+            reasons: vec![Reason {
+                kind: ReasonKind::Group,
+                detail,
+            }],
+            head,
+        }
+    }
 }
 
 /// A modifier after the noun.

@@ -161,20 +161,15 @@ impl Reader<'_> {
                 end = second.range.end;
             }
         }
-        Ok(Some(super::Np {
-            range: k..end,
-            reasons: vec![super::Reason {
-                kind: super::ReasonKind::Group,
-                detail: format!(
-                    "{} stand in that {}",
-                    super::error::list(&self.names(&objects)),
-                    if columns { "column" } else { "row" }
-                ),
-            }],
-            pool: head.objects.clone(),
-            objects,
-            head: head.text.clone(),
-        }))
+        let detail = format!(
+            "{} stand in that {}",
+            super::error::list(&self.names(&objects)),
+            if columns { "column" } else { "row" }
+        );
+        // ("the other one" after it picks among all of the noun's, not the row's.)
+        let mut np = super::Np::group(k..end, objects, head.text, detail);
+        np.pool = head.objects;
+        Ok(Some(np))
     }
 
     /// A row or column at token `j`, and where it ends: `in the back row`, `in the front

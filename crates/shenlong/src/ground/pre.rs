@@ -166,13 +166,23 @@ impl Reader<'_> {
             }
             let d = words::normalize(w);
             let shape = words::shape_word(w);
-            // "the empty coffee table": nothing rests on it.
+            // "the empty coffee table": nothing rests on it (what carries something,
+            // found in one pass).
             let empty = matches!(w.as_str(), "empty" | "bare");
+            let carriers: std::collections::HashSet<usize> = if empty {
+                self.scene
+                    .objects
+                    .iter()
+                    .filter_map(|u| u.support)
+                    .collect()
+            } else {
+                std::collections::HashSet::new()
+            };
             let fits: Vec<usize> = objects
                 .iter()
                 .copied()
                 .filter(|&o| match shape {
-                    _ if empty => !self.scene.objects.iter().any(|u| u.support == Some(o)),
+                    _ if empty => !carriers.contains(&o),
                     Some(shape) => select::has_shape(self.scene, o, shape),
                     None => self.g.index.describes(o, &d),
                 })

@@ -25,8 +25,9 @@ pub(crate) enum Profile {
     Door,
 }
 
-/// A table's top is at least this high above the floor, in metres…
-const SURFACE_MIN_TOP: f64 = 0.3;
+/// A table's top is at least this high above the floor, in metres (and a support whose top
+/// is, is a surface things are put on, not a rug or a mat)…
+pub(crate) const SURFACE_MIN_TOP: f64 = 0.3;
 /// …and at most this high.
 const SURFACE_MAX_TOP: f64 = 1.3;
 /// A table longer than 1.5 times its depth is at least this deep, in metres.
@@ -129,18 +130,6 @@ pub(crate) fn is_anonymous(id: &Identifier) -> bool {
         .all(|w| w.len() <= 1 || w.chars().all(|c| c.is_ascii_digit()) || EMPTY_WORDS.contains(&w))
 }
 
-/// Per object, the objects resting directly on it (built once per lookup, in one pass).
-#[must_use]
-pub(crate) fn loads(scene: &Scene) -> Vec<Vec<usize>> {
-    let mut on = vec![Vec::new(); scene.objects.len()];
-    for (i, o) in scene.objects.iter().enumerate() {
-        if let Some(s) = o.support.filter(|&s| s != i && s < on.len()) {
-            on[s].push(i);
-        }
-    }
-    on
-}
-
 /// Whether `object`'s box, and what rests on it (`load`: the objects resting on it),
 /// fits `profile`.
 #[must_use]
@@ -172,12 +161,9 @@ pub(crate) fn fits(scene: &Scene, object: usize, load: &[usize], profile: Profil
             (SEAT_MIN_HEIGHT..=SEAT_MAX_HEIGHT).contains(&s.y) && long <= SEAT_MAX_WIDTH
         }
         Profile::Door => {
-            let at_wall = scene.bounds.is_some_and(|room| {
-                b.min.x - room.min.x <= DOOR_WALL_GAP
-                    || room.max.x - b.max.x <= DOOR_WALL_GAP
-                    || b.min.z - room.min.z <= DOOR_WALL_GAP
-                    || room.max.z - b.max.z <= DOOR_WALL_GAP
-            });
+            let at_wall = scene
+                .bounds
+                .is_some_and(|room| super::select::near_a_wall(&room, &b, DOOR_WALL_GAP));
             at_wall
                 && s.y >= DOOR_MIN_HEIGHT
                 && deep <= DOOR_MAX_THICKNESS

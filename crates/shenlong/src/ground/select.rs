@@ -464,12 +464,7 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
         // Along a wall, nearer or further from it says nothing of which: every one there.
         let against = |bx: &Aabb| match place {
             RoomPlace::ByWall(axis, sign) => wall_gap(&room, bx, axis, sign) <= BY_WALL_REACH,
-            _ => {
-                bx.min.x - room.min.x <= WALL_GAP
-                    || room.max.x - bx.max.x <= WALL_GAP
-                    || bx.min.z - room.min.z <= WALL_GAP
-                    || room.max.z - bx.max.z <= WALL_GAP
-            }
+            _ => near_a_wall(&room, bx, WALL_GAP),
         };
         let kept: Vec<usize> = candidates
             .iter()
@@ -525,6 +520,19 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
         }
         [] => None,
     }
+}
+
+/// Whether a box stands within `gap` of any of the room's four walls.
+#[must_use]
+pub(crate) fn near_a_wall(room: &Aabb, b: &Aabb, gap: f64) -> bool {
+    [
+        (Axis::X, -1.0),
+        (Axis::X, 1.0),
+        (Axis::Z, -1.0),
+        (Axis::Z, 1.0),
+    ]
+    .into_iter()
+    .any(|(axis, sign)| wall_gap(room, b, axis, sign) <= gap)
 }
 
 /// The gap between a box and the room's wall on side (`axis`, `sign`).

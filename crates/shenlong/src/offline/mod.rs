@@ -292,10 +292,6 @@ impl<'s> Known<'s> {
     }
 }
 
-/// A support whose top is at least this high above the floor is a surface things are put
-/// on (a table, a counter), not a rug or a mat, in metres.
-const SURFACE_HEIGHT: f64 = 0.3;
-
 impl Known<'_> {
     /// Whether variable `s` stays on the floor: floor furniture ([`crate::ground::kind`])
     /// that does not hang, and does not stand on a table or counter now (a stand mixer on
@@ -306,7 +302,8 @@ impl Known<'_> {
         };
         let on_a_surface = |a: usize| {
             scene.objects[a].support.is_some_and(|t| {
-                scene.objects[t].world_aabb().max.y >= scene.floor() + SURFACE_HEIGHT
+                scene.objects[t].world_aabb().max.y
+                    >= scene.floor() + crate::ground::profile::SURFACE_MIN_TOP
             })
         };
         objects.get(s).is_some_and(|&a| {

@@ -344,6 +344,18 @@ impl Scene {
         self.objects[i].support.is_none() && world.min.y > self.floor() + SUPPORT_GAP
     }
 
+    /// Per object, the objects resting directly on it (none on itself), in one pass.
+    #[must_use]
+    pub fn resting_on_each(&self) -> Vec<Vec<usize>> {
+        let mut on: Vec<Vec<usize>> = vec![Vec::new(); self.objects.len()];
+        for (i, o) in self.objects.iter().enumerate() {
+            if let Some(s) = o.support.filter(|&s| s < on.len() && s != i) {
+                on[s].push(i);
+            }
+        }
+        on
+    }
+
     /// The objects resting on `index`, directly or through others (not `index` itself),
     /// in breadth-first order.
     pub fn carried_by(&self, index: usize) -> Vec<usize> {
@@ -360,12 +372,7 @@ impl Scene {
             return Vec::new();
         }
         // What rests on each object, indexed once: a chain of thousands costs its length.
-        let mut on: Vec<Vec<usize>> = vec![Vec::new(); self.objects.len()];
-        for (i, o) in self.objects.iter().enumerate() {
-            if let Some(s) = o.support.filter(|&s| s < on.len()) {
-                on[s].push(i);
-            }
-        }
+        let on = self.resting_on_each();
         let mut seen = vec![false; self.objects.len()];
         for &h in held.iter().chain(std::iter::once(&index)) {
             if let Some(s) = seen.get_mut(h) {
