@@ -118,6 +118,8 @@ pub enum Near {
     Beside(usize),
     /// Between these two.
     Between(usize, usize),
+    /// Still resting on this one ("…, keep it on the table").
+    On(usize),
 }
 
 impl Near {
@@ -127,6 +129,7 @@ impl Near {
         match self {
             Self::Beside(t) => Self::Beside(f(t)),
             Self::Between(a, b) => Self::Between(f(a), f(b)),
+            Self::On(t) => Self::On(f(t)),
         }
     }
 }

@@ -709,3 +709,64 @@ fn lists_before_a_colon_each_and_what_goes_together_with() {
     let s = after(p, "move Sphere over by Sphere.001, roughly").unwrap();
     assert!(moved(p, &s, "Sphere").x > 0.3);
 }
+
+/// A lounge: two coffee tables, each with an armchair drawn up to it, a vase and a stack
+/// of magazines on the first, a tray on the second.
+const LOUNGE: &str = r#"{
+  "name": "lounge",
+  "bounds": {"min": [-6, 0, -5], "max": [6, 3, 5]},
+  "objects": [
+    {"name": "coffee table 1", "position": [-3, 0, 0], "size": [1.0, 0.45, 0.6]},
+    {"name": "coffee table 2", "position": [3, 0, 0], "size": [1.0, 0.45, 0.6]},
+    {"name": "armchair 1", "position": [-3, 0, 0.9], "size": [0.8, 0.9, 0.8], "rotation": [0, 1, 0, 0]},
+    {"name": "armchair 2", "position": [3, 0, 0.9], "size": [0.8, 0.9, 0.8], "rotation": [0, 1, 0, 0]},
+    {"name": "flower vase", "position": [-3.3, 0.45, 0], "size": [0.15, 0.3, 0.15]},
+    {"name": "magazine stack", "position": [-2.7, 0.45, 0], "size": [0.3, 0.08, 0.22]},
+    {"name": "tea tray", "position": [3, 0.45, 0], "size": [0.45, 0.05, 0.3]}
+  ]
+}"#;
+
+#[test]
+fn the_table_said_again_is_the_one_named_before_or_the_one_it_stands_at() {
+    // "the table" fits two: the one armchair 2 is drawn up to is meant.
+    let s = after(LOUNGE, "move armchair 2 a little further from the table").unwrap();
+    let d = moved(LOUNGE, &s, "armchair 2");
+    assert!(d.z > 0.05 && d.x.abs() < 1e-6, "{d:?}");
+    // The one the vase rests on; a move within it is kept, one off it refused.
+    let s = after(LOUNGE, "move the vase 10 cm left, keep it on the table").unwrap();
+    assert!(close(moved(LOUNGE, &s, "flower vase"), [-0.1, 0.0, 0.0]));
+    let refused = after(LOUNGE, "move the vase 2 m right, keep it on the table").unwrap_err();
+    assert!(refused.contains("stay on"), "{refused}");
+    // Where it goes, "the table" may well be another one: still refused.
+    assert!(after(LOUNGE, "put the vase on the table").is_err());
+}
+
+#[test]
+fn the_things_of_a_collection_name_it_and_put_back_asks_for_an_earlier_pose() {
+    let s = after(LOUNGE, "stack the magazines on top of the tea tray").unwrap();
+    let (m, t) = (aabb(&s, "magazine stack"), aabb(&s, "tea tray"));
+    assert!((m.min.y - t.max.y).abs() < 1e-6 && (m.center().x - 3.0).abs() < 0.2);
+    // Without an earlier edit to return to, "put it back" is refused, never a move back.
+    let refused = after(LOUNGE, "put armchair 1 back").unwrap_err();
+    assert!(refused.contains("where it was before"), "{refused}");
+    let s = after(LOUNGE, "push armchair 1 back 20 cm").unwrap();
+    assert!(close(moved(LOUNGE, &s, "armchair 1"), [0.0, 0.0, -0.2]));
+}
+
+#[test]
+fn a_thing_put_in_front_of_a_chair_goes_on_its_table_and_a_kept_facing_is_square_on() {
+    // The laptop stays on the table, in front of chair 2 (at its x, inside the edge).
+    let s = after(BOARDROOM, "move the laptop so it sits in front of chair 2").unwrap();
+    let (l, t) = (aabb(&s, "Laptop"), aabb(&s, "Conference Table"));
+    assert!((l.min.y - t.max.y).abs() < 1e-6, "{l:?}");
+    assert!((l.center().x - 1.5).abs() < 1e-6 && l.min.z >= t.min.z && l.center().z < 0.0);
+    // Swapped across the table and kept facing it: each ends square on to it (both faced
+    // +z: chair 1, now on the far side, turns a half turn; chair 7 now faces the table).
+    let s = after(
+        BOARDROOM,
+        "chairs 1 and 7 swap places, and keep them facing the table",
+    )
+    .unwrap();
+    assert!((yaw_degrees(&s, "Chair 01").abs() - 180.0).abs() < 1.0);
+    assert!(yaw_degrees(&s, "Chair 07").abs() < 1.0);
+}

@@ -179,6 +179,33 @@ impl Reader<'_> {
     }
 }
 
+impl Reader<'_> {
+    /// Of `candidates`, the one object that an object named before (`bound`, not itself a
+    /// candidate) rests on — directly or through what it stands on — or is drawn up to
+    /// ([`belongs_to`]), with that object. `None` where none or several do.
+    pub(super) fn owner_of_named(
+        &self,
+        candidates: &[usize],
+        bound: &[usize],
+    ) -> Option<(usize, usize)> {
+        let boxes = self.scene.world_aabbs();
+        let mut found: Option<(usize, usize)> = None;
+        for &a in bound.iter().filter(|a| !candidates.contains(a)) {
+            for &c in candidates {
+                if self.scene.rests_on_through(a, c)
+                    || belongs_to(self.scene, &boxes, a, &[c], bound)
+                {
+                    match found {
+                        Some((o, _)) if o != c => return None,
+                        _ => found = Some((c, a)),
+                    }
+                }
+            }
+        }
+        found
+    }
+}
+
 /// Whether object `d` belongs to one of `owners`: it rests on one, or stands drawn up to
 /// one — the nearest object standing up (taller than 5 cm: not a rug) that is not of its
 /// own kind (`kind`) is an owner, within [`DRAWN_UP_METRES`] of its footprint.

@@ -10,12 +10,15 @@
 //! head (`the speaker 2 m to the left` is no 'speaker 2'), and a word that is a noun
 //! only after a determiner ("can you…", "turn it counter clockwise") opens no phrase.
 
-use super::index::{self, Tier};
+use super::index::{self, Hit, Tier};
 use super::profile;
 use super::{grammar_word, words, Head, Np, Reader, Reason, ReasonKind};
 use std::ops::Range;
 use words::Kind;
 
+/// The nouns of a collection of things, named by the things: a 'magazine stack' is "the
+/// magazines".
+const COLLECTIONS: &[&str] = &["stack", "pile", "heap", "bundle", "set", "bunch", "pair"];
 impl Reader<'_> {
     /// An object's name typed as the tool exported it (`Chair_Wood`, `Lamp_Table.003`):
     /// that object only, not its family.
@@ -263,7 +266,7 @@ impl Reader<'_> {
                 Some((hit, false, None))
             }
             (_, Some((singular, hit))) => Some((hit, true, Some(singular))),
-            _ => None,
+            _ => self.collective(phrase),
         };
         // A word of a name said alone is the object only where no noun follows it
         // ("the dining chair" is no 'DiningTable', "the coffee grinder" no
@@ -282,6 +285,23 @@ impl Reader<'_> {
             &via,
             typo.cloned(),
         ))
+    }
+
+    /// "the magazines" for a 'magazine stack', "the books" for a 'book pile': a plural
+    /// that names nothing read as a collection of those things, one object ([`COLLECTIONS`]).
+    /// The hit, read as a plural, and the name it was read as.
+    fn collective(&self, phrase: &str) -> Option<(Hit<'_>, bool, Option<String>)> {
+        let index = &self.g.index;
+        self.g
+            .lexicon
+            .singulars(phrase)
+            .into_iter()
+            .find_map(|singular| {
+                COLLECTIONS.iter().find_map(|c| {
+                    let name = format!("{singular} {c}");
+                    index.lookup(&name).map(|hit| (hit, true, Some(name)))
+                })
+            })
     }
 
     /// The typo corrected among tokens `range`, as a reason.

@@ -50,6 +50,8 @@ const BEFORE: &[(&[&str], Need)] = &[
     (&["without", "disturbing"], Need::EndOrAfter),
     (&["leave"], Need::EndOrAfter),
     (&["keep"], Need::After),
+    (&["keeping"], Need::After),
+    (&["leaving"], Need::After),
     (&["not"], Need::EndOrAfter),
     (&["except", "for"], Need::Nothing),
     (&["except"], Need::Nothing),
@@ -173,13 +175,7 @@ pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
             continue;
         };
         // Only `and`, `or` and commas between the two phrases.
-        let joined = prev.end < this.start
-            && (prev.end..this.start).all(|k| match &tokens[k].kind {
-                Kind::Word(w) => matches!(w.as_str(), "and" | "or" | "nor"),
-                Kind::Punct(',') => true,
-                _ => false,
-            });
-        if !joined {
+        if !joined(tokens, &prev, &this) {
             p += 1;
             continue;
         }
@@ -200,6 +196,40 @@ pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {
     out
 }
 
+/// Whether phrase `p` opens a list of phrases joined by `and`, `or` or commas whose last
+/// is followed by words that say they stay ("keep the laptop and the phone where they
+/// are"): [`find`] then holds the others with it.
+fn list_then_after(tokens: &[Token], words: &[&str], phrases: &[Phrase], p: usize) -> bool {
+    let mut prev = match token_range(tokens, &phrases[p].span) {
+        Some(r) => r,
+        None => return false,
+    };
+    for phrase in &phrases[p + 1..] {
+        let Some(this) = token_range(tokens, &phrase.span) else {
+            return false;
+        };
+        if !joined(tokens, &prev, &this) {
+            return false;
+        }
+        if longest_phrase(words, this.end, AFTER).is_some() {
+            return true;
+        }
+        prev = this;
+    }
+    false
+}
+
+/// Whether only `and`, `or`, `nor` and commas stand between token ranges `prev` and
+/// `this`, and something does.
+fn joined(tokens: &[Token], prev: &Range<usize>, this: &Range<usize>) -> bool {
+    prev.end < this.start
+        && (prev.end..this.start).all(|k| match &tokens[k].kind {
+            Kind::Word(w) => matches!(w.as_str(), "and" | "or" | "nor"),
+            Kind::Punct(',') => true,
+            _ => false,
+        })
+}
+
 /// Each phrase held by a cue of its own.
 fn single(tokens: &[Token], words: &[&str], phrases: &[Phrase]) -> Vec<Hold> {
     let mut out = Vec::new();
@@ -214,7 +244,7 @@ fn single(tokens: &[Token], words: &[&str], phrases: &[Phrase]) -> Vec<Hold> {
             range.start >= cue.len()
                 && phrase_at(words, range.start - cue.len(), cue)
                 && match need {
-                    Need::After => after.is_some(),
+                    Need::After => after.is_some() || list_then_after(tokens, words, phrases, p),
                     Need::EndOrAfter => after.is_some() || ends,
                     Need::Nothing => true,
                 }

@@ -84,6 +84,9 @@ impl Reader<'_> {
             &phrase,
         )?;
         self.itself(&mut draft, bound);
+        if mode == Mode::Main && draft.count == Count::One {
+            self.bridge(&head, &mut draft, bound);
+        }
         if mode == Mode::Main && matches!(draft.count, Count::All) && !head.generic {
             self.leave_out(&head, &mut draft, bound)?;
         }
@@ -399,6 +402,63 @@ impl Reader<'_> {
                 error::list(&self.names(&kept))
             )));
             draft.objects = kept;
+        }
+    }
+
+    /// "move chair 8 further from the table", "keep the vase on the table", "keep it
+    /// facing the table": where "the N" fits several but is said as what an object named
+    /// before is measured from (after `from`, `closer to`, `towards`, `facing`, `the edge
+    /// of`, `keep … on`), it is the one of them that object rests on or is drawn up to,
+    /// or the one named before ("closer to coffee table 2 but keep it facing the table").
+    /// Only where exactly one fits; otherwise the phrase stays as it was (and is refused
+    /// as ambiguous). Not after `on`, `to` or `next to`, where "the table" is where
+    /// something goes and may well be another one.
+    fn bridge(&self, head: &Head, draft: &mut Draft, bound: &[usize]) {
+        if draft.objects.len() < 2
+            || bound.is_empty()
+            || !self.is_word(draft.start, &["the"])
+            || !self.measured_from(draft.start)
+        {
+            return;
+        }
+        let named: Vec<usize> = draft
+            .objects
+            .iter()
+            .copied()
+            .filter(|o| bound.contains(o))
+            .collect();
+        if let [one] = named.as_slice() {
+            draft.reasons.push(modifier(&format!(
+                "the {} named before: {}",
+                head.text,
+                self.name(*one)
+            )));
+            draft.objects = named;
+            return;
+        }
+        if let Some((owner, of)) = self.owner_of_named(&draft.objects, bound) {
+            draft.reasons.push(modifier(&format!(
+                "the one {} rests on or is drawn up to: {}",
+                self.name(of),
+                self.name(owner)
+            )));
+            draft.objects = vec![owner];
+        }
+    }
+
+    /// Whether the words before token `start` say that what follows is what something is
+    /// measured from or kept at, not where it goes ([`Self::bridge`]).
+    fn measured_from(&self, start: usize) -> bool {
+        let before = |n: usize| start.checked_sub(n).and_then(|k| self.word(k));
+        match before(1) {
+            Some("from" | "towards" | "toward" | "facing" | "face" | "faces") => true,
+            Some("to") => matches!(before(2), Some("closer" | "nearer")),
+            Some("of") => matches!(
+                before(2),
+                Some("edge" | "middle" | "centre" | "center" | "end" | "corner")
+            ),
+            Some("on") => (2..=4).any(|n| matches!(before(n), Some("keep" | "stay" | "stays"))),
+            _ => false,
         }
     }
 

@@ -15,6 +15,9 @@ pub(crate) struct Clause {
     /// Whether it says "as far as it will go" (read before anything takes its `it`),
     /// until an amount is read from it.
     pub until_blocked: bool,
+    /// Whether it says to keep facing something ("keep it facing X2"): a facing square on
+    /// to the target's nearest side, not towards its centre.
+    pub keep_facing: bool,
 }
 
 impl Clause {
@@ -26,6 +29,7 @@ impl Clause {
             used,
             view: None,
             until_blocked: false,
+            keep_facing: false,
         }
     }
 
@@ -474,7 +478,11 @@ fn break_at(tokens: &[Token], i: usize) -> Option<usize> {
     if word(tokens, i) == Some("after") && word(tokens, i + 1) == Some("that") {
         return Some(2);
     }
-    (matches!(tokens[i], Token::Separator) || word(tokens, i).is_some_and(breaks)).then_some(1)
+    // "…, but keep it facing X2": `but` before a verb starts a clause.
+    let but_then = word(tokens, i) == Some("but")
+        && word(tokens, i + 1).is_some_and(|w| w == "keep" || super::words::verb(w).is_some());
+    (matches!(tokens[i], Token::Separator) || word(tokens, i).is_some_and(breaks) || but_then)
+        .then_some(1)
 }
 
 /// Splits tokens into clauses. `and` stays inside a clause when it joins two objects

@@ -42,6 +42,8 @@ pub(crate) fn rewrite(c: &mut Clause) {
     right_up_against(c);
     until_touching(c);
     pointing(c);
+    keep_facing(c);
+    so_that_it_is(c);
     middle_of_an_object(c);
     somewhere(c);
     each_other(c);
@@ -362,6 +364,80 @@ fn pointing(c: &mut Clause) {
         if k > i + 1 && first && one_of(c, k, &at) {
             c.replace(i, "turn");
             c.replace(k, "face");
+            return;
+        }
+    }
+}
+
+/// A facing to keep after a move is a turn to face, square on to the target's nearest
+/// side ([`Clause::keep_facing`]): `keep X1 facing X2` / `keep it facing X2` (`them`, `both`)
+/// → `turn X1 face X2` (after `pointing`: `keep it pointed at X2` too). Only with the
+/// clause's first words: "keep" elsewhere is not read.
+fn keep_facing(c: &mut Clause) {
+    let Some(i) = (0..c.len()).find(|&i| c.free(i)) else {
+        return;
+    };
+    if !c.words_at(i, &["keep"]) {
+        return;
+    }
+    let mut k = i + 1;
+    while matches!(c.token(k), Some(super::words::Token::Variable(_)))
+        || matches!(c.word(k), Some("it" | "them" | "both" | "and"))
+    {
+        k += 1;
+    }
+    if k > i + 1 && c.word(k) == Some("facing") {
+        c.replace(i, "turn");
+        c.replace(k, "face");
+        c.keep_facing = true;
+    }
+}
+
+/// Where a move is to leave its objects said as a purpose: `move X1 so it sits between
+/// X2 and X3`, `… so that they are next to X2`, `… so it's behind X2` → `move X1 between
+/// X2 and X3`: "so (that) it sits" read, the place left for the move's reader. Only before
+/// a place ([`where_to_be`], or `behind`, `in front of`).
+fn so_that_it_is(c: &mut Clause) {
+    for i in 0..c.len() {
+        if !c.words_at(i, &["so"]) {
+            continue;
+        }
+        let mut k = i + 1;
+        if c.words_at(k, &["that"]) {
+            k += 1;
+        }
+        let fused = one_of(c, k, &["it's", "they're"]);
+        let subject = fused
+            || one_of(c, k, &["it", "they"])
+            || matches!(c.token(k), Some(super::words::Token::Variable(_)));
+        if !subject {
+            continue;
+        }
+        k += 1;
+        if !fused {
+            if one_of(c, k, &["ends", "end"]) && c.words_at(k + 1, &["up"]) {
+                k += 2;
+            } else if one_of(
+                c,
+                k,
+                &[
+                    "sits", "sit", "is", "are", "stands", "stand", "rests", "lies",
+                ],
+            ) {
+                k += 1;
+            } else {
+                continue;
+            }
+        }
+        let mut place = k;
+        while one_of(c, place, &["directly", "right", "just", "exactly"]) {
+            place += 1;
+        }
+        let placed = where_to_be(c, place)
+            || one_of(c, place, &["behind"])
+            || c.words_at(place, &["in", "front", "of"]);
+        if placed && (i..k).all(|j| c.free(j)) {
+            c.mark(i..k);
             return;
         }
     }

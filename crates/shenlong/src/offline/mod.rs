@@ -230,6 +230,41 @@ impl<'s> Known<'s> {
         best
     }
 
+    /// "put the laptop in front of chair 3" where the laptop rests on the table the chair
+    /// is drawn up to: the move that puts variable `s` on that table's top at the place in
+    /// front of the chair `t` — the chair's centre brought onto the top, inset by half the
+    /// laptop and [`AT_SEAT_INSET`] from the edge. `None` unless `s` rests on a table-high
+    /// surface that `t`, standing on the floor, is drawn up to
+    /// ([`crate::ground::depend::belongs_to`]), and `s` fits on that top.
+    pub(crate) fn at_its_seat(&self, s: usize, t: usize) -> Option<glam::DVec3> {
+        let (scene, objects) = self.scene?;
+        let (a, b) = (*objects.get(s)?, *objects.get(t)?);
+        let surface = scene.objects[a].support?;
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let top = boxes[surface];
+        let raised = top.max.y >= scene.floor() + crate::ground::profile::SURFACE_MIN_TOP;
+        if surface == b
+            || !raised
+            || self.stays_on_floor(s)
+            || !self.stays_on_floor(t)
+            || !crate::ground::depend::belongs_to(scene, boxes, b, &[surface], &[b])
+        {
+            return None;
+        }
+        let (me, seat) = (boxes[a], boxes[b].center());
+        let mut to = glam::DVec3::ZERO;
+        for e in [0, 2] {
+            let half = me.size()[e] / 2.0 + AT_SEAT_INSET;
+            let (lo, hi) = (top.min[e] + half, top.max[e] - half);
+            if lo > hi {
+                return None;
+            }
+            to[e] = seat[e].clamp(lo, hi) - me.center()[e];
+        }
+        to.y = top.max.y - me.min.y;
+        Some(to)
+    }
+
     /// Whether variables `others` are smaller things standing within half a metre of
     /// variable `lead`'s box (a table and the chairs drawn up to it, each with under two
     /// thirds of its footprint): one thing to move together.
@@ -670,6 +705,10 @@ impl Known<'_> {
         }
     }
 }
+
+/// How far in from a table's edge a thing put in front of a chair drawn up to it stands,
+/// beyond its own half size, metres.
+const AT_SEAT_INSET: f64 = 0.05;
 
 /// How far object `i` can slide along −x, +x, −z, +z: to the nearest face of an object
 /// whose box overlaps its path (across the other horizontal axis and in height, by more

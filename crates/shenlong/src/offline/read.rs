@@ -78,6 +78,61 @@ pub(crate) fn not_read(unread: &str, clause: &str) -> String {
     }
 }
 
+/// Why "put X1 back" is refused: it asks for a pose before an earlier edit, which a
+/// single instruction does not have.
+pub(crate) const RETURN_REFUSED: &str = "\"put … back\" asks for where it was before an earlier edit, and there is none to return to here; to move it backwards, say how far (\"move it back 50 cm\")";
+
+/// Verbs that with "back" and nothing more return an object ("put the chair back");
+/// other verbs with "back" move it backwards ("push the chair back").
+const RETURNING_VERBS: &[&str] = &[
+    "put", "set", "place", "placed", "stick", "pop", "get", "bring", "brought",
+];
+
+/// The words after "back" (or in place of it) that say "where it was", pronouns left
+/// out (the reader has read "it" as its object by then).
+const WHERE_IT_WAS: &[&[&str]] = &[
+    &["where", "was"],
+    &["where", "were"],
+    &["to", "where", "was"],
+    &["to", "where", "were"],
+    &["where", "belongs"],
+    &["where", "belong"],
+    &["in", "place"],
+    &["to", "place"],
+    &["to", "old", "place"],
+    &["to", "old", "spot"],
+    &["to", "original", "place"],
+    &["to", "original", "position"],
+    &["to", "original", "positions"],
+    &["to", "original", "spot"],
+    &["where", "started"],
+    &["again"],
+];
+
+/// Whether the clause asks to return its objects to where they were before: a returning
+/// verb at `verb_at` whose only other words are its objects and "back" ("put X1 back"),
+/// or any verb followed by "back where it was", "to its original position" and the like.
+/// Read as a move backwards, "put the chair back" would move it a metre away.
+fn asks_return(c: &Clause, verb_at: usize) -> bool {
+    let verb = c.word(verb_at).unwrap_or("");
+    let rest: Vec<&str> = (verb_at + 1..c.len())
+        .filter(|&i| c.free(i) && !matches!(c.token(i), Some(Token::Variable(_))))
+        .filter_map(|i| c.word(i))
+        .filter(|w| {
+            !matches!(
+                *w,
+                "and" | "it" | "they" | "them" | "its" | "their" | "please"
+            )
+        })
+        .collect();
+    let (back, tail) = match rest.split_first() {
+        Some((&"back", tail)) => (true, tail),
+        _ => (false, rest.as_slice()),
+    };
+    (back && tail.is_empty() && RETURNING_VERBS.contains(&verb))
+        || (!tail.is_empty() && WHERE_IT_WAS.contains(&tail))
+}
+
 /// A direction as (axis 0..2, sign).
 pub(super) type Direction = (usize, f64);
 
@@ -213,6 +268,9 @@ impl<'a> Reader<'a> {
                 return self.record(along);
             }
         }
+        if let Some(kept) = self.keep_on(c) {
+            return kept;
+        }
         let mut produced = if let Some(repeated) = self.repeat(c) {
             repeated
         } else if self.topic(c) || self.remark(c) {
@@ -282,6 +340,58 @@ impl<'a> Reader<'a> {
                     known.label(t)
                 )));
             }
+        }
+        for &i in &free {
+            c.mark(i..i + 1);
+        }
+        Some(Ok(()))
+    }
+
+    /// "…, keep it on X3" after a move: the objects moved last (or those named) must still
+    /// rest on `X3` once placed — a check, not a motion ([`Near::On`]). They must rest on
+    /// it now; where one does not, the clause is refused naming both. `None` for any other
+    /// clause, or with nothing moved before.
+    fn keep_on(&mut self, c: &mut Clause) -> Option<Result<(), String>> {
+        let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
+        let (first, rest) = free.split_first()?;
+        if !matches!(c.word(*first), Some("keep" | "leave")) || self.last_subjects.is_empty() {
+            return None;
+        }
+        let mut named = Vec::new();
+        let mut k = 0;
+        while let Some(&i) = rest.get(k) {
+            match (c.token(i), c.word(i)) {
+                (Some(Token::Variable(v)), _) => named.push(*v),
+                (_, Some("it" | "them" | "both" | "and")) => {}
+                _ => break,
+            }
+            k += 1;
+        }
+        let tail: Vec<&Token> = rest[k..].iter().filter_map(|&i| c.token(i)).collect();
+        let target = match tail.as_slice() {
+            [Token::Word(on), Token::Variable(t)] if on == "on" => *t,
+            [Token::Word(on), Token::Word(the), Token::Variable(t)]
+                if on == "on" && the == "the" =>
+            {
+                *t
+            }
+            _ => return None,
+        };
+        let subjects = if named.is_empty() {
+            self.last_subjects.clone()
+        } else {
+            named
+        };
+        let known = self.facts.known;
+        for &s in &subjects {
+            if !known.rests_on(s, target) {
+                return Some(Err(format!(
+                    "{} is not on {} now, so it cannot stay on it: say where it goes",
+                    known.label(s),
+                    known.label(target)
+                )));
+            }
+            self.near.entry(s).or_insert(Near::On(target));
         }
         for &i in &free {
             c.mark(i..i + 1);
@@ -474,6 +584,11 @@ impl<'a> Reader<'a> {
             _ => None,
         };
         let facing = find_facing(c, other);
+        if let Some((_, _, at)) = verb {
+            if asks_return(c, at) {
+                return Err(RETURN_REFUSED.to_string());
+            }
+        }
         let (mut action, implied) = match verb {
             Some((a, implied, _)) => (a, implied),
             None => match self.last_action {
@@ -589,5 +704,25 @@ mod tests {
         // Taking alone moves nothing: a later clause says where.
         let m = moves("pick up X1 and put it on X2", &two());
         assert!(close(m[0], [2.0, 0.5, 0.0]));
+    }
+
+    #[test]
+    fn put_back_asks_for_an_earlier_pose_and_is_refused_but_a_push_back_moves() {
+        for q in [
+            "put X1 back",
+            "set X1 back please",
+            "move X1 back to where it was",
+            "put X1 and X2 back where they were",
+            "put X1 back in its place",
+            "put X1 back, thanks",
+        ] {
+            let refused = outcome(q, &two(), true).unwrap_err();
+            assert!(refused.contains("where it was before"), "{q}: {refused}");
+        }
+        // With a length, or with a verb that pushes, "back" is a direction.
+        let m = moves("put X1 back 20 cm", &two());
+        assert!(close(m[0], [0.0, 0.0, -0.2]), "{:?}", m[0]);
+        let m = moves("push X1 back", &two());
+        assert!(m[0][2] < -0.05, "{:?}", m[0]);
     }
 }

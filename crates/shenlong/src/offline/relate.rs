@@ -6,6 +6,7 @@
 //! vector, placed as a person would ([`Reader::vector`]).
 
 use super::amounts::{self, Length, DEFAULT_METRES};
+use super::build;
 use super::clause::Clause;
 use super::read::{not_read, Produced, Reader};
 use super::relations::{self, Level, Relation, Step};
@@ -278,12 +279,25 @@ fn mark_relation(c: &mut Clause, r: &Found) {
     }
     if r.range.start > 0 {
         let p = r.range.start - 1;
-        // "push X1 in toward X2": `in` before a move towards something says the same.
-        let toward = matches!(c.word(r.range.start), Some("toward" | "towards" | "to"));
-        let particle = matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across"))
-            || toward && c.word(p) == Some("in");
-        if particle && c.free(p) {
+        // "push X1 in toward X2", "tuck X1 in a bit closer to X2": `in` before a move
+        // towards something (a vague amount between) says the same.
+        let toward = matches!(
+            c.word(r.range.start),
+            Some("toward" | "towards" | "to" | "closer" | "nearer")
+        );
+        let mut q = p;
+        while q > 0
+            && matches!(
+                c.word(q),
+                Some("a" | "bit" | "little" | "tad" | "touch" | "slightly")
+            )
+        {
+            q -= 1;
+        }
+        if matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across")) && c.free(p) {
             c.mark(p..p + 1);
+        } else if toward && c.word(q) == Some("in") && c.free(q) {
+            c.mark(q..q + 1);
         }
     }
 }
@@ -568,6 +582,20 @@ impl Reader<'_> {
         let unmoved = |v: usize| !self.steps.contains_key(&v);
         let as_is = unmoved(t);
         let known = self.facts.known;
+        // "in front of chair 3" (by, next to, at) for a thing on the table the chair is
+        // drawn up to: on the table, in front of the chair.
+        if as_is
+            && matches!(
+                relation,
+                Relation::Side(2, 1.0) | Relation::NextTo | Relation::To
+            )
+        {
+            if let Some(v) = known.at_its_seat(s, t) {
+                return Ok(build::sum(
+                    (0..3).map(|e| build::scaled_axis(build::num(v[e]), e)),
+                ));
+            }
+        }
         let mut level = Level::Target;
         let relation = match relation {
             r if self.on_floor => {

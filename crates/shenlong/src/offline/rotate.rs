@@ -237,6 +237,10 @@ fn turn_sense(c: &mut Clause, mut degrees: f64) -> f64 {
     degrees
 }
 
+/// How much of the way to a target's centre a kept facing adds to the way to its nearest
+/// point ([`Reader::keep_facing`]): enough to decide within the footprint, too little to
+/// matter outside it.
+const FACE_CENTRE_SHARE: f64 = 0.001;
 impl Reader<'_> {
     /// A turn: to face what `facing` names, else the same way as another object, else the
     /// room, else towards an object or with the back to it, else by an angle.
@@ -301,6 +305,12 @@ impl Reader<'_> {
                 c.mark(i..i + 1);
             }
         }
+        if c.keep_facing {
+            return Ok(subjects
+                .iter()
+                .map(|&s| (s, self.keep_facing(s, f.target)))
+                .collect());
+        }
         Ok(subjects
             .iter()
             .map(|&s| (s, self.turn_to_face(s, f.target, f.away, limit)))
@@ -334,6 +344,38 @@ impl Reader<'_> {
             );
         }
         Step::Turn(rotor(angle, (2, 0)))
+    }
+
+    /// "…, and keep it facing X2": the turn of subject `s` that leaves its front square on
+    /// to `target` where earlier clauses left it — towards the nearest point of the
+    /// target's footprint, as a chair faces the long side of its table, not the table's
+    /// far-off centre (which is what "turn it to face X2" faces). A thousandth of the way
+    /// to the target's centre is added, so a subject within the footprint still faces
+    /// its centre.
+    fn keep_facing(&self, s: usize, target: usize) -> Step {
+        let at = |e: usize| dot(boxed(s, "center", &self.steps), axis(e));
+        let nearest = |e: usize| {
+            call(
+                "max",
+                vec![
+                    dot(boxed(target, "min", &self.steps), axis(e)),
+                    call(
+                        "min",
+                        vec![at(e), dot(boxed(target, "max", &self.steps), axis(e))],
+                    ),
+                ],
+            )
+        };
+        let to_centre = sub(
+            boxed(target, "center", &self.steps),
+            boxed(s, "center", &self.steps),
+        );
+        let way = sum([
+            scaled_axis(sub(nearest(0), at(0)), 0),
+            scaled_axis(sub(nearest(2), at(2)), 2),
+            mul(num(FACE_CENTRE_SHARE), to_centre),
+        ]);
+        Step::Turn(rotor(sub(heading(way), heading(var(s, "front"))), (2, 0)))
     }
 
     /// "turn X1 and X2 to face each other": each of two turned to face the other. `None`

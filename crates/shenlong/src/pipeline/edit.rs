@@ -476,7 +476,8 @@ fn held_error(message: String) -> EditError {
 const BETWEEN_TOLERANCE: f64 = 0.3;
 
 /// Refuses a placement that left an object where it was not put: farther from what it was
-/// put next to than [`collide::NEXT_TO_MAX_GAP`], or, put between two objects, with its
+/// put next to than [`collide::NEXT_TO_MAX_GAP`], off what it was to stay on, or, put
+/// between two objects, with its
 /// centre not projecting onto the segment between theirs or more than
 /// [`BETWEEN_TOLERANCE`] off it —
 /// collision resolution found free space only elsewhere. The gap is measured on the floor
@@ -492,6 +493,15 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
     for &(object, near) in near {
         let other = match near {
             Near::Beside(other) => other,
+            Near::On(support) => {
+                if scene.objects[object].support != Some(support) {
+                    return Err(refuse(format!(
+                        "'{}' would end off '{}', which it is to stay on",
+                        scene.objects[object].name, scene.objects[support].name
+                    )));
+                }
+                continue;
+            }
             Near::Between(p, q) => {
                 let flat = |i: usize| {
                     let c = scene.objects[i].world_aabb().center();

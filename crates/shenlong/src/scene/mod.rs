@@ -356,6 +356,21 @@ impl Scene {
         on
     }
 
+    /// Whether object `i` rests on `under`, directly or through what it stands on.
+    #[must_use]
+    pub fn rests_on_through(&self, i: usize, under: usize) -> bool {
+        let mut at = i;
+        // A support chain is at most as long as the scene (a cycle ends the walk).
+        for _ in 0..self.objects.len() {
+            match self.objects.get(at).and_then(|o| o.support) {
+                Some(s) if s == under => return true,
+                Some(s) if s != at => at = s,
+                _ => return false,
+            }
+        }
+        false
+    }
+
     /// The objects resting on `index`, directly or through others (not `index` itself),
     /// in breadth-first order.
     pub fn carried_by(&self, index: usize) -> Vec<usize> {
