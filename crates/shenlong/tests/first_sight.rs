@@ -770,3 +770,98 @@ fn a_thing_put_in_front_of_a_chair_goes_on_its_table_and_a_kept_facing_is_square
     assert!((yaw_degrees(&s, "Chair 01").abs() - 180.0).abs() < 1.0);
     assert!(yaw_degrees(&s, "Chair 07").abs() < 1.0);
 }
+
+/// A reading room: three tables in a row, each with two chairs drawn up to it and a
+/// lamp on it; a book on the floor and a board on the front wall.
+const READING: &str = r#"{
+  "name": "reading",
+  "bounds": {"min": [-6, 0, -4], "max": [6, 3, 4]},
+  "objects": [
+    {"name": "reading table 1", "position": [-3, 0, 0], "size": [1.2, 0.75, 0.7]},
+    {"name": "reading table 2", "position": [0, 0, 0], "size": [1.2, 0.75, 0.7]},
+    {"name": "reading table 3", "position": [3, 0, 0], "size": [1.2, 0.75, 0.7]},
+    {"name": "chair 1", "position": [-3.35, 0, 0.75], "size": [0.45, 0.9, 0.45], "rotation": [0, 1, 0, 0]},
+    {"name": "chair 2", "position": [-2.65, 0, 0.75], "size": [0.45, 0.9, 0.45], "rotation": [0, 1, 0, 0]},
+    {"name": "chair 3", "position": [-0.35, 0, 0.75], "size": [0.45, 0.9, 0.45], "rotation": [0, 1, 0, 0]},
+    {"name": "chair 4", "position": [0.35, 0, 0.75], "size": [0.45, 0.9, 0.45], "rotation": [0, 1, 0, 0]},
+    {"name": "chair 5", "position": [2.65, 0, 0.75], "size": [0.45, 0.9, 0.45], "rotation": [0, 1, 0, 0]},
+    {"name": "chair 6", "position": [3.35, 0, 0.75], "size": [0.45, 0.9, 0.45], "rotation": [0, 1, 0, 0]},
+    {"name": "table lamp 1", "position": [-3.4, 0.75, -0.2], "size": [0.2, 0.45, 0.2]},
+    {"name": "table lamp 2", "position": [-0.4, 0.75, -0.2], "size": [0.2, 0.45, 0.2]},
+    {"name": "table lamp 3", "position": [2.6, 0.75, -0.1], "size": [0.2, 0.45, 0.2]},
+    {"name": "atlas", "position": [5, 0, 3], "size": [0.3, 0.05, 0.4]},
+    {"name": "board", "position": [0, 1, -3.95], "size": [2.0, 1.0, 0.05]}
+  ]
+}"#;
+
+#[test]
+fn what_belongs_to_a_table_kind_by_kind_and_the_lamp_on_the_table_named() {
+    let group = ["reading table 2", "chair 3", "chair 4", "table lamp 2"];
+    for q in [
+        "move table 2 a bit to the right along with its chairs and lamp",
+        "move table 2 with everything on it and its chairs 1 m to the right",
+    ] {
+        let s = after(READING, q).unwrap();
+        let d = moved(READING, &s, "reading table 2");
+        assert!(d.x > 0.05, "{q}");
+        for name in group {
+            assert!(
+                close(moved(READING, &s, name), [d.x, 0.0, 0.0]),
+                "{q}: {name}"
+            );
+        }
+        for name in ["chair 2", "chair 5", "table lamp 1", "table lamp 3"] {
+            assert!(close(moved(READING, &s, name), [0.0; 3]), "{q}: {name}");
+        }
+    }
+    // "the lamp" beside which the atlas goes: the one on the table named.
+    let s = after(
+        READING,
+        "put the atlas on reading table 3, to the right of the lamp",
+    )
+    .unwrap();
+    let (a, l, t) = (
+        aabb(&s, "atlas"),
+        aabb(&s, "table lamp 3"),
+        aabb(&s, "reading table 3"),
+    );
+    assert!(
+        (a.min.y - t.max.y).abs() < 1e-6 && a.min.x >= l.max.x - 1e-6,
+        "{a:?}"
+    );
+    let s = after(
+        READING,
+        "put the atlas on table 1, next to the lamp that's there",
+    )
+    .unwrap();
+    assert!((aabb(&s, "atlas").min.y - 0.75).abs() < 1e-6);
+    assert!((aabb(&s, "atlas").center().x + 3.0).abs() < 0.8);
+}
+
+#[test]
+fn a_question_with_all_an_arrow_to_a_place_and_what_is_kept_where_it_is() {
+    let s = after(READING, "Can chairs 1, 2 and 3 all turn to face the board?").unwrap();
+    let faces = |s: &Scene, chair: &str, target: &str| {
+        let (c, t) = (aabb(s, chair).center(), aabb(s, target).center());
+        let want = (t.x - c.x).atan2(t.z - c.z).to_degrees();
+        ((yaw_degrees(s, chair) - want + 540.0) % 360.0 - 180.0).abs() < 0.5
+    };
+    for chair in ["chair 1", "chair 2", "chair 3"] {
+        assert!(faces(&s, chair, "board"), "{chair} does not face the board");
+    }
+    let s = after(READING, "can chairs 4 and 6 both turn to face the atlas").unwrap();
+    assert!(faces(&s, "chair 4", "atlas") && faces(&s, "chair 6", "atlas"));
+    let s = after(READING, "chair 6 → between chair 5 and the atlas").unwrap();
+    let c = aabb(&s, "chair 6").center();
+    assert!(c.x > 2.7 && c.x < 5.0 && c.z > 0.6, "{c:?}");
+    let s = after(
+        READING,
+        "move table 1 10 cm left, keeping the lamp where it is",
+    )
+    .unwrap();
+    assert!(close(
+        moved(READING, &s, "reading table 1"),
+        [-0.1, 0.0, 0.0]
+    ));
+    assert!(close(moved(READING, &s, "table lamp 1"), [0.0; 3]));
+}

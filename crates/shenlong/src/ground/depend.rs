@@ -22,11 +22,12 @@ const JOINS: &[&[&str]] = &[
 
 impl Reader<'_> {
     /// `np` with the dependents said right after it ("and its chairs"), when they are;
-    /// unchanged otherwise.
+    /// unchanged otherwise. After a `generic` phrase ("table 2 with everything on it and
+    /// its chairs") "its" is the object named before it, not what is on it.
     ///
     /// # Errors
     /// Dependents of a kind none of whose objects belong to the phrase's objects.
-    pub(super) fn with_dependents(&mut self, mut np: Np) -> Result<Np, GroundError> {
+    pub(super) fn with_dependents(&mut self, mut np: Np, generic: bool) -> Result<Np, GroundError> {
         let k = np.range.end;
         let Some(join) = JOINS.iter().find(|j| {
             j.iter()
@@ -42,29 +43,27 @@ impl Reader<'_> {
         let Some(head) = self.head_at(owner + 1) else {
             return Ok(np);
         };
-        let kind: Vec<usize> = head
-            .literal
-            .iter()
-            .chain(&head.objects)
-            .copied()
-            .filter(|o| !np.objects.contains(o))
-            .collect();
         let boxes = self.scene.world_aabbs();
-        let mut found: Vec<usize> = kind
-            .iter()
-            .copied()
-            .filter(|&d| belongs_to(self.scene, &boxes, d, &np.objects, &kind))
-            .collect();
-        found.sort_unstable();
-        found.dedup();
-        let range = np.range.start..head.range.end;
+        let owners = if generic && !self.antecedent.is_empty() {
+            self.antecedent.clone()
+        } else {
+            np.objects.clone()
+        };
+        let mut found = self.dependents_of_kind(&head, &owners, &boxes);
+        // "its chairs and lamp", "their stools and their lamps": more kinds, each found.
+        let end = if found.is_empty() {
+            head.range.end
+        } else {
+            self.more_dependents(head.range.end, &owners, &boxes, &mut found)
+        };
+        let range = np.range.start..end;
         if found.is_empty() {
             return Err(GroundError::NoPick {
                 phrase: self.span_text(&range),
                 reason: format!(
                     "no {} rests on or is drawn up to {}",
                     head.text,
-                    super::error::list(&self.names(&np.objects))
+                    super::error::list(&self.names(&owners))
                 ),
             });
         }
@@ -78,6 +77,29 @@ impl Reader<'_> {
         np.objects.extend(found);
         np.range = range;
         Ok(np)
+    }
+}
+
+impl Reader<'_> {
+    /// The objects of `head`'s kind (not `owners` themselves) that belong to `owners`
+    /// ([`belongs_to`]).
+    fn dependents_of_kind(
+        &self,
+        head: &super::Head,
+        owners: &[usize],
+        boxes: &[Aabb],
+    ) -> Vec<usize> {
+        let kind: Vec<usize> = head
+            .literal
+            .iter()
+            .chain(&head.objects)
+            .copied()
+            .filter(|o| !owners.contains(o))
+            .collect();
+        kind.iter()
+            .copied()
+            .filter(|&d| belongs_to(self.scene, boxes, d, owners, &kind))
+            .collect()
     }
 }
 
@@ -107,15 +129,52 @@ impl Reader<'_> {
                     })
             })
             .collect();
-        if owners.is_empty() {
+        if !owners.is_empty() {
+            let detail = format!(
+                "{} what {} rests on or is drawn up to",
+                super::error::list(&self.names(&owners)),
+                super::error::list(&self.names(owned))
+            );
+            return Some(Np::group(k..head.range.end, owners, head.text, detail));
+        }
+        // "table 6 … along with its chairs and lamp": what belongs to them, kind by kind.
+        let mut found = self.dependents_of_kind(&head, owned, &boxes);
+        if found.is_empty() {
             return None;
         }
+        let end = self.more_dependents(head.range.end, owned, &boxes, &mut found);
         let detail = format!(
-            "{} what {} rests on or is drawn up to",
-            super::error::list(&self.names(&owners)),
+            "{} rest on or are drawn up to {}",
+            super::error::list(&self.names(&found)),
             super::error::list(&self.names(owned))
         );
-        Some(Np::group(k..head.range.end, owners, head.text, detail))
+        Some(Np::group(k..end, found, head.text, detail))
+    }
+
+    /// After dependents ending at token `end`: "and lamp", "and their lamps" — more kinds
+    /// that belong to `owners`, added to `found`. The token after the last one read.
+    fn more_dependents(
+        &self,
+        mut end: usize,
+        owners: &[usize],
+        boxes: &[Aabb],
+        found: &mut Vec<usize>,
+    ) -> usize {
+        while self.is_word(end, &["and"]) {
+            let at = end + 1 + usize::from(self.is_word(end + 1, &["its", "their"]));
+            let Some(more) = self.head_at(at).filter(|h| !h.generic) else {
+                break;
+            };
+            let also = self.dependents_of_kind(&more, owners, boxes);
+            if also.is_empty() {
+                break;
+            }
+            found.extend(also);
+            end = more.range.end;
+        }
+        found.sort_unstable();
+        found.dedup();
+        end
     }
 }
 

@@ -819,7 +819,7 @@ impl<'a> Reader<'a> {
             }
             // "the back row of tables (and their chairs)".
             if let Some(np) = self.line_of_at(k)? {
-                let np = self.with_dependents(np)?;
+                let np = self.with_dependents(np, false)?;
                 let end = np.range.end;
                 self.commit(np, &mut phrases, &mut nps);
                 k = end;
@@ -830,8 +830,9 @@ impl<'a> Reader<'a> {
             match head {
                 Some(head) if self.opens_ok(&head) => {
                     let end = head.range.end;
+                    let generic = head.generic;
                     let np = self.noun_phrase(head, &bound, Mode::Main)?;
-                    let np = self.with_dependents(np)?;
+                    let np = self.with_dependents(np, generic)?;
                     let end = end.max(np.range.end);
                     self.commit(np, &mut phrases, &mut nps);
                     k = end;

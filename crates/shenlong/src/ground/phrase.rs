@@ -52,6 +52,21 @@ struct Opening {
     outer: Option<usize>,
 }
 
+/// Words after an object found on a surface named before that only say so again ("next
+/// to the plate that's there"), longest first.
+const RESTATED: &[&[&str]] = &[
+    &["that", "is", "on", "it"],
+    &["that", "are", "on", "it"],
+    &["which", "is", "on", "it"],
+    &["which", "are", "on", "it"],
+    &["that", "is", "there"],
+    &["that", "are", "there"],
+    &["which", "is", "there"],
+    &["that's", "on", "it"],
+    &["that's", "there"],
+    &["on", "it"],
+    &["there"],
+];
 impl Reader<'_> {
     /// Reads the noun phrase around a head: determiner and modifiers before it, and (when
     /// `mode` is [`Mode::Main`] and the noun alone fits several) a modifier after it.
@@ -414,11 +429,11 @@ impl Reader<'_> {
     /// as ambiguous). Not after `on`, `to` or `next to`, where "the table" is where
     /// something goes and may well be another one.
     fn bridge(&self, head: &Head, draft: &mut Draft, bound: &[usize]) {
-        if draft.objects.len() < 2
-            || bound.is_empty()
-            || !self.is_word(draft.start, &["the"])
-            || !self.measured_from(draft.start)
-        {
+        if draft.objects.len() < 2 || bound.is_empty() || !self.is_word(draft.start, &["the"]) {
+            return;
+        }
+        if !self.measured_from(draft.start) {
+            self.on_named(head, draft, bound);
             return;
         }
         let named: Vec<usize> = draft
@@ -443,6 +458,52 @@ impl Reader<'_> {
                 self.name(owner)
             )));
             draft.objects = vec![owner];
+        }
+    }
+
+    /// "put the atlas on reading table 2, to the right of the lamp": "the N" that fits
+    /// several, said as where something goes beside (after `of`, `to`, `beside`, `by`,
+    /// `near`, `behind`, `between … and`) or as what stays ("… but keep the lamp where it
+    /// is"), is the one of them resting on an object named before, where exactly one
+    /// does.
+    fn on_named(&self, head: &Head, draft: &mut Draft, bound: &[usize]) {
+        let placed_by = draft.start > 0
+            && self.is_word(
+                draft.start - 1,
+                &[
+                    "of", "to", "beside", "by", "near", "behind", "between", "and",
+                ],
+            );
+        // "move table 1 left, keeping the lamp where it is": the lamp on it.
+        let held = super::hold::cue_before(&self.tokens, draft.start);
+        if !placed_by && !held {
+            return;
+        }
+        let on: Vec<(usize, usize)> = draft
+            .objects
+            .iter()
+            .filter_map(|&c| {
+                let s = self.scene.objects[c].support?;
+                bound.contains(&s).then_some((c, s))
+            })
+            .collect();
+        if let [(one, under)] = on.as_slice() {
+            draft.reasons.push(modifier(&format!(
+                "the {} on {}, named before: {}",
+                head.text,
+                self.name(*under),
+                self.name(*one)
+            )));
+            draft.objects = vec![*one];
+            // "the plate that's there", "the cup that is on it": said again, read.
+            draft.end += RESTATED
+                .iter()
+                .find(|words| {
+                    words.iter().enumerate().all(|(i, w)| {
+                        self.is_word(draft.end + i, &[w]) && !self.consumed[draft.end + i]
+                    })
+                })
+                .map_or(0, |words| words.len());
         }
     }
 

@@ -81,7 +81,7 @@ const TAILS: &[&[&str]] = &[
 
 /// The phrase in `c`: its tokens and the variables it names (empty for "everything on
 /// it").
-fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
+pub(super) fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
     let longest = |at: usize, options: &[&[&str]]| {
         options
             .iter()
@@ -140,9 +140,14 @@ fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
         if let Some(tail) = tail {
             k += tail;
         }
-        // The phrase ends the clause (a separator may follow).
+        // The phrase ends the clause (a separator may follow), or, led by its word, only
+        // how far and where follows, naming no object ("move X1 with X2 1 m to the
+        // right").
         let ends = (k..c.len()).all(|j| matches!(c.token(j), Some(Token::Separator)) || !c.free(j));
-        if ends {
+        let then_amount = lead > 0
+            && !named.is_empty()
+            && (k..c.len()).all(|j| !matches!(c.token(j), Some(Token::Variable(_))));
+        if ends || then_amount {
             return Some((i..k, named));
         }
     }
@@ -166,7 +171,7 @@ impl Reader<'_> {
             let carrier = subjects
                 .iter()
                 .copied()
-                .find(|&s| known.belongs(v, s) == Some(true))?;
+                .find(|&s| known.belongs(v, s, &named) == Some(true))?;
             // What rests on it is carried with it, turns included: nothing of its own.
             if known.carried(v, carrier) {
                 continue;

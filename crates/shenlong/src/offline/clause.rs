@@ -100,6 +100,20 @@ impl Clause {
         }
     }
 
+    /// Which tokens of `range` are read, to put back with [`Self::restore`].
+    pub fn saved(&self, range: Range<usize>) -> Vec<bool> {
+        range.map(|i| !self.free(i)).collect()
+    }
+
+    /// Puts back what [`Self::saved`] recorded from token `start`.
+    pub fn restore(&mut self, start: usize, saved: &[bool]) {
+        for (k, &used) in saved.iter().enumerate() {
+            if let Some(u) = self.used.get_mut(start + k) {
+                *u = used;
+            }
+        }
+    }
+
     /// Marks read every token, anywhere in the clause, that is one of `words` (the filler
     /// of a construct already recognised: "so that it faces", "towards the").
     pub fn mark_every(&mut self, words: &[&str]) {

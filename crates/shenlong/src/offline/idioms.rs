@@ -607,8 +607,8 @@ fn passive(c: &mut Clause) {
     }
 }
 
-/// A question with the objects inside: "could X1 go …", "can X1 be moved …" (its modal
-/// typed as people type it: "coudl", "cna").
+/// A question with the objects inside: "could X1 go …", "can X1 be moved …", "can X1 and
+/// X2 all turn …" (its modal typed as people type it: "coudl", "cna").
 fn could_it_go(c: &mut Clause) {
     let modal_first = c.free(0)
         && c.word(0)
@@ -618,7 +618,7 @@ fn could_it_go(c: &mut Clause) {
     }
     let mut k = 1;
     while matches!(c.token(k), Some(super::words::Token::Variable(_)))
-        || c.words_at(k, &["and"])
+        || (c.words_at(k, &["and"]) || matches!(c.token(k), Some(super::words::Token::Separator)))
             && matches!(c.token(k + 1), Some(super::words::Token::Variable(_)))
     {
         k += 1;
@@ -626,8 +626,18 @@ fn could_it_go(c: &mut Clause) {
     if k == 1 {
         return;
     }
-    if let Some(end) = to_move_at(c, k) {
+    // "can X1, X2 and X3 all turn to face X4": the quantifier is read.
+    let quantifier = one_of(c, k, &["both", "all", "each"]);
+    let verb_at = k + usize::from(quantifier);
+    if let Some(end) = to_move_at(c, verb_at) {
         c.mark(0..1);
         c.mark(k..end);
+    } else if c
+        .word(verb_at)
+        .is_some_and(|w| super::words::verb(w).is_some() || w == "face")
+    {
+        // The verb is left for the clause's reader.
+        c.mark(0..1);
+        c.mark(k..verb_at);
     }
 }

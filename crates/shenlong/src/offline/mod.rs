@@ -394,14 +394,19 @@ impl Known<'_> {
 
     /// Whether variable `v`'s object belongs to variable `s`'s: it rests on it (directly
     /// or on what rests on it), or is drawn up to it as a chair to its table
-    /// ([`crate::ground::depend::belongs_to`]); `None` where nothing is known of the scene.
-    pub(crate) fn belongs(&self, v: usize, s: usize) -> Option<bool> {
+    /// ([`crate::ground::depend::belongs_to`]; the variables `alike`, named with it, are
+    /// not what it is drawn up to: a chair's neighbour is no table); `None` where nothing
+    /// is known of the scene.
+    pub(crate) fn belongs(&self, v: usize, s: usize, alike: &[usize]) -> Option<bool> {
         let (scene, objects) = self.scene?;
         let (a, b) = (*objects.get(v)?, *objects.get(s)?);
         let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let kind: Vec<usize> = std::iter::once(a)
+            .chain(alike.iter().filter_map(|&k| objects.get(k).copied()))
+            .collect();
         Some(
             scene.carried_by(b).contains(&a)
-                || crate::ground::depend::belongs_to(scene, boxes, a, &[b], &[a]),
+                || crate::ground::depend::belongs_to(scene, boxes, a, &[b], &kind),
         )
     }
 

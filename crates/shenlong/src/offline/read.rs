@@ -276,7 +276,25 @@ impl<'a> Reader<'a> {
         } else if self.topic(c) || self.remark(c) {
             return Ok(());
         } else {
-            self.read(c)?
+            // "move X1 right along with X2": X2 is no subject of the move; the phrase is
+            // set aside while the move is read.
+            let moving = (0..c.len()).any(|i| {
+                c.free(i)
+                    && c.word(i)
+                        .and_then(verb_of)
+                        .is_some_and(|(a, _)| a == Action::Move)
+            });
+            let along = super::along::phrase(c).filter(|(_, named)| moving && !named.is_empty());
+            let saved = along.as_ref().map(|(range, _)| {
+                let saved = c.saved(range.clone());
+                c.mark(range.clone());
+                (range.start, saved)
+            });
+            let produced = self.read(c)?;
+            if let Some((start, saved)) = saved {
+                c.restore(start, &saved);
+            }
+            produced
         };
         // "move X1 back 30 cm with everything on it": the rest of this clause.
         if !c.unread().is_empty() {

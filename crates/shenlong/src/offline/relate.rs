@@ -298,6 +298,15 @@ fn mark_relation(c: &mut Clause, r: &Found) {
             c.mark(p..p + 1);
         } else if toward && c.word(q) == Some("in") && c.free(q) {
             c.mark(q..q + 1);
+        } else if c.word(p) == Some("to")
+            && c.free(p)
+            && matches!(
+                c.word(r.range.start),
+                Some("between" | "beside" | "behind" | "next" | "under" | "underneath")
+            )
+        {
+            // "X1 to between X2 and X3" (an arrow read as `to`): the place after it.
+            c.mark(p..p + 1);
         }
     }
 }
