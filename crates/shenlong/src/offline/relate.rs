@@ -277,20 +277,28 @@ fn mark_relation(c: &mut Clause, r: &Found) {
             }
         }
     }
-    if r.range.start > 0 {
-        let p = r.range.start - 1;
-        // "push X1 in toward X2", "tuck X1 in a bit closer to X2": `in` before a move
-        // towards something (a vague amount between) says the same.
+    mark_particles_before(c, r.range.start);
+}
+
+/// Marks a particle before a relation starting at token `start` read: "up onto", "back
+/// to", "over to"; `in` before a move towards something ("push X1 in toward X2", "tuck
+/// X1 in a bit closer to X2", "tuck X1 in flush against X2", "pull X1 back in against
+/// it"), vague amounts and words already read between; `to` before a place ("X1 to
+/// between X2 and X3").
+fn mark_particles_before(c: &mut Clause, start: usize) {
+    if start > 0 {
+        let p = start - 1;
         let toward = matches!(
-            c.word(r.range.start),
-            Some("toward" | "towards" | "to" | "closer" | "nearer")
+            c.word(start),
+            Some("toward" | "towards" | "to" | "closer" | "nearer" | "against" | "flush" | "up")
         );
         let mut q = p;
         while q > 0
-            && matches!(
-                c.word(q),
-                Some("a" | "bit" | "little" | "tad" | "touch" | "slightly")
-            )
+            && (!c.free(q)
+                || matches!(
+                    c.word(q),
+                    Some("a" | "bit" | "little" | "tad" | "touch" | "slightly")
+                ))
         {
             q -= 1;
         }
@@ -298,10 +306,14 @@ fn mark_relation(c: &mut Clause, r: &Found) {
             c.mark(p..p + 1);
         } else if toward && c.word(q) == Some("in") && c.free(q) {
             c.mark(q..q + 1);
+            // "pull X1 back in against X2": pulled back to it.
+            if q > 0 && c.word(q - 1) == Some("back") && c.free(q - 1) {
+                c.mark(q - 1..q);
+            }
         } else if c.word(p) == Some("to")
             && c.free(p)
             && matches!(
-                c.word(r.range.start),
+                c.word(start),
                 Some("between" | "beside" | "behind" | "next" | "under" | "underneath")
             )
         {
@@ -377,6 +389,7 @@ impl Reader<'_> {
         text: &str,
     ) -> Result<Produced, String> {
         c.mark(r.clone());
+        mark_particles_before(c, r.start);
         let subjects = self.subjects(c, Some(r.start));
         if subjects.is_empty() || targets.iter().any(|t| subjects.contains(t)) {
             return Err(not_read(text, text));
