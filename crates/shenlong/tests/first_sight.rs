@@ -865,3 +865,27 @@ fn a_question_with_all_an_arrow_to_a_place_and_what_is_kept_where_it_is() {
     ));
     assert!(close(moved(READING, &s, "table lamp 1"), [0.0; 3]));
 }
+
+#[test]
+fn a_chairs_place_is_on_its_table_in_front_of_it() {
+    for q in [
+        "put the atlas at chair 4's place",
+        "put the atlas on reading table 2 at chair 4's spot",
+    ] {
+        let s = after(READING, q).unwrap();
+        let (a, t) = (aabb(&s, "atlas"), aabb(&s, "reading table 2"));
+        assert!((a.min.y - t.max.y).abs() < 1e-6, "{q}: {a:?}");
+        // At the chair's x, by the edge it sits at (+z), inside the top.
+        assert!(
+            (a.center().x - 0.35).abs() < 1e-6 && a.max.z <= t.max.z,
+            "{q}: {a:?}"
+        );
+        assert!(a.center().z > 0.0, "{q}: {a:?}");
+    }
+    // Chair 4 is not at table 1: refused, nothing moved.
+    assert!(after(
+        READING,
+        "put the atlas on reading table 1 at chair 4's place"
+    )
+    .is_err());
+}

@@ -84,6 +84,15 @@ impl Reader<'_> {
                 }
                 _ => false,
             });
+        // "put the cup on the table at chair 8's place": the chair's place is the rest of
+        // the destination, never which table.
+        let at_a_seat = destination
+            && post.as_ref().is_some_and(|(_, p_end)| {
+                self.is_word(*p_end, &["place", "spot", "seat", "setting"])
+            });
+        if at_a_seat {
+            return Ok(None);
+        }
         // Where it is taken from ("the cups off the table") is never where it goes.
         let source = matches!(
             post,

@@ -8,7 +8,7 @@ use crate::geometry::Aabb;
 use crate::scene::Scene;
 
 /// How far a chair may stand from its table's footprint and still be drawn up to it.
-const DRAWN_UP_METRES: f64 = 0.5;
+pub(crate) const DRAWN_UP_METRES: f64 = 0.5;
 
 /// The words that join dependents to a phrase, longest first.
 const JOINS: &[&[&str]] = &[
@@ -281,10 +281,22 @@ pub(crate) fn belongs_to(
     {
         return true;
     }
-    // (A rug under it is not what it is drawn up to: only objects that stand up count.)
-    let nearest = (0..scene.objects.len())
+    drawn_up_to(scene, boxes, d, kind).is_some_and(|o| owners.contains(&o))
+}
+
+/// What object `d` stands drawn up to: the nearest object standing up (taller than 5 cm:
+/// a rug under it is not what it is drawn up to) that is not of its own kind (`kind`),
+/// within [`DRAWN_UP_METRES`] of its footprint.
+pub(crate) fn drawn_up_to(
+    scene: &Scene,
+    boxes: &[Aabb],
+    d: usize,
+    kind: &[usize],
+) -> Option<usize> {
+    (0..scene.objects.len())
         .filter(|&o| o != d && !kind.contains(&o) && boxes[o].size().y > 0.05)
         .map(|o| (boxes[d].floor_gap(&boxes[o]), o))
-        .min_by(|a, b| a.0.total_cmp(&b.0));
-    nearest.is_some_and(|(g, o)| g <= DRAWN_UP_METRES && owners.contains(&o))
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .filter(|&(g, _)| g <= DRAWN_UP_METRES)
+        .map(|(_, o)| o)
 }

@@ -230,28 +230,57 @@ impl<'s> Known<'s> {
         best
     }
 
-    /// "put the laptop in front of chair 3" where the laptop rests on the table the chair
-    /// is drawn up to: the move that puts variable `s` on that table's top at the place in
-    /// front of the chair `t` — the chair's centre brought onto the top, inset by half the
-    /// laptop and [`AT_SEAT_INSET`] from the edge. `None` unless `s` rests on a table-high
-    /// surface that `t`, standing on the floor, is drawn up to
-    /// ([`crate::ground::depend::belongs_to`]), and `s` fits on that top.
-    pub(crate) fn at_its_seat(&self, s: usize, t: usize) -> Option<glam::DVec3> {
+    /// The table chair `t` is drawn up to, as an object, with the scene and boxes: of the
+    /// table-high objects with a bigger footprint than the chair's (not its neighbour),
+    /// the nearest, within [`crate::ground::depend::DRAWN_UP_METRES`] of its footprint.
+    fn seat_table(&self, t: usize) -> Option<(&Scene, &[crate::geometry::Aabb], usize)> {
         let (scene, objects) = self.scene?;
-        let (a, b) = (*objects.get(s)?, *objects.get(t)?);
-        let surface = scene.objects[a].support?;
+        let b = *objects.get(t)?;
         let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
-        let top = boxes[surface];
-        let raised = top.max.y >= scene.floor() + crate::ground::profile::SURFACE_MIN_TOP;
-        if surface == b
-            || !raised
-            || self.stays_on_floor(s)
-            || !self.stays_on_floor(t)
-            || !crate::ground::depend::belongs_to(scene, boxes, b, &[surface], &[b])
-        {
+        if !self.stays_on_floor(t) {
             return None;
         }
-        let (me, seat) = (boxes[a], boxes[b].center());
+        let footprint = |a: &crate::geometry::Aabb| a.size().x * a.size().z;
+        let top = scene.floor() + crate::ground::profile::SURFACE_MIN_TOP;
+        let (gap, table) = boxes
+            .iter()
+            .enumerate()
+            .filter(|&(o, a)| o != b && footprint(a) > footprint(&boxes[b]) && a.max.y >= top)
+            .map(|(o, a)| (boxes[b].floor_gap(a), o))
+            .min_by(|x, y| x.0.total_cmp(&y.0))?;
+        (gap <= crate::ground::depend::DRAWN_UP_METRES).then_some((scene, boxes.as_slice(), table))
+    }
+
+    /// Whether variable `s` rests on the table chair `t` is drawn up to.
+    pub(crate) fn on_seat_table(&self, s: usize, t: usize) -> bool {
+        let (Some((scene, _, table)), Some(&a)) =
+            (self.seat_table(t), self.scene.and_then(|(_, o)| o.get(s)))
+        else {
+            return false;
+        };
+        scene.objects[a].support == Some(table)
+    }
+
+    /// "put the laptop at chair 3's place", "… in front of chair 3": the move that puts
+    /// variable `s` on the top of the table chair `t` is drawn up to, in front of the
+    /// chair — the chair's centre brought onto the top, inset by half the thing and
+    /// [`AT_SEAT_INSET`] from the edge. `None` unless `t` stands on the floor drawn up to a
+    /// table-high surface (the one of variable `table` where one is named), `s` is no
+    /// floor furniture, and `s` fits on that top.
+    pub(crate) fn at_its_seat(
+        &self,
+        s: usize,
+        t: usize,
+        table: Option<usize>,
+    ) -> Option<glam::DVec3> {
+        let (_, boxes, surface) = self.seat_table(t)?;
+        let (_, objects) = self.scene?;
+        let a = *objects.get(s)?;
+        let named = table.map(|y| objects.get(y).copied());
+        if a == surface || self.stays_on_floor(s) || named.is_some_and(|y| y != Some(surface)) {
+            return None;
+        }
+        let (me, top, seat) = (boxes[a], boxes[surface], boxes[*objects.get(t)?].center());
         let mut to = glam::DVec3::ZERO;
         for e in [0, 2] {
             let half = me.size()[e] / 2.0 + AT_SEAT_INSET;

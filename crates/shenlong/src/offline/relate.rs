@@ -38,6 +38,8 @@ pub(super) struct Found {
     range: Range<usize>,
     /// The targets: (position, variable), two for `between X2 and X3`.
     targets: Vec<(usize, usize)>,
+    /// A word after the target that is part of the phrase (`place` in `at X2's place`).
+    trailing: Option<usize>,
 }
 
 /// The relation markers, longest first.
@@ -216,11 +218,20 @@ pub(super) fn find_relation(c: &Clause) -> Option<Found> {
                     }
                 }
             }
+            // "at X2's place": the place at the table of the chair X2.
+            let seat = *words == ["at"]
+                && targets.len() == 1
+                && matches!(c.word(end), Some("place" | "spot" | "seat" | "setting"));
             // Articles between the marker and the object are read with it.
             let found = Found {
-                kind: *kind,
+                kind: if seat {
+                    RelKind::Fixed(Relation::AtSeat(None))
+                } else {
+                    *kind
+                },
                 range: i..after.max(t).min(end),
                 targets,
+                trailing: seat.then_some(end),
             };
             if best.as_ref().is_none_or(|b| i < b.range.start) {
                 best = Some(found);
@@ -249,6 +260,9 @@ fn length_value(l: Option<Length>) -> Option<f64> {
 fn mark_relation(c: &mut Clause, r: &Found) {
     c.mark(r.range.clone());
     for &(i, _) in &r.targets {
+        c.mark(i..i + 1);
+    }
+    if let Some(i) = r.trailing {
         c.mark(i..i + 1);
     }
     // "right next to", "just behind", "directly in front of": the same place.
@@ -355,6 +369,7 @@ fn on_surface(surface: usize, second: &Found) -> Option<Relation> {
         (RelKind::Fixed(Relation::NextTo), 1) => Some(Relation::NextToOn(surface)),
         (RelKind::Fixed(side @ Relation::Side(..)), 1) => Some(side),
         (RelKind::Fixed(Relation::Between), 2) => Some(Relation::BetweenOn(surface)),
+        (RelKind::Fixed(Relation::AtSeat(_)), 1) => Some(Relation::AtSeat(Some(surface))),
         _ => None,
     }
 }
@@ -456,6 +471,9 @@ impl Reader<'_> {
                     // The marker, the targets and what joins them ("and").
                     let last = second.targets.last().map_or(0, |&(i, _)| i);
                     c.mark(second.range.start..last + 1);
+                    if let Some(i) = second.trailing {
+                        c.mark(i..i + 1);
+                    }
                     let on: Vec<usize> = second.targets.iter().map(|&(_, v)| v).collect();
                     return self.each(&subjects, rel, &on, text);
                 }
@@ -582,6 +600,45 @@ impl Reader<'_> {
             .collect()
     }
 
+    /// A chair's place as where a thing goes: "at X2's place" ([`Relation::AtSeat`]), and
+    /// "in front of X2" (by, next to, at) for a thing on the table chair X2 is drawn up
+    /// to — on that table, in front of the chair ([`super::Known::at_its_seat`]). `None`
+    /// for other relations, and for those where the thing is not on the chair's table.
+    ///
+    /// # Errors
+    /// At a chair's place where the chair is drawn up to no table (or another than the
+    /// one named), or where an earlier clause moved the chair or the table.
+    fn at_seat(&self, relation: Relation, s: usize, t: usize) -> Option<Result<Expr, String>> {
+        let known = self.facts.known;
+        let unmoved = |v: usize| !self.steps.contains_key(&v);
+        let constant =
+            |v: glam::DVec3| build::sum((0..3).map(|e| build::scaled_axis(build::num(v[e]), e)));
+        match relation {
+            Relation::Side(2, 1.0) | Relation::NextTo | Relation::To if unmoved(t) => known
+                .at_its_seat(s, t, None)
+                .filter(|_| known.on_seat_table(s, t))
+                .map(|v| Ok(constant(v))),
+            Relation::AtSeat(table) => {
+                let placed = unmoved(t) && table.is_none_or(unmoved);
+                Some(
+                    known
+                        .at_its_seat(s, t, table)
+                        .filter(|_| placed)
+                        .map(constant)
+                        .ok_or_else(|| {
+                            format!(
+                                "{} is drawn up to no table{} to put {} in front of it: say where it goes",
+                                known.label(t),
+                                table.map(|y| format!(" like {}", known.label(y))).unwrap_or_default(),
+                                known.label(s)
+                            )
+                        }),
+                )
+            }
+            _ => None,
+        }
+    }
+
     /// The vector that takes subject `s` into `relation` with `targets`, placed as a
     /// person would: beside a target that rests on a surface, on a side of it where the
     /// subject fits on that surface; on the floor where the subject is floor furniture
@@ -604,19 +661,8 @@ impl Reader<'_> {
         let unmoved = |v: usize| !self.steps.contains_key(&v);
         let as_is = unmoved(t);
         let known = self.facts.known;
-        // "in front of chair 3" (by, next to, at) for a thing on the table the chair is
-        // drawn up to: on the table, in front of the chair.
-        if as_is
-            && matches!(
-                relation,
-                Relation::Side(2, 1.0) | Relation::NextTo | Relation::To
-            )
-        {
-            if let Some(v) = known.at_its_seat(s, t) {
-                return Ok(build::sum(
-                    (0..3).map(|e| build::scaled_axis(build::num(v[e]), e)),
-                ));
-            }
+        if let Some(at_seat) = self.at_seat(relation, s, t) {
+            return at_seat;
         }
         let mut level = Level::Target;
         let relation = match relation {

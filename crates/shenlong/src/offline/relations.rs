@@ -104,6 +104,10 @@ pub(crate) enum Relation {
     Closer(Option<f64>),
     /// Onto the floor beside it (`off X2`).
     Off,
+    /// At a chair's place (`at X2's place`): on the table it is drawn up to, in front of
+    /// it ([`super::Known::at_its_seat`]); the variable of that table when it is named
+    /// (`on X3 at X2's place`).
+    AtSeat(Option<usize>),
     /// Mirrored through it, along the axis the object is offset most (`to the other side of
     /// X2`).
     OtherSide,
@@ -230,6 +234,8 @@ pub(crate) fn vector(
             add(beside, down)
         }
         Relation::OtherSide => other_side(s, t, steps),
+        // Measured from the scene by the reader ([`super::Known::at_its_seat`]).
+        Relation::AtSeat(_) => return None,
     })
 }
 
