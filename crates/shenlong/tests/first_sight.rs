@@ -889,3 +889,26 @@ fn a_chairs_place_is_on_its_table_in_front_of_it() {
     )
     .is_err());
 }
+
+#[test]
+fn alike_objects_picked_straight_in_front_between_two_and_across_a_table() {
+    // Chair 1 is straight behind chair 3; chair 2 is behind it too, but diagonally.
+    let s = after(HALL, "move the chair behind chair 3 10 cm left").unwrap();
+    assert!(close(moved(HALL, &s, "Chair 1"), [-0.1, 0.0, 0.0]));
+    assert!(close(moved(HALL, &s, "Chair 2"), [0.0; 3]));
+    // Table 2 stands between tables 1 and 3.
+    let s = after(
+        READING,
+        "move the table between table 1 and table 3 20 cm back",
+    )
+    .unwrap();
+    assert!(close(
+        moved(READING, &s, "reading table 2"),
+        [0.0, 0.0, -0.2]
+    ));
+    // Chair 7 is across the table from chair 1; chair 2, beside it on the same side, is not.
+    let s = after(BOARDROOM, "move the chair opposite chair 1 10 cm left").unwrap();
+    assert!(close(moved(BOARDROOM, &s, "Chair 07"), [-0.1, 0.0, 0.0]));
+    let s = after(BOARDROOM, "move the chair across from chair 7 10 cm left").unwrap();
+    assert!(close(moved(BOARDROOM, &s, "Chair 01"), [-0.1, 0.0, 0.0]));
+}

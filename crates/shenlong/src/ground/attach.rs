@@ -72,7 +72,8 @@ impl Reader<'_> {
                     | Relation::InFront
                     | Relation::Behind
                     | Relation::LeftOf
-                    | Relation::RightOf,
+                    | Relation::RightOf
+                    | Relation::Between,
                     targets,
                 ) => {
                     !targets.is_empty()

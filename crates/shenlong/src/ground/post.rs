@@ -59,6 +59,10 @@ impl Reader<'_> {
         ) {
             return self.carrying_at(j, bound);
         }
+        // "the chair between chair 12 and chair 14", "… between the two beds".
+        if w == "between" {
+            return self.between_at(j, bound);
+        }
         if let Some((relation, after)) = self.relation_at(j) {
             if let Some((targets, end)) = self.nested_np(after, bound)? {
                 // "the cup closest to the window" with two windows: closest to which is
@@ -421,6 +425,25 @@ impl Reader<'_> {
             .then_some((Post::Room(select::RoomPlace::ByWall(axis, sign)), s + 2))
     }
 
+    /// "between A and B" (or "between the two Ns") at token `j`: the two objects, as a
+    /// relation, and the token after them. `None` where the words name no two objects.
+    fn between_at(&self, j: usize, bound: &[usize]) -> Result<Option<(Post, usize)>, GroundError> {
+        let Some((first, end)) = self.nested_np(j + 1, bound)? else {
+            return Ok(None);
+        };
+        let (targets, end) = match first.as_slice() {
+            [_, _] => (first, end),
+            [a] if self.is_word(end, &["and"]) => match self.nested_np(end + 1, bound)? {
+                Some((second, end)) if second.len() == 1 && second[0] != *a => {
+                    (vec![*a, second[0]], end)
+                }
+                _ => return Ok(None),
+            },
+            _ => return Ok(None),
+        };
+        Ok(Some((Post::Relation(Relation::Between, targets), end)))
+    }
+
     /// A relation word group at `j` and where its object starts.
     pub(super) fn relation_at(&self, j: usize) -> Option<(Relation, usize)> {
         let w = |k: usize| self.word(k).unwrap_or("");
@@ -477,6 +500,9 @@ impl Reader<'_> {
             ) => (Relation::Near, 1),
             ("nearest" | "closest", _, _) => (Relation::Nearest, 1),
             ("behind", _, _) => (Relation::Behind, 1),
+            ("across", "from", _) => (Relation::Opposite, 2),
+            ("opposite", "to", _) => (Relation::Opposite, 2),
+            ("opposite", _, _) => (Relation::Opposite, 1),
             ("in" | "inside" | "within", _, _) => (Relation::Inside, 1),
             _ => return None,
         };

@@ -54,6 +54,11 @@ pub(crate) enum Relation {
     LeftOf,
     /// To its right (+x).
     RightOf,
+    /// Between the two targets (`the chair between chair 12 and chair 14`).
+    Between,
+    /// Across something from it (`the chair opposite chair 2`, `across from the sofa`):
+    /// a third object stands between them on the floor plan.
+    Opposite,
 }
 
 impl Relation {
@@ -320,7 +325,21 @@ pub(crate) fn by_relation(
     // (candidate, key) of those that stand in the relation to some target; smallest key
     // is best.
     let mut fits: Vec<(usize, f64)> = Vec::new();
-    for (&c, cb) in pool.iter().zip(&boxes(scene, &pool)) {
+    if relation == Relation::Between {
+        let [a, b] = target_boxes.as_slice() else {
+            return None;
+        };
+        fits = pool
+            .iter()
+            .filter_map(|&c| between_key(&scene.objects[c].world_aabb(), a, b).map(|k| (c, k)))
+            .collect();
+    }
+    let pairwise = if relation == Relation::Between {
+        &[][..]
+    } else {
+        &pool[..]
+    };
+    for (&c, cb) in pairwise.iter().zip(&boxes(scene, pairwise)) {
         let key = targets
             .iter()
             .zip(&target_boxes)
@@ -333,6 +352,7 @@ pub(crate) fn by_relation(
     if fits.is_empty() {
         return None;
     }
+    straight_first(scene, &mut fits, relation, &target_boxes);
     if matches!(
         relation,
         Relation::On
@@ -360,6 +380,32 @@ pub(crate) fn by_relation(
         }
     }
     Some(fits[..need].iter().map(|f| f.0).collect())
+}
+
+/// "the chair in front of chair 9" in rows of chairs: the one straight in front of it, not
+/// the diagonal neighbour nearly as near. For a side relation (in front, behind, left,
+/// right), where some of the `fits` overlap a target across that side's axis, only those
+/// are kept.
+fn straight_first(
+    scene: &Scene,
+    fits: &mut Vec<(usize, f64)>,
+    relation: Relation,
+    target_boxes: &[Aabb],
+) {
+    let across = match relation {
+        Relation::InFront | Relation::Behind => 0,
+        Relation::LeftOf | Relation::RightOf => 2,
+        _ => return,
+    };
+    let straight = |c: usize| {
+        let cb = scene.objects[c].world_aabb();
+        target_boxes
+            .iter()
+            .any(|tb| cb.min[across] < tb.max[across] && cb.max[across] > tb.min[across])
+    };
+    if fits.iter().any(|&(c, _)| straight(c)) {
+        fits.retain(|&(c, _)| straight(c));
+    }
 }
 
 /// Whether box `a`'s centre is inside box `b`.
@@ -399,8 +445,61 @@ fn relation_key(
         Relation::Behind => (cb.center().z < tb.min.z).then(|| gap(cb, tb))?,
         Relation::LeftOf => (cb.center().x < tb.min.x).then(|| gap(cb, tb))?,
         Relation::RightOf => (cb.center().x > tb.max.x).then(|| gap(cb, tb))?,
+        Relation::Opposite => {
+            across(scene, (c, cb), (t, tb)).then(|| flat_distance(cb.center(), tb.center()))?
+        }
+        // Measured against both targets at once ([`between_key`]).
+        Relation::Between => return None,
     };
     Some(key)
+}
+
+/// The distance between two points on the floor plan.
+fn flat_distance(a: DVec3, b: DVec3) -> f64 {
+    glam::DVec2::new(a.x - b.x, a.z - b.z).length()
+}
+
+/// How far box `c`'s centre stands off the line between the centres of `a` and `b` on
+/// the floor plan, where it projects onto the middle of that segment (a fifth in from
+/// either end); `None` otherwise.
+fn between_key(c: &Aabb, a: &Aabb, b: &Aabb) -> Option<f64> {
+    let flat = |v: DVec3| glam::DVec2::new(v.x, v.z);
+    let (p, q, x) = (flat(a.center()), flat(b.center()), flat(c.center()));
+    let d = q - p;
+    let t = (x - p).dot(d) / d.length_squared().max(1e-12);
+    (0.2..=0.8).contains(&t).then(|| (p + d * t - x).length())
+}
+
+/// Whether something else — a third object taller than a rug — stands between `c` and
+/// `t` on the floor plan: the segment between their centres crosses its footprint.
+fn across(scene: &Scene, (c, cb): (usize, &Aabb), (t, tb): (usize, &Aabb)) -> bool {
+    let (p, q) = (cb.center(), tb.center());
+    scene.objects.iter().enumerate().any(|(o, object)| {
+        if o == c || o == t {
+            return false;
+        }
+        let ob = object.world_aabb();
+        ob.size().y > 0.05 && segment_crosses_footprint(p, q, &ob)
+    })
+}
+
+/// Whether the floor-plan segment from `p` to `q` passes through box `b`'s footprint
+/// (slab clipping on x and z).
+fn segment_crosses_footprint(p: DVec3, q: DVec3, b: &Aabb) -> bool {
+    let (mut lo, mut hi) = (0.0_f64, 1.0_f64);
+    for e in [0, 2] {
+        let d = q[e] - p[e];
+        if d.abs() < 1e-12 {
+            if p[e] < b.min[e] || p[e] > b.max[e] {
+                return false;
+            }
+            continue;
+        }
+        let (t0, t1) = ((b.min[e] - p[e]) / d, (b.max[e] - p[e]) / d);
+        lo = lo.max(t0.min(t1));
+        hi = hi.min(t0.max(t1));
+    }
+    lo <= hi
 }
 
 /// A place in the room that picks an object standing there.
