@@ -912,3 +912,43 @@ fn alike_objects_picked_straight_in_front_between_two_and_across_a_table() {
     let s = after(BOARDROOM, "move the chair across from chair 7 10 cm left").unwrap();
     assert!(close(moved(BOARDROOM, &s, "Chair 01"), [-0.1, 0.0, 0.0]));
 }
+
+/// A bedroom: a bed with a bench at its foot, a door in the front wall near the left
+/// corner, a coat stand by the right wall.
+const BEDROOM: &str = r#"{
+  "name": "bedroom",
+  "bounds": {"min": [-3, 0, -3], "max": [3, 2.7, 3]},
+  "objects": [
+    {"name": "bed", "position": [0, 0, -1.8], "size": [1.6, 0.5, 2.1]},
+    {"name": "bench", "position": [0, 0, -0.45], "size": [1.2, 0.45, 0.4]},
+    {"name": "door", "position": [-2.0, 0, 2.975], "size": [0.9, 2.1, 0.05]},
+    {"name": "coat stand", "position": [2.6, 0, 0.5], "size": [0.5, 1.8, 0.5]}
+  ]
+}"#;
+
+#[test]
+fn the_foot_of_a_bed_a_corner_by_the_door_and_a_row_said_before_its_noun() {
+    let s = after(
+        BEDROOM,
+        "the bench at the foot of the bed needs to go 20cm forward",
+    )
+    .unwrap();
+    assert!(close(moved(BEDROOM, &s, "bench"), [0.0, 0.0, 0.2]));
+    // The front-left corner, the door's, not the nearest one.
+    let s = after(BEDROOM, "drag the coat stand into the corner by the door").unwrap();
+    let c = aabb(&s, "coat stand");
+    assert!(
+        (c.min.x + 3.0).abs() < 1e-6 && (c.max.z - 3.0).abs() < 1e-6,
+        "{c:?}"
+    );
+    // Desks 3 and 4 are the front row.
+    let s = after(HALL, "move all the front-row desks 10 cm left").unwrap();
+    for (desk, dx) in [
+        ("Desk 3", -0.1),
+        ("Desk 4", -0.1),
+        ("Desk 1", 0.0),
+        ("Desk 2", 0.0),
+    ] {
+        assert!(close(moved(HALL, &s, desk), [dx, 0.0, 0.0]), "{desk}");
+    }
+}

@@ -95,7 +95,7 @@ impl Reader<'_> {
 
     /// A line named before its objects at token `k`: "the back row of tables", "the
     /// whole front row of desks", "the left column of benches", "the second row of
-    /// chairs" — the objects of the plural noun after `of` that stand in that line, as a
+    /// chairs", "all the front-row chairs" — the objects of the plural noun after `of` that stand in that line, as a
     /// phrase of its own. `None` where the words are not that.
     ///
     /// # Errors
@@ -103,21 +103,31 @@ impl Reader<'_> {
     pub(super) fn line_of_at(&self, k: usize) -> Result<Option<super::Np>, GroundError> {
         let w = |i: usize| self.word(i).unwrap_or("");
         let mut j = k;
+        if w(j) == "all" {
+            j += 1;
+        }
         if w(j) == "the" {
             j += 1;
         }
         if matches!(w(j), "whole" | "entire") {
             j += 1;
         }
-        let columns = match w(j + 1) {
+        // "front row" or, written as one word, "front-row": which line, and the token after.
+        let (which, line_word, after) = match w(j).split_once('-') {
+            Some((which, line)) => (which, line, j + 1),
+            None => (w(j), w(j + 1), j + 2),
+        };
+        let columns = match line_word {
             "row" => false,
             "column" => true,
             _ => return Ok(None),
         };
-        if w(j + 2) != "of" || (k..j + 3).any(|i| self.consumed[i]) {
+        // "the back row of desks", or as words before the noun: "all the front-row chairs".
+        let of = usize::from(w(after) == "of");
+        if (of == 0 && self.head_at(after).is_none()) || (k..after + of).any(|i| self.consumed[i]) {
             return Ok(None);
         }
-        let line = match (w(j), columns) {
+        let line = match (which, columns) {
             ("front", false) => select::Line::Row(1),
             ("back" | "rear" | "last", false) => select::Line::Row(usize::MAX),
             ("left", true) => select::Line::Column(1),
@@ -134,8 +144,8 @@ impl Reader<'_> {
                 }
             }
         };
-        let mut h = j + 3;
-        if w(h) == "the" {
+        let mut h = after + of;
+        if of == 1 && w(h) == "the" {
             h += 1;
         }
         let Some(head) = self.head_at(h) else {
@@ -457,6 +467,14 @@ impl Reader<'_> {
         };
         if let Some(r) = by_four {
             return Some((r, j + 4));
+        }
+        // "the bench at the foot of the bed", "the lamp at the head of the table": by it.
+        if matches!(w(j), "at" | "by")
+            && w(j + 1) == "the"
+            && matches!(w(j + 2), "foot" | "head")
+            && w(j + 3) == "of"
+        {
+            return Some((Relation::Near, j + 4));
         }
         // "at the left end of the table", "on the far side of the desk".
         if matches!(w(j), "at" | "on" | "by" | "to")

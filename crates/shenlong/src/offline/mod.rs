@@ -294,6 +294,15 @@ impl<'s> Known<'s> {
         Some(to)
     }
 
+    /// The room's corner on variable `t`'s side of the room's centre, as the signs along
+    /// x and z; `None` without a room, or where `t` stands on a centre line.
+    pub(crate) fn corner_towards(&self, t: usize) -> Option<(f64, f64)> {
+        let (scene, objects) = self.scene?;
+        let room = scene.bounds?;
+        let at = scene.objects[*objects.get(t)?].world_aabb().center() - room.center();
+        (at.x.abs() > 1e-6 && at.z.abs() > 1e-6).then(|| (at.x.signum(), at.z.signum()))
+    }
+
     /// Whether variables `others` are smaller things standing within half a metre of
     /// variable `lead`'s box (a table and the chairs drawn up to it, each with under two
     /// thirds of its footprint): one thing to move together.

@@ -647,6 +647,47 @@ impl<'a> Reader<'a> {
         }
     }
 
+    /// "drag X1 into the corner by X2" (near, next to, nearest): the room's corner on
+    /// X2's side of its centre along both axes. `None` where the clause says no such
+    /// thing, or the scene has no room.
+    fn corner_by(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, String>> {
+        let i = (0..c.len()).find(|&i| c.free(i) && c.word(i) == Some("corner"))?;
+        let by = match (c.word(i + 1), c.word(i + 2)) {
+            (Some("next" | "closest" | "nearest"), Some("to")) => 2,
+            (Some("by" | "near" | "nearest" | "beside"), _) => 1,
+            _ => return None,
+        };
+        let mut k = i + 1 + by;
+        if c.word(k) == Some("the") {
+            k += 1;
+        }
+        let Some(Token::Variable(t)) = c.token(k).cloned() else {
+            return None;
+        };
+        let (x, z) = self.facts.known.corner_towards(t)?;
+        c.mark(i..k + 1);
+        for lead in [
+            &["into", "the"][..],
+            &["in", "the"],
+            &["to", "the"],
+            &["the"],
+        ] {
+            if i >= lead.len() && c.words_at(i - lead.len(), lead) {
+                c.mark(i - lead.len()..i);
+                break;
+            }
+        }
+        let subjects = match self.required_subjects(c, text) {
+            Ok(s) => s,
+            Err(e) => return Some(Err(e)),
+        };
+        let place = super::room_place::RoomPlace::At(super::room::Place::Corner(Some(x), Some(z)));
+        Some(Ok(subjects
+            .iter()
+            .map(|&s| (s, Step::Translate(place.vector(s, true))))
+            .collect()))
+    }
+
     /// A move: to a relation with an object named before ("next to it") or named here
     /// ([`super::relate`]), else to a place in the room ([`super::room_place`]), else by
     /// directions and an amount ([`super::shift`]; `implied`: the verb's direction).
@@ -669,6 +710,10 @@ impl<'a> Reader<'a> {
         }
         // "put X1 where X2 is".
         if let Some(produced) = self.where_is(c, text) {
+            return produced;
+        }
+        // "into the corner by X2": the room's corner nearest it.
+        if let Some(produced) = self.corner_by(c, text) {
             return produced;
         }
         // A relation to another object.
