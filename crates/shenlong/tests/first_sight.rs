@@ -952,3 +952,36 @@ fn the_foot_of_a_bed_a_corner_by_the_door_and_a_row_said_before_its_noun() {
         assert!(close(moved(HALL, &s, desk), [dx, 0.0, 0.0]), "{desk}");
     }
 }
+
+/// A dormitory: three cots along the left wall, two stools in opposite corners.
+const DORM: &str = r#"{
+  "name": "dorm",
+  "bounds": {"min": [-4, 0, -4], "max": [4, 3, 4]},
+  "objects": [
+    {"name": "cot 1", "position": [-3.3, 0, -2.5], "size": [0.9, 0.5, 1.9]},
+    {"name": "cot 2", "position": [-3.3, 0, 0.0], "size": [0.9, 0.5, 1.9]},
+    {"name": "cot 3", "position": [-3.3, 0, 2.5], "size": [0.9, 0.5, 1.9]},
+    {"name": "stool 1", "position": [3.5, 0, -3.5], "size": [0.4, 0.45, 0.4]},
+    {"name": "stool 2", "position": [-2.0, 0, 3.5], "size": [0.4, 0.45, 0.4]}
+  ]
+}"#;
+
+#[test]
+fn objects_together_on_one_side_move_towards_the_middle_together() {
+    // The cots move straight out from their wall, as a row.
+    let s = after(
+        DORM,
+        "move all the cots 50 cm toward the middle of the room",
+    )
+    .unwrap();
+    for cot in ["cot 1", "cot 2", "cot 3"] {
+        assert!(close(moved(DORM, &s, cot), [0.5, 0.0, 0.0]), "{cot}");
+    }
+    // Stools in opposite corners each move towards the centre.
+    let s = after(DORM, "move both stools 50 cm toward the middle of the room").unwrap();
+    let (a, b) = (moved(DORM, &s, "stool 1"), moved(DORM, &s, "stool 2"));
+    assert!(
+        a.x < 0.0 && a.z > 0.0 && b.x > 0.0 && b.z < 0.0,
+        "{a:?} {b:?}"
+    );
+}

@@ -294,6 +294,33 @@ impl<'s> Known<'s> {
         Some(to)
     }
 
+    /// Whether variables `group` stand together on one side of the room's centre: every
+    /// one's way to the centre has a part along the way from their middle to it (the beds
+    /// along one wall, not chairs in opposite corners). One object always does.
+    pub(crate) fn together_off_centre(&self, group: &[usize]) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return group.len() == 1;
+        };
+        let Some(room) = scene.bounds else {
+            return group.len() == 1;
+        };
+        let flat = |v: glam::DVec3| glam::DVec2::new(v.x, v.z);
+        let centres: Vec<glam::DVec2> = group
+            .iter()
+            .filter_map(|&v| objects.get(v))
+            .map(|&o| flat(scene.objects[o].world_aabb().center()))
+            .collect();
+        if centres.len() != group.len() || centres.is_empty() {
+            return false;
+        }
+        let middle = centres.iter().copied().sum::<glam::DVec2>() / centres.len() as f64;
+        let way = flat(room.center()) - middle;
+        way.length() > 1e-6
+            && centres
+                .iter()
+                .all(|&c| (flat(room.center()) - c).dot(way) > 0.0)
+    }
+
     /// The room's corner on variable `t`'s side of the room's centre, as the signs along
     /// x and z; `None` without a room, or where `t` stands on a centre line.
     pub(crate) fn corner_towards(&self, t: usize) -> Option<(f64, f64)> {

@@ -684,7 +684,7 @@ impl<'a> Reader<'a> {
         let place = super::room_place::RoomPlace::At(super::room::Place::Corner(Some(x), Some(z)));
         Some(Ok(subjects
             .iter()
-            .map(|&s| (s, Step::Translate(place.vector(s, true))))
+            .map(|&s| (s, Step::Translate(place.vector(s, &subjects, true))))
             .collect()))
     }
 
@@ -724,9 +724,14 @@ impl<'a> Reader<'a> {
         // A place in the room.
         let has_room = self.facts.known.room;
         if let Some(place) = room_place(c, action, has_room)? {
+            // Objects together on one side of the room move together; others each alone.
+            let together = self.facts.known.together_off_centre(&subjects);
             return Ok(subjects
                 .iter()
-                .map(|&s| (s, Step::Translate(place.vector(s, has_room))))
+                .map(|&s| {
+                    let group = if together { &subjects[..] } else { &[s][..] };
+                    (s, Step::Translate(place.vector(s, group, has_room)))
+                })
                 .collect());
         }
         // Directions and an amount.

@@ -91,9 +91,18 @@ pub(crate) fn away_from_wall(s: usize, wall: Option<(usize, f64)>, amount: f64) 
 }
 
 /// "a bit towards the middle of the room": along the floor towards the room's centre by
-/// `amount` (never past it), or halfway with none.
-pub(crate) fn towards_centre(s: usize, amount: Option<f64>) -> Expr {
-    let f = flat(sub(room("center"), var(s, "center")));
+/// `amount` (never past it), or halfway with none. A `group` moved so goes together, the
+/// way from the middle of their centres: the beds along the left wall move straight out
+/// from it, not each on its own diagonal.
+pub(crate) fn towards_centre(group: &[usize], amount: Option<f64>) -> Expr {
+    let middle = match group {
+        [one] => var(*one, "center"),
+        _ => mul(
+            num(1.0 / group.len().max(1) as f64),
+            super::build::sum(group.iter().map(|&k| var(k, "center"))),
+        ),
+    };
+    let f = flat(sub(room("center"), middle));
     match amount {
         Some(x) => {
             let length = call("abs", vec![f.clone()]);

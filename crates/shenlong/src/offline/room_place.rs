@@ -34,9 +34,9 @@ pub(super) enum RoomPlace {
 }
 
 impl RoomPlace {
-    /// The translation that takes subject `s` there (`has_room`: whether the scene has
-    /// room bounds).
-    pub(super) fn vector(self, s: usize, has_room: bool) -> Expr {
+    /// The translation that takes subject `s`, one of `group` moved there together, there
+    /// (`has_room`: whether the scene has room bounds).
+    pub(super) fn vector(self, s: usize, group: &[usize], has_room: bool) -> Expr {
         match self {
             Self::Floor => room::onto_floor(s, has_room),
             Self::At(place) => room::place(place, s),
@@ -44,7 +44,7 @@ impl RoomPlace {
             Self::ToSide((e, sign)) => room::all_the_way(s, e, sign),
             Self::AwayFromWall(wall, amount) => room::away_from_wall(s, wall, amount),
             Self::OtherSide => room::other_side_of_room(s),
-            Self::TowardsCentre(amount) => room::towards_centre(s, amount),
+            Self::TowardsCentre(amount) => room::towards_centre(group, amount),
             Self::CloserToWall(wall, amount) => room::towards_wall(s, wall, amount),
         }
     }
