@@ -985,3 +985,35 @@ fn objects_together_on_one_side_move_towards_the_middle_together() {
         "{a:?} {b:?}"
     );
 }
+
+/// A store room: two crates stacked, a printer on a cabinet, two small boxes alike, one on
+/// the floor and one on a shelf.
+const STORE: &str = r#"{
+  "name": "store",
+  "bounds": {"min": [-4, 0, -4], "max": [4, 3, 4]},
+  "objects": [
+    {"name": "crate 1", "position": [-3, 0, -3], "size": [0.6, 0.4, 0.4]},
+    {"name": "crate 2", "position": [-3, 0.4, -3], "size": [0.5, 0.35, 0.35], "on": "crate 1"},
+    {"name": "cabinet", "position": [2, 0, -3], "size": [0.5, 0.6, 0.45]},
+    {"name": "printer", "position": [2, 0.6, -3], "size": [0.42, 0.25, 0.38], "on": "cabinet"},
+    {"name": "shelf", "position": [0, 0, -3.5], "size": [1.2, 1.0, 0.4]},
+    {"name": "box 1", "position": [0, 1.0, -3.5], "size": [0.2, 0.15, 0.2], "on": "shelf"},
+    {"name": "box 2", "position": [1, 0, 1], "size": [0.2, 0.15, 0.2]},
+    {"name": "pen cup", "position": [0.3, 1.0, -3.5], "size": [0.08, 0.1, 0.08], "on": "shelf"}
+  ]
+}"#;
+
+#[test]
+fn on_top_of_a_stack_is_on_its_highest_and_a_relative_clause_says_which() {
+    // "that's on the floor" says which small box; the stack's top is crate 2's.
+    assert!(after(STORE, "put the small box on top of crate 1").is_err());
+    let s = after(
+        STORE,
+        "put the small box that's on the floor on top of crate 1",
+    )
+    .unwrap();
+    let (b, c) = (aabb(&s, "box 2"), aabb(&s, "crate 2"));
+    assert!((b.min.y - c.max.y).abs() < 1e-6 && (b.center().x + 3.0).abs() < 1e-6);
+    // A printer on a cabinet is no stack: its top is full, and the edit refused.
+    assert!(after(STORE, "put the pen cup on the cabinet").is_err());
+}

@@ -136,9 +136,15 @@ impl Reader<'_> {
         // A relation or place after a noun the modifiers before it already pick among
         // ("the left stool next to the chair", "the top crate on the floor") is where it
         // goes, unless it clearly describes.
+        // ("the small box that's on the floor": a relative clause says which, always.)
+        let relative = matches!(
+            self.word(head.range.end),
+            Some("that" | "which" | "that's" | "thats")
+        );
         let post = post.filter(|(p, _)| {
             !(selectors_first
                 && !describes
+                && !relative
                 && matches!(p, Post::Relation(..) | Post::Floor | Post::Room(_)))
         });
         // "put the spoon next to the toaster" with two spoons: after a verb of placing the

@@ -294,6 +294,46 @@ impl<'s> Known<'s> {
         Some(to)
     }
 
+    /// "put X1 on top of the stack": where variable `t` carries a stack — one object alike
+    /// in size ([`STACK_ALIKE`]) resting on it and covering most of its top
+    /// ([`STACK_COVER`]), and so on up — the move that
+    /// puts variable `s` centred on the top of the highest one. `None` where nothing
+    /// covers `t`'s top, or nothing is known of the scene.
+    pub(crate) fn on_top_of_stack(&self, s: usize, t: usize) -> Option<glam::DVec3> {
+        let (scene, objects) = self.scene?;
+        let (a, mut top) = (*objects.get(s)?, *objects.get(t)?);
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let on = scene.resting_on_each();
+        let area = |b: &crate::geometry::Aabb| b.size().x * b.size().z;
+        for _ in 0..scene.objects.len() {
+            let under = boxes[top];
+            // Alike in every extent (crates on crates, not a printer on a cabinet).
+            let alike = |u: usize| {
+                let (p, q) = (boxes[u].size(), under.size());
+                (0..3).all(|e| p[e] >= STACK_ALIKE * q[e] && q[e] >= STACK_ALIKE * p[e])
+            };
+            let cover = on[top].iter().copied().find(|&u| {
+                u != a && alike(u) && {
+                    let overlap = boxes[u].overlap(&under);
+                    overlap.x.max(0.0) * overlap.z.max(0.0) >= STACK_COVER * area(&under)
+                }
+            });
+            match cover {
+                Some(u) => top = u,
+                None => break,
+            }
+        }
+        if top == objects[t] {
+            return None;
+        }
+        let (me, b) = (boxes[a], boxes[top]);
+        Some(glam::DVec3::new(
+            b.center().x - me.center().x,
+            b.max.y - me.min.y,
+            b.center().z - me.center().z,
+        ))
+    }
+
     /// Whether variables `group` stand together on one side of the room's centre: every
     /// one's way to the centre has a part along the way from their middle to it (the beds
     /// along one wall, not chairs in opposite corners). One object always does.
@@ -775,6 +815,13 @@ impl Known<'_> {
         }
     }
 }
+
+/// The share of an object's top another resting on it covers for the two to be a stack
+/// ([`Known::on_top_of_stack`]).
+const STACK_COVER: f64 = 0.7;
+
+/// How alike two objects of a stack are: each extent at least this share of the other's.
+const STACK_ALIKE: f64 = 0.6;
 
 /// How far in from a table's edge a thing put in front of a chair drawn up to it stands,
 /// beyond its own half size, metres.

@@ -600,15 +600,22 @@ impl Reader<'_> {
             .collect()
     }
 
-    /// A chair's place as where a thing goes: "at X2's place" ([`Relation::AtSeat`]), and
-    /// "in front of X2" (by, next to, at) for a thing on the table chair X2 is drawn up
-    /// to — on that table, in front of the chair ([`super::Known::at_its_seat`]). `None`
-    /// for other relations, and for those where the thing is not on the chair's table.
+    /// Places measured from the scene rather than written over the bound boxes: a chair's
+    /// place as where a thing goes — "at X2's place" ([`Relation::AtSeat`]), and "in front
+    /// of X2" (by, next to, at) for a thing on the table chair X2 is drawn up to: on that
+    /// table, in front of the chair ([`super::Known::at_its_seat`]) — and "on top of X2"
+    /// where X2 carries a stack: on its highest object ([`super::Known::on_top_of_stack`]).
+    /// `None` for other relations and where these do not apply.
     ///
     /// # Errors
     /// At a chair's place where the chair is drawn up to no table (or another than the
     /// one named), or where an earlier clause moved the chair or the table.
-    fn at_seat(&self, relation: Relation, s: usize, t: usize) -> Option<Result<Expr, String>> {
+    fn from_the_scene(
+        &self,
+        relation: Relation,
+        s: usize,
+        t: usize,
+    ) -> Option<Result<Expr, String>> {
         let known = self.facts.known;
         let unmoved = |v: usize| !self.steps.contains_key(&v);
         let constant =
@@ -618,6 +625,8 @@ impl Reader<'_> {
                 .at_its_seat(s, t, None)
                 .filter(|_| known.on_seat_table(s, t))
                 .map(|v| Ok(constant(v))),
+            // "on top of the stack": on its highest crate.
+            Relation::On if unmoved(t) => known.on_top_of_stack(s, t).map(|v| Ok(constant(v))),
             Relation::AtSeat(table) => {
                 let placed = unmoved(t) && table.is_none_or(unmoved);
                 Some(
@@ -661,8 +670,8 @@ impl Reader<'_> {
         let unmoved = |v: usize| !self.steps.contains_key(&v);
         let as_is = unmoved(t);
         let known = self.facts.known;
-        if let Some(at_seat) = self.at_seat(relation, s, t) {
-            return at_seat;
+        if let Some(measured) = self.from_the_scene(relation, s, t) {
+            return measured;
         }
         let mut level = Level::Target;
         let relation = match relation {
