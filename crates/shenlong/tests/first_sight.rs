@@ -1017,3 +1017,21 @@ fn on_top_of_a_stack_is_on_its_highest_and_a_relative_clause_says_which() {
     // A printer on a cabinet is no stack: its top is full, and the edit refused.
     assert!(after(STORE, "put the pen cup on the cabinet").is_err());
 }
+
+#[test]
+fn a_false_description_after_put_is_where_it_goes_and_that_table_is_the_one_named() {
+    // The atlas is not on table 1: "on reading table 1" is where it goes.
+    let s = after(READING, "put the atlas on reading table 1 next to the lamp").unwrap();
+    let (a, t) = (aabb(&s, "atlas"), aabb(&s, "reading table 1"));
+    assert!((a.min.y - t.max.y).abs() < 1e-6, "{a:?}");
+    // "that table": table 2, named before.
+    let s = after(
+        READING,
+        "move table 2 and the two chairs at that table 10 cm left",
+    )
+    .unwrap();
+    for name in ["reading table 2", "chair 3", "chair 4"] {
+        assert!(close(moved(READING, &s, name), [-0.1, 0.0, 0.0]), "{name}");
+    }
+    assert!(close(moved(READING, &s, "chair 2"), [0.0; 3]));
+}

@@ -163,7 +163,28 @@ impl Reader<'_> {
                 }
             }
         }
+        if describes && !picks && self.false_of_one_placed(post.as_ref(), start, objects) {
+            return Ok(None);
+        }
         Ok(post.filter(|_| picks || describes))
+    }
+
+    /// "put drill 2 on the workbench next to drill 1": whether a relation after the one
+    /// object a placing verb names is not true of it — then it is where the object goes,
+    /// not a description of it (found false, it would refuse the edit).
+    fn false_of_one_placed(
+        &self,
+        post: Option<&(Post, usize)>,
+        start: usize,
+        objects: &[usize],
+    ) -> bool {
+        let Some((Post::Relation(relation, targets), _)) = post else {
+            return false;
+        };
+        objects.len() == 1
+            && relation.can_be_a_destination()
+            && self.placing_verb_before(start)
+            && select::by_relation(self.scene, objects, *relation, targets, 1).is_none()
     }
 
     /// Applies a post-modifier to the candidates: the ones it keeps.

@@ -99,7 +99,9 @@ impl Reader<'_> {
             &phrase,
         )?;
         self.itself(&mut draft, bound);
-        if mode == Mode::Main && draft.count == Count::One {
+        // (Inside a modifier only "that N": "the chairs at that table".)
+        let main_or_that = mode == Mode::Main || self.is_word(draft.start, &["that", "this"]);
+        if main_or_that && draft.count == Count::One {
             self.bridge(&head, &mut draft, bound);
         }
         if mode == Mode::Main && matches!(draft.count, Count::All) && !head.generic {
@@ -424,15 +426,21 @@ impl Reader<'_> {
     /// facing the table": where "the N" fits several but is said as what an object named
     /// before is measured from (after `from`, `closer to`, `towards`, `facing`, `the edge
     /// of`, `keep … on`), it is the one of them that object rests on or is drawn up to,
-    /// or the one named before ("closer to coffee table 2 but keep it facing the table").
+    /// or the one named before ("closer to coffee table 2 but keep it facing the table";
+    /// after `that` or `this`, wherever it stands: "… between the chairs at that table").
     /// Only where exactly one fits; otherwise the phrase stays as it was (and is refused
     /// as ambiguous). Not after `on`, `to` or `next to`, where "the table" is where
     /// something goes and may well be another one.
     fn bridge(&self, head: &Head, draft: &mut Draft, bound: &[usize]) {
-        if draft.objects.len() < 2 || bound.is_empty() || !self.is_word(draft.start, &["the"]) {
+        if draft.objects.len() < 2 || bound.is_empty() {
             return;
         }
-        if !self.measured_from(draft.start) {
+        // "… at that table": a demonstrative points at the one named before, anywhere.
+        let demonstrative = self.is_word(draft.start, &["that", "this"]);
+        if !demonstrative && !self.is_word(draft.start, &["the"]) {
+            return;
+        }
+        if !demonstrative && !self.measured_from(draft.start) {
             self.on_named(head, draft, bound);
             return;
         }

@@ -61,7 +61,7 @@ impl Reader<'_> {
         }
         // "the chair between chair 12 and chair 14", "… between the two beds".
         if w == "between" {
-            return self.between_at(j, bound);
+            return Ok(self.between_at(j, bound));
         }
         if let Some((relation, after)) = self.relation_at(j) {
             if let Some((targets, end)) = self.nested_np(after, bound)? {
@@ -437,21 +437,23 @@ impl Reader<'_> {
 
     /// "between A and B" (or "between the two Ns") at token `j`: the two objects, as a
     /// relation, and the token after them. `None` where the words name no two objects.
-    fn between_at(&self, j: usize, bound: &[usize]) -> Result<Option<(Post, usize)>, GroundError> {
-        let Some((first, end)) = self.nested_np(j + 1, bound)? else {
-            return Ok(None);
-        };
+    fn between_at(&self, j: usize, bound: &[usize]) -> Option<(Post, usize)> {
+        // (Words that name no two objects here are left for the reader of the sentence:
+        // "put the lamp on table 6 between the two chairs at that table".)
+        let (first, end) = self.nested_np(j + 1, bound).ok().flatten()?;
         let (targets, end) = match first.as_slice() {
             [_, _] => (first, end),
-            [a] if self.is_word(end, &["and"]) => match self.nested_np(end + 1, bound)? {
-                Some((second, end)) if second.len() == 1 && second[0] != *a => {
-                    (vec![*a, second[0]], end)
+            [a] if self.is_word(end, &["and"]) => {
+                match self.nested_np(end + 1, bound).ok().flatten() {
+                    Some((second, end)) if second.len() == 1 && second[0] != *a => {
+                        (vec![*a, second[0]], end)
+                    }
+                    _ => return None,
                 }
-                _ => return Ok(None),
-            },
-            _ => return Ok(None),
+            }
+            _ => return None,
         };
-        Ok(Some((Post::Relation(Relation::Between, targets), end)))
+        Some((Post::Relation(Relation::Between, targets), end))
     }
 
     /// A relation word group at `j` and where its object starts.
