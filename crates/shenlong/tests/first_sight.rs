@@ -1035,3 +1035,14 @@ fn a_false_description_after_put_is_where_it_goes_and_that_table_is_the_one_name
     }
     assert!(close(moved(READING, &s, "chair 2"), [0.0; 3]));
 }
+
+#[test]
+fn of_a_group_first_the_one_after_picks_among_them() {
+    let s = after(
+        READING,
+        "of the two chairs at table 3, move the left one 10 cm left",
+    )
+    .unwrap();
+    assert!(close(moved(READING, &s, "chair 5"), [-0.1, 0.0, 0.0]));
+    assert!(close(moved(READING, &s, "chair 1"), [0.0; 3]));
+}

@@ -304,6 +304,14 @@ impl Reader<'_> {
             })
     }
 
+    /// Whether the phrase starting at token `start` is a partitive opening its clause
+    /// ("of the two stools, …"): the group a later "one" picks from.
+    fn partitive(&self, start: usize) -> bool {
+        start > 0
+            && self.is_word(start - 1, &["of"])
+            && (start == 1 || matches!(self.tokens[start - 2].kind, Kind::Punct(_)))
+    }
+
     /// The typo corrected among tokens `range`, as a reason.
     fn typo_in(&self, range: &Range<usize>) -> Option<Reason> {
         range.clone().find_map(|t| {
@@ -516,6 +524,10 @@ impl Reader<'_> {
         // modifiers must pick.
         let everything: Vec<usize>;
         let (pool, text) = match nps.last() {
+            // "of the two stools at the island, … the left one": one of those two.
+            Some(previous) if self.partitive(previous.range.start) => {
+                (&previous.objects, previous.head.clone())
+            }
             Some(previous) => (&previous.pool, previous.head.clone()),
             None if k > 0
                 && !other
@@ -536,8 +548,9 @@ impl Reader<'_> {
         } else {
             Vec::new()
         };
+        let partitive = nps.last().is_some_and(|p| self.partitive(p.range.start));
         let (mut objects, text) =
-            if wider.len() > pool.len() && pool.iter().all(|o| wider.contains(o)) {
+            if !partitive && wider.len() > pool.len() && pool.iter().all(|o| wider.contains(o)) {
                 (wider, kind)
             } else {
                 (pool.clone(), text)

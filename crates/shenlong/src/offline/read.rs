@@ -468,9 +468,16 @@ impl<'a> Reader<'a> {
     }
 
     /// A topic ("Cushion_Blue: move it 15 cm right"): a clause of objects named alone,
-    /// what "it" and "them" mean next; read, it is `true`.
+    /// what "it" and "them" mean next; or the group the next clause picks from ("of X1
+    /// and X2, turn X1 …"); read, it is `true`.
     fn topic(&mut self, c: &mut Clause) -> bool {
-        let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
+        let mut free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
+        // "of X1 and X2, turn X1 …": the group the next clause picks from (the grounder
+        // has said which), not what "it" means.
+        let partitive = free.first().copied().filter(|&i| c.words_at(i, &["of"]));
+        if partitive.is_some() {
+            free.remove(0);
+        }
         let topic: Vec<usize> = free
             .iter()
             .filter_map(|&i| match c.token(i) {
@@ -489,7 +496,10 @@ impl<'a> Reader<'a> {
         for &i in &free {
             c.mark(i..i + 1);
         }
-        self.last_subjects = topic;
+        match partitive {
+            Some(of) => c.mark(of..of + 1),
+            None => self.last_subjects = topic,
+        }
         true
     }
 
