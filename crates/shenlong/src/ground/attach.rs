@@ -142,10 +142,10 @@ impl Reader<'_> {
             Some("that" | "which" | "that's" | "thats")
         );
         let post = post.filter(|(p, _)| {
-            !(selectors_first
-                && !describes
-                && !relative
-                && matches!(p, Post::Relation(..) | Post::Floor | Post::Room(_)))
+            !selectors_first
+                || describes
+                || relative
+                || !matches!(p, Post::Relation(..) | Post::Floor | Post::Room(_))
         });
         // "put the spoon next to the toaster" with two spoons: after a verb of placing the
         // relation is where the spoon goes, not which spoon; refuse, naming them.
@@ -169,22 +169,25 @@ impl Reader<'_> {
         Ok(post.filter(|_| picks || describes))
     }
 
-    /// "put drill 2 on the workbench next to drill 1": whether a relation after the one
-    /// object a placing verb names is not true of it — then it is where the object goes,
-    /// not a description of it (found false, it would refuse the edit).
+    /// "put drill 2 on the workbench next to drill 1": whether "on X", after the one
+    /// object a placing verb names and before a second relation ("next to", "between"),
+    /// is not true of it — then the two are where the object goes, not a description of
+    /// it (found false, it would refuse the edit). With an amount after it instead ("move
+    /// the book on the side table 10 cm left") it stays a description, and is refused.
     fn false_of_one_placed(
         &self,
         post: Option<&(Post, usize)>,
         start: usize,
         objects: &[usize],
     ) -> bool {
-        let Some((Post::Relation(relation, targets), _)) = post else {
+        let Some((Post::Relation(Relation::On, targets), end)) = post else {
             return false;
         };
+        let second = self.relation_at(*end).is_some() || self.is_word(*end, &["between"]);
         objects.len() == 1
-            && relation.can_be_a_destination()
+            && second
             && self.placing_verb_before(start)
-            && select::by_relation(self.scene, objects, *relation, targets, 1).is_none()
+            && select::by_relation(self.scene, objects, Relation::On, targets, 1).is_none()
     }
 
     /// Applies a post-modifier to the candidates: the ones it keeps.

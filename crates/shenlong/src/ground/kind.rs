@@ -53,6 +53,25 @@ pub fn stands_on_floor(furniture: Option<bool>, height: f64, footprint: f64) -> 
 /// lexicon knows.
 #[must_use]
 pub fn furniture_kind(lexicon: &Lexicon, category: Option<&str>, name: &str) -> Option<bool> {
+    filed_under(lexicon, category, name, &["furniture", "appliance"])
+}
+
+/// Whether the lexicon files the object's kind under a seat (a chair, a stool, a bench, a
+/// sofa): from its category when it has one, else from its name; `None` when neither
+/// names a kind the lexicon knows.
+#[must_use]
+pub fn seat_kind(lexicon: &Lexicon, category: Option<&str>, name: &str) -> Option<bool> {
+    filed_under(lexicon, category, name, &["seat"])
+}
+
+/// Whether the lexicon files the object's kind (its category, else its name) under one of
+/// `roots` or as one of them; `None` when neither names a kind the lexicon knows.
+fn filed_under(
+    lexicon: &Lexicon,
+    category: Option<&str>,
+    name: &str,
+    roots: &[&str],
+) -> Option<bool> {
     let mut phrases = Vec::new();
     if let Some(c) = category {
         phrases.push(normalize(c));
@@ -60,7 +79,7 @@ pub fn furniture_kind(lexicon: &Lexicon, category: Option<&str>, name: &str) -> 
     let id = ident::read(name, lexicon);
     phrases.push(id.base);
     phrases.extend(id.other);
-    let roots: Vec<usize> = ["furniture", "appliance"]
+    let roots: Vec<usize> = roots
         .iter()
         .flat_map(|w| lexicon.concepts_of(w).iter().copied())
         .collect();

@@ -251,14 +251,22 @@ impl<'s> Known<'s> {
         (gap <= crate::ground::depend::DRAWN_UP_METRES).then_some((scene, boxes.as_slice(), table))
     }
 
-    /// Whether variable `s` rests on the table chair `t` is drawn up to.
+    /// Whether variable `s` rests on the table that `t`, a seat by its kind
+    /// ([`crate::ground::kind::seat_kind`]: a chair, a stool), is drawn up to.
     pub(crate) fn on_seat_table(&self, s: usize, t: usize) -> bool {
-        let (Some((scene, _, table)), Some(&a)) =
-            (self.seat_table(t), self.scene.and_then(|(_, o)| o.get(s)))
-        else {
+        let (Some((scene, _, table)), Some((&a, &b))) = (
+            self.seat_table(t),
+            self.scene.and_then(|(_, o)| o.get(s).zip(o.get(t))),
+        ) else {
             return false;
         };
-        scene.objects[a].support == Some(table)
+        let seat = &scene.objects[b];
+        let is_seat = crate::ground::kind::seat_kind(
+            crate::ground::lexicon::Lexicon::builtin(),
+            seat.labels.category.as_deref(),
+            &seat.name,
+        );
+        is_seat == Some(true) && scene.objects[a].support == Some(table)
     }
 
     /// "put the laptop at chair 3's place", "… in front of chair 3": the move that puts
@@ -292,46 +300,6 @@ impl<'s> Known<'s> {
         }
         to.y = top.max.y - me.min.y;
         Some(to)
-    }
-
-    /// "put X1 on top of the stack": where variable `t` carries a stack — one object alike
-    /// in size ([`STACK_ALIKE`]) resting on it and covering most of its top
-    /// ([`STACK_COVER`]), and so on up — the move that
-    /// puts variable `s` centred on the top of the highest one. `None` where nothing
-    /// covers `t`'s top, or nothing is known of the scene.
-    pub(crate) fn on_top_of_stack(&self, s: usize, t: usize) -> Option<glam::DVec3> {
-        let (scene, objects) = self.scene?;
-        let (a, mut top) = (*objects.get(s)?, *objects.get(t)?);
-        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
-        let on = scene.resting_on_each();
-        let area = |b: &crate::geometry::Aabb| b.size().x * b.size().z;
-        for _ in 0..scene.objects.len() {
-            let under = boxes[top];
-            // Alike in every extent (crates on crates, not a printer on a cabinet).
-            let alike = |u: usize| {
-                let (p, q) = (boxes[u].size(), under.size());
-                (0..3).all(|e| p[e] >= STACK_ALIKE * q[e] && q[e] >= STACK_ALIKE * p[e])
-            };
-            let cover = on[top].iter().copied().find(|&u| {
-                u != a && alike(u) && {
-                    let overlap = boxes[u].overlap(&under);
-                    overlap.x.max(0.0) * overlap.z.max(0.0) >= STACK_COVER * area(&under)
-                }
-            });
-            match cover {
-                Some(u) => top = u,
-                None => break,
-            }
-        }
-        if top == objects[t] {
-            return None;
-        }
-        let (me, b) = (boxes[a], boxes[top]);
-        Some(glam::DVec3::new(
-            b.center().x - me.center().x,
-            b.max.y - me.min.y,
-            b.center().z - me.center().z,
-        ))
     }
 
     /// Whether variables `group` stand together on one side of the room's centre: every
@@ -815,13 +783,6 @@ impl Known<'_> {
         }
     }
 }
-
-/// The share of an object's top another resting on it covers for the two to be a stack
-/// ([`Known::on_top_of_stack`]).
-const STACK_COVER: f64 = 0.7;
-
-/// How alike two objects of a stack are: each extent at least this share of the other's.
-const STACK_ALIKE: f64 = 0.6;
 
 /// How far in from a table's edge a thing put in front of a chair drawn up to it stands,
 /// beyond its own half size, metres.

@@ -602,15 +602,14 @@ impl Reader<'_> {
 
     /// Places measured from the scene rather than written over the bound boxes: a chair's
     /// place as where a thing goes — "at X2's place" ([`Relation::AtSeat`]), and "in front
-    /// of X2" (by, next to, at) for a thing on the table chair X2 is drawn up to: on that
-    /// table, in front of the chair ([`super::Known::at_its_seat`]) — and "on top of X2"
-    /// where X2 carries a stack: on its highest object ([`super::Known::on_top_of_stack`]).
-    /// `None` for other relations and where these do not apply.
+    /// of X2" for a thing on the table seat X2 is drawn up to: on that table, in front of
+    /// the seat ([`super::Known::at_its_seat`]). `None` for other
+    /// relations and where these do not apply.
     ///
     /// # Errors
     /// At a chair's place where the chair is drawn up to no table (or another than the
     /// one named), or where an earlier clause moved the chair or the table.
-    fn from_the_scene(
+    fn measured_in_scene(
         &self,
         relation: Relation,
         s: usize,
@@ -621,12 +620,10 @@ impl Reader<'_> {
         let constant =
             |v: glam::DVec3| build::sum((0..3).map(|e| build::scaled_axis(build::num(v[e]), e)));
         match relation {
-            Relation::Side(2, 1.0) | Relation::NextTo | Relation::To if unmoved(t) => known
+            Relation::Side(2, 1.0) if unmoved(t) => known
                 .at_its_seat(s, t, None)
                 .filter(|_| known.on_seat_table(s, t))
                 .map(|v| Ok(constant(v))),
-            // "on top of the stack": on its highest crate.
-            Relation::On if unmoved(t) => known.on_top_of_stack(s, t).map(|v| Ok(constant(v))),
             Relation::AtSeat(table) => {
                 let placed = unmoved(t) && table.is_none_or(unmoved);
                 Some(
@@ -670,7 +667,7 @@ impl Reader<'_> {
         let unmoved = |v: usize| !self.steps.contains_key(&v);
         let as_is = unmoved(t);
         let known = self.facts.known;
-        if let Some(measured) = self.from_the_scene(relation, s, t) {
+        if let Some(measured) = self.measured_in_scene(relation, s, t) {
             return measured;
         }
         let mut level = Level::Target;
