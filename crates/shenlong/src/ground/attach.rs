@@ -65,26 +65,7 @@ impl Reader<'_> {
             });
         // "put the phone on the desk next to the mug": a relation to something that rests
         // on the destination is the rest of the destination, not a description of it.
-        let rest_of_destination = destination
-            && post.as_ref().is_some_and(|(p, _)| match p {
-                Post::Relation(
-                    Relation::Near
-                    | Relation::InFront
-                    | Relation::Behind
-                    | Relation::LeftOf
-                    | Relation::RightOf
-                    | Relation::Between,
-                    targets,
-                ) => {
-                    !targets.is_empty()
-                        && targets.iter().all(|&t| {
-                            objects
-                                .iter()
-                                .any(|&o| self.scene.objects[t].support == Some(o))
-                        })
-                }
-                _ => false,
-            });
+        let rest_of_destination = destination && self.rests_on_any(post.as_ref(), objects);
         // "put the cup on the table at chair 8's place": the chair's place is the rest of
         // the destination, never which table.
         let at_a_seat = destination
@@ -167,6 +148,30 @@ impl Reader<'_> {
             return Ok(None);
         }
         Ok(post.filter(|_| picks || describes))
+    }
+
+    /// Whether `post` is a relation beside (near, in front, behind, left, right, between)
+    /// objects that all rest on one of `objects`.
+    fn rests_on_any(&self, post: Option<&(Post, usize)>, objects: &[usize]) -> bool {
+        post.is_some_and(|(p, _)| match p {
+            Post::Relation(
+                Relation::Near
+                | Relation::InFront
+                | Relation::Behind
+                | Relation::LeftOf
+                | Relation::RightOf
+                | Relation::Between,
+                targets,
+            ) => {
+                !targets.is_empty()
+                    && targets.iter().all(|&t| {
+                        objects
+                            .iter()
+                            .any(|&o| self.scene.objects[t].support == Some(o))
+                    })
+            }
+            _ => false,
+        })
     }
 
     /// "put drill 2 on the workbench next to drill 1": whether "on X", after the one
