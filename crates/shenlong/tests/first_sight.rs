@@ -1046,3 +1046,16 @@ fn of_a_group_first_the_one_after_picks_among_them() {
     assert!(close(moved(READING, &s, "chair 5"), [-0.1, 0.0, 0.0]));
     assert!(close(moved(READING, &s, "chair 1"), [0.0; 3]));
 }
+
+#[test]
+fn a_swap_takes_two_and_what_rests_on_them_goes_along() {
+    let s = after(LOUNGE, "swap the two coffee tables, magazines and all").unwrap();
+    assert!(close(moved(LOUNGE, &s, "coffee table 1"), [6.0, 0.0, 0.0]));
+    assert!(close(moved(LOUNGE, &s, "magazine stack"), [6.0, 0.0, 0.0]));
+    assert!(close(moved(LOUNGE, &s, "tea tray"), [-6.0, 0.0, 0.0]));
+    let refused = after(READING, "swap the chairs").unwrap_err();
+    assert!(
+        refused.contains("swap takes two") && refused.contains("chair 6"),
+        "{refused}"
+    );
+}

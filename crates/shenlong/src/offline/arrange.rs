@@ -55,6 +55,15 @@ impl Reader<'_> {
         if vars.len() < 2 {
             return Err(not_read(text, text));
         }
+        // "swap the chairs" with four chairs: which two is not said.
+        if vars.len() > 2 {
+            let known = self.facts.known;
+            let names: Vec<String> = vars.iter().map(|&(_, v)| known.label(v)).collect();
+            return Err(format!(
+                "a swap takes two objects, and {} are named: say which two",
+                names.join(", ")
+            ));
+        }
         for i in 0..c.len() {
             if matches!(
                 c.word(i),

@@ -276,15 +276,21 @@ impl<'a> Reader<'a> {
         } else if self.topic(c) || self.remark(c) {
             return Ok(());
         } else {
-            // "move X1 right along with X2": X2 is no subject of the move; the phrase is
-            // set aside while the move is read.
-            let moving = (0..c.len()).any(|i| {
-                c.free(i)
-                    && c.word(i)
-                        .and_then(verb_of)
-                        .is_some_and(|(a, _)| a == Action::Move)
+            // "move X1 right along with X2", "swap X1 and X2, X3 and X4 and all": X2 (X3,
+            // X4) is no subject of the move; the phrase is set aside while it is read.
+            let action = (0..c.len())
+                .filter(|&i| c.free(i))
+                .find_map(|i| c.word(i).and_then(verb_of))
+                .map(|(a, _)| a);
+            // (After "swap", "with X2" is the other one swapped.)
+            let along = super::along::phrase(c).filter(|(range, named)| {
+                !named.is_empty()
+                    && match action {
+                        Some(Action::Move) => true,
+                        Some(Action::Swap) => c.word(range.start) != Some("with"),
+                        _ => false,
+                    }
             });
-            let along = super::along::phrase(c).filter(|(_, named)| moving && !named.is_empty());
             let saved = along.as_ref().map(|(range, _)| {
                 let saved = c.saved(range.clone());
                 c.mark(range.clone());
