@@ -1059,3 +1059,22 @@ fn a_swap_takes_two_and_what_rests_on_them_goes_along() {
         "{refused}"
     );
 }
+
+#[test]
+fn anything_else_is_held_where_it_is_and_what_rests_on_the_moved_goes_along() {
+    // The clause that holds everything else is read (it was refused as unread words), and
+    // armchair 1, 0.3 m in front of the table, stays: the table stops short of it.
+    for q in [
+        "move coffee table 1 50 cm forward, but don't move anything else",
+        "move coffee table 1 50 cm forward and leave everything else where it is",
+        "move coffee table 1 50 cm forward, nothing else moves",
+    ] {
+        let s = after(LOUNGE, q).unwrap();
+        assert!(close(moved(LOUNGE, &s, "armchair 1"), [0.0; 3]), "{q}");
+        let table = moved(LOUNGE, &s, "coffee table 1");
+        assert!(
+            close(moved(LOUNGE, &s, "flower vase"), table.to_array()),
+            "{q}"
+        );
+    }
+}

@@ -152,6 +152,61 @@ pub(crate) fn cue_before(tokens: &[Token], start: usize) -> bool {
         .any(|(cue, _)| start >= cue.len() && phrase_at(&words, start - cue.len(), cue))
 }
 
+/// The words for everything not named ("… but don't move anything else").
+const EVERYTHING_ELSE: &[&[&str]] = &[
+    &["anything", "else"],
+    &["everything", "else"],
+    &["nothing", "else"],
+    &["the", "rest"],
+    &["all", "the", "rest"],
+    &["all", "else"],
+    &["the", "others"],
+    &["all", "the", "others"],
+];
+
+/// How many tokens at `k` say "everything else" ([`EVERYTHING_ELSE`]), if they do: no
+/// object's phrase, but what [`everything_else`] holds.
+pub(crate) fn else_words_at(tokens: &[Token], k: usize) -> Option<usize> {
+    let words: Vec<&str> = tokens.iter().map(|t| t.word().unwrap_or("")).collect();
+    longest_phrase(&words, k, EVERYTHING_ELSE)
+}
+
+/// The bytes of a clause that holds everything not named in place ("…, but don't move
+/// anything else", "leave everything else where it is", "without moving anything else",
+/// "nothing else moves"), cut from the query, or `None`.
+pub(crate) fn everything_else(tokens: &[Token]) -> Option<Range<usize>> {
+    let words: Vec<&str> = tokens.iter().map(|t| t.word().unwrap_or("")).collect();
+    for i in 0..tokens.len() {
+        let Some(n) = longest_phrase(&words, i, EVERYTHING_ELSE) else {
+            continue;
+        };
+        let cue = BEFORE
+            .iter()
+            .filter(|(cue, need)| *need != Need::Nothing && i >= cue.len())
+            .find(|(cue, _)| phrase_at(&words, i - cue.len(), cue))
+            .map(|(cue, _)| cue.len());
+        let start = match cue {
+            Some(len) => i - len,
+            // "nothing else moves", "the rest stays".
+            None if longest_phrase(&words, i + n, STAYS).is_some()
+                || matches!(words.get(i + n), Some(&("moves" | "move"))) =>
+            {
+                i
+            }
+            None => continue,
+        };
+        let mut end = i + n;
+        end += longest_phrase(&words, end, STAYS)
+            .or_else(|| matches!(words.get(end), Some(&("moves" | "move"))).then_some(1))
+            .unwrap_or(0);
+        end += longest_phrase(&words, end, AFTER).unwrap_or(0);
+        if clause_ends(tokens, end) {
+            return Some(cut(tokens, start, end));
+        }
+    }
+    None
+}
+
 /// The phrases the instruction holds in place, a list held by one cue included ("leave
 /// the bin and the left side table where they are").
 pub(crate) fn find(tokens: &[Token], phrases: &[Phrase]) -> Vec<Hold> {

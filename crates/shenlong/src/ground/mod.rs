@@ -424,7 +424,28 @@ impl Grounder {
                 total: scene.objects.len(),
             });
         }
-        let (phrases, held, mut cuts) = separate_holds(&reader.tokens, phrases);
+        let (phrases, mut held, mut cuts) = separate_holds(&reader.tokens, phrases);
+        // "…, but don't move anything else": every object not named is held.
+        if let Some(cut) = hold::everything_else(&reader.tokens) {
+            // (What rests on a named object goes with it.)
+            let mut named = vec![false; scene.objects.len()];
+            for &o in phrases.iter().chain(&held).flat_map(|p| &p.objects) {
+                named[o] = true;
+                for c in scene.carried_by(o) {
+                    named[c] = true;
+                }
+            }
+            held.push(Phrase {
+                span: cut.clone(),
+                text: text[cut.clone()].trim_start_matches([',', ' ']).to_string(),
+                objects: (0..scene.objects.len()).filter(|&o| !named[o]).collect(),
+                reasons: vec![Reason {
+                    kind: ReasonKind::Group,
+                    detail: "every object not named stays where it is".into(),
+                }],
+            });
+            cuts.push(cut);
+        }
         let phrases = drop_restated(text, phrases, &mut cuts, scene)?;
         if phrases.is_empty() {
             return Err(GroundError::OnlyHeld {
@@ -803,6 +824,11 @@ impl<'a> Reader<'a> {
                 };
                 self.commit(np, &mut phrases, &mut nps);
                 k += 1;
+                continue;
+            }
+            // "… anything else": no object of its own ([`hold::everything_else`]).
+            if let Some(n) = hold::else_words_at(&self.tokens, k) {
+                k += n;
                 continue;
             }
             // "… its bench": what the objects named last rest on or are drawn up to;
