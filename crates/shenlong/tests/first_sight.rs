@@ -1078,3 +1078,39 @@ fn anything_else_is_held_where_it_is_and_what_rests_on_the_moved_goes_along() {
         );
     }
 }
+
+#[test]
+fn the_whole_object_well_away_and_out_from_the_ends_of_a_table() {
+    // "the whole" picks nothing: coffee table 1 with what is on it.
+    let s = after(
+        LOUNGE,
+        "slide the whole coffee table 1 over to the left a bit",
+    )
+    .unwrap();
+    assert!(close(moved(LOUNGE, &s, "coffee table 1"), [-0.1, 0.0, 0.0]));
+    assert!(close(moved(LOUNGE, &s, "flower vase"), [-0.1, 0.0, 0.0]));
+    // "well away from the left wall": away from it, as "away from" alone.
+    let plain = after(DORM, "pull stool 2 away from the left wall").unwrap();
+    let well = after(DORM, "pull stool 2 well away from the left wall").unwrap();
+    assert!(moved(DORM, &well, "stool 2").x > 0.1);
+    assert!(close(
+        moved(DORM, &well, "stool 2"),
+        moved(DORM, &plain, "stool 2").to_array()
+    ));
+    // "from the ends of the table": from the table, straight out from the side each is at.
+    let s = after(
+        BOARDROOM,
+        "chairs 1 and 2 a bit further out from the ends of the table",
+    )
+    .unwrap();
+    for chair in ["Chair 01", "Chair 02"] {
+        let d = moved(BOARDROOM, &s, chair);
+        assert!(d.z < -0.05 && d.x.abs() < 1e-9, "{chair}: {d:?}");
+    }
+    let s = after(
+        READING,
+        "chair 4: scoot it out a bit further from its table",
+    )
+    .unwrap();
+    assert!(moved(READING, &s, "chair 4").z > 0.05);
+}

@@ -59,7 +59,17 @@ impl Reader<'_> {
                     || matches!(w, "empty" | "bare")
                     || words::ordinal(w).is_some()
                     || words::count_word(w).is_some()
-                    || matches!(w, "other" | "middle" | "center" | "centre" | "far" | "same")
+                    || matches!(
+                        w,
+                        "other"
+                            | "middle"
+                            | "center"
+                            | "centre"
+                            | "far"
+                            | "same"
+                            | "whole"
+                            | "entire"
+                    )
                     || words::is_colour(w)
                     || words::is_colour(&words::normalize(w))
                     || self
@@ -125,8 +135,9 @@ impl Reader<'_> {
                         mods.count = Some(Count::Exactly(n));
                     } else if let Some(o) = words::ordinal(w) {
                         mods.ordinal = Some(o);
-                    } else if w == "same" {
-                        // "the same chair": no pick.
+                    } else if matches!(w, "same" | "whole" | "entire") {
+                        // "the same chair", "the whole credenza" (with what is on it, as
+                        // always): no pick.
                     } else if let Some(parts) = words::side_parts(w) {
                         mods.sides
                             .extend(parts.into_iter().map(|(a, s)| (a, s, w.to_string())));

@@ -245,16 +245,19 @@ impl Clause {
             .collect()
     }
 
-    /// The next unread variable at or after `i`, skipping articles and `right`/`just`.
+    /// The next unread variable at or after `i`, skipping articles, `right`/`just` and
+    /// words already read.
     pub fn variable_after(&self, mut i: usize) -> Option<(usize, usize)> {
         while i < self.len() {
             match &self.tokens[i] {
                 Token::Variable(v) if self.free(i) => return Some((i, *v)),
+                // (Words an idiom has read are fillers: "from the ends of X2".)
                 Token::Word(w)
-                    if matches!(
-                        w.as_str(),
-                        "the" | "a" | "an" | "right" | "just" | "directly"
-                    ) =>
+                    if !self.free(i)
+                        || matches!(
+                            w.as_str(),
+                            "the" | "a" | "an" | "right" | "just" | "directly"
+                        ) =>
                 {
                     i += 1
                 }

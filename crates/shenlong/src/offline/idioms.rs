@@ -44,6 +44,8 @@ pub(crate) fn rewrite(c: &mut Clause) {
     pointing(c);
     keep_facing(c);
     so_that_it_is(c);
+    well_away(c);
+    from_its_ends(c);
     middle_of_an_object(c);
     somewhere(c);
     each_other(c);
@@ -439,6 +441,31 @@ fn so_that_it_is(c: &mut Clause) {
         if placed && (i..k).all(|j| c.free(j)) {
             c.mark(i..k);
             return;
+        }
+    }
+}
+
+/// "pull X1 well away from the wall", "well clear of X2": `well` says clearly, not how
+/// far; read, the rest is the move's.
+fn well_away(c: &mut Clause) {
+    for i in 0..c.len() {
+        if c.words_at(i, &["well"]) && one_of(c, i + 1, &["away", "clear", "out", "back", "over"]) {
+            c.mark(i..i + 1);
+        }
+    }
+}
+
+/// "further out from the ends of X2", "away from the side of X2": away from X2 — each
+/// object is at one of its ends or sides, and moves out from the one it is at.
+fn from_its_ends(c: &mut Clause) {
+    for i in 0..c.len() {
+        if !c.words_at(i, &["from", "the"]) {
+            continue;
+        }
+        let part = one_of(c, i + 2, &["ends", "end", "sides", "side"]);
+        let target = matches!(c.token(i + 4), Some(super::words::Token::Variable(_)));
+        if part && c.words_at(i + 3, &["of"]) && target {
+            c.mark(i + 1..i + 4);
         }
     }
 }

@@ -297,8 +297,8 @@ fn mark_relation(c: &mut Clause, r: &Found) {
 /// Marks a particle before a relation starting at token `start` read: "up onto", "back
 /// to", "over to"; `in` before a move towards something ("push X1 in toward X2", "tuck
 /// X1 in a bit closer to X2", "tuck X1 in flush against X2", "pull X1 back in against
-/// it"), vague amounts and words already read between; `to` before a place ("X1 to
-/// between X2 and X3").
+/// it"), vague amounts and words already read between; `out` before a move away ("scoot
+/// X1 out a bit further from X2"); `to` before a place ("X1 to between X2 and X3").
 fn mark_particles_before(c: &mut Clause, start: usize) {
     if start > 0 {
         let p = start - 1;
@@ -318,6 +318,12 @@ fn mark_particles_before(c: &mut Clause, start: usize) {
         }
         if matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across")) && c.free(p) {
             c.mark(p..p + 1);
+        } else if matches!(c.word(start), Some("further" | "farther" | "away"))
+            && c.word(q) == Some("out")
+            && c.free(q)
+        {
+            // "scoot X1 out a bit further from X2": out, away from it.
+            c.mark(q..q + 1);
         } else if toward && c.word(q) == Some("in") && c.free(q) {
             c.mark(q..q + 1);
             // "pull X1 back in against X2": pulled back to it.
