@@ -1114,3 +1114,14 @@ fn the_whole_object_well_away_and_out_from_the_ends_of_a_table() {
     .unwrap();
     assert!(moved(READING, &s, "chair 4").z > 0.05);
 }
+
+#[test]
+fn a_size_said_before_the_noun_is_no_count() {
+    let scene = r#"{"name": "den", "bounds": {"min": [-4, 0, -4], "max": [4, 3, 4]},
+      "objects": [
+        {"name": "TV_65in", "position": [0, 0.5, -3.5], "size": [1.45, 0.85, 0.08]},
+        {"name": "TV_Stand", "position": [0, 0, -3.5], "size": [1.8, 0.5, 0.45]}
+      ]}"#;
+    let s = after(scene, "move the 65 inch tv 20cm to the right please").unwrap();
+    assert!(close(moved(scene, &s, "TV_65in"), [0.2, 0.0, 0.0]));
+}

@@ -48,7 +48,10 @@ impl Reader<'_> {
             return false;
         }
         match &self.tokens[k].kind {
+            Kind::Number(_) if self.measure_at(k) => true,
             Kind::Number(x) => x.fract() == 0.0 && *x >= 1.0 && *x <= 100.0,
+            // The unit of a size said before the noun: "the 65 inch tv".
+            Kind::Word(_) if k > 0 && self.measure_at(k - 1) => true,
             Kind::Word(w) if words::is_determiner(w) => false,
             Kind::Word(w) => {
                 let w = w.trim_end_matches("'s");
@@ -121,11 +124,25 @@ impl Reader<'_> {
         k
     }
 
+    /// Whether token `k` is a number and the next a unit of length, right before a noun: a
+    /// size said before it ("the 65 inch tv", "the 2 m table").
+    fn measure_at(&self, k: usize) -> bool {
+        matches!(self.tokens[k].kind, Kind::Number(_))
+            && self.is_word(
+                k + 1,
+                &["inch", "in", "inches", "cm", "m", "mm", "ft", "foot"],
+            )
+            && self.head_at(k + 2).is_some()
+    }
+
     /// Reads the modifiers at tokens `at` (in order).
     pub(super) fn premodifiers(&self, at: &[usize]) -> Premods {
         let mut mods = Premods::default();
         for &m in at {
             match &self.tokens[m].kind {
+                // "the 65 inch tv": a size the name says, not a count.
+                Kind::Number(_) if self.measure_at(m) => {}
+                Kind::Word(_) if m > 0 && self.measure_at(m - 1) => {}
                 Kind::Number(x) => mods.count = Some(Count::Exactly(*x as usize)),
                 Kind::Punct(',') => mods.either = true,
                 Kind::Word(w) if w == "and" => mods.either = true,
