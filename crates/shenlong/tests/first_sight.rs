@@ -1125,3 +1125,10 @@ fn a_size_said_before_the_noun_is_no_count() {
     let s = after(scene, "move the 65 inch tv 20cm to the right please").unwrap();
     assert!(close(moved(scene, &s, "TV_65in"), [0.2, 0.0, 0.0]));
 }
+
+#[test]
+fn the_wall_an_object_is_on_is_named_by_it() {
+    // The door is in the front wall: "the door wall" is the front one.
+    let s = after(BEDROOM, "move the coat stand 40 cm toward the door wall").unwrap();
+    assert!(close(moved(BEDROOM, &s, "coat stand"), [0.0, 0.0, 0.4]));
+}

@@ -329,6 +329,23 @@ impl<'s> Known<'s> {
                 .all(|&c| (flat(room.center()) - c).dot(way) > 0.0)
     }
 
+    /// The wall of the room variable `t` is nearest (its box's gap to it), as the word for
+    /// its side (`left`, `right`, `back`, `front`); `None` without a room.
+    pub(crate) fn nearest_wall(&self, t: usize) -> Option<&'static str> {
+        let (scene, objects) = self.scene?;
+        let room = scene.bounds?;
+        let b = scene.objects[*objects.get(t)?].world_aabb();
+        [
+            (b.min.x - room.min.x, "left"),
+            (room.max.x - b.max.x, "right"),
+            (b.min.z - room.min.z, "back"),
+            (room.max.z - b.max.z, "front"),
+        ]
+        .into_iter()
+        .min_by(|a, b| a.0.total_cmp(&b.0))
+        .map(|(_, side)| side)
+    }
+
     /// The room's corner on variable `t`'s side of the room's centre, as the signs along
     /// x and z; `None` without a room, or where `t` stands on a centre line.
     pub(crate) fn corner_towards(&self, t: usize) -> Option<(f64, f64)> {

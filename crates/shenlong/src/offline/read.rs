@@ -249,6 +249,7 @@ impl<'a> Reader<'a> {
     /// # Errors
     /// A word of the clause not read (quoted), or a variable beyond those bound.
     pub fn clause(&mut self, c: &mut Clause) -> Result<(), String> {
+        self.wall_of_objects(c);
         prepare(c);
         let shifted = self.last_shift.take();
         // A clause of fillers only ("…, thanks"): nothing to do.
@@ -660,6 +661,22 @@ impl<'a> Reader<'a> {
             Action::Scale => self.scale(c, &text),
             Action::Straighten => self.straighten(c, &text),
             Action::Centre | Action::Move => self.move_(c, action, implied, &text),
+        }
+    }
+
+    /// "toward the X2 wall" (the window wall, the whiteboard wall): the wall X2 is nearest,
+    /// said as its side ("toward the back wall") for the reader of places in the room.
+    fn wall_of_objects(&self, c: &mut Clause) {
+        for i in 0..c.len() {
+            let Some(Token::Variable(t)) = c.token(i).cloned() else {
+                continue;
+            };
+            if !(c.free(i) && c.words_at(i + 1, &["wall"])) {
+                continue;
+            }
+            if let Some(side) = self.facts.known.nearest_wall(t) {
+                c.set(i, Token::Word(side.to_string()));
+            }
         }
     }
 
