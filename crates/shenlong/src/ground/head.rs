@@ -19,6 +19,7 @@ use words::Kind;
 /// The nouns of a collection of things, named by the things: a 'magazine stack' is "the
 /// magazines".
 const COLLECTIONS: &[&str] = &["stack", "pile", "heap", "bundle", "set", "bunch", "pair"];
+
 impl Reader<'_> {
     /// An object's name typed as the tool exported it (`Chair_Wood`, `Lamp_Table.003`):
     /// that object only, not its family.

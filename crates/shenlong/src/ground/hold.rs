@@ -153,15 +153,12 @@ pub(crate) fn cue_before(tokens: &[Token], start: usize) -> bool {
 }
 
 /// The words for everything not named ("… but don't move anything else").
+/// ("the others" and "the rest" are not among them: "move the others right" names them.)
 const EVERYTHING_ELSE: &[&[&str]] = &[
     &["anything", "else"],
     &["everything", "else"],
     &["nothing", "else"],
-    &["the", "rest"],
-    &["all", "the", "rest"],
     &["all", "else"],
-    &["the", "others"],
-    &["all", "the", "others"],
 ];
 
 /// How many tokens at `k` say "everything else" ([`EVERYTHING_ELSE`]), if they do: no
@@ -173,7 +170,7 @@ pub(crate) fn else_words_at(tokens: &[Token], k: usize) -> Option<usize> {
 
 /// The bytes of a clause that holds everything not named in place ("…, but don't move
 /// anything else", "leave everything else where it is", "without moving anything else",
-/// "nothing else moves"), cut from the query, or `None`.
+/// "nothing else moves", "everything else stays"), cut from the query, or `None`.
 pub(crate) fn everything_else(tokens: &[Token]) -> Option<Range<usize>> {
     let words: Vec<&str> = tokens.iter().map(|t| t.word().unwrap_or("")).collect();
     for i in 0..tokens.len() {
@@ -187,7 +184,7 @@ pub(crate) fn everything_else(tokens: &[Token]) -> Option<Range<usize>> {
             .map(|(cue, _)| cue.len());
         let start = match cue {
             Some(len) => i - len,
-            // "nothing else moves", "the rest stays".
+            // "nothing else moves", "everything else stays".
             None if longest_phrase(&words, i + n, STAYS).is_some()
                 || matches!(words.get(i + n), Some(&("moves" | "move"))) =>
             {

@@ -67,6 +67,7 @@ const RESTATED: &[&[&str]] = &[
     &["on", "it"],
     &["there"],
 ];
+
 impl Reader<'_> {
     /// Reads the noun phrase around a head: determiner and modifiers before it, and (when
     /// `mode` is [`Mode::Main`] and the noun alone fits several) a modifier after it.

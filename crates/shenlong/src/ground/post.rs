@@ -95,8 +95,9 @@ impl Reader<'_> {
 
     /// A line named before its objects at token `k`: "the back row of tables", "the
     /// whole front row of desks", "the left column of benches", "the second row of
-    /// chairs", "all the front-row chairs" — the objects of the plural noun after `of` that stand in that line, as a
-    /// phrase of its own. `None` where the words are not that.
+    /// chairs", "all the front-row chairs" — the objects of the plural noun (after `of`,
+    /// or right after the line's words) that stand in that line, as a phrase of its own.
+    /// `None` where the words are not that.
     ///
     /// # Errors
     /// A second plural noun ("… of desks and chairs") whose objects stand in no such line.

@@ -106,7 +106,6 @@ const WHERE_IT_WAS: &[&[&str]] = &[
     &["to", "original", "positions"],
     &["to", "original", "spot"],
     &["where", "started"],
-    &["again"],
 ];
 
 /// Whether the clause asks to return its objects to where they were before: a returning
@@ -128,6 +127,12 @@ fn asks_return(c: &Clause, verb_at: usize) -> bool {
     let (back, tail) = match rest.split_first() {
         Some((&"back", tail)) => (true, tail),
         _ => (false, rest.as_slice()),
+    };
+    // ("put X1 back again"; "move X1 again" is no return.)
+    let tail = if back && tail == ["again"] {
+        &[][..]
+    } else {
+        tail
     };
     (back && tail.is_empty() && RETURNING_VERBS.contains(&verb))
         || (!tail.is_empty() && WHERE_IT_WAS.contains(&tail))
