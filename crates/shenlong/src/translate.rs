@@ -223,6 +223,9 @@ pub struct TranslateError {
     /// Whether the instruction itself was not understood (as opposed to a model or its
     /// server failing).
     pub not_understood: bool,
+    /// Whether it was read and refused on its meaning ("put the chair back" with no earlier
+    /// pose): another translator (a model after the offline one) must not be asked.
+    pub settled: bool,
     /// The replies received before giving up.
     pub replies: ReplyCounts,
 }
@@ -233,6 +236,7 @@ impl TranslateError {
         Self {
             message: message.into(),
             not_understood: false,
+            settled: false,
             replies: ReplyCounts::default(),
         }
     }
@@ -242,6 +246,17 @@ impl TranslateError {
         Self {
             message: message.into(),
             not_understood: true,
+            settled: false,
+            replies: ReplyCounts::default(),
+        }
+    }
+
+    /// An instruction read and refused on its meaning: no other translator is asked.
+    pub fn settled(message: impl Into<String>) -> Self {
+        Self {
+            message: message.into(),
+            not_understood: true,
+            settled: true,
             replies: ReplyCounts::default(),
         }
     }

@@ -528,6 +528,27 @@ mod cascade {
     }
 
     #[test]
+    fn what_it_reads_and_refuses_is_never_sent_to_the_model() {
+        // A model might read "put it back" as a move backwards; the offline translator
+        // reads it and refuses it (there is no earlier pose), and nothing is asked.
+        let server = MockLlm::start(vec![Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}"))]);
+        let mut scene = workshop();
+        let before = scene.clone();
+        let refused = edit(
+            &mut scene,
+            "put the 'orange bottle' back",
+            &cascade(&server),
+            &EditOptions::default(),
+        )
+        .unwrap_err();
+        assert!(refused.message.contains("where it was before"), "{refused}");
+        assert!(server.captured().is_empty(), "no request was sent");
+        for (a, b) in scene.objects.iter().zip(&before.objects) {
+            assert_eq!(a.world_aabb(), b.world_aabb(), "{} moved", a.name);
+        }
+    }
+
+    #[test]
     fn what_it_cannot_read_goes_to_the_model_once() {
         let server = MockLlm::start(vec![Reply::Content(format!("{{\"X1\": \"{ON_TOP}\"}}"))]);
         let mut scene = workshop();

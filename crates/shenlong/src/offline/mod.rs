@@ -853,6 +853,25 @@ fn runs(scene: &Scene, boxes: &[crate::geometry::Aabb], i: usize) -> [f64; 4] {
 /// # Errors
 /// The unread part of the instruction, quoted.
 pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<Entry>, String> {
+    answer_or_refusal(query, variables, known).map_err(|r| r.message)
+}
+
+/// Why the offline translator gives no answer.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Refusal {
+    /// One line for the user.
+    pub message: String,
+    /// Read and refused on its meaning ("put X1 back"), not for words it does not read: no
+    /// model should be asked instead.
+    pub settled: bool,
+}
+
+/// [`answer`], with whether a refusal is settled ([`Refusal`]).
+pub(crate) fn answer_or_refusal(
+    query: &str,
+    variables: usize,
+    known: &Known<'_>,
+) -> Result<Vec<Entry>, Refusal> {
     let facts = Facts { variables, known };
     let tokens = words::tokenize(query);
     let mut reader = Reader::new(&facts);
@@ -860,10 +879,16 @@ pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<En
     let last = clauses.len().saturating_sub(1);
     for (k, mut c) in clauses.into_iter().enumerate() {
         reader.more_follow = k < last;
-        reader.clause(&mut c)?;
+        reader.clause(&mut c).map_err(|message| Refusal {
+            message,
+            settled: reader.settled,
+        })?;
     }
     if reader.steps.is_empty() {
-        return Err(read::not_read(query, query));
+        return Err(Refusal {
+            message: read::not_read(query, query),
+            settled: false,
+        });
     }
     // A list acts in the pivot frame of the object's original place: turns and scales go
     // first (about the object itself), then the translations (which commute).
@@ -943,8 +968,14 @@ impl Translator for OfflineTranslator {
     ) -> Result<Translation, TranslateError> {
         let started = Instant::now();
         let known = Known::of(scene, &templated.objects);
-        let entries = answer(&templated.query, templated.objects.len(), &known)
-            .map_err(TranslateError::not_understood)?;
+        let entries = answer_or_refusal(&templated.query, templated.objects.len(), &known)
+            .map_err(|r| {
+                if r.settled {
+                    TranslateError::settled(r.message)
+                } else {
+                    TranslateError::not_understood(r.message)
+                }
+            })?;
         let bindings: Bindings = bindings(scene, &templated.objects);
         let reply = reply_text(&entries);
         let mut answers = Vec::new();

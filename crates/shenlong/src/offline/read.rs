@@ -59,6 +59,9 @@ pub(crate) struct Reader<'a> {
     /// Whether more clauses follow the one being read: a remark about the objects ("X1 is
     /// way too low, bring it up") is read only before what is to be done.
     pub(super) more_follow: bool,
+    /// Whether the clause refused was read and refused on its meaning ("put X1 back"): no
+    /// other translator should be asked to read it (a model might read a move backwards).
+    pub(super) settled: bool,
 }
 
 /// What one clause asks: each variable with one step, in order.
@@ -80,7 +83,7 @@ pub(crate) fn not_read(unread: &str, clause: &str) -> String {
 
 /// Why "put X1 back" is refused: it asks for a pose before an earlier edit, which a
 /// single instruction does not have.
-pub(crate) const RETURN_REFUSED: &str = "\"put … back\" asks for where it was before an earlier edit, and there is none to return to here; to move it backwards, say how far (\"move it back 50 cm\")";
+const RETURN_REFUSED: &str = "\"put … back\" asks for where it was before an earlier edit, and there is none to return to here; to move it backwards, say how far (\"move it back 50 cm\")";
 
 /// Verbs that with "back" and nothing more return an object ("put the chair back");
 /// other verbs with "back" move it backwards ("push the chair back").
@@ -246,6 +249,7 @@ impl<'a> Reader<'a> {
             last_shift: None,
             last_produced: Vec::new(),
             more_follow: false,
+            settled: false,
         }
     }
 
@@ -626,6 +630,7 @@ impl<'a> Reader<'a> {
         let facing = find_facing(c, other);
         if let Some((_, _, at)) = verb {
             if asks_return(c, at) {
+                self.settled = true;
                 return Err(RETURN_REFUSED.to_string());
             }
         }

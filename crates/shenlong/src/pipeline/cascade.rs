@@ -51,7 +51,8 @@ impl Translator for Cascade {
     ) -> Result<Translation, TranslateError> {
         let refusal = match self.offline.translate(templated, scene) {
             Ok(translation) => return Ok(translation),
-            Err(e) if e.not_understood => e.message,
+            // (Refused on its meaning, "put the chair back": no model is asked.)
+            Err(e) if e.not_understood && !e.settled => e.message,
             Err(e) => return Err(e),
         };
         match self.model.translate(templated, scene) {
@@ -62,6 +63,7 @@ impl Translator for Cascade {
             Err(e) => Err(TranslateError {
                 message: format!("{} (the offline translator: {refusal})", e.message),
                 not_understood: e.not_understood,
+                settled: e.settled,
                 replies: e.replies,
             }),
         }
