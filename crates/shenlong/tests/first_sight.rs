@@ -1014,6 +1014,11 @@ fn a_relative_clause_after_a_size_word_says_which() {
     .unwrap();
     assert!(moved(STORE, &s, "box 2").length() > 1.0);
     assert!(close(moved(STORE, &s, "box 1"), [0.0; 3]));
+    // Without a size word too: "the box that's on the shelf" is box 1, after a verb of
+    // placing as well.
+    let s = after(STORE, "put the box that's on the shelf next to crate 1").unwrap();
+    assert!(moved(STORE, &s, "box 1").length() > 1.0);
+    assert!(close(moved(STORE, &s, "box 2"), [0.0; 3]));
     // A printer on a cabinet covers its top: nothing more goes on it.
     assert!(after(STORE, "put the pen cup on the cabinet").is_err());
 }

@@ -95,10 +95,17 @@ impl Reader<'_> {
         // "the thing on the cupboard", "everything on the shelf": a generic noun says
         // nothing of which without its modifier, so the modifier is never a destination.
         let same_as = matches!(post, Some((Post::Relation(Relation::SameAs, _), _)));
+        // "the small box that's on the floor", "put the mug that's on the island next to
+        // the kettle": a relative clause says which, always.
+        let relative = matches!(
+            self.word(head.range.end),
+            Some("that" | "which" | "that's" | "thats")
+        );
         let describes = !rest_of_destination
             && !same_as
             && post.as_ref().is_some_and(|(p, p_end)| {
                 source
+                    || relative
                     // A row or column before "and their chairs" says which tables ("the
                     // tables in the back row and their chairs").
                     || (matches!(p, Post::Line(_))
@@ -117,15 +124,9 @@ impl Reader<'_> {
         // A relation or place after a noun the modifiers before it already pick among
         // ("the left stool next to the chair", "the top crate on the floor") is where it
         // goes, unless it clearly describes.
-        // ("the small box that's on the floor": a relative clause says which, always.)
-        let relative = matches!(
-            self.word(head.range.end),
-            Some("that" | "which" | "that's" | "thats")
-        );
         let post = post.filter(|(p, _)| {
             !selectors_first
                 || describes
-                || relative
                 || !matches!(p, Post::Relation(..) | Post::Floor | Post::Room(_))
         });
         // "put the spoon next to the toaster" with two spoons: after a verb of placing the
