@@ -124,7 +124,7 @@ impl Reader<'_> {
             .filter(|&c| {
                 !owned.contains(&c)
                     && owned.iter().any(|&a| {
-                        self.scene.carried_by(c).contains(&a)
+                        self.scene.rests_on_through(a, c)
                             || belongs_to(self.scene, &boxes, a, &[c], owned)
                     })
             })

@@ -161,11 +161,13 @@ const EVERYTHING_ELSE: &[&[&str]] = &[
     &["all", "else"],
 ];
 
-/// How many tokens at `k` say "everything else" ([`EVERYTHING_ELSE`]), if they do: no
+/// Per token, how many tokens from it say "everything else" ([`EVERYTHING_ELSE`]): no
 /// object's phrase, but what [`everything_else`] holds.
-pub(crate) fn else_words_at(tokens: &[Token], k: usize) -> Option<usize> {
+pub(crate) fn else_words(tokens: &[Token]) -> Vec<Option<usize>> {
     let words: Vec<&str> = tokens.iter().map(|t| t.word().unwrap_or("")).collect();
-    longest_phrase(&words, k, EVERYTHING_ELSE)
+    (0..words.len())
+        .map(|k| longest_phrase(&words, k, EVERYTHING_ELSE))
+        .collect()
 }
 
 /// The bytes of a clause that holds everything not named in place ("…, but don't move

@@ -791,6 +791,7 @@ impl<'a> Reader<'a> {
     fn read(&mut self) -> Result<Vec<Phrase>, GroundError> {
         let mut phrases: Vec<Phrase> = Vec::new();
         let mut nps: Vec<Np> = Vec::new();
+        let else_words = hold::else_words(&self.tokens);
         let mut k = 0;
         while k < self.tokens.len() {
             if self.consumed[k] {
@@ -827,7 +828,7 @@ impl<'a> Reader<'a> {
                 continue;
             }
             // "… anything else": no object of its own ([`hold::everything_else`]).
-            if let Some(n) = hold::else_words_at(&self.tokens, k) {
+            if let Some(n) = else_words[k] {
                 k += n;
                 continue;
             }

@@ -53,7 +53,7 @@ struct Opening {
 }
 
 /// Words after an object found on a surface named before that only say so again ("next
-/// to the plate that's there"), longest first.
+/// to the plate that's there").
 const RESTATED: &[&[&str]] = &[
     &["that", "is", "on", "it"],
     &["that", "are", "on", "it"],
@@ -505,14 +505,12 @@ impl Reader<'_> {
             )));
             draft.objects = vec![*one];
             // "the plate that's there", "the cup that is on it": said again, read.
-            draft.end += RESTATED
-                .iter()
-                .find(|words| {
-                    words.iter().enumerate().all(|(i, w)| {
-                        self.is_word(draft.end + i, &[w]) && !self.consumed[draft.end + i]
-                    })
-                })
-                .map_or(0, |words| words.len());
+            let words: Vec<&str> = (0..self.tokens.len())
+                .map(|k| self.word(k).unwrap_or(""))
+                .collect();
+            let said_again = crate::discourse::longest_phrase(&words, draft.end, RESTATED)
+                .filter(|&n| (draft.end..draft.end + n).all(|k| !self.consumed[k]));
+            draft.end += said_again.unwrap_or(0);
         }
     }
 

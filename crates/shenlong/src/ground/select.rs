@@ -324,31 +324,27 @@ pub(crate) fn by_relation(
     let target_boxes = boxes(scene, targets);
     // (candidate, key) of those that stand in the relation to some target; smallest key
     // is best.
-    let mut fits: Vec<(usize, f64)> = Vec::new();
-    if relation == Relation::Between {
+    let mut fits: Vec<(usize, f64)> = if relation == Relation::Between {
+        // Measured against both targets at once.
         let [a, b] = target_boxes.as_slice() else {
             return None;
         };
-        fits = pool
-            .iter()
+        pool.iter()
             .filter_map(|&c| between_key(&scene.objects[c].world_aabb(), a, b).map(|k| (c, k)))
-            .collect();
-    }
-    let pairwise = if relation == Relation::Between {
-        &[][..]
+            .collect()
     } else {
-        &pool[..]
+        pool.iter()
+            .zip(&boxes(scene, &pool))
+            .filter_map(|(&c, cb)| {
+                targets
+                    .iter()
+                    .zip(&target_boxes)
+                    .filter_map(|(&t, tb)| relation_key(scene, (c, cb), relation, (t, tb)))
+                    .reduce(f64::min)
+                    .map(|key| (c, key))
+            })
+            .collect()
     };
-    for (&c, cb) in pairwise.iter().zip(&boxes(scene, pairwise)) {
-        let key = targets
-            .iter()
-            .zip(&target_boxes)
-            .filter_map(|(&t, tb)| relation_key(scene, (c, cb), relation, (t, tb)))
-            .reduce(f64::min);
-        if let Some(key) = key {
-            fits.push((c, key));
-        }
-    }
     if fits.is_empty() {
         return None;
     }

@@ -495,7 +495,7 @@ impl Known<'_> {
             .chain(alike.iter().filter_map(|&k| objects.get(k).copied()))
             .collect();
         Some(
-            scene.carried_by(b).contains(&a)
+            scene.rests_on_through(a, b)
                 || crate::ground::depend::belongs_to(scene, boxes, a, &[b], &kind),
         )
     }
@@ -507,7 +507,7 @@ impl Known<'_> {
             return false;
         };
         match (objects.get(v), objects.get(s)) {
-            (Some(&a), Some(&b)) => scene.carried_by(b).contains(&a),
+            (Some(&a), Some(&b)) => scene.rests_on_through(a, b),
             _ => false,
         }
     }
