@@ -1137,3 +1137,94 @@ fn the_wall_an_object_is_on_is_named_by_it() {
     let s = after(BEDROOM, "move the coat stand 40 cm toward the door wall").unwrap();
     assert!(close(moved(BEDROOM, &s, "coat stand"), [0.0, 0.0, 0.4]));
 }
+
+/// A back kitchen exported from a game engine: a sink unit with a dish rack on it, a prep
+/// table with a mixer, a plate stack and a steel bowl, a shelf with a jar, a bin.
+const GALLEY: &str = r#"{
+  "name": "galley",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "SM_Sink_Unit", "position": [-2, 0, -3.5], "size": [1.2, 0.9, 0.6]},
+    {"name": "SM_Dish_Rack", "position": [-2.3, 0.9, -3.5], "size": [0.4, 0.2, 0.3], "on": "SM_Sink_Unit"},
+    {"name": "SM_Prep_Table", "position": [1, 0, 0], "size": [1.6, 0.9, 0.8]},
+    {"name": "SM_Mixer_Stand", "position": [0.5, 0.9, 0], "size": [0.25, 0.4, 0.25], "on": "SM_Prep_Table"},
+    {"name": "SM_Plate_Stack", "position": [1.4, 0.9, 0], "size": [0.3, 0.15, 0.3], "on": "SM_Prep_Table"},
+    {"name": "SM_Shelf_Tall", "position": [-4.7, 0, 1], "size": [0.4, 1.8, 0.8]},
+    {"name": "SM_Jar", "position": [-4.7, 1.8, 1], "size": [0.12, 0.2, 0.12], "on": "SM_Shelf_Tall"},
+    {"name": "SM_Trash_Bin", "position": [3, 0, 2.5], "size": [0.4, 0.6, 0.4]}
+  ]
+}"#;
+
+#[test]
+fn a_name_ending_in_a_measure_word_answers_as_written_and_swap_with_names_the_second() {
+    // `SM_Sink_Unit` is "the sink unit": "unit" is no place in the room.
+    let s = after(GALLEY, "put the plate stack on the sink unit").unwrap();
+    let (plate, sink) = (aabb(&s, "SM_Plate_Stack"), aabb(&s, "SM_Sink_Unit"));
+    assert!(
+        (plate.min.y - sink.max.y).abs() < 1e-6,
+        "not on the sink unit"
+    );
+    // "swap A with B": B is the other of the pair, not what A carries.
+    let s = after(GALLEY, "swap the mixer with the plate stack").unwrap();
+    assert!(close(moved(GALLEY, &s, "SM_Mixer_Stand"), [0.9, 0.0, 0.0]));
+    assert!(close(moved(GALLEY, &s, "SM_Plate_Stack"), [-0.9, 0.0, 0.0]));
+}
+
+#[test]
+fn a_placement_after_a_take_off_replaces_it_and_a_second_modifier_narrows() {
+    // The move off the shelf is replaced by where it is put: beside the bin, on the floor.
+    let s = after(
+        GALLEY,
+        "take the jar off the shelf and put it on the floor next to the bin",
+    )
+    .unwrap();
+    let (jar, bin) = (aabb(&s, "SM_Jar"), aabb(&s, "SM_Trash_Bin"));
+    assert!(jar.min.y.abs() < 1e-6, "the jar is not on the floor");
+    let gap = (jar.min.x - bin.max.x)
+        .max(bin.min.x - jar.max.x)
+        .max(jar.min.z - bin.max.z)
+        .max(bin.min.z - jar.max.z);
+    assert!((0.0..0.2).contains(&gap), "the jar is {gap} m from the bin");
+    // Two modifiers after one noun: by a wall, then what it carries.
+    let s = after(
+        GALLEY,
+        "the tall shelf against the left wall with the jar on it: 50cm forward, jar and all",
+    )
+    .unwrap();
+    assert!(close(moved(GALLEY, &s, "SM_Shelf_Tall"), [0.0, 0.0, 0.5]));
+    assert!(close(moved(GALLEY, &s, "SM_Jar"), [0.0, 0.0, 0.5]));
+    // "…, the jar on top too": it goes along.
+    let s = after(
+        GALLEY,
+        "move the tall shelf 30 cm forward, the jar on top too",
+    )
+    .unwrap();
+    assert!(close(moved(GALLEY, &s, "SM_Jar"), [0.0, 0.0, 0.3]));
+}
+
+#[test]
+fn a_count_of_what_belongs_is_checked() {
+    let s = after(
+        BOARDROOM,
+        "move the conference table and its three chairs 1 m to the left",
+    )
+    .unwrap();
+    for name in [
+        "Conference Table",
+        "Chair 01",
+        "Chair 02",
+        "Chair 07",
+        "Laptop",
+    ] {
+        assert!(
+            close(moved(BOARDROOM, &s, name), [-1.0, 0.0, 0.0]),
+            "{name}"
+        );
+    }
+    let e = after(
+        BOARDROOM,
+        "move the conference table and its four chairs 1 m to the left",
+    )
+    .unwrap_err();
+    assert!(e.contains("4 were said"), "{e}");
+}

@@ -492,27 +492,39 @@ impl Reader<'_> {
         separated && verb_after && !verb_before
     }
 
+    /// The verb of the clause before token `k`, if any: the nearest verb back to the
+    /// clause's start (a comma, `and`, `then` or a sentence end).
+    pub(super) fn clause_verb_before(&self, k: usize) -> Option<&str> {
+        for t in self.tokens[..k.min(self.tokens.len())].iter().rev() {
+            match &t.kind {
+                Kind::Punct(',' | ';' | '.' | '!' | '?') => return None,
+                Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return None,
+                Kind::Word(w) if words::is_verb(w) => return Some(w),
+                _ => {}
+            }
+        }
+        None
+    }
+
+    /// Whether the verb of the clause before token `k` trades places (`swap`, `switch`):
+    /// then `with` after its first object names the second, never what the first carries.
+    pub(super) fn swap_verb_before(&self, k: usize) -> bool {
+        self.clause_verb_before(k)
+            .is_some_and(|w| matches!(super::verbs::verb(w), Some((super::verbs::Action::Swap, _))))
+    }
+
     /// Whether the verb of the clause before token `k` takes no place to put the object
     /// (`rotate`, `scale`, `lift`, `spread`, `swap`): then `the tv on the stand` describes
     /// the tv.
     fn verb_takes_no_place(&self, k: usize) -> bool {
-        for t in self.tokens[..k.min(self.tokens.len())].iter().rev() {
-            match &t.kind {
-                Kind::Punct(',' | ';' | '.' | '!' | '?') => return false,
-                Kind::Word(w) if matches!(w.as_str(), "and" | "then") => return false,
-                Kind::Word(w) if words::is_verb(w) => {
-                    // Moving objects apart or trading their places puts them nowhere.
-                    return words::turns_or_scales(w)
-                        || matches!(
-                            w.as_str(),
-                            "lift" | "raise" | "lower" | "elevate" | "spread" | "separate"
-                        )
-                        || matches!(super::verbs::verb(w), Some((super::verbs::Action::Swap, _)));
-                }
-                _ => {}
-            }
-        }
-        false
+        // Moving objects apart or trading their places puts them nowhere.
+        self.clause_verb_before(k).is_some_and(|w| {
+            words::turns_or_scales(w)
+                || matches!(
+                    w,
+                    "lift" | "raise" | "lower" | "elevate" | "spread" | "separate"
+                )
+        }) || self.swap_verb_before(k)
     }
 }
 

@@ -40,7 +40,13 @@ impl Reader<'_> {
         if !self.is_word(owner, &["its", "their"]) {
             return Ok(np);
         }
-        let Some(head) = self.head_at(owner + 1) else {
+        // "its two armchairs": a count said is checked against what is found.
+        let count = self
+            .word(owner + 1)
+            .and_then(super::words::count_word)
+            .filter(|_| self.word(owner + 1) != Some("pair"));
+        let noun = owner + 1 + usize::from(count.is_some());
+        let Some(head) = self.head_at(noun) else {
             return Ok(np);
         };
         let boxes = self.scene.world_aabbs();
@@ -63,6 +69,17 @@ impl Reader<'_> {
                 reason: format!(
                     "no {} rests on or is drawn up to {}",
                     head.text,
+                    super::error::list(&self.names(&owners))
+                ),
+            });
+        }
+        if let Some(n) = count.filter(|&n| n != found.len()) {
+            return Err(GroundError::NoPick {
+                phrase: self.span_text(&range),
+                reason: format!(
+                    "{n} were said, but {} ({}) rest on or are drawn up to {}",
+                    found.len(),
+                    super::error::list(&self.names(&found)),
                     super::error::list(&self.names(&owners))
                 ),
             });

@@ -158,7 +158,7 @@ fn headed(lexicon: &Lexicon, phrase: &str) -> bool {
     phrase
         .rsplit(' ')
         .next()
-        .is_some_and(|last| known(lexicon, last) && !super::words::is_room_part(last))
+        .is_some_and(|last| known(lexicon, last) && !super::words::places_in_room(last))
 }
 
 /// The common simple name — one word of letters and an instance number (`box-5023`,
@@ -260,26 +260,24 @@ fn read_parts(name: &str, lexicon: &Lexicon) -> Identifier {
     let mut rotated = parts[1..].to_vec();
     rotated.push(parts[0].clone());
     let head_first = join(&rotated);
+    // `Knife_Block`, `Plate_Stack`, `Sink_Unit`: read head first ("block knife") where
+    // only that order is a noun the lexicon knows, and as written too — what people call
+    // it ("the knife block", "the sink unit") — unless its last word is a part of the
+    // room (`Clock_Wall`) or describes (`Cushion_Red`, `Vase_Ceramic`).
+    let as_written = |written: String| {
+        let last = written.rsplit(' ').next().unwrap_or("");
+        let describes = super::words::is_colour(last)
+            || super::words::size_word(last).is_some()
+            || MATERIALS.contains(&last);
+        (!super::words::places_in_room(last) && !describes).then_some(written)
+    };
     let (base, other) = match (known(lexicon, &written), known(lexicon, &head_first)) {
         (true, false) => (written, None),
         (false, true) => (head_first, None),
         (true, true) => (written, Some(head_first)),
         (false, false) => match (headed(lexicon, &written), headed(lexicon, &head_first)) {
             (true, false) | (false, false) => (written, None),
-            // `Knife_Block`, `Plate_Stack`, `Sink_Unit`: read head first ("block knife")
-            // where only that order ends in a noun the lexicon knows, and as written too —
-            // what people call it ("the knife block") — unless its last word is a part of
-            // the room.
-            (false, true) => {
-                let last = written.rsplit(' ').next().unwrap_or("");
-                // (`Cushion_Red`, `Vase_Ceramic`: a colour or material last is no name.)
-                let describes = super::words::is_colour(last)
-                    || super::words::size_word(last).is_some()
-                    || MATERIALS.contains(&last);
-                let as_written =
-                    (!super::words::is_place_noun(last) && !describes).then_some(written);
-                (head_first, as_written)
-            }
+            (false, true) => (head_first, as_written(written)),
             (true, true) => (written, Some(head_first)),
         },
     };
@@ -303,6 +301,9 @@ mod tests {
     fn a_name_read_head_first_answers_as_written_too_unless_a_describing_word_ends_it() {
         let id = r("SM_Knife_Block");
         assert_eq!(id.other.as_deref(), Some("knife block"), "{id:?}");
+        // A word that is also a measure ("unit", "area") is no part of the room.
+        let id = r("SM_Sink_Unit");
+        assert_eq!(id.other.as_deref(), Some("sink unit"), "{id:?}");
         for name in ["Cushion_Red", "Clock_Wall", "Vase_Ceramic"] {
             let id = r(name);
             assert!(

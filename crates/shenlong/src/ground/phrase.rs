@@ -39,6 +39,9 @@ struct Draft {
     /// Modifiers before the head (or a selector before `of the`) pick: the candidates are
     /// every object the head names literally.
     modified: bool,
+    /// A modifier after the head has picked or described: a second one ("the box against
+    /// the wall with the monkey on it") narrows what it left.
+    posted: bool,
 }
 
 /// How a noun phrase opens: where it starts, how many its determiners ask for, and a
@@ -89,6 +92,9 @@ impl Reader<'_> {
         let mut mods = self.premodifiers(&at);
         let mut draft = self.candidates(&head, &opening, &mods, !at.is_empty(), bound)?;
         self.post_stage(&head, &mut draft, &mut mods, bound, mode)?;
+        if draft.posted && mode != Mode::Nested && self.carrying_follows(draft.end) {
+            self.post_stage(&head, &mut draft, &mut mods, bound, mode)?;
+        }
         let objects = std::mem::take(&mut draft.objects);
         let phrase = self.span_text(&(draft.start..draft.end));
         draft.objects = self.pick_by_premodifiers(
@@ -283,6 +289,7 @@ impl Reader<'_> {
             reasons,
             pool: head.literal.clone(),
             modified,
+            posted: false,
         })
     }
 
@@ -319,7 +326,7 @@ impl Reader<'_> {
             Post::Relation(r, _) => Some(*r),
             _ => None,
         };
-        if !draft.modified {
+        if !draft.modified && !draft.posted {
             draft.objects = head.literal.clone();
         }
         let words = self.span_text(&(draft.end..p_end));
@@ -360,7 +367,28 @@ impl Reader<'_> {
         if !matches!(p_kind, Some(Relation::Off)) {
             draft.end = p_end;
         }
+        draft.posted = true;
         Ok(())
+    }
+
+    /// Whether what it carries is said at token `k`, after a first modifier ("… against
+    /// the left wall with the monkey on it", "… holding the vase"): a second modifier
+    /// of the same phrase. Not what belongs to it ("with its chairs", "with everything
+    /// on it"), which [`Self::with_dependents`] and the translator read.
+    fn carrying_follows(&self, k: usize) -> bool {
+        self.is_word(k, &["with", "holding", "carrying"])
+            && !self.is_word(
+                k + 1,
+                &[
+                    "its",
+                    "their",
+                    "everything",
+                    "all",
+                    "what",
+                    "whatever",
+                    "anything",
+                ],
+            )
     }
 
     /// The modifier after the head of a phrase on its own (`mode` [`Mode::Main`]), if it

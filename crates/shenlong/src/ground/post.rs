@@ -52,6 +52,11 @@ impl Reader<'_> {
         if let Some(lacks) = self.lacking_at(j, bound)? {
             return Ok(Some(lacks));
         }
+        // "swap the mixer with the plate stack": the second of the pair, not what the
+        // first carries.
+        if w == "with" && self.swap_verb_before(k) {
+            return Ok(None);
+        }
         // with the lamp (on it), that has the clock on it, holding the vase.
         if matches!(
             w,

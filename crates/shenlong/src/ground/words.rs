@@ -649,6 +649,36 @@ pub(crate) fn is_room_part(w: &str) -> bool {
     is_place_noun(w) && !matches!(w, "window" | "windows" | "door" | "doors" | "doorway")
 }
 
+/// Words for where in the room something is (`Clock_Wall`, `Lamp_Ceiling`, `Shelf_Corner`):
+/// at the end of an exported name they place the object, never name its kind. Unlike
+/// [`is_room_part`], no word for an amount or a spot (`unit`, `area`, `bit`).
+pub(crate) fn places_in_room(w: &str) -> bool {
+    matches!(
+        w,
+        "floor"
+            | "ground"
+            | "wall"
+            | "walls"
+            | "ceiling"
+            | "corner"
+            | "corners"
+            | "middle"
+            | "centre"
+            | "center"
+            | "side"
+            | "sides"
+            | "edge"
+            | "room"
+            | "front"
+            | "back"
+            | "top"
+            | "bottom"
+            | "left"
+            | "right"
+            | "end"
+    )
+}
+
 pub(crate) fn is_place_noun(w: &str) -> bool {
     matches!(
         w,

@@ -7,8 +7,8 @@
 //! bringing, plus, along with, together with; THING: variables, or the words for what is on
 //! something (everything, whatever's, what's, the stuff, their things …); ON: on it, on
 //! them, on top; TAIL: on it, on them, along, with it, with them, too, as well, included.
-//! With no LEAD, the TAIL must close it: "…, X2 and all", "…, X2 included", "stuff on it
-//! included".
+//! With no LEAD, the TAIL must close it: "…, X2 and all", "…, X2 included", "…, X2 on top
+//! too", "stuff on it included"; named things may say where they are ("X2 on top").
 //!
 //! What rests on a moved object goes with it anyway (carried, turns included); the phrase
 //! is read when every object it names belongs to one of the moved ones — rests on it
@@ -108,7 +108,12 @@ pub(super) fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
                 k += 1;
             }
         }
-        if named.is_empty() {
+        if !named.is_empty() {
+            // "…, the monkey on top too": where the named thing is.
+            if let Some(on) = longest(k, ONS) {
+                k += on;
+            }
+        } else {
             // "with all its stuff" ("its" may be read already, as a possessive).
             if c.free(k)
                 && c.word(k) == Some("all")
@@ -133,7 +138,11 @@ pub(super) fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             }
         }
         let tail = longest(k, TAILS);
-        let closes_bare = |k: usize| c.words_at(k, &["and", "all"]) || c.words_at(k, &["included"]);
+        let closes_bare = |k: usize| {
+            ["and all", "included", "too", "as well"]
+                .iter()
+                .any(|t| c.words_at(k, &t.split(' ').collect::<Vec<_>>()))
+        };
         if lead == 0 && !tail.is_some_and(|_| closes_bare(k)) {
             continue;
         }

@@ -596,6 +596,9 @@ impl Reader<'_> {
             .iter()
             .map(|&s| {
                 let lead = if together { subjects[0] } else { s };
+                if relation.places() && !targets.contains(&s) {
+                    self.forget_moves(s);
+                }
                 let v = self.vector(relation, lead, targets, text)?;
                 match near {
                     Some(n) => self.near.insert(s, n),
@@ -604,6 +607,16 @@ impl Reader<'_> {
                 Ok((s, Step::Translate(v)))
             })
             .collect()
+    }
+
+    /// Forgets the translations earlier clauses gave variable `s`, which a relation that
+    /// sets where it stands ([`Relation::places`]) replaces: its vector is then written
+    /// from where `s` stood, and the answer does not carry every earlier move into each of
+    /// its terms. Its turns stay, and so does the record that it moved.
+    fn forget_moves(&mut self, s: usize) {
+        if let Some(list) = self.steps.get_mut(&s) {
+            list.retain(|step| matches!(step, Step::Turn(_)));
+        }
     }
 
     /// Places measured from the scene rather than written over the bound boxes: a chair's
@@ -748,6 +761,25 @@ mod tests {
             on([0.2, 0.3, 0.2], 0.2, 0.75, 0.1),
             standing([0.5, 0.9, 0.5], 0.0, 1.5),
         ]
+    }
+
+    #[test]
+    fn a_placement_replaces_the_moves_before_it() {
+        // Off the table, then beside the chair on the floor: where it is put is all that
+        // counts, and the answer stays short enough to be read back by the language.
+        let q = "take X3 off X2 and put it on the floor next to X4";
+        let m = moves(q, &table())[2];
+        // Behind the chair (the side facing where the vase stood), GAP from its face.
+        assert!(close(m, [-0.2, -0.75, 1.25 - GAP - 0.2]), "{m}");
+        let reply = super::super::reply_for(q, 4).unwrap();
+        assert!(
+            reply.len() < crate::expr::Limits::default().max_length,
+            "{reply}"
+        );
+        // A move after the placement still counts.
+        let after = moves("put X3 on X4 and move it 10 cm left", &table())[2];
+        let on = moves("put X3 on X4", &table())[2];
+        assert!(close(after - on, [-0.1, 0.0, 0.0]), "{after} {on}");
     }
 
     #[test]

@@ -113,6 +113,30 @@ pub(crate) enum Relation {
     OtherSide,
 }
 
+impl Relation {
+    /// Whether the relation sets all three coordinates of its subject from its targets
+    /// (on, under, beside, between, to, off): where an earlier clause left the subject
+    /// then matters only for which side it goes, so those moves are forgotten rather than
+    /// carried into every term (`take X1 off X2 and put it next to X3`).
+    #[must_use]
+    pub(crate) fn places(self) -> bool {
+        matches!(
+            self,
+            Relation::On
+                | Relation::Under
+                | Relation::Side(..)
+                | Relation::OnEnd(..)
+                | Relation::SideGap(..)
+                | Relation::NextTo
+                | Relation::NextToOn(_)
+                | Relation::BetweenOn(_)
+                | Relation::To
+                | Relation::Between
+                | Relation::Off
+        )
+    }
+}
+
 /// Where a subject put beside a target (next to, a side, to, between) stands.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) enum Level {
