@@ -1228,3 +1228,27 @@ fn a_count_of_what_belongs_is_checked() {
     .unwrap_err();
     assert!(e.contains("4 were said"), "{e}");
 }
+
+/// Two bookcases: one against the back wall, one against the right wall in the back
+/// corner (nearer the back wall than the first, but standing on the right one).
+const ARCHIVE: &str = r#"{
+  "name": "archive",
+  "bounds": {"min": [-4, 0, -3], "max": [4, 3, 3]},
+  "objects": [
+    {"name": "Bookcase 1", "position": [-1, 0, -2.75], "size": [1.8, 2.0, 0.4]},
+    {"name": "Bookcase 2", "position": [3.78, 0, -2.0], "size": [0.4, 2.0, 1.8]},
+    {"name": "Desk", "position": [0, 0, 1], "size": [1.4, 0.75, 0.7]}
+  ]
+}"#;
+
+#[test]
+fn against_a_wall_is_the_one_standing_on_that_wall_or_refused() {
+    let s = after(ARCHIVE, "move the bookcase against the back wall 10 cm left").unwrap();
+    assert!(close(moved(ARCHIVE, &s, "Bookcase 1"), [-0.1, 0.0, 0.0]));
+    assert!(close(moved(ARCHIVE, &s, "Bookcase 2"), [0.0, 0.0, 0.0]));
+    let s = after(ARCHIVE, "move the bookcase on the right wall 20 cm forward").unwrap();
+    assert!(close(moved(ARCHIVE, &s, "Bookcase 2"), [0.0, 0.0, 0.2]));
+    // No bookcase stands against the front wall: not the one furthest forward.
+    let e = after(ARCHIVE, "move the bookcase against the front wall 10 cm left").unwrap_err();
+    assert!(e.contains("front wall"), "{e}");
+}

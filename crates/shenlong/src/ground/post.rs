@@ -274,7 +274,12 @@ impl Reader<'_> {
             let coordinated = s + 1 < self.tokens.len() && self.coordinates(s + 1);
             if next != "of" && self.head_at(s + 1).is_none() && !corner && !coordinated {
                 let mut end = s + 1;
-                if matches!(w(end), "side" | "end" | "wall") {
+                // "the bookcase against the back wall": one against that wall, never merely
+                // the one furthest back (without walls, the one furthest back).
+                if w(end) == "wall" && axis != words::Axis::Y && self.scene.bounds.is_some() {
+                    return Some((Post::Room(select::RoomPlace::OnWall(axis, sign)), end + 1));
+                }
+                if matches!(w(end), "side" | "end") {
                     end += 1;
                 } else if w(end) == "hand" && w(end + 1) == "side" {
                     end += 2;

@@ -509,7 +509,14 @@ pub(crate) enum RoomPlace {
     Wall,
     /// By one wall (`by the left wall`): within [`BY_WALL_REACH`] of it.
     ByWall(Axis, f64),
+    /// On or against one wall (`the bookcase against the back wall`): of those no other
+    /// wall is nearer, the ones nearest it, within [`ON_WALL_SPREAD`] of the nearest,
+    /// which is within [`BY_WALL_REACH`].
+    OnWall(Axis, f64),
 }
+
+/// How much further from a wall than the nearest an object "against the wall" may stand.
+pub(crate) const ON_WALL_SPREAD: f64 = 0.15;
 
 /// How close to a wall an object "by the wall" is (the gap between its box and the wall).
 pub(crate) const BY_WALL_REACH: f64 = 1.0;
@@ -552,9 +559,35 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
                     .map(|corner| (c - corner).length())
                     .fold(f64::INFINITY, f64::min)
             }
-            RoomPlace::Wall | RoomPlace::ByWall(..) => 0.0,
+            RoomPlace::Wall | RoomPlace::ByWall(..) | RoomPlace::OnWall(..) => 0.0,
         }
     };
+    if let RoomPlace::OnWall(axis, sign) = place {
+        // Against this wall, not the one round the corner: no other wall is nearer.
+        let gap = |bx: &Aabb| wall_gap(&room, bx, axis, sign);
+        let its_wall = |bx: &Aabb| {
+            let walls = [(Axis::X, -1.0), (Axis::X, 1.0), (Axis::Z, -1.0), (Axis::Z, 1.0)];
+            walls
+                .iter()
+                .all(|&(a, s)| gap(bx) <= wall_gap(&room, bx, a, s) + 1e-3)
+        };
+        let there: Vec<(usize, f64)> = candidates
+            .iter()
+            .zip(&b)
+            .filter(|(_, bx)| its_wall(bx))
+            .map(|(&i, bx)| (i, gap(bx)))
+            .collect();
+        let nearest = there.iter().map(|p| p.1).fold(f64::INFINITY, f64::min);
+        if nearest > BY_WALL_REACH {
+            return None;
+        }
+        let kept = there
+            .iter()
+            .filter(|p| p.1 <= nearest + ON_WALL_SPREAD)
+            .map(|p| p.0)
+            .collect();
+        return Some(kept);
+    }
     if matches!(place, RoomPlace::Wall | RoomPlace::ByWall(..)) {
         // Along a wall, nearer or further from it says nothing of which: every one there.
         let against = |bx: &Aabb| match place {
@@ -599,7 +632,7 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
             let extent = (room.max.x - room.min.x).min(room.max.z - room.min.z);
             (flat(bx.center()) - flat(room.center())).length() <= MIDDLE_REACH * extent
         }
-        RoomPlace::Wall | RoomPlace::ByWall(..) => true,
+        RoomPlace::Wall | RoomPlace::ByWall(..) | RoomPlace::OnWall(..) => true,
     };
     let mut order: Vec<(f64, usize)> = b
         .iter()
