@@ -1243,12 +1243,65 @@ const ARCHIVE: &str = r#"{
 
 #[test]
 fn against_a_wall_is_the_one_standing_on_that_wall_or_refused() {
-    let s = after(ARCHIVE, "move the bookcase against the back wall 10 cm left").unwrap();
+    let s = after(
+        ARCHIVE,
+        "move the bookcase against the back wall 10 cm left",
+    )
+    .unwrap();
     assert!(close(moved(ARCHIVE, &s, "Bookcase 1"), [-0.1, 0.0, 0.0]));
     assert!(close(moved(ARCHIVE, &s, "Bookcase 2"), [0.0, 0.0, 0.0]));
     let s = after(ARCHIVE, "move the bookcase on the right wall 20 cm forward").unwrap();
     assert!(close(moved(ARCHIVE, &s, "Bookcase 2"), [0.0, 0.0, 0.2]));
     // No bookcase stands against the front wall: not the one furthest forward.
-    let e = after(ARCHIVE, "move the bookcase against the front wall 10 cm left").unwrap_err();
+    let e = after(
+        ARCHIVE,
+        "move the bookcase against the front wall 10 cm left",
+    )
+    .unwrap_err();
     assert!(e.contains("front wall"), "{e}");
+}
+
+/// A study: two windows in the left wall, a chair off to one side, a round table with a
+/// cup and a book on it.
+const STUDY: &str = r#"{
+  "name": "study",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "Window 1", "position": [-4.95, 0.9, -2.5], "size": [0.1, 1.4, 1.2]},
+    {"name": "Window 2", "position": [-4.95, 0.9, 2.5], "size": [0.1, 1.4, 1.2]},
+    {"name": "Chair", "position": [-2, 0, 2.2], "size": [0.45, 0.9, 0.45]},
+    {"name": "Table", "position": [2, 0, 0], "size": [1.2, 0.75, 1.2]},
+    {"name": "Cup", "position": [1.8, 0.75, 0.1], "size": [0.1, 0.1, 0.1], "on": "Table"},
+    {"name": "Book", "position": [2.3, 0.75, -0.2], "size": [0.2, 0.05, 0.3], "on": "Table"}
+  ]
+}"#;
+
+#[test]
+fn turned_to_face_several_faces_the_wall_they_are_in_and_what_is_kept_on_stays_on() {
+    // The windows are in the left wall: the chair faces the wall, square on (its front,
+    // +Z unturned, then points along -X), not their far-off middle.
+    let s = after(STUDY, "turn the chair so it faces the windows").unwrap();
+    assert!(
+        (yaw_degrees(&s, "Chair") + 90.0).abs() < 2.0,
+        "{}",
+        yaw_degrees(&s, "Chair")
+    );
+    // "…, and keep the cup and the book on it": they turn with the table and stay on it.
+    let s = after(
+        STUDY,
+        "rotate the table 45 degrees and keep the cup and the book on it",
+    )
+    .unwrap();
+    let table = aabb(&s, "Table");
+    for name in ["Cup", "Book"] {
+        let b = aabb(&s, name);
+        assert!(
+            (b.min.y - table.max.y).abs() < 1e-6,
+            "{name} is off the table"
+        );
+    }
+    assert!(
+        moved(STUDY, &s, "Cup").length() > 0.01,
+        "the cup did not go round"
+    );
 }

@@ -566,7 +566,12 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
         // Against this wall, not the one round the corner: no other wall is nearer.
         let gap = |bx: &Aabb| wall_gap(&room, bx, axis, sign);
         let its_wall = |bx: &Aabb| {
-            let walls = [(Axis::X, -1.0), (Axis::X, 1.0), (Axis::Z, -1.0), (Axis::Z, 1.0)];
+            let walls = [
+                (Axis::X, -1.0),
+                (Axis::X, 1.0),
+                (Axis::Z, -1.0),
+                (Axis::Z, 1.0),
+            ];
             walls
                 .iter()
                 .all(|&(a, s)| gap(bx) <= wall_gap(&room, bx, a, s) + 1e-3)

@@ -109,8 +109,13 @@ pub(super) fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
             }
         }
         if !named.is_empty() {
-            // "…, the monkey on top too": where the named thing is.
-            if let Some(on) = longest(k, ONS) {
+            // "…, the monkey on top too", "keep X2 and X3 on it": where the named thing
+            // is (its "it" may be read already, as the moved object).
+            if let Some(on) = ONS
+                .iter()
+                .find(|w| c.free(k) && c.words_at_any(k, w))
+                .map(|w| w.len())
+            {
                 k += on;
             }
         } else {

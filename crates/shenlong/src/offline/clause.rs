@@ -383,6 +383,11 @@ const BEFORE_SUBJECTS: &[&str] = &[
     "line",
     "arrange",
     "align",
+    // "…, and keep X2 and X3 on it", "keeping X2 and X3 where they are".
+    "keep",
+    "keeping",
+    "leave",
+    "leaving",
 ];
 
 /// Whether the clause so far (`current`) is a verb and a list of subjects begun: only

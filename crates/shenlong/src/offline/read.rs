@@ -402,6 +402,11 @@ impl<'a> Reader<'a> {
             k += 1;
         }
         let tail: Vec<&Token> = rest[k..].iter().filter_map(|&i| c.token(i)).collect();
+        // "…, and keep X2 and X3 on it": on the one object moved last.
+        let moved_last = match self.last_subjects.as_slice() {
+            [one] if !named.is_empty() && !named.contains(one) => Some(*one),
+            _ => None,
+        };
         let target = match tail.as_slice() {
             [Token::Word(on), Token::Variable(t)] if on == "on" => *t,
             [Token::Word(on), Token::Word(the), Token::Variable(t)]
@@ -409,6 +414,9 @@ impl<'a> Reader<'a> {
             {
                 *t
             }
+            [Token::Word(on), Token::Word(it)] if on == "on" && it == "it" => moved_last?,
+            // (The "it" may be read already, as the last clause's object.)
+            [Token::Word(on)] if on == "on" && c.word(rest[k] + 1) == Some("it") => moved_last?,
             _ => return None,
         };
         let subjects = if named.is_empty() {

@@ -11,7 +11,7 @@ use super::clause::Clause;
 use super::read::{mark_to_the, not_read, Direction, Produced, Reader};
 use super::relations::{boxed, Step};
 use super::view::View;
-use super::words;
+use super::words::{self, Token};
 use crate::expr::Expr;
 
 /// A facing phrase: "to face X2", "so that it faces X2", "towards X2", "away from X2",
@@ -81,6 +81,23 @@ pub(super) fn find_facing(c: &Clause, it_means: Option<usize>) -> Option<Facing>
         }
     }
     None
+}
+
+/// The target at `at` and those listed after it ("face X2 and X3", "X2, X3 and X4": what
+/// a plural names), marked read: several are faced by their middle.
+fn more_targets(c: &mut Clause, first: usize, at: usize) -> Vec<usize> {
+    let mut targets = vec![first];
+    let mut k = at + 1;
+    while (c.words_at(k, &["and"]) || matches!(c.token(k), Some(Token::Separator))) && c.free(k + 1)
+    {
+        let Some(Token::Variable(v)) = c.token(k + 1) else {
+            break;
+        };
+        targets.push(*v);
+        c.mark(k..k + 2);
+        k += 2;
+    }
+    targets
 }
 
 /// "turn X1 towards X2" (to face it) or "turn X1's back to X2" (templated "turn X1 back
@@ -273,8 +290,9 @@ impl Reader<'_> {
     fn face(&mut self, c: &mut Clause, f: Facing, text: &str) -> Result<Produced, String> {
         c.mark(f.range.clone());
         c.mark(f.target_at..f.target_at + 1);
+        let targets = more_targets(c, f.target, f.target_at);
         let subjects = self.subjects(c, Some(f.range.start));
-        if subjects.is_empty() || subjects.contains(&f.target) {
+        if subjects.is_empty() || subjects.iter().any(|s| targets.contains(s)) {
             return Err(not_read(text, text));
         }
         self.last_subjects = subjects.clone();
@@ -305,26 +323,28 @@ impl Reader<'_> {
                 c.mark(i..i + 1);
             }
         }
-        if c.keep_facing {
+        // "keep it facing X2"; "turn it to face X2 and X3" (the windows along a wall):
+        // square on to what is faced, towards the nearest point of the box around it.
+        if c.keep_facing || (targets.len() > 1 && !f.away && limit.is_none()) {
             return Ok(subjects
                 .iter()
-                .map(|&s| (s, self.keep_facing(s, f.target)))
+                .map(|&s| (s, self.keep_facing(s, &targets)))
                 .collect());
         }
         Ok(subjects
             .iter()
-            .map(|&s| (s, self.turn_to_face(s, f.target, f.away, limit)))
+            .map(|&s| (s, self.turn_to_face(s, &targets, f.away, limit)))
             .collect())
     }
 
     /// The turn of subject `s` about the vertical so that its front (or back, `away`)
-    /// points at `target`, at most `limit` degrees the short way round. +θ about +Y takes
+    /// points at `targets` (the middle of several), at most `limit` degrees the short way round. +θ about +Y takes
     /// +Z toward +X, so θ = atan2(dx, dz); away adds a half turn. Both where earlier
     /// clauses left them ("move X1 next to X2 and turn it to face X2" faces X2 from beside
     /// it).
-    fn turn_to_face(&self, s: usize, target: usize, away: bool, limit: Option<f64>) -> Step {
+    fn turn_to_face(&self, s: usize, targets: &[usize], away: bool, limit: Option<f64>) -> Step {
         let d = sub(
-            boxed(target, "center", &self.steps),
+            super::relations::middle(targets, &self.steps),
             boxed(s, "center", &self.steps),
         );
         let mut angle = sub(heading(d), heading(var(s, "front")));
@@ -347,27 +367,32 @@ impl Reader<'_> {
     }
 
     /// "…, and keep it facing X2": the turn of subject `s` that leaves its front square on
-    /// to `target` where earlier clauses left it — towards the nearest point of the
-    /// target's footprint, as a chair faces the long side of its table, not the table's
-    /// far-off centre (which is what "turn it to face X2" faces). A thousandth of the way
-    /// to the target's centre is added, so a subject within the footprint still faces
-    /// its centre.
-    fn keep_facing(&self, s: usize, target: usize) -> Step {
+    /// to `targets` where earlier clauses left them — towards the nearest point of the
+    /// box around their footprints, as a chair faces the long side of its table, not the
+    /// table's far-off centre (which is what "turn it to face X2" faces), and a chair
+    /// turned to face the windows faces the wall they are in. A thousandth of the way
+    /// to their middle is added, so a subject within the box still faces its middle.
+    fn keep_facing(&self, s: usize, targets: &[usize]) -> Step {
         let at = |e: usize| dot(boxed(s, "center", &self.steps), axis(e));
+        // The box around every target, along axis `e`.
+        let bound = |attribute: &str, f: &str, e: usize| {
+            targets
+                .iter()
+                .map(|&t| dot(boxed(t, attribute, &self.steps), axis(e)))
+                .reduce(|a, b| call(f, vec![a, b]))
+                .unwrap_or_else(|| at(e))
+        };
         let nearest = |e: usize| {
             call(
                 "max",
                 vec![
-                    dot(boxed(target, "min", &self.steps), axis(e)),
-                    call(
-                        "min",
-                        vec![at(e), dot(boxed(target, "max", &self.steps), axis(e))],
-                    ),
+                    bound("min", "min", e),
+                    call("min", vec![at(e), bound("max", "max", e)]),
                 ],
             )
         };
         let to_centre = sub(
-            boxed(target, "center", &self.steps),
+            super::relations::middle(targets, &self.steps),
             boxed(s, "center", &self.steps),
         );
         let way = sum([
@@ -399,8 +424,8 @@ impl Reader<'_> {
         let (a, b) = (*a, *b);
         self.last_subjects = subjects.clone();
         Some(Ok(vec![
-            (a, self.turn_to_face(a, b, false, None)),
-            (b, self.turn_to_face(b, a, false, None)),
+            (a, self.turn_to_face(a, &[b], false, None)),
+            (b, self.turn_to_face(b, &[a], false, None)),
         ]))
     }
 
