@@ -1185,6 +1185,19 @@ fn a_placement_after_a_take_off_replaces_it_and_a_second_modifier_narrows() {
         .max(jar.min.z - bin.max.z)
         .max(bin.min.z - jar.max.z);
     assert!((0.0..0.2).contains(&gap), "the jar is {gap} m from the bin");
+    // "take it down (off) and put it …": the particle says where from.
+    for q in [
+        "take the jar down and put it next to the bin",
+        "take the jar off and put it next to the bin",
+    ] {
+        let s = after(GALLEY, q).unwrap();
+        assert!(
+            aabb(&s, "SM_Jar").min.y.abs() < 1e-6,
+            "{q}: not on the floor"
+        );
+    }
+    // Taken down to where is not said: refused, nothing moved.
+    assert!(after(GALLEY, "take the jar down").is_err());
     // Two modifiers after one noun: by a wall, then what it carries.
     let s = after(
         GALLEY,

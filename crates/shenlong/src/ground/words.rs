@@ -216,6 +216,20 @@ pub fn spelling(word: &str) -> &str {
         "marble's" => "marble",
         "aluminum" => "aluminium",
         "favorite" => "favourite",
+        // American and British spellings of things in rooms.
+        "tire" => "tyre",
+        "tires" => "tyres",
+        "catalog" => "catalogue",
+        "catalogs" => "catalogues",
+        "theater" => "theatre",
+        "jewelry" => "jewellery",
+        "fiber" => "fibre",
+        "armor" => "armour",
+        "pajamas" => "pyjamas",
+        "mold" => "mould",
+        "cozy" => "cosy",
+        "liter" => "litre",
+        "liters" => "litres",
         // "the grey-coloured chair" is the grey chair.
         "coloured" | "colored" | "colour" | "color" => "",
         other => other,
@@ -847,6 +861,23 @@ mod tests {
             ),
         ] {
             assert_eq!(imperial_marks(typed), read, "{typed}");
+        }
+    }
+
+    #[test]
+    fn names_and_words_spelt_either_side_of_the_atlantic_compare_equal() {
+        for (a, b) in [
+            ("Tire_Rack", "tyre rack"),
+            ("card catalog", "Card_Catalogue"),
+            ("gray chair", "Chair_Grey"),
+            ("jewelry box", "JewelleryBox"),
+        ] {
+            let (x, y) = (normalize(a), normalize(b));
+            let mut x: Vec<&str> = x.split(' ').collect();
+            let mut y: Vec<&str> = y.split(' ').collect();
+            x.sort_unstable();
+            y.sort_unstable();
+            assert_eq!(x, y, "{a} / {b}");
         }
     }
 

@@ -670,6 +670,15 @@ impl<'a> Reader<'a> {
             Action::Take if find_relation(c).is_some() => self.move_(c, Action::Move, None, &text),
             Action::Take => {
                 self.required_subjects(c, &text)?;
+                // "take the top crate down (off, out) and put it …": where from, said as
+                // a particle, before the clause that says where to.
+                if self.more_follow {
+                    for i in 0..c.len() {
+                        if c.free(i) && matches!(c.word(i), Some("down" | "off" | "out")) {
+                            c.mark(i..i + 1);
+                        }
+                    }
+                }
                 // The taking itself moves nothing: a later clause says where.
                 Ok(Vec::new())
             }
