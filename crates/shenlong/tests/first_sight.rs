@@ -1318,3 +1318,32 @@ fn turned_to_face_several_faces_the_wall_they_are_in_and_what_is_kept_on_stays_o
         "the cup did not go round"
     );
 }
+
+#[test]
+fn a_numbered_name_anywhere_a_turn_around_to_a_wall_and_towards_an_objects_middle() {
+    // A numbered name opens a phrase after any word ("touches").
+    let s = after(HALL, "push chair 2 left until it touches chair 1").unwrap();
+    let (a, b) = (aabb(&s, "Chair 2"), aabb(&s, "Chair 1"));
+    assert!(
+        (a.min.x - b.max.x).abs() < 0.02,
+        "a gap of {}",
+        a.min.x - b.max.x
+    );
+    // "turn them around so they face the back wall": what they face says how far.
+    let s = after(
+        HALL,
+        "turn chairs 3 and 4 around so they face the back wall",
+    )
+    .unwrap();
+    for name in ["Chair 3", "Chair 4"] {
+        assert!((yaw_degrees(&s, name).abs() - 180.0).abs() < 1.0, "{name}");
+    }
+    // "towards the middle of desk 4" is towards desk 4.
+    let s = after(
+        HALL,
+        "nudge the plate stack a bit towards the middle of desk 4",
+    )
+    .unwrap();
+    let m = moved(HALL, &s, "SM_Plate_Stack");
+    assert!(m.x < 0.0 && m.z > 0.0, "{m}");
+}

@@ -667,6 +667,15 @@ impl Reader<'_> {
         if head.tier == Tier::Name && self.looks_exported(head) {
             return true;
         }
+        // So does a numbered name said whole ("… until it touches chair 15").
+        let numbered = head.range.len() > 1
+            && matches!(
+                self.tokens.get(head.range.end - 1).map(|t| &t.kind),
+                Some(Kind::Number(_))
+            );
+        if head.tier == Tier::Name && head.objects.len() == 1 && numbered {
+            return true;
+        }
         let w = self.word(h).unwrap_or("");
         // A single grammar word ("can you…", "stand it up", "turn it counter clockwise")
         // or an anaphor ("one", "other") is a noun only after a determiner.

@@ -236,7 +236,8 @@ fn until_touching(c: &mut Clause) {
 
 /// The middle of an object is on it, centred: `in the middle of X2` → `on X2` (and the
 /// middle of two objects is between them: `in the middle of X2 and X3` → `between X2 and
-/// X3`). The room's middle ("the middle of the room") is another place, read elsewhere.
+/// X3`); towards the middle of an object is towards it. The room's middle ("the middle of
+/// the room") is another place, read elsewhere.
 fn middle_of_an_object(c: &mut Clause) {
     let is_var =
         |c: &Clause, k: usize| matches!(c.token(k), Some(super::words::Token::Variable(_)));
@@ -254,6 +255,20 @@ fn middle_of_an_object(c: &mut Clause) {
         c.mark(i..i + 3);
         c.replace(i + 3, if two { "between" } else { "on" });
         return;
+    }
+    // "towards the middle of X2" (of one object) is towards X2: its centre is what
+    // "towards" aims at anyway.
+    for i in 0..c.len() {
+        if one_of(c, i, &["towards", "toward"])
+            && c.words_at(i + 1, &["the"])
+            && one_of(c, i + 2, &["middle", "centre", "center"])
+            && c.words_at(i + 3, &["of"])
+            && is_var(c, i + 4)
+            && !(c.words_at(i + 5, &["and"]) && is_var(c, i + 6))
+        {
+            c.mark(i + 1..i + 4);
+            return;
+        }
     }
 }
 

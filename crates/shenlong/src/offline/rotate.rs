@@ -482,8 +482,10 @@ impl Reader<'_> {
         if let Some((k, _)) = side {
             c.mark(k..k + 1);
         }
+        // ("turn them around so they face the back wall": what they face says how far.)
         c.mark_every(&[
-            "to", "of", "the", "so", "that", "it", "is", "towards", "toward",
+            "to", "of", "the", "so", "that", "it", "is", "towards", "toward", "they", "are",
+            "around", "round",
         ]);
         let (wall, side) = (wall.is_some(), side.map(|(_, d)| d));
         Some(self.turn_each(c, i, text, |s| {
