@@ -287,8 +287,23 @@ fn search(
                     .filter(|dy| !level.contains(dy))
                     .collect()
             };
+        // On a top face, a free spot may be narrower than the grid: after the grid, the
+        // face is searched again, [`SURFACE_REFINE`] times finer.
+        // (Made only when the grid found nothing.)
+        let fine: std::cell::OnceCell<Vec<DVec2>> = std::cell::OnceCell::new();
+        let refined = std::iter::once(()).flat_map(|()| {
+            let offsets = fine.get_or_init(|| {
+                surface.map_or_else(Vec::new, |j| {
+                    let face = after[j].size();
+                    let reach = face.x.hypot(face.z).min(options.radius);
+                    horizontal_offsets(options.step / SURFACE_REFINE, reach)
+                })
+            });
+            ordered_candidates(offsets, &[0.0])
+        });
         let mut candidates = ordered_candidates(&horizontal, &level)
             .chain(ordered_candidates(&horizontal, &raised))
+            .chain(refined)
             .filter(|&offset| on_surface(offset))
             .peekable();
         let mut ties: Vec<DVec3> = Vec::new();
@@ -553,6 +568,11 @@ impl Placement<'_> {
         true
     }
 }
+
+/// How many times finer than the grid a top face is searched when the grid finds no free
+/// spot on it (a mug beside a plate on a small side table fits in a gap of a few
+/// centimetres).
+const SURFACE_REFINE: f64 = 5.0;
 
 /// Horizontal offsets within `radius` on a grid of `step`, nearest first (ties broken by
 /// coordinates, so the order is deterministic).

@@ -383,6 +383,33 @@ fn put_on_an_occupied_surface_it_lands_beside_what_is_there_not_on_it() {
 }
 
 #[test]
+fn a_gap_on_a_top_face_narrower_than_the_grid_is_found() {
+    // A 45 cm side table with an 18 cm plate in its middle: a 9 cm mug fits beside the
+    // plate only between 15.5 and 18 cm from the centre, which the 5 cm grid misses.
+    let mut s = room();
+    let table = s.push_box("side table", [0.45, 0.55, 0.45], [0.0, 0.0, 0.0]);
+    let plate = s.push_box("plate", [0.18, 0.015, 0.18], [0.0, 0.55, 0.0]);
+    let mug = s.push_box("mug", [0.09, 0.1, 0.09], [1.5, 0.0, 1.5]);
+    s.detect_supports();
+    let r = edit(
+        &mut s,
+        mug,
+        DVec3::new(-1.5, 0.55, -1.5),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    let (m, t, p) = (
+        s.objects[mug].world_aabb(),
+        s.objects[table].world_aabb(),
+        s.objects[plate].world_aabb(),
+    );
+    assert!((m.min.y - 0.55).abs() < 1e-9, "{m:?}");
+    assert!(m.footprint_within(&t), "overhangs the table: {m:?}");
+    assert!(m.footprint_overlap(&p) <= 1e-9, "in the plate: {m:?}");
+    assert_eq!(r.adjustments.len(), 1);
+}
+
+#[test]
 fn a_full_surface_is_refused_saying_so() {
     let mut s = room();
     let _stool = s.push_box("stool", [0.4, 0.5, 0.4], [0.0, 0.0, 0.0]);
