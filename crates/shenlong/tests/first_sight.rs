@@ -1347,3 +1347,33 @@ fn a_numbered_name_anywhere_a_turn_around_to_a_wall_and_towards_an_objects_middl
     let m = moved(HALL, &s, "SM_Plate_Stack");
     assert!(m.x < 0.0 && m.z > 0.0, "{m}");
 }
+
+/// A bar counter with four stools in a row in front of it.
+const BAR: &str = r#"{
+  "name": "bar",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "Counter", "position": [0, 0, -2], "size": [4.0, 1.1, 0.6]},
+    {"name": "Stool 1", "position": [-1.5, 0, -1.2], "size": [0.4, 0.75, 0.4]},
+    {"name": "Stool 2", "position": [-0.5, 0, -1.2], "size": [0.4, 0.75, 0.4]},
+    {"name": "Stool 3", "position": [0.5, 0, -1.2], "size": [0.4, 0.75, 0.4]},
+    {"name": "Stool 4", "position": [1.5, 0, -1.2], "size": [0.4, 0.75, 0.4]}
+  ]
+}"#;
+
+#[test]
+fn the_end_ones_of_a_row_are_its_first_and_last() {
+    let s = after(BAR, "move the end stools 30 cm forward").unwrap();
+    for (name, moves) in [
+        ("Stool 1", true),
+        ("Stool 2", false),
+        ("Stool 3", false),
+        ("Stool 4", true),
+    ] {
+        let m = moved(BAR, &s, name).length();
+        assert_eq!(m > 0.2, moves, "{name} moved {m}");
+    }
+    // One "end stool" of two is not said which.
+    let e = after(BAR, "move the end stool 30 cm forward").unwrap_err();
+    assert!(e.contains("Stool 1") && e.contains("Stool 4"), "{e}");
+}

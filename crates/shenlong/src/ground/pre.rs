@@ -25,6 +25,8 @@ pub(super) struct Premods {
     pub sizes: Vec<String>,
     /// "the middle …".
     pub middle: bool,
+    /// "the end stools", "the two end tables": the first and last of a line.
+    pub ends: bool,
     /// "the red and blue cushions", "the left and right tables": the words before the
     /// noun are alternatives, each naming some of the objects.
     pub either: bool,
@@ -36,7 +38,7 @@ pub(super) struct Premods {
 impl Premods {
     /// Whether modifiers by place or size (sides, sizes, middle) pick.
     pub fn selectors(&self) -> bool {
-        !self.sides.is_empty() || !self.sizes.is_empty() || self.middle
+        !self.sides.is_empty() || !self.sizes.is_empty() || self.middle || self.ends
     }
 }
 
@@ -66,6 +68,7 @@ impl Reader<'_> {
                         w,
                         "other"
                             | "middle"
+                            | "end"
                             | "center"
                             | "centre"
                             | "far"
@@ -162,6 +165,8 @@ impl Reader<'_> {
                         mods.sizes.push(w.to_string());
                     } else if matches!(w, "middle" | "center" | "centre") {
                         mods.middle = true;
+                    } else if w == "end" {
+                        mods.ends = true;
                     } else {
                         mods.picks.push(w.to_string());
                     }
@@ -313,6 +318,15 @@ impl Reader<'_> {
         }
         for w in &mods.sizes {
             objects = self.pick_by_size(head, count, w, objects, reasons, phrase)?;
+        }
+        if mods.ends && objects.len() > 2 {
+            let picked = select::ends(self.scene, &objects)
+                .ok_or_else(|| self.too_close(phrase, &objects, "at the ends"))?;
+            reasons.push(modifier(&format!(
+                "\"end\" picked {}",
+                error::list(&self.names(&picked))
+            )));
+            objects = picked;
         }
         if mods.middle && objects.len() > 1 {
             let picked = select::middle(self.scene, &objects)

@@ -172,6 +172,33 @@ pub(crate) fn middle(scene: &Scene, candidates: &[usize]) -> Option<usize> {
         .then_some(order[m].1)
 }
 
+/// The first and last of `candidates` (three or more) along the axis they spread most
+/// on: "the end stools". `None` where either is not clearly apart from its neighbour.
+pub(crate) fn ends(scene: &Scene, candidates: &[usize]) -> Option<Vec<usize>> {
+    if candidates.len() < 3 {
+        return None;
+    }
+    let b = boxes(scene, candidates);
+    let spread = |axis: Axis| {
+        let v: Vec<f64> = b.iter().map(|b| axis.of(b.center())).collect();
+        v.iter().cloned().fold(f64::MIN, f64::max) - v.iter().cloned().fold(f64::MAX, f64::min)
+    };
+    let axis = if spread(Axis::X) >= spread(Axis::Z) {
+        Axis::X
+    } else {
+        Axis::Z
+    };
+    let mut order: Vec<(f64, usize)> = b
+        .iter()
+        .zip(candidates)
+        .map(|(b, &i)| (axis.of(b.center()), i))
+        .collect();
+    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let n = order.len();
+    (order[1].0 - order[0].0 > POSITION_MARGIN && order[n - 1].0 - order[n - 2].0 > POSITION_MARGIN)
+        .then(|| vec![order[0].1, order[n - 1].1])
+}
+
 /// The candidates biggest or smallest by a measure. A comparative or plain word
 /// (`bigger`, `big`) compares exactly two.
 pub(crate) fn by_size(
