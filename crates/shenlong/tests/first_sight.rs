@@ -1377,3 +1377,25 @@ fn the_end_ones_of_a_row_are_its_first_and_last() {
     let e = after(BAR, "move the end stool 30 cm forward").unwrap_err();
     assert!(e.contains("Stool 1") && e.contains("Stool 4"), "{e}");
 }
+
+#[test]
+fn an_object_its_dependents_and_what_is_on_it_joined_by_plus_or_commas() {
+    for q in [
+        "the conference table + its chairs + whatever's on it: 1 m left",
+        "move the conference table, its chairs and everything on it 1 m to the left",
+    ] {
+        let s = after(BOARDROOM, q).unwrap_or_else(|e| panic!("{q}: {e}"));
+        for name in [
+            "Conference Table",
+            "Chair 01",
+            "Chair 02",
+            "Chair 07",
+            "Laptop",
+        ] {
+            assert!(
+                close(moved(BOARDROOM, &s, name), [-1.0, 0.0, 0.0]),
+                "{q}: {name}"
+            );
+        }
+    }
+}

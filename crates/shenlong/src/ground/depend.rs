@@ -29,14 +29,24 @@ impl Reader<'_> {
     /// Dependents of a kind none of whose objects belong to the phrase's objects.
     pub(super) fn with_dependents(&mut self, mut np: Np, generic: bool) -> Result<Np, GroundError> {
         let k = np.range.end;
-        let Some(join) = JOINS.iter().find(|j| {
-            j.iter()
-                .enumerate()
-                .all(|(i, w)| self.is_word(k + i, &[w]) && !self.consumed[k + i])
-        }) else {
+        // "bench A2, its stools and whatever's on it": a comma joins too.
+        let comma = matches!(
+            self.tokens.get(k).map(|t| &t.kind),
+            Some(super::words::Kind::Punct(','))
+        );
+        let join = JOINS
+            .iter()
+            .find(|j| {
+                j.iter()
+                    .enumerate()
+                    .all(|(i, w)| self.is_word(k + i, &[w]) && !self.consumed[k + i])
+            })
+            .map(|j| j.len())
+            .or(comma.then_some(1));
+        let Some(join) = join else {
             return Ok(np);
         };
-        let owner = k + join.len();
+        let owner = k + join;
         if !self.is_word(owner, &["its", "their"]) {
             return Ok(np);
         }
@@ -91,6 +101,7 @@ impl Reader<'_> {
                 super::error::list(&self.names(&found))
             ),
         });
+        np.owners.get_or_insert_with(|| np.objects.clone());
         np.objects.extend(found);
         np.range = range;
         Ok(np)

@@ -182,6 +182,9 @@ struct Np {
     reasons: Vec<Reason>,
     /// Its head's text: what "one" stands for next.
     head: String,
+    /// Where what belongs to them was added ("table 4 and its chairs"): the phrase's own
+    /// objects, which "it" after it means.
+    owners: Option<Vec<usize>>,
 }
 
 impl Np {
@@ -197,6 +200,7 @@ impl Np {
                 detail,
             }],
             head,
+            owners: None,
         }
     }
 }
@@ -822,6 +826,7 @@ impl<'a> Reader<'a> {
                         detail: format!("'{}' is quoted", name.trim()),
                     }],
                     head: words::normalize(name),
+                    owners: None,
                 };
                 self.commit(np, &mut phrases, &mut nps);
                 k += 1;
@@ -900,7 +905,9 @@ impl<'a> Reader<'a> {
         } else {
             self.group.clone_from(&np.objects);
         }
-        self.antecedent.clone_from(&np.objects);
+        // ("table 4 and its chairs and everything on it": "it" is the table.)
+        self.antecedent
+            .clone_from(np.owners.as_ref().unwrap_or(&np.objects));
         nps.push(np);
     }
 

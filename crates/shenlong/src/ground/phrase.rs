@@ -640,6 +640,7 @@ impl Reader<'_> {
             pool,
             reasons,
             head: head.text,
+            owners: None,
         })
     }
 

@@ -509,9 +509,10 @@ impl<'a> Reader<'a> {
                 _ => None,
             })
             .collect();
-        let only_objects = free
-            .iter()
-            .all(|&i| matches!(c.token(i), Some(Token::Variable(_))) || c.words_at(i, &["and"]));
+        let only_objects = free.iter().all(|&i| {
+            matches!(c.token(i), Some(Token::Variable(_) | Token::Separator))
+                || c.words_at(i, &["and"])
+        });
         // Objects named alone at the end ask for nothing ("… closer to X3 and X4" split
         // at "and"): not read, so the instruction is refused rather than X4 ignored.
         if topic.is_empty() || !only_objects || !self.more_follow {

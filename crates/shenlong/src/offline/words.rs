@@ -61,8 +61,20 @@ pub(crate) fn tokenize(query: &str) -> Vec<Token> {
         }
         k += 1;
     }
+    plus_in_lists(&mut tokens);
     subject_then_amount(&mut tokens);
     tokens
+}
+
+/// `X1 plus X2` (`X1 + X2`) is `X1 and X2`: a list of objects joined either way.
+fn plus_in_lists(tokens: &mut [Token]) {
+    for k in 1..tokens.len().saturating_sub(1) {
+        let between = matches!(tokens[k - 1], Token::Variable(_))
+            && matches!(tokens[k + 1], Token::Variable(_));
+        if between && matches!(&tokens[k], Token::Word(w) if w == "plus") {
+            tokens[k] = Token::Word("and".into());
+        }
+    }
 }
 
 /// The reader's tokens of one word of the tokenizer: a variable (`x2`), a number, a
