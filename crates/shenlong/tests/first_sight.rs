@@ -1399,3 +1399,35 @@ fn an_object_its_dependents_and_what_is_on_it_joined_by_plus_or_commas() {
         }
     }
 }
+
+/// A classroom: two rows of three desks (front row nearer +z), two windows in the left
+/// wall.
+const CLASS: &str = r#"{
+  "name": "class",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "Window A", "position": [-4.95, 0.9, -2], "size": [0.1, 1.4, 1.2]},
+    {"name": "Window B", "position": [-4.95, 0.9, 2], "size": [0.1, 1.4, 1.2]},
+    {"name": "Desk 1", "position": [-2, 0, -1], "size": [1.0, 0.75, 0.6]},
+    {"name": "Desk 2", "position": [0, 0, -1], "size": [1.0, 0.75, 0.6]},
+    {"name": "Desk 3", "position": [2, 0, -1], "size": [1.0, 0.75, 0.6]},
+    {"name": "Desk 4", "position": [-2, 0, 1], "size": [1.0, 0.75, 0.6]},
+    {"name": "Desk 5", "position": [0, 0, 1], "size": [1.0, 0.75, 0.6]},
+    {"name": "Desk 6", "position": [2, 0, 1], "size": [1.0, 0.75, 0.6]}
+  ]
+}"#;
+
+#[test]
+fn an_order_from_objects_along_one_wall_counts_from_that_wall_within_a_line() {
+    // The windows are both in the left wall: "from the window" counts from the left;
+    // "in the front row" first says which line.
+    let s = after(
+        CLASS,
+        "the third desk from the window in the front row: move it 20 cm back",
+    )
+    .unwrap();
+    assert!(close(moved(CLASS, &s, "Desk 6"), [0.0, 0.0, -0.2]));
+    // Without the row, two desks are second from the windows: refused.
+    let e = after(CLASS, "move the second desk from the window 20 cm back").unwrap_err();
+    assert!(e.contains("Desk 2") && e.contains("Desk 5"), "{e}");
+}

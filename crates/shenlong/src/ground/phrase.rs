@@ -16,7 +16,7 @@
 use super::attach::{Choice, PostText};
 use super::error::{self, GroundError};
 use super::pre::Premods;
-use super::select::{Direction, Relation};
+use super::select::{self, Direction, Relation};
 use super::{modifier, words, Head, Mode, Np, Post, Reader, Reason, ReasonKind};
 use std::ops::Range;
 use words::Count;
@@ -328,6 +328,19 @@ impl Reader<'_> {
         };
         if !draft.modified && !draft.posted {
             draft.objects = head.literal.clone();
+        }
+        // "the second table from the window in the front row": the line first, then the
+        // order along it.
+        let mut p_end = p_end;
+        let ordered = matches!(p, Post::From(_) | Post::FromObject(_) | Post::Side(..));
+        if mods.ordinal.is_some() && ordered {
+            if let Some((Post::Line(line), l_end)) = self.line_at(p_end) {
+                let in_line = select::in_line(self.scene, &draft.objects, line);
+                if let Some(kept) = in_line.filter(|k| !k.is_empty()) {
+                    draft.objects = kept;
+                    p_end = l_end;
+                }
+            }
         }
         let words = self.span_text(&(draft.end..p_end));
         let at = self.span_text(&(draft.start..p_end));

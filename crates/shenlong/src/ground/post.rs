@@ -196,7 +196,7 @@ impl Reader<'_> {
     /// row`, `in the second row`, `in the last row`, `in the middle row`, `in the left
     /// column`, `in row 3`, `of the third column`. Rows count from the front, columns
     /// from the left.
-    fn line_at(&self, j: usize) -> Option<(Post, usize)> {
+    pub(super) fn line_at(&self, j: usize) -> Option<(Post, usize)> {
         let w = |k: usize| self.word(k).unwrap_or("");
         if !matches!(w(j), "in" | "on" | "of" | "at" | "from") {
             return None;
@@ -310,6 +310,16 @@ impl Reader<'_> {
                         end += 1;
                     }
                     return Ok(Some((Post::From(Direction::Side(axis, sign)), end)));
+                }
+            }
+        }
+        // "the second table from the window" with every window in the left wall: from
+        // the left, whichever window.
+        if w(j + 1) == "the" {
+            if let Some(head) = self.head_at(j + 2).filter(|h| h.objects.len() > 1) {
+                if let Some((axis, sign)) = select::common_wall(self.scene, &head.objects) {
+                    let side = Direction::Side(axis, sign);
+                    return Ok(Some((Post::From(side), head.range.end)));
                 }
             }
         }

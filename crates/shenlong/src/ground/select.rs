@@ -696,6 +696,31 @@ pub(crate) fn near_a_wall(room: &Aabb, b: &Aabb, gap: f64) -> bool {
 }
 
 /// The gap between a box and the room's wall on side (`axis`, `sign`).
+/// The one wall every candidate stands against (its nearest, within [`BY_WALL_REACH`]):
+/// "from the window" where the windows are all in the left wall is from the left. `None`
+/// where they stand at different walls, away from the walls, or there is no room.
+pub(crate) fn common_wall(scene: &Scene, candidates: &[usize]) -> Option<(Axis, f64)> {
+    let room = scene.bounds?;
+    let walls = [
+        (Axis::X, -1.0),
+        (Axis::X, 1.0),
+        (Axis::Z, -1.0),
+        (Axis::Z, 1.0),
+    ];
+    let mut common = None;
+    for b in boxes(scene, candidates) {
+        let (wall, gap) = walls
+            .iter()
+            .map(|&(a, s)| ((a, s), wall_gap(&room, &b, a, s)))
+            .min_by(|x, y| x.1.total_cmp(&y.1))?;
+        if gap > BY_WALL_REACH || common.is_some_and(|c| c != wall) {
+            return None;
+        }
+        common = Some(wall);
+    }
+    common
+}
+
 fn wall_gap(room: &Aabb, b: &Aabb, axis: Axis, sign: f64) -> f64 {
     let a = axis as usize;
     if sign < 0.0 {
