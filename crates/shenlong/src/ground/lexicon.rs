@@ -234,6 +234,10 @@ mod tests {
         assert!(same("couch", "sofa"));
         assert!(same("tv", "television"));
         assert!(same("fridge", "refrigerator"));
+        // British and American names of the same furniture.
+        assert!(same("standard lamp", "floor lamp"));
+        assert!(same("standing lamp", "floor lamp"));
+        assert!(same("hutch", "china cabinet"));
         assert!(!same("sofa", "table"));
     }
 }
