@@ -1431,3 +1431,12 @@ fn an_order_from_objects_along_one_wall_counts_from_that_wall_within_a_line() {
     let e = after(CLASS, "move the second desk from the window 20 cm back").unwrap_err();
     assert!(e.contains("Desk 2") && e.contains("Desk 5"), "{e}");
 }
+
+#[test]
+fn a_shift_on_the_surface_it_rests_on_stays_on_it() {
+    // The cup rests on the table: "on the table" after a shift says it stays on it.
+    let s = after(STUDY, "slide the cup 20 cm further back on the table").unwrap();
+    assert!(close(moved(STUDY, &s, "Cup"), [0.0, 0.0, -0.2]));
+    // Shifted off it, the edit is refused and nothing moves.
+    assert!(after(STUDY, "slide the cup 2 m left on the table").is_err());
+}

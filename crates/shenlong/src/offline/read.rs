@@ -281,6 +281,7 @@ impl<'a> Reader<'a> {
         if let Some(kept) = self.keep_on(c) {
             return kept;
         }
+        self.shift_on_its_support(c);
         let mut produced = if let Some(repeated) = self.repeat(c) {
             repeated
         } else if self.topic(c) || self.remark(c) {
@@ -439,6 +440,28 @@ impl<'a> Reader<'a> {
             c.mark(i..i + 1);
         }
         Some(Ok(()))
+    }
+
+    /// "stash X1 20 cm further back on X2", "slide X1 left a bit on X2" with X1 resting
+    /// on X2: the shift keeps it on X2, which is checked once placed ([`Near::On`]), not
+    /// a move onto X2. The clause's words "on X2", at its end, are read here.
+    fn shift_on_its_support(&mut self, c: &mut Clause) {
+        let vars = c.variables();
+        let (Some(&(_, s)), Some(&(at, t))) = (vars.first(), vars.last()) else {
+            return;
+        };
+        let ends = at + 1 == c.len() || matches!(c.token(at + 1), Some(Token::Separator));
+        let on = at > 0 && c.free(at - 1) && c.word(at - 1) == Some("on");
+        let shift = (0..c.len()).any(|i| {
+            c.free(i)
+                && c.word(i)
+                    .is_some_and(|w| super::words::direction(w).is_some())
+        });
+        if s == t || !ends || !on || !shift || !self.facts.known.rests_on(s, t) {
+            return;
+        }
+        c.mark(at - 1..at + 1);
+        self.near.entry(s).or_insert(Near::On(t));
     }
 
     /// A remark about the objects before what is to be done with them ("X1 is way too low,
