@@ -1440,3 +1440,14 @@ fn a_shift_on_the_surface_it_rests_on_stays_on_it() {
     // Shifted off it, the edit is refused and nothing moves.
     assert!(after(STUDY, "slide the cup 2 m left on the table").is_err());
 }
+
+#[test]
+fn the_wall_behind_an_object_is_the_wall_it_is_nearest() {
+    // The chair's nearest wall is the front one (1.6 m off; the left one is 2.8 m).
+    let s = after(
+        STUDY,
+        "move the table 10 cm towards the wall behind the chair",
+    )
+    .unwrap();
+    assert!(close(moved(STUDY, &s, "Table"), [0.0, 0.0, 0.1]));
+}

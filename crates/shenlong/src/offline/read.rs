@@ -715,9 +715,26 @@ impl<'a> Reader<'a> {
         }
     }
 
-    /// "toward the X2 wall" (the window wall, the whiteboard wall): the wall X2 is nearest,
-    /// said as its side ("toward the back wall") for the reader of places in the room.
+    /// "toward the X2 wall" (the window wall, the whiteboard wall), "toward the wall behind
+    /// X2": the wall X2 is nearest, said as its side ("toward the back wall") for the
+    /// reader of places in the room.
     fn wall_of_objects(&self, c: &mut Clause) {
+        // "towards the wall behind X2" (by, near, beside X2): the wall X2 is nearest, said
+        // as its side; X2 is read.
+        for i in 0..c.len() {
+            let Some(Token::Variable(t)) = c.token(i + 2).cloned() else {
+                continue;
+            };
+            let by = matches!(c.word(i + 1), Some("behind" | "by" | "near" | "beside"));
+            if !(by && c.free(i) && c.words_at(i, &["wall"]) && c.free(i + 2)) {
+                continue;
+            }
+            if let Some(side) = self.facts.known.nearest_wall(t) {
+                c.set(i, Token::Word(side.to_string()));
+                c.set(i + 1, Token::Word("wall".to_string()));
+                c.mark(i + 2..i + 3);
+            }
+        }
         for i in 0..c.len() {
             let Some(Token::Variable(t)) = c.token(i).cloned() else {
                 continue;
