@@ -1451,3 +1451,20 @@ fn the_wall_behind_an_object_is_the_wall_it_is_nearest() {
     .unwrap();
     assert!(close(moved(STUDY, &s, "Table"), [0.0, 0.0, 0.1]));
 }
+
+#[test]
+fn should_be_at_a_place_or_bigger_swing_round_and_pick_it_up() {
+    // "should be" before any place a move reads, or before a size.
+    let s = after(STUDY, "the chair should be in front of the table").unwrap();
+    let (chair, table) = (aabb(&s, "Chair"), aabb(&s, "Table"));
+    assert!(chair.min.z >= table.max.z - 1e-6, "not in front: {chair:?}");
+    let s = after(STUDY, "the book should be a bit bigger").unwrap();
+    assert!(aabb(&s, "Book").size().x > 0.2 + 1e-6);
+    assert!(after(STUDY, "the book should be blue").is_err());
+    // "swing … round to face": a turn.
+    let s = after(STUDY, "swing the chair round to face the table").unwrap();
+    assert!(yaw_degrees(&s, "Chair").abs() > 10.0);
+    // "pick X up and put it …": the particle after the object.
+    let s = after(STUDY, "pick the cup up and put it on the chair").unwrap();
+    assert!((aabb(&s, "Cup").min.y - aabb(&s, "Chair").max.y).abs() < 1e-6);
+}

@@ -101,7 +101,7 @@ pub(crate) fn verb(w: &str) -> Option<(Action, Option<(usize, f64)>)> {
         "raise" | "raised" | "lift" | "lifted" | "elevate" | "hoist" => (Move, Some((1, 1.0))),
         "lower" | "lowered" | "drop" | "sink" => (Move, Some((1, -1.0))),
         "rotate" | "rotated" | "turn" | "turned" | "spin" | "twist" | "revolve" | "flip"
-        | "swivel" | "pivot" | "angle" | "give" => (Rotate, None),
+        | "swivel" | "pivot" | "angle" | "give" | "swing" | "swung" | "spun" => (Rotate, None),
         "scale" | "scaled" | "resize" | "resized" | "enlarge" | "grow" | "shrink" | "double"
         | "halve" | "triple" | "magnify" | "reduce" | "make" | "shrunk" => (Scale, None),
         "center" | "centre" => (Centre, None),

@@ -486,11 +486,25 @@ fn from_its_ends(c: &mut Clause) {
 }
 
 /// Whether the words from `i` say where something is to be, as a move reads it: a
-/// relation ("on X2", "next to X2", "closer to X2"), or an amount and a direction ("1 m to
-/// the left", "20 cm further back"). Anything else ("1 m from the wall", "bigger") is not
+/// relation ("on X2", "next to X2", "closer to X2", "in front of X2", "in the corner",
+/// "to the left of X2"), or an amount and a direction ("1 m to the left", "20 cm further
+/// back"). Anything else ("1 m from the wall", "bigger") is not
 /// read as a move.
 fn where_to_be(c: &Clause, i: usize) -> bool {
-    const RELATIONS: [&str; 19] = [
+    const RELATIONS: [&str; 32] = [
+        "in",
+        "at",
+        "to",
+        "behind",
+        "along",
+        "alongside",
+        "opposite",
+        "across",
+        "up",
+        "flush",
+        "over",
+        "centred",
+        "centered",
         "on",
         "onto",
         "next",
@@ -590,6 +604,20 @@ fn needs_to_go(c: &mut Clause) {
         };
         if let Some(end) = to_move_at(c, k).or_else(to_be) {
             c.mark(i..end);
+            return;
+        }
+        // "X1 should be bigger", "X1 needs to be a bit smaller": made so.
+        let sized = c.words_at(k, &["be"]) && {
+            let after = k + 1 + vague_words_at(c, k + 1);
+            one_of(
+                c,
+                after,
+                &["bigger", "smaller", "larger", "taller", "tinier"],
+            )
+        };
+        if sized {
+            c.mark(i..k);
+            c.replace(k, "make");
             return;
         }
         // "X1 needs to face X2", "X1 should swap with X2", "X1 has to turn": the modal

@@ -589,6 +589,17 @@ impl<'a> Reader<'a> {
                 if matches!(action, Action::Take | Action::Align) && c.words_at(i + 1, &["up"]) {
                     c.mark(i + 1..i + 2);
                 }
+                // "pick X1 up and put it …": the particle after the objects. (Not "line
+                // X1 and X2 up with X3", which asks to align them with X3 where they
+                // stand: not read.)
+                if action == Action::Take {
+                    let after_objects = (i + 2..c.len()).find(|&k| {
+                        c.words_at(k, &["up"]) && matches!(c.token(k - 1), Some(Token::Variable(_)))
+                    });
+                    if let Some(k) = after_objects {
+                        c.mark(k..k + 1);
+                    }
+                }
                 return Some((action, implied, i));
             }
         }
