@@ -1468,3 +1468,20 @@ fn should_be_at_a_place_or_bigger_swing_round_and_pick_it_up() {
     let s = after(STUDY, "pick the cup up and put it on the chair").unwrap();
     assert!((aabb(&s, "Cup").min.y - aabb(&s, "Chair").max.y).abs() < 1e-6);
 }
+
+#[test]
+fn centred_on_a_wall_is_against_it_halfway_along() {
+    let s = after(STUDY, "centre the table on the right wall").unwrap();
+    let t = aabb(&s, "Table");
+    assert!(
+        (t.max.x - 5.0).abs() < 0.06,
+        "not against the right wall: {t:?}"
+    );
+    assert!(t.center().z.abs() < 1e-6, "not halfway along it: {t:?}");
+    let s = after(STUDY, "move the chair to the middle of the back wall").unwrap();
+    let c = aabb(&s, "Chair");
+    assert!(
+        (c.min.z + 4.0).abs() < 0.06 && c.center().x.abs() < 1e-6,
+        "{c:?}"
+    );
+}

@@ -18,6 +18,9 @@ pub(crate) enum Place {
     Corner(Option<f64>, Option<f64>),
     /// A wall: the one named (axis, sign), else the nearest.
     Wall(Option<(usize, f64)>),
+    /// Against the wall named (axis, sign), centred along it ("centre it on the left
+    /// wall", "the middle of the back wall").
+    WallCentre(usize, f64),
 }
 
 /// Flush against the min or max wall along an axis.
@@ -172,6 +175,7 @@ pub(crate) fn place(p: Place, s: usize) -> Expr {
             add(x, z)
         }
         Place::Wall(Some((e, sign))) => to_wall(s, e, sign),
+        Place::WallCentre(e, sign) => add(to_wall(s, e, sign), centre(2 - e)),
         Place::Wall(None) => at_nearest_wall(s, |e| nearer_wall(s, e)),
     }
 }

@@ -176,6 +176,46 @@ fn corner(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
     Ok(Some(RoomPlace::At(Place::Corner(x, z))))
 }
 
+/// "centre X1 on (against, along) the left wall", "to the middle of the back wall":
+/// against the wall named, centred along it. `None` where no side is named or nothing
+/// says centre.
+fn wall_centre(
+    c: &mut Clause,
+    action: Action,
+    has_room: bool,
+) -> Result<Option<RoomPlace>, String> {
+    let Some(i) = c.find(&["wall"]) else {
+        return Ok(None);
+    };
+    let Some((e, sign)) = i
+        .checked_sub(1)
+        .and_then(|k| c.word(k))
+        .and_then(super::words::direction)
+        .filter(|&(e, _)| e != 1)
+    else {
+        return Ok(None);
+    };
+    // "the middle of the left wall", "the centre of the back wall".
+    let of_the = i >= 4
+        && c.words_at(i - 3, &["of", "the"])
+        && matches!(c.word(i - 4), Some("middle" | "centre" | "center"));
+    if !(of_the || action == Action::Centre) {
+        return Ok(None);
+    }
+    need_room(c, has_room)?;
+    c.mark(i - 1..i + 1);
+    if of_the {
+        c.mark(i - 4..i - 1);
+    }
+    for k in 0..i {
+        if c.free(k) && matches!(c.word(k), Some("on" | "along" | "against")) {
+            c.mark(k..k + 1);
+        }
+    }
+    mark_room_words(c);
+    Ok(Some(RoomPlace::At(Place::WallCentre(e, sign))))
+}
+
 /// "against the left wall", "to the wall" (the nearest).
 fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
     let Some(i) = c.find(&["wall"]).or_else(|| c.find(&["walls"])) else {
@@ -348,6 +388,9 @@ pub(super) fn room_place(
         return Ok(Some(place));
     }
     if let Some(place) = corner(c, has_room)? {
+        return Ok(Some(place));
+    }
+    if let Some(place) = wall_centre(c, action, has_room)? {
         return Ok(Some(place));
     }
     if let Some(place) = wall(c, has_room)? {
