@@ -1485,3 +1485,26 @@ fn centred_on_a_wall_is_against_it_halfway_along() {
         "{c:?}"
     );
 }
+
+#[test]
+fn off_one_thing_onto_another_together_by_an_amount_and_a_missing_window() {
+    // Off the table onto the chair: where it goes is the chair.
+    let s = after(STUDY, "move the cup off the table onto the chair").unwrap();
+    assert!((aabb(&s, "Cup").min.y - aabb(&s, "Chair").max.y).abs() < 1e-6);
+    // "so it's centred on the table": on it, centred.
+    let s = after(STUDY, "nudge the book so it's centred on the table").unwrap();
+    let (b, t) = (aabb(&s, "Book"), aabb(&s, "Table"));
+    assert!((b.center().x - t.center().x).abs() < 0.06, "{b:?}");
+    // "together" before an amount: as one.
+    let s = after(BAR, "move stool 1 and stool 2 together 50cm left").unwrap();
+    for name in ["Stool 1", "Stool 2"] {
+        assert!(close(moved(BAR, &s, name), [-0.5, 0.0, 0.0]), "{name}");
+    }
+    // A comma before the amount, after an exception.
+    let s = after(BAR, "move stools 1 and 4, not stool 2, 30 cm forward").unwrap();
+    assert!(close(moved(BAR, &s, "Stool 4"), [0.0, 0.0, 0.3]));
+    assert!(close(moved(BAR, &s, "Stool 2"), [0.0, 0.0, 0.0]));
+    // A window that is not there is said to be missing.
+    let e = after(BAR, "move the counter 1 ft towards the window").unwrap_err();
+    assert!(e.contains("window") && e.contains("no object"), "{e}");
+}

@@ -75,6 +75,15 @@ impl Reader<'_> {
         if at_a_seat {
             return Ok(None);
         }
+        // "move the mug off the table onto the counter": after where it is taken from,
+        // "onto" (into, to) says where it goes, never which table.
+        let after_source = start > 0
+            && self.is_word(start - 1, &["off", "from"])
+            && self.is_word(head.range.end, &["onto", "into", "to"])
+            && matches!(post, Some((Post::Relation(..), _)));
+        if after_source {
+            return Ok(None);
+        }
         // Where it is taken from ("the cups off the table") is never where it goes.
         let source = matches!(
             post,

@@ -972,7 +972,9 @@ impl<'a> Reader<'a> {
     /// `move the piano` in a room with no piano.
     fn check_unknown(&self, k: usize) -> Result<(), GroundError> {
         let Some(w) = self.word(k) else { return Ok(()) };
-        if grammar_word(w) || self.consumed[k] {
+        // (A window or a door is an object a scene may lack, though a place word.)
+        let object_place = words::is_place_noun(w) && !words::is_room_part(w);
+        if (grammar_word(w) && !object_place) || self.consumed[k] {
             return Ok(());
         }
         let det =
@@ -1006,7 +1008,7 @@ impl<'a> Reader<'a> {
                     .any(|&h| self.g.lexicon.concept(h).term == "room")
                     || self.g.lexicon.concept(c).term == "room"
             });
-            if known && !is_room && !words::is_place_noun(&phrase) {
+            if known && !is_room && !words::is_room_part(&phrase) {
                 return Err(GroundError::Unknown {
                     phrase: self.span_text(&(k - 1..k + len)),
                     suggestions: suggest(self.scene, &phrase),

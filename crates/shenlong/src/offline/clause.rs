@@ -491,7 +491,12 @@ fn dropped_comma(tokens: &[Token], i: usize, current: &[Token]) -> bool {
         !so_far.is_empty()
             && super::view::view_at(&so_far, 0).is_some_and(|(n, _)| n == so_far.len())
     };
-    qualifier || view_after || view_before
+    // "move X1 and X2, 30 cm forward": the verb and its objects, then how far.
+    let amount_after = only_subjects(current)
+        && current.iter().any(|t| matches!(t, Token::Variable(_)))
+        && (matches!(tokens.get(i + 1), Some(Token::Number(_)))
+            || word(tokens, i + 1).is_some_and(|w| words::direction(w).is_some()));
+    qualifier || view_after || view_before || amount_after
 }
 
 /// How many tokens the clause break at `i` takes (a comma, `and`, `then`, `afterwards`,

@@ -256,6 +256,15 @@ fn middle_of_an_object(c: &mut Clause) {
         c.replace(i + 3, if two { "between" } else { "on" });
         return;
     }
+    // "so it's centred on X2": on X2 is centred on it.
+    for i in 0..c.len() {
+        if one_of(c, i, &["centred", "centered", "centre", "center"])
+            && one_of(c, i + 1, &["on", "over"])
+            && is_var(c, i + 2)
+        {
+            c.mark(i..i + 1);
+        }
+    }
     // "towards the middle of X2" (of one object) is towards X2: its centre is what
     // "towards" aims at anyway.
     for i in 0..c.len() {
@@ -318,6 +327,15 @@ fn each_other(c: &mut Clause) {
         // Only the two: not a list of three, nor two after another object.
         if a > 0 && matches!(c.token(a - 1), Some(Token::Variable(_))) {
             continue;
+        }
+        // "move X1 and X2 together 50 cm left": as one, by the amount that follows.
+        let moved_as_one = words.len() == 1
+            && (matches!(c.token(end), Some(Token::Number(_)))
+                || c.word(end)
+                    .is_some_and(|w| super::words::direction(w).is_some() || w == "by"));
+        if moved_as_one {
+            c.mark(a + 3..end);
+            return;
         }
         c.set(a, Token::Variable(second));
         c.set(a + 1, Token::Word("next".into()));
@@ -490,7 +508,11 @@ fn from_its_ends(c: &mut Clause) {
 /// "to the left of X2"), or an amount and a direction ("1 m to the left", "20 cm further
 /// back"). Anything else ("1 m from the wall", "bigger") is not
 /// read as a move.
-fn where_to_be(c: &Clause, i: usize) -> bool {
+fn where_to_be(c: &Clause, mut i: usize) -> bool {
+    // (Words read already — "centred" in "centred on X2" — are passed over.)
+    while i < c.len() && !c.free(i) {
+        i += 1;
+    }
     const RELATIONS: [&str; 32] = [
         "in",
         "at",
@@ -503,8 +525,9 @@ fn where_to_be(c: &Clause, i: usize) -> bool {
         "up",
         "flush",
         "over",
-        "centred",
-        "centered",
+        // ("centred" and "centered" are read as "centre".)
+        "centre",
+        "center",
         "on",
         "onto",
         "next",

@@ -436,6 +436,16 @@ impl Reader<'_> {
         r: Found,
         text: &str,
     ) -> Result<Produced, String> {
+        // "move X1 off X2 onto X3": where it is taken from, then where it goes.
+        if r.kind == RelKind::Fixed(Relation::Off) {
+            let end = r.targets.last().map_or(r.range.end, |&(t, _)| t + 1);
+            let mut probe = c.clone();
+            probe.mark(r.range.start..end);
+            if let Some(next) = find_relation(&probe).filter(|n| n.range.start >= end) {
+                *c = probe;
+                return self.relate(c, next, text);
+            }
+        }
         let subjects = self.subjects(c, Some(r.range.start));
         if subjects.is_empty() {
             return Err(not_read(text, text));
