@@ -1508,3 +1508,38 @@ fn off_one_thing_onto_another_together_by_an_amount_and_a_missing_window() {
     let e = after(BAR, "move the counter 1 ft towards the window").unwrap_err();
     assert!(e.contains("window") && e.contains("no object"), "{e}");
 }
+
+/// A bedroom: a bed (its foot towards +z), a rug in front of it, a basket, a lamp.
+const BEDSIT: &str = r#"{
+  "name": "bedsit",
+  "bounds": {"min": [-3, 0, -3], "max": [3, 3, 3]},
+  "objects": [
+    {"name": "Bed", "position": [0, 0, -1.8], "size": [1.6, 0.55, 2.1]},
+    {"name": "Rug", "position": [0, 0, 0.2], "size": [1.6, 0.01, 1.0]},
+    {"name": "Basket", "position": [2.2, 0, 2.2], "size": [0.45, 0.55, 0.35]},
+    {"name": "Pillow", "position": [0, 0.55, -2.6], "size": [0.6, 0.15, 0.4]},
+    {"name": "Lamp", "position": [-2.5, 0, 2.5], "size": [0.3, 1.5, 0.3]}
+  ]
+}"#;
+
+#[test]
+fn the_foot_of_a_bed_is_the_side_its_front_faces_and_a_rug_is_stood_on() {
+    // At the foot: in front of the unturned bed, standing on the rug.
+    let s = after(BEDSIT, "put the basket at the foot of the bed").unwrap();
+    let (b, bed) = (aabb(&s, "Basket"), aabb(&s, "Bed"));
+    assert!(
+        b.min.z >= bed.max.z - 1e-6 && b.min.z - bed.max.z < 0.2,
+        "{b:?}"
+    );
+    assert!(b.min.y.abs() < 1e-6);
+    // Towards the foot: forward.
+    let s = after(BEDSIT, "move the pillow 10cm towards the foot of the bed").unwrap();
+    assert!(close(moved(BEDSIT, &s, "Pillow"), [0.0, 0.0, 0.1]));
+    // "… to the left of where it is now": the shift alone.
+    let s = after(
+        BEDSIT,
+        "move the lamp 10 cm to the right of where it is now",
+    )
+    .unwrap();
+    assert!(close(moved(BEDSIT, &s, "Lamp"), [0.1, 0.0, 0.0]));
+}

@@ -66,6 +66,24 @@ pub(crate) fn overlap_volume(a: &Aabb, b: &Aabb) -> f64 {
     }
 }
 
+/// The thickest slab lying on the floor that furniture stands on rather than collides
+/// with (a rug, a mat), in metres.
+pub const FLOOR_COVERING: f64 = 0.03;
+
+/// Whether `b` is a floor covering ([`FLOOR_COVERING`]) lying on the floor at `floor`.
+fn covers_floor(b: &Aabb, floor: f64) -> bool {
+    b.max.y - b.min.y <= FLOOR_COVERING && (b.min.y - floor).abs() <= FLOOR_COVERING
+}
+
+/// Whether `a` and `b` meet only as something standing on a rug does: one of them a
+/// floor covering, the other standing on the floor over it (its bottom no higher than
+/// the covering's top) — or both coverings.
+pub(crate) fn stands_on_covering(a: &Aabb, b: &Aabb, floor: f64) -> bool {
+    let over =
+        |x: &Aabb, cover: &Aabb| covers_floor(cover, floor) && x.min.y <= cover.max.y + EPSILON;
+    over(a, b) || over(b, a)
+}
+
 /// Whether the overlap of `a` and `b` is a collision given how much they overlapped before
 /// the edit: a new overlap, or a pre-existing one made larger.
 pub(crate) fn collides(a: &Aabb, b: &Aabb, volume_before: f64) -> bool {
@@ -149,7 +167,9 @@ pub fn find_collisions_in(
                 if group_of[j] == group_of[i] || (group_of[j] != usize::MAX && j < i) {
                     continue;
                 }
-                if collides(a, &after[j], overlap_volume(&before[i], &before[j])) {
+                if collides(a, &after[j], overlap_volume(&before[i], &before[j]))
+                    && !stands_on_covering(a, &after[j], floor)
+                {
                     out.push(Overlap {
                         object: i,
                         with: Obstacle::Object(j),

@@ -1,7 +1,8 @@
 //! Resolution: the nearest collision-free placement for the moved groups.
 
 use super::detect::{
-    collides, find_collisions_in, overlap_volume, room_violations, Obstacle, Overlap,
+    collides, find_collisions_in, overlap_volume, room_violations, stands_on_covering, Obstacle,
+    Overlap,
 };
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
@@ -545,7 +546,9 @@ impl Placement<'_> {
             let padded = Aabb::new(moved.min - pad, moved.max + pad);
             for &j in self.obstacles {
                 let volume_before = overlap_volume(&self.before[i], &self.before[j]);
-                let blocked = if volume_before > 0.0 {
+                let blocked = if stands_on_covering(&moved, &self.after[j], self.floor) {
+                    false
+                } else if volume_before > 0.0 {
                     collides(&moved, &self.after[j], volume_before)
                 } else {
                     padded.intersects(&self.after[j], EPSILON)

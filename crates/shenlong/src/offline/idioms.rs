@@ -55,6 +55,34 @@ pub(crate) fn rewrite(c: &mut Clause) {
     all_the_way_to(c);
     flush(c);
     out_from(c);
+    from_where_it_is(c);
+}
+
+/// "10 cm to the left of where it is (now)", "… from where it is", "… from its current
+/// position": where a shift starts from is where the object is; the words are read.
+fn from_where_it_is(c: &mut Clause) {
+    const TAILS: [&[&str]; 8] = [
+        &["of", "where", "it", "is", "now"],
+        &["of", "where", "it", "is"],
+        &["from", "where", "it", "is", "now"],
+        &["from", "where", "it", "is"],
+        &["of", "where", "they", "are"],
+        &["from", "where", "they", "are"],
+        &["from", "its", "current", "position"],
+        &["from", "their", "current", "positions"],
+    ];
+    for i in 1..c.len() {
+        let after_direction = c
+            .word(i - 1)
+            .is_some_and(|w| super::words::direction(w).is_some());
+        if !after_direction {
+            continue;
+        }
+        if let Some(words) = TAILS.iter().find(|w| c.words_at(i, w)) {
+            c.mark(i..i + words.len());
+            return;
+        }
+    }
 }
 
 /// `AMOUNT towards the SIDE wall` / `… of the room` → `AMOUNT SIDE`.

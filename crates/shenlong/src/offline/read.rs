@@ -259,6 +259,7 @@ impl<'a> Reader<'a> {
     /// A word of the clause not read (quoted), or a variable beyond those bound.
     pub fn clause(&mut self, c: &mut Clause) -> Result<(), String> {
         self.wall_of_objects(c);
+        self.foot_of_object(c);
         prepare(c);
         let shifted = self.last_shift.take();
         // A clause of fillers only ("…, thanks"): nothing to do.
@@ -723,6 +724,63 @@ impl<'a> Reader<'a> {
             Action::Scale => self.scale(c, &text),
             Action::Straighten => self.straighten(c, &text),
             Action::Centre | Action::Move => self.move_(c, action, implied, &text),
+        }
+    }
+
+    /// "at the foot of X2" (of a bed), "at the head of X2", "towards the foot of X2": the
+    /// side X2's front (its back) faces, said as a side the readers know — "in front of
+    /// X2" for an unturned bed, "to the right of X2" for one turned a quarter turn, and
+    /// "forward" for "towards the foot". Left as it is where X2 is turned other than by
+    /// quarter turns (which side is not clear).
+    fn foot_of_object(&self, c: &mut Clause) {
+        for i in 1..c.len().saturating_sub(3) {
+            let Some(Token::Variable(t)) = c.token(i + 3).cloned() else {
+                continue;
+            };
+            let end = match c.word(i + 1) {
+                Some("foot" | "end") => false,
+                Some("head") => true,
+                _ => continue,
+            };
+            let lead = c.word(i - 1).unwrap_or("");
+            let towards = matches!(lead, "towards" | "toward");
+            if !(c.words_at(i, &["the"]) && c.words_at(i + 2, &["of"]))
+                || !(towards || matches!(lead, "at" | "to" | "by"))
+                || (c.word(i + 1) == Some("end") && !towards)
+                || !(i - 1..i + 4).all(|k| c.free(k))
+            {
+                continue;
+            }
+            let Some(&yaw) = self.facts.known.yaw.get(t) else {
+                continue;
+            };
+            let quarter = (yaw / 90.0).round();
+            if (yaw - quarter * 90.0).abs() > 10.0 {
+                continue;
+            }
+            // The front of an unturned object is +z; each quarter turn takes +z to +x.
+            let turns = (quarter as i64 + i64::from(end) * 2).rem_euclid(4);
+            let (side, relation): (&str, [&str; 4]) = match turns {
+                0 => ("forward", ["", "in", "front", "of"]),
+                1 => ("right", ["to", "the", "right", "of"]),
+                2 => ("back", ["", "", "", "behind"]),
+                _ => ("left", ["to", "the", "left", "of"]),
+            };
+            if towards {
+                // "10 cm towards the foot of X2": that way.
+                c.mark(i - 1..i + 1);
+                c.set(i + 1, Token::Word(side.to_string()));
+                c.mark(i + 2..i + 4);
+            } else {
+                for (k, w) in relation.iter().enumerate() {
+                    if w.is_empty() {
+                        c.mark(i - 1 + k..i + k);
+                    } else {
+                        c.set(i - 1 + k, Token::Word((*w).to_string()));
+                    }
+                }
+            }
+            return;
         }
     }
 

@@ -410,6 +410,42 @@ fn a_gap_on_a_top_face_narrower_than_the_grid_is_found() {
 }
 
 #[test]
+fn furniture_stands_on_a_rug_and_a_rug_slides_under_furniture() {
+    let mut s = room();
+    let rug = s.push_box("rug", [1.6, 0.01, 1.0], [0.0, 0.0, 0.0]);
+    let basket = s.push_box("basket", [0.45, 0.55, 0.35], [2.0, 0.0, 2.0]);
+    s.push_box("bed", [1.6, 0.55, 2.1], [0.0, 0.0, -1.9]);
+    s.detect_supports();
+    // Onto the rug's footprint, standing on the floor: no collision, nothing moved.
+    let r = edit(
+        &mut s,
+        basket,
+        DVec3::new(-2.0, 0.0, -2.0),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert!(r.adjustments.is_empty(), "{:?}", r.adjustments);
+    // The rug under the bed.
+    let r = edit(
+        &mut s,
+        rug,
+        DVec3::new(0.0, 0.0, -1.5),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert!(r.adjustments.is_empty(), "{:?}", r.adjustments);
+    // A box dropped into the bed still collides.
+    let r = edit(
+        &mut s,
+        basket,
+        DVec3::new(0.0, 0.0, -1.9),
+        &ResolveOptions::default(),
+    )
+    .unwrap();
+    assert_eq!(r.adjustments.len(), 1);
+}
+
+#[test]
 fn a_full_surface_is_refused_saying_so() {
     let mut s = room();
     let _stool = s.push_box("stool", [0.4, 0.5, 0.4], [0.0, 0.0, 0.0]);
