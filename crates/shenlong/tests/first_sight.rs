@@ -1543,3 +1543,19 @@ fn the_foot_of_a_bed_is_the_side_its_front_faces_and_a_rug_is_stood_on() {
     .unwrap();
     assert!(close(moved(BEDSIT, &s, "Lamp"), [0.1, 0.0, 0.0]));
 }
+
+#[test]
+fn the_edge_of_a_surface_is_its_end() {
+    // At the left edge of the table: on it, 5 cm in from that edge.
+    let s = after(STUDY, "move the cup to the left edge of the table").unwrap();
+    let (m, t) = (aabb(&s, "Cup"), aabb(&s, "Table"));
+    assert!((m.min.x - (t.min.x + 0.05)).abs() < 1e-6, "{m:?}");
+    assert!((m.min.y - t.max.y).abs() < 1e-6);
+    // "towards the front edge of it": that way.
+    let s = after(
+        GALLEY,
+        "the plate stack needs to come a bit towards the front edge of the prep table",
+    )
+    .unwrap();
+    assert!(close(moved(GALLEY, &s, "SM_Plate_Stack"), [0.0, 0.0, 0.1]));
+}

@@ -56,6 +56,40 @@ pub(crate) fn rewrite(c: &mut Clause) {
     flush(c);
     out_from(c);
     from_where_it_is(c);
+    edge_of(c);
+}
+
+/// The edge of an object is its end: `to the left edge of X2` → `to the left end of X2`;
+/// `a bit towards the front edge (end) of X2` is that way: `a bit forward` (X2 read).
+fn edge_of(c: &mut Clause) {
+    let is_var =
+        |c: &Clause, k: usize| matches!(c.token(k), Some(super::words::Token::Variable(_)));
+    for i in 0..c.len() {
+        let side = c.word(i + 2).and_then(|w| {
+            super::words::direction(w)
+                .filter(|&(e, _)| e != 1)
+                .map(|_| w.to_string())
+                .or_else(|| (w == "far").then(|| "back".to_string()))
+        });
+        let Some(side) = side else { continue };
+        if !(c.words_at(i + 1, &["the"])
+            && one_of(c, i + 3, &["edge", "end"])
+            && c.words_at(i + 4, &["of"])
+            && is_var(c, i + 5))
+        {
+            continue;
+        }
+        if one_of(c, i, &["towards", "toward"]) {
+            c.mark(i..i + 2);
+            c.set(i + 2, super::words::Token::Word(side));
+            c.mark(i + 3..i + 6);
+            return;
+        }
+        if one_of(c, i, &["to", "at", "on", "by"]) && c.words_at(i + 3, &["edge"]) {
+            c.replace(i + 3, "end");
+            return;
+        }
+    }
 }
 
 /// "10 cm to the left of where it is (now)", "… from where it is", "… from its current

@@ -774,6 +774,16 @@ mod tests {
     }
 
     #[test]
+    fn at_an_end_never_goes_the_other_way() {
+        // A tray nearly as long as the table, on it: "at the left end" moves it left (by
+        // the little slack there is), never right to keep a 5 cm inset.
+        let mut boxes = table();
+        boxes.push(on([0.98, 0.05, 0.3], 0.0, 0.75, 0.0));
+        let m = moves("move X5 to the left end of X2", &boxes)[4];
+        assert!(m.x <= 0.0 && m.x >= -0.011, "{m}");
+    }
+
+    #[test]
     fn a_placement_replaces_the_moves_before_it() {
         // Off the table, then beside the chair on the floor: where it is put is all that
         // counts, and the answer stays short enough to be read back by the language.

@@ -185,17 +185,17 @@ pub(crate) fn vector(
         ]),
         Relation::Side(e, sign) => side(s, t, steps, e, sign, level, GAP),
         Relation::OnEnd(e, sign) => {
-            // On the top, centred across, its face GAP inside the target's face at that end.
+            // On the top, centred across, its face GAP inside the target's face at that end
+            // — less where the two are nearly as long, so it never goes the other way.
+            let slack = div(
+                sub(dot(b("size"), axis(e)), dot(a("size"), axis(e))),
+                num(2.0),
+            );
+            let inset = call("min", vec![num(GAP), call("max", vec![num(0.0), slack])]);
             let end = if sign > 0.0 {
-                sub(
-                    sub(dot(b("max"), axis(e)), num(GAP)),
-                    dot(a("max"), axis(e)),
-                )
+                sub(sub(dot(b("max"), axis(e)), inset), dot(a("max"), axis(e)))
             } else {
-                sub(
-                    add(dot(b("min"), axis(e)), num(GAP)),
-                    dot(a("min"), axis(e)),
-                )
+                sub(add(dot(b("min"), axis(e)), inset), dot(a("min"), axis(e)))
             };
             sum([
                 scaled_axis(sub(dot(b("max"), axis(1)), dot(a("min"), axis(1))), 1),
