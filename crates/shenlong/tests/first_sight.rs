@@ -1559,3 +1559,24 @@ fn the_edge_of_a_surface_is_its_end() {
     .unwrap();
     assert!(close(moved(GALLEY, &s, "SM_Plate_Stack"), [0.0, 0.0, 0.1]));
 }
+
+#[test]
+fn a_number_word_after_a_noun_is_the_instance_it_names() {
+    let s = after(CLASS, "desk five, 10 cm to the left").unwrap();
+    assert!(close(moved(CLASS, &s, "Desk 5"), [-0.1, 0.0, 0.0]));
+    let s = after(CLASS, "move desk two 5 cm left").unwrap();
+    assert!(close(moved(CLASS, &s, "Desk 2"), [-0.05, 0.0, 0.0]));
+    // "desk two five cm": which is the amount is not clear; refused.
+    assert!(after(CLASS, "move desk two five cm left").is_err());
+}
+
+#[test]
+fn a_number_word_that_starts_an_amount_is_no_instance_number() {
+    // Desk 2 exists, but "two and a half feet" is how far.
+    let s = after(
+        CLASS,
+        "move the left desk in the front row two and a half feet to the right",
+    )
+    .unwrap();
+    assert!(close(moved(CLASS, &s, "Desk 4"), [0.762, 0.0, 0.0]));
+}

@@ -576,7 +576,7 @@ impl Reader<'_> {
     }
 
     /// Whether a unit of length, angle or proportion stands at token `k`.
-    fn unit_follows(&self, k: usize) -> bool {
+    pub(super) fn unit_follows(&self, k: usize) -> bool {
         let w = |k: usize| self.word(k).unwrap_or("");
         match w(k) {
             "m" | "cm" | "mm" | "km" | "ft" | "foot" | "feet" | "inch" | "inches" | "metre"

@@ -712,6 +712,7 @@ impl<'a> Reader<'a> {
             group: Vec::new(),
         };
         reader.correct_typos();
+        reader.number_words();
         reader
     }
 
@@ -966,6 +967,35 @@ impl<'a> Reader<'a> {
             hints.push(format!("the {head} nearest the {}", self.name(o)));
         }
         hints
+    }
+
+    /// "desk five", "chair twelve": a number word right after a noun is an instance
+    /// number when an object is named so (`Desk 5`), and no amount goes on after it
+    /// ("move the stool two and a half feet", "… two five cm" keep their amounts).
+    fn number_words(&mut self) {
+        for k in 1..self.tokens.len() {
+            let Some(n) = self.word(k).and_then(crate::lex::number_word) else {
+                continue;
+            };
+            let Some(base) = self.words[k - 1].as_deref().filter(|w| !w.is_empty()) else {
+                continue;
+            };
+            let number = n as u32;
+            // ("two and a half feet", "three point five metres", "five or six cm": an
+            // amount goes on.)
+            let amount_goes_on = self.unit_follows(k + 1)
+                || self.word(k + 1).is_some_and(|w| {
+                    crate::lex::number_word(w).is_some()
+                        || matches!(
+                            w,
+                            "and" | "point" | "dot" | "half" | "quarter" | "or" | "plus" | "times"
+                        )
+                });
+            if amount_goes_on || self.g.index.numbered(base, number).is_none() {
+                continue;
+            }
+            self.words[k] = Some(number.to_string());
+        }
     }
 
     /// Refuses a noun the lexicon knows, after a determiner, that no object answers to:

@@ -175,34 +175,9 @@ fn split_number_unit(w: &str) -> Option<(f64, String)> {
     (n.is_finite() && unit.chars().all(char::is_alphabetic)).then(|| (n, unit.to_string()))
 }
 
-/// Number words: `two` → 2, `twenty` → 20.
+/// Number words: `two` → 2, `twenty` → 20 ([`crate::lex::number_word`]).
 pub(crate) fn number_word(w: &str) -> Option<f64> {
-    Some(match w {
-        "zero" => 0.0,
-        "one" => 1.0,
-        "two" => 2.0,
-        "three" => 3.0,
-        "four" => 4.0,
-        "five" => 5.0,
-        "six" => 6.0,
-        "seven" => 7.0,
-        "eight" => 8.0,
-        "nine" => 9.0,
-        "ten" => 10.0,
-        "eleven" => 11.0,
-        "twelve" => 12.0,
-        "fifteen" => 15.0,
-        "twenty" => 20.0,
-        "thirty" => 30.0,
-        "forty" | "fourty" => 40.0,
-        "fifty" => 50.0,
-        "sixty" => 60.0,
-        "seventy" => 70.0,
-        "eighty" => 80.0,
-        "ninety" => 90.0,
-        "hundred" => 100.0,
-        _ => return None,
-    })
+    crate::lex::number_word(w)
 }
 
 /// Length units to metres.
