@@ -70,9 +70,17 @@ pub(crate) fn overlap_volume(a: &Aabb, b: &Aabb) -> f64 {
 /// with (a rug, a mat), in metres.
 pub const FLOOR_COVERING: f64 = 0.03;
 
-/// Whether `b` is a floor covering ([`FLOOR_COVERING`]) lying on the floor at `floor`.
+/// The narrowest a floor covering is across, in metres: a magazine or a laptop put on the
+/// floor is no rug to stand things on.
+pub const FLOOR_COVERING_WIDTH: f64 = 0.4;
+
+/// Whether `b` is a floor covering ([`FLOOR_COVERING`], [`FLOOR_COVERING_WIDTH`]) lying
+/// on the floor at `floor`.
 fn covers_floor(b: &Aabb, floor: f64) -> bool {
-    b.max.y - b.min.y <= FLOOR_COVERING && (b.min.y - floor).abs() <= FLOOR_COVERING
+    let size = b.size();
+    size.y <= FLOOR_COVERING
+        && size.x.min(size.z) >= FLOOR_COVERING_WIDTH
+        && (b.min.y - floor).abs() <= FLOOR_COVERING
 }
 
 /// Whether `a` and `b` meet only as something standing on a rug does: one of them a

@@ -1002,7 +1002,8 @@ impl<'a> Reader<'a> {
     /// `move the piano` in a room with no piano.
     fn check_unknown(&self, k: usize) -> Result<(), GroundError> {
         let Some(w) = self.word(k) else { return Ok(()) };
-        // (A window or a door is an object a scene may lack, though a place word.)
+        // (A window or a door is an object a scene may lack, though a place word: "there
+        // is no window".)
         let object_place = words::is_place_noun(w) && !words::is_room_part(w);
         if (grammar_word(w) && !object_place) || self.consumed[k] {
             return Ok(());
@@ -1011,6 +1012,19 @@ impl<'a> Reader<'a> {
             k > 0 && self.word(k - 1).is_some_and(words::is_determiner) && !self.consumed[k - 1];
         if !det {
             return Ok(());
+        }
+        if object_place {
+            return Err(GroundError::Absent {
+                word: self.span_text(&(k..k + 1)),
+                names: self
+                    .scene
+                    .objects
+                    .iter()
+                    .take(6)
+                    .map(|o| o.name.clone())
+                    .collect(),
+                total: self.scene.objects.len(),
+            });
         }
         // Up to three words: "coffee machine".
         for len in (1..=3).rev() {
