@@ -1272,6 +1272,12 @@ fn against_a_wall_is_the_one_standing_on_that_wall_or_refused() {
     )
     .unwrap_err();
     assert!(e.contains("front wall"), "{e}");
+    // A scene without walls: the one furthest that way.
+    let no_room = r#"{"name": "n", "objects": [
+      {"name": "Painting 1", "position": [-2, 1, 0], "size": [0.05, 0.6, 0.8]},
+      {"name": "Painting 2", "position": [2, 1, 0], "size": [0.05, 0.6, 0.8]}]}"#;
+    let s = after(no_room, "move the painting on the left wall 10 cm up").unwrap();
+    assert!(close(moved(no_room, &s, "Painting 1"), [0.0, 0.1, 0.0]));
 }
 
 /// A study: two windows in the left wall, a chair off to one side, a round table with a
@@ -1532,6 +1538,8 @@ fn the_foot_of_a_bed_is_the_side_its_front_faces_and_a_rug_is_stood_on() {
         "{b:?}"
     );
     assert!(b.min.y.abs() < 1e-6);
+    // A long table's head is a short end, not its back: not read.
+    assert!(after(BOARDROOM, "put chair 1 at the head of the conference table").is_err());
     // Towards the foot: forward.
     let s = after(BEDSIT, "move the pillow 10cm towards the foot of the bed").unwrap();
     assert!(close(moved(BEDSIT, &s, "Pillow"), [0.0, 0.0, 0.1]));

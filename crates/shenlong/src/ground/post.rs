@@ -279,7 +279,7 @@ impl Reader<'_> {
                 if w(end) == "wall" && axis != words::Axis::Y && self.scene.bounds.is_some() {
                     return Some((Post::Room(select::RoomPlace::OnWall(axis, sign)), end + 1));
                 }
-                if matches!(w(end), "side" | "end") {
+                if matches!(w(end), "side" | "end" | "wall") {
                     end += 1;
                 } else if w(end) == "hand" && w(end + 1) == "side" {
                     end += 2;

@@ -731,14 +731,15 @@ impl<'a> Reader<'a> {
     /// side X2's front (its back) faces, said as a side the readers know — "in front of
     /// X2" for an unturned bed, "to the right of X2" for one turned a quarter turn, and
     /// "forward" for "towards the foot". Left as it is where X2 is turned other than by
-    /// quarter turns (which side is not clear).
+    /// quarter turns, or is wider across its front than it is long (a table's head is a
+    /// short end).
     fn foot_of_object(&self, c: &mut Clause) {
         for i in 1..c.len().saturating_sub(3) {
             let Some(Token::Variable(t)) = c.token(i + 3).cloned() else {
                 continue;
             };
             let end = match c.word(i + 1) {
-                Some("foot" | "end") => false,
+                Some("foot") => false,
                 Some("head") => true,
                 _ => continue,
             };
@@ -746,16 +747,28 @@ impl<'a> Reader<'a> {
             let towards = matches!(lead, "towards" | "toward");
             if !(c.words_at(i, &["the"]) && c.words_at(i + 2, &["of"]))
                 || !(towards || matches!(lead, "at" | "to" | "by"))
-                || (c.word(i + 1) == Some("end") && !towards)
                 || !(i - 1..i + 4).all(|k| c.free(k))
             {
                 continue;
             }
-            let Some(&yaw) = self.facts.known.yaw.get(t) else {
+            let (Some(&yaw), Some(size)) =
+                (self.facts.known.yaw.get(t), self.facts.known.sizes.get(t))
+            else {
                 continue;
             };
             let quarter = (yaw / 90.0).round();
             if (yaw - quarter * 90.0).abs() > 10.0 {
+                continue;
+            }
+            // A bed's foot and head are the ends of its length, which runs along its front;
+            // a table's head is a short end, not its back: not read where the front runs
+            // across the object's shorter side.
+            let along_front = if (quarter as i64).rem_euclid(2) == 0 {
+                2
+            } else {
+                0
+            };
+            if size[along_front] < size[2 - along_front] {
                 continue;
             }
             // The front of an unturned object is +z; each quarter turn takes +z to +x.
