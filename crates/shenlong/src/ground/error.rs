@@ -161,6 +161,17 @@ pub struct Ambiguity {
 }
 
 impl GroundError {
+    /// "There is no window in the scene": no object of the kind `word` names, with the
+    /// first of `scene`'s names.
+    #[must_use]
+    pub(crate) fn absent(word: String, scene: &crate::scene::Scene) -> Self {
+        GroundError::Absent {
+            word,
+            names: first_names(scene),
+            total: scene.objects.len(),
+        }
+    }
+
     /// The choice a refusal leaves between objects: the candidates of an ambiguous
     /// phrase, or the objects that fit a phrase that asks for another number of them.
     #[must_use]
@@ -202,6 +213,16 @@ impl GroundError {
             _ => &[],
         }
     }
+}
+
+/// The first six of a scene's names, for a refusal that lists what the scene has.
+pub(crate) fn first_names(scene: &crate::scene::Scene) -> Vec<String> {
+    scene
+        .objects
+        .iter()
+        .take(6)
+        .map(|o| o.name.clone())
+        .collect()
 }
 
 #[cfg(test)]

@@ -405,26 +405,11 @@ impl Grounder {
             phrases.insert(0, phrase);
         }
         if phrases.is_empty() {
-            let names = scene
-                .objects
-                .iter()
-                .take(6)
-                .map(|o| o.name.clone())
-                .collect();
             if let Some(word) = self.absent_kind(text) {
-                return Err(GroundError::Absent {
-                    word,
-                    names,
-                    total: scene.objects.len(),
-                });
+                return Err(GroundError::absent(word, scene));
             }
             return Err(GroundError::NoObject {
-                names: scene
-                    .objects
-                    .iter()
-                    .take(6)
-                    .map(|o| o.name.clone())
-                    .collect(),
+                names: error::first_names(scene),
                 total: scene.objects.len(),
             });
         }
@@ -1014,17 +999,7 @@ impl<'a> Reader<'a> {
             return Ok(());
         }
         if object_place {
-            return Err(GroundError::Absent {
-                word: self.span_text(&(k..k + 1)),
-                names: self
-                    .scene
-                    .objects
-                    .iter()
-                    .take(6)
-                    .map(|o| o.name.clone())
-                    .collect(),
-                total: self.scene.objects.len(),
-            });
+            return Err(GroundError::absent(self.span_text(&(k..k + 1)), self.scene));
         }
         // Up to three words: "coffee machine".
         for len in (1..=3).rev() {

@@ -151,6 +151,16 @@ pub(crate) fn middle(scene: &Scene, candidates: &[usize]) -> Option<usize> {
     if candidates.len() < 3 || candidates.len() % 2 == 0 {
         return None;
     }
+    let order = along_spread(scene, candidates);
+    let m = order.len() / 2;
+    (order[m].0 - order[m - 1].0 > POSITION_MARGIN && order[m + 1].0 - order[m].0 > POSITION_MARGIN)
+        .then_some(order[m].1)
+}
+
+/// `candidates` in order along the horizontal axis their centres spread most on (x on a
+/// tie), each with its centre's coordinate on it: the line "the middle one" and "the end
+/// ones" are read along.
+fn along_spread(scene: &Scene, candidates: &[usize]) -> Vec<(f64, usize)> {
     let b = boxes(scene, candidates);
     let spread = |axis: Axis| {
         let v: Vec<f64> = b.iter().map(|b| axis.of(b.center())).collect();
@@ -167,9 +177,7 @@ pub(crate) fn middle(scene: &Scene, candidates: &[usize]) -> Option<usize> {
         .map(|(b, &i)| (axis.of(b.center()), i))
         .collect();
     order.sort_by(|a, b| a.0.total_cmp(&b.0));
-    let m = order.len() / 2;
-    (order[m].0 - order[m - 1].0 > POSITION_MARGIN && order[m + 1].0 - order[m].0 > POSITION_MARGIN)
-        .then_some(order[m].1)
+    order
 }
 
 /// The first and last of `candidates` (three or more) along the axis they spread most
@@ -178,22 +186,7 @@ pub(crate) fn ends(scene: &Scene, candidates: &[usize]) -> Option<Vec<usize>> {
     if candidates.len() < 3 {
         return None;
     }
-    let b = boxes(scene, candidates);
-    let spread = |axis: Axis| {
-        let v: Vec<f64> = b.iter().map(|b| axis.of(b.center())).collect();
-        v.iter().cloned().fold(f64::MIN, f64::max) - v.iter().cloned().fold(f64::MAX, f64::min)
-    };
-    let axis = if spread(Axis::X) >= spread(Axis::Z) {
-        Axis::X
-    } else {
-        Axis::Z
-    };
-    let mut order: Vec<(f64, usize)> = b
-        .iter()
-        .zip(candidates)
-        .map(|(b, &i)| (axis.of(b.center()), i))
-        .collect();
-    order.sort_by(|a, b| a.0.total_cmp(&b.0));
+    let order = along_spread(scene, candidates);
     let n = order.len();
     (order[1].0 - order[0].0 > POSITION_MARGIN && order[n - 1].0 - order[n - 2].0 > POSITION_MARGIN)
         .then(|| vec![order[0].1, order[n - 1].1])
@@ -592,17 +585,7 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
     if let RoomPlace::OnWall(axis, sign) = place {
         // Against this wall, not the one round the corner: no other wall is nearer.
         let gap = |bx: &Aabb| wall_gap(&room, bx, axis, sign);
-        let its_wall = |bx: &Aabb| {
-            let walls = [
-                (Axis::X, -1.0),
-                (Axis::X, 1.0),
-                (Axis::Z, -1.0),
-                (Axis::Z, 1.0),
-            ];
-            walls
-                .iter()
-                .all(|&(a, s)| gap(bx) <= wall_gap(&room, bx, a, s) + 1e-3)
-        };
+        let its_wall = |bx: &Aabb| gap(bx) <= nearest_wall(&room, bx).1 + 1e-3;
         let there: Vec<(usize, f64)> = candidates
             .iter()
             .zip(&b)
@@ -685,34 +668,17 @@ pub(crate) fn in_room(scene: &Scene, candidates: &[usize], place: RoomPlace) -> 
 /// Whether a box stands within `gap` of any of the room's four walls.
 #[must_use]
 pub(crate) fn near_a_wall(room: &Aabb, b: &Aabb, gap: f64) -> bool {
-    [
-        (Axis::X, -1.0),
-        (Axis::X, 1.0),
-        (Axis::Z, -1.0),
-        (Axis::Z, 1.0),
-    ]
-    .into_iter()
-    .any(|(axis, sign)| wall_gap(room, b, axis, sign) <= gap)
+    nearest_wall(room, b).1 <= gap
 }
 
-/// The gap between a box and the room's wall on side (`axis`, `sign`).
 /// The one wall every candidate stands against (its nearest, within [`BY_WALL_REACH`]):
 /// "from the window" where the windows are all in the left wall is from the left. `None`
 /// where they stand at different walls, away from the walls, or there is no room.
 pub(crate) fn common_wall(scene: &Scene, candidates: &[usize]) -> Option<(Axis, f64)> {
     let room = scene.bounds?;
-    let walls = [
-        (Axis::X, -1.0),
-        (Axis::X, 1.0),
-        (Axis::Z, -1.0),
-        (Axis::Z, 1.0),
-    ];
     let mut common = None;
     for b in boxes(scene, candidates) {
-        let (wall, gap) = walls
-            .iter()
-            .map(|&(a, s)| ((a, s), wall_gap(&room, &b, a, s)))
-            .min_by(|x, y| x.1.total_cmp(&y.1))?;
+        let (wall, gap) = nearest_wall(&room, &b);
         if gap > BY_WALL_REACH || common.is_some_and(|c| c != wall) {
             return None;
         }
@@ -721,6 +687,27 @@ pub(crate) fn common_wall(scene: &Scene, candidates: &[usize]) -> Option<(Axis, 
     common
 }
 
+/// The room's wall nearest box `b` (its axis and side; the first of left, right, back,
+/// front on a tie) and the gap to it.
+fn nearest_wall(room: &Aabb, b: &Aabb) -> ((Axis, f64), f64) {
+    [
+        (Axis::X, -1.0),
+        (Axis::X, 1.0),
+        (Axis::Z, -1.0),
+        (Axis::Z, 1.0),
+    ]
+    .into_iter()
+    .map(|(a, s)| ((a, s), wall_gap(room, b, a, s)))
+    .fold(((Axis::X, -1.0), f64::INFINITY), |best, w| {
+        if w.1 < best.1 {
+            w
+        } else {
+            best
+        }
+    })
+}
+
+/// The gap between a box and the room's wall on side (`axis`, `sign`).
 fn wall_gap(room: &Aabb, b: &Aabb, axis: Axis, sign: f64) -> f64 {
     let a = axis as usize;
     if sign < 0.0 {

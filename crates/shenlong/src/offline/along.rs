@@ -144,9 +144,14 @@ pub(super) fn phrase(c: &Clause) -> Option<(Range<usize>, Vec<usize>)> {
         }
         let tail = longest(k, TAILS);
         let closes_bare = |k: usize| {
-            ["and all", "included", "too", "as well"]
-                .iter()
-                .any(|t| c.words_at(k, &t.split(' ').collect::<Vec<_>>()))
+            [
+                &["and", "all"][..],
+                &["included"],
+                &["too"],
+                &["as", "well"],
+            ]
+            .iter()
+            .any(|t| c.words_at(k, t))
         };
         if lead == 0 && !tail.is_some_and(|_| closes_bare(k)) {
             continue;
