@@ -14,10 +14,12 @@ use shenlong::bench::run::{check_shard, RunOptions};
 use shenlong::bench::Suite;
 use shenlong::format::procthor::{self, AssetDatabase};
 use shenlong::format::{json, Document, Format, SceneFile};
-use shenlong::pipeline::backends::{translator, TranslatorSettings};
-use shenlong::pipeline::{apply_expression, edit, EditOptions, System, Translator};
+use shenlong::pipeline::backends::{translator, Spec, SpecError, TranslatorSettings};
+use shenlong::pipeline::{EditOptions, System, Translator};
 use shenlong::scene::listing::listing;
-use shenlong::session::{Session, StepError};
+use shenlong::session::{
+    bound_objects, ApplyRequest, EditRequest, ErrorKind, OpError, Outcome, Session,
+};
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::path::PathBuf;
 use std::sync::atomic::AtomicBool;
@@ -26,11 +28,29 @@ pyo3::create_exception!(
     _native,
     EditError,
     PyValueError,
-    "An instruction Shenlong refused, or bad input: the message is one line saying what and where; the scene is as it was."
+    "An instruction Shenlong refused, or bad input: the message is one line saying what and where; the scene is as it was. args: (message, the refusal as JSON: kind, error, ambiguity)."
 );
 
+/// A refusal as Python sees it: `EditError(message, json)`, the JSON being the refusal as
+/// every front end writes it (`shenlong` raises the subclass of its kind).
+fn refusal(error: &OpError) -> PyErr {
+    let json = serde_json::to_string(error).unwrap_or_default();
+    EditError::new_err((error.message.clone(), json))
+}
+
 fn error(message: impl std::fmt::Display) -> PyErr {
-    EditError::new_err(message.to_string())
+    refusal(&OpError::new(ErrorKind::BadInput, message.to_string()))
+}
+
+/// An operation's answer as JSON, or its refusal.
+fn outcome_json(result: Result<Outcome, OpError>) -> Result<String, OpError> {
+    let outcome = result?;
+    serde_json::to_string(&outcome).map_err(|e| {
+        OpError::new(
+            ErrorKind::Internal,
+            format!("the change was made but its outcome cannot be written as JSON: {e}"),
+        )
+    })
 }
 
 /// Runs `f`, turning a panic (a bug) into an error that says so.
@@ -52,18 +72,54 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Sen
     py.detach(|| guarded(f)).map_err(error)
 }
 
+/// Runs an operation on the session without the GIL, after the calls before it, guarded
+/// against panics (a bug answers an `internal` refusal; the scene is as it was: every
+/// change is made on a working copy and swapped in at its end).
+fn operate(
+    py: Python<'_>,
+    session: &std::sync::Mutex<Session>,
+    f: impl FnOnce(&mut Session) -> Result<String, OpError> + Send,
+) -> PyResult<String> {
+    let result = py.detach(|| {
+        catch_unwind(AssertUnwindSafe(|| {
+            f(&mut session
+                .lock()
+                .unwrap_or_else(std::sync::PoisonError::into_inner))
+        }))
+        .unwrap_or_else(|_| {
+            Err(OpError::new(
+                ErrorKind::Internal,
+                "internal error (a bug in Shenlong, please report it); nothing was changed",
+            ))
+        })
+    });
+    result.map_err(|e| refusal(&e))
+}
+
 fn to_json<T: serde::Serialize>(value: &T) -> Result<String, String> {
     serde_json::to_string(value).map_err(|e| format!("cannot write the answer as JSON: {e}"))
 }
 
 fn make_translator(llm: &str, system: System) -> Result<Box<dyn Translator>, String> {
+    make_translator_at(llm, system, None)
+}
+
+/// The translator `llm` names, with a model server's base URL when given.
+fn make_translator_at(
+    llm: &str,
+    system: System,
+    base_url: Option<String>,
+) -> Result<Box<dyn Translator>, String> {
+    let spec: Spec = llm.parse().map_err(|e: SpecError| e.to_string())?;
     translator(
-        llm,
+        &spec,
         &TranslatorSettings {
             system,
+            base_url,
             ..TranslatorSettings::default()
         },
     )
+    .map_err(|e| e.to_string())
 }
 
 fn collisions(collide: bool) -> Option<shenlong::collide::ResolveOptions> {
@@ -103,27 +159,18 @@ impl PyScene {
         detached(py, move || f(&mut self.lock()))
     }
 
-    /// Runs `change` on a copy of the scene and commits it when it succeeds.
-    fn change<T: Send>(
-        &self,
-        py: Python<'_>,
-        kind: &str,
-        text: &str,
-        change: impl FnOnce(&mut shenlong::scene::Scene) -> Result<T, String> + Send,
-    ) -> PyResult<T> {
-        self.with(py, move |session| {
-            let mut after = session.file.scene.clone();
-            let out = change(&mut after)?;
-            session.commit(after, kind, text);
-            Ok(out)
-        })
-    }
-
-    fn step(&self, py: Python<'_>, undo: bool) -> PyResult<bool> {
-        self.with(py, move |session| match session.step(undo) {
-            Ok(_) => Ok(true),
-            Err(StepError::Nothing) => Ok(false),
-        })
+    /// Undoes (`undo`) or redoes the last change; `None` when there is nothing to.
+    fn step(&self, py: Python<'_>, undo: bool) -> PyResult<Option<String>> {
+        let answer = operate(py, &self.session, move |session| {
+            let result = if undo { session.undo() } else { session.redo() };
+            match result {
+                Err(e) if matches!(e.kind, ErrorKind::NothingToUndo | ErrorKind::NothingToRedo) => {
+                    Ok(String::new())
+                }
+                other => outcome_json(other),
+            }
+        })?;
+        Ok((!answer.is_empty()).then_some(answer))
     }
 }
 
@@ -226,8 +273,9 @@ impl PyScene {
         to_json(&self.lock().history()).map_err(error)
     }
 
-    /// Runs an instruction; returns the edit report as JSON.
+    /// Runs an instruction; returns its outcome as JSON.
     #[allow(clippy::too_many_arguments)]
+    #[pyo3(signature = (instruction, llm, system, collide, carry, selected, report=false, base_url=None))]
     fn edit(
         &self,
         py: Python<'_>,
@@ -237,26 +285,29 @@ impl PyScene {
         collide: bool,
         carry: bool,
         selected: Vec<String>,
+        report: bool,
+        base_url: Option<String>,
     ) -> PyResult<String> {
-        let text = instruction.clone();
-        self.change(py, "edit", &text, move |scene| {
-            let translator = make_translator(&llm, System::parse(&system)?)?;
-            let selection = selected
-                .iter()
-                .map(|name| scene.resolve(name).map_err(|e| format!("selected: {e}")))
-                .collect::<Result<Vec<_>, _>>()?;
-            let options = EditOptions {
-                carry,
-                collisions: collisions(collide),
-                selection,
+        let system = System::parse(&system).map_err(error)?;
+        let translator = make_translator_at(&llm, system, base_url).map_err(error)?;
+        let options = EditOptions {
+            carry,
+            collisions: collisions(collide),
+            selection: Vec::new(),
+        };
+        operate(py, &self.session, move |session| {
+            let request = EditRequest {
+                instruction: &instruction,
+                selected: &selected,
+                report,
             };
-            let done =
-                edit(scene, &instruction, translator.as_ref(), &options).map_err(|e| e.message)?;
-            to_json(&done.report)
+            outcome_json(session.edit(&request, translator.as_ref(), &options))
         })
     }
 
-    /// Applies one CGA expression to one object; returns what it did as JSON.
+    /// Applies one CGA expression to one object (X1; `bind` names X2, X3 …); returns its
+    /// outcome as JSON.
+    #[pyo3(signature = (name, expr, collide, carry, bind=std::collections::BTreeMap::new()))]
     fn apply(
         &self,
         py: Python<'_>,
@@ -264,37 +315,30 @@ impl PyScene {
         expr: String,
         collide: bool,
         carry: bool,
+        bind: std::collections::BTreeMap<String, String>,
     ) -> PyResult<String> {
-        let text = format!("{name}: {expr}");
-        self.change(py, "apply", &text, move |scene| {
-            let options = EditOptions {
-                carry,
-                collisions: collisions(collide),
-                selection: Vec::new(),
+        let objects = bound_objects(&name, &bind).map_err(|e| refusal(&e))?;
+        let options = EditOptions {
+            carry,
+            collisions: collisions(collide),
+            selection: Vec::new(),
+        };
+        operate(py, &self.session, move |session| {
+            let request = ApplyRequest {
+                objects: &objects,
+                expression: &expr,
             };
-            let (placed, t) =
-                apply_expression(scene, &name, &expr, &options).map_err(|e| e.message)?;
-            let s = t.similarity;
-            to_json(&serde_json::json!({
-                "object": scene.objects[placed.moved[0]].name,
-                "moved": placed.moved.iter().map(|&i| &scene.objects[i].name).collect::<Vec<_>>(),
-                "carried": placed.carried,
-                "collisions_resolved": placed.collisions_resolved,
-                "overlaps_remaining": placed.overlaps_remaining,
-                "translation": s.translation.to_array(),
-                "rotation": s.rotation.to_array(),
-                "scale": s.scale,
-            }))
+            outcome_json(session.apply(&request, &options))
         })
     }
 
-    /// Undoes the last change; false when there is none.
-    fn undo(&self, py: Python<'_>) -> PyResult<bool> {
+    /// Undoes the last change; its outcome as JSON, `None` when there is none.
+    fn undo(&self, py: Python<'_>) -> PyResult<Option<String>> {
         self.step(py, true)
     }
 
-    /// Redoes the last undone change; false when there is none.
-    fn redo(&self, py: Python<'_>) -> PyResult<bool> {
+    /// Redoes the last undone change; its outcome as JSON, `None` when there is none.
+    fn redo(&self, py: Python<'_>) -> PyResult<Option<String>> {
         self.step(py, false)
     }
 

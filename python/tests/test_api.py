@@ -33,14 +33,20 @@ def test_load_lists_objects_with_boxes_and_supports(office_path):
 
 def test_edit_puts_the_mug_on_the_dresser_and_reports_it(office_path):
     scene = shenlong.Scene.load(office_path)
-    report = scene.edit("put the mug on the dresser", llm="offline", system="cga", collide=True)
+    outcome = scene.edit("put the mug on the dresser", llm="offline", system="cga", collide=True)
     mug, dresser = obj(scene, "mug"), obj(scene, "dresser")
     assert mug["rests_on"] == "dresser"
     assert math.isclose(mug["world_box"]["min"][1], dresser["world_box"]["max"][1], abs_tol=1e-6)
     for axis in (0, 2):
         assert dresser["world_box"]["min"][axis] - 1e-9 <= mug["world_box"]["min"][axis]
         assert mug["world_box"]["max"][axis] <= dresser["world_box"]["max"][axis] + 1e-9
-    assert [b["object"] for b in report["bindings"]] == ["mug", "dresser"]
+    assert isinstance(outcome, shenlong.Outcome) and outcome.operation == "edit"
+    assert [b.object for b in outcome.understood.bindings] == ["mug", "dresser"]
+    assert outcome.understood.query == "put X1 on X2"
+    [moved] = [m for m in outcome.moved if m.object == "mug"]
+    assert moved.how == "moved" and moved.before != moved.after
+    assert outcome.report is None, "the whole report only when asked for"
+    assert scene.edit("move the mug 1 cm left", report=True).report["query"] == "move X1 1 cm left"
 
 
 def test_the_report_is_what_shenlong_edit_json_writes(office_path, tmp_path):
@@ -55,11 +61,12 @@ def test_the_report_is_what_shenlong_edit_json_writes(office_path, tmp_path):
     )
     cli = json.loads((tmp_path / "r.json").read_text())
     scene = shenlong.Scene.load(office_path)
-    mine = scene.edit(instruction)
+    mine = scene.edit(instruction, report=True).to_dict()
     assert set(mine) == set(cli)
-    for key in ("query", "bindings", "grounding", "objects", "collisions_resolved", "answers"):
-        if key in cli:
-            assert mine[key] == cli[key], key
+    for key in ("operation", "history_id", "moved", "understood", "notes", "warnings"):
+        assert mine[key] == cli[key], key
+    for key in ("query", "bindings", "grounding", "objects", "collisions_resolved"):
+        assert mine["report"][key] == cli["report"][key], key
     cli_scene = json.loads((tmp_path / "out.json").read_text())
     assert scene.to_dict()["objects"] == cli_scene["objects"]
 
@@ -67,15 +74,38 @@ def test_the_report_is_what_shenlong_edit_json_writes(office_path, tmp_path):
 def test_a_refusal_raises_and_changes_nothing(office_path):
     scene = shenlong.Scene.load(office_path)
     before = scene.to_dict()
-    for instruction in ["put the unicorn on the desk", "move the mug 3 flurbs left", ""]:
-        with pytest.raises(shenlong.EditError) as e:
+    for instruction, kind in [
+        ("put the unicorn on the desk", shenlong.NotUnderstoodError),
+        ("move the mug 3 flurbs left", shenlong.NotUnderstoodError),
+        ("", shenlong.BadInputError),
+    ]:
+        with pytest.raises(kind) as e:
             scene.edit(instruction)
-        assert isinstance(e.value, ValueError)
+        assert isinstance(e.value, shenlong.EditError) and isinstance(e.value, ValueError)
+        assert e.value.kind == e.value.data["kind"]
         message = str(e.value)
         assert message and "\n" not in message
         assert scene.to_dict() == before
     assert scene.history() == []
-    assert scene.undo() is False
+    assert scene.undo() is None
+
+
+def test_an_ambiguity_carries_its_choices_ready_to_send(office_path):
+    scene = shenlong.Scene.from_dict(
+        {
+            "name": "two chairs",
+            "objects": [
+                {"name": "chair 1", "position": [0, 0, 0], "size": [0.5, 0.9, 0.5]},
+                {"name": "chair 2", "position": [2, 0, 0], "size": [0.5, 0.9, 0.5]},
+            ],
+        }
+    )
+    with pytest.raises(shenlong.AmbiguousError) as e:
+        scene.edit("move the chair 10 cm left")
+    error = e.value
+    assert error.phrase == "the chair" and error.objects == ["chair 1", "chair 2"] and error.total == 2
+    chosen = scene.edit(error.choices[1].instruction)
+    assert [m.object for m in chosen.moved] == ["chair 2"]
 
 
 def test_bad_arguments_are_edit_errors_naming_what(office_path, tmp_path):
@@ -92,10 +122,12 @@ def test_bad_arguments_are_edit_errors_naming_what(office_path, tmp_path):
         shenlong.Scene.from_dict({"name": "x", "objects": [{"name": "a"}]})
     with pytest.raises(shenlong.EditError, match="the scene"):
         shenlong.Scene.from_dict({"objects": [{"name": "a", "position": [0, 0, float("nan")]}]})
-    with pytest.raises(shenlong.EditError, match="unicorn|no object"):
+    with pytest.raises(shenlong.BadInputError, match="unicorn|no object"):
         scene.apply("unicorn", "T(e1)")
-    with pytest.raises(shenlong.EditError, match="column"):
+    with pytest.raises(shenlong.NotUnderstoodError, match="column"):
         scene.apply("mug", "T(e1")
+    with pytest.raises(shenlong.BadInputError, match="X2"):
+        scene.apply("mug", "T(e1)", bind={"X3": "desk"})
 
 
 def test_apply_undo_redo_and_history(office_path):
@@ -103,13 +135,18 @@ def test_apply_undo_redo_and_history(office_path):
     x0 = obj(scene, "desk")["position"][0]
     laptop0 = obj(scene, "laptop")["position"][0]
     done = scene.apply("desk", "T(0.1*e1)", collide=False)
-    assert done["object"] == "desk" and "laptop" in done["carried"]
+    how = {m.object: m.how for m in done.moved}
+    assert how["desk"] == "moved" and how["laptop"] == "carried"
+    assert done.understood.query == "T(0.1*e1)"
     assert math.isclose(obj(scene, "desk")["position"][0], x0 + 0.1, abs_tol=1e-9)
     assert math.isclose(obj(scene, "laptop")["position"][0], laptop0 + 0.1, abs_tol=1e-9)
-    assert scene.undo() is True
+    undone = scene.undo()
+    assert undone.operation == "undo" and undone.history_id == done.history_id
+    assert {m.object for m in undone.moved} == {m.object for m in done.moved}
+    assert [(m.before, m.after) for m in undone.moved] == [(m.after, m.before) for m in done.moved]
     assert obj(scene, "desk")["position"][0] == x0
     assert obj(scene, "laptop")["position"][0] == laptop0
-    assert scene.redo() is True and scene.redo() is False
+    assert scene.redo().operation == "redo" and scene.redo() is None
     assert math.isclose(obj(scene, "desk")["position"][0], x0 + 0.1, abs_tol=1e-9)
     [item] = scene.history()
     assert item["kind"] == "apply" and item["undone"] is False and "desk" in item["objects"]

@@ -29,7 +29,14 @@ fn the_readme_command_works_offline() {
     let v = read_json(&out);
     let bottle = object(&v, "orange bottle");
     assert_eq!(bottle["position"][1], 0.9);
-    let r = read_json(&report);
+    // `--json` writes the outcome, as every front end answers it, with the whole report.
+    let outcome = read_json(&report);
+    assert_eq!(outcome["operation"], "edit");
+    assert_eq!(outcome["moved"][0]["object"], "orange bottle");
+    assert_eq!(outcome["moved"][0]["how"], "moved");
+    assert_eq!(outcome["moved"][0]["after"]["position"][1], 0.9);
+    assert_eq!(outcome["understood"]["query"], "put X1 on top of X2");
+    let r = &outcome["report"];
     assert_eq!(r["query"], "put X1 on top of X2");
     assert_eq!(r["bindings"][1]["object"], "tool table");
     assert_eq!(r["model"], "offline");
@@ -151,7 +158,7 @@ fn a_model_that_never_answers_right_leaves_the_output_alone() {
 fn backend_specs_are_checked() {
     for (option, value, message) in [
         ("--llm", "openai:gpt-4o", "needs OPENAI_API_KEY"),
-        ("--llm", "claude", "--llm: unknown translator 'claude'"),
+        ("--llm", "claude", "'--llm <BACKEND>': unknown translator 'claude'"),
         (
             "--system",
             "omniverse",
@@ -256,7 +263,8 @@ fn natural_names_are_grounded_and_reported() {
     assert_eq!(object(&v, "sofa")["position"][0], -0.3);
     assert!(object(&v, "speaker 2")["rotation"].is_array());
     assert!(object(&v, "speaker")["rotation"].is_null());
-    let r = read_json(&report);
+    let outcome = read_json(&report);
+    let r = &outcome["report"];
     assert_eq!(r["grounding"][0]["phrase"], "the couch");
     assert_eq!(r["grounding"][0]["objects"][0], "sofa");
     assert_eq!(r["grounding"][0]["reasons"][0]["kind"], "synonym");

@@ -152,9 +152,17 @@ fn an_assistant_edits_a_scene_over_mcp() {
         json!({"instruction": "put the 'orange bottle' on top of the 'tool table'"}),
     );
     assert_ne!(edited["isError"], true, "{edited}");
-    assert_eq!(
-        edited["structuredContent"]["grounding"][0]["objects"][0],
-        "orange bottle"
+    // A compact outcome: what moved, and the instruction as understood; no report.
+    let outcome = &edited["structuredContent"];
+    assert_eq!(outcome["moved"][0]["object"], "orange bottle", "{edited}");
+    assert_eq!(outcome["moved"][0]["how"], "moved");
+    assert_eq!(outcome["understood"]["query"], "put X1 on top of X2");
+    assert_eq!(outcome["understood"]["bindings"][1]["object"], "tool table");
+    assert!(outcome.get("report").is_none(), "{edited}");
+    assert!(
+        edited.to_string().len() < 2_000,
+        "{} bytes",
+        edited.to_string().len()
     );
     assert!(c
         .notifications
@@ -173,6 +181,26 @@ fn an_assistant_edits_a_scene_over_mcp() {
     let unknown = c.call("edit", json!({"instruction": "move the piano to the left"}));
     assert_eq!(unknown["isError"], true);
     assert!(text(&unknown).contains("piano"), "{unknown}");
+    assert_eq!(
+        unknown["structuredContent"]["kind"], "not_understood",
+        "{unknown}"
+    );
+    // An ambiguous phrase: its choices as data, each an instruction ready to send.
+    let ambiguous = c.call("edit", json!({"instruction": "move the can 10 cm left"}));
+    assert_eq!(ambiguous["isError"], true);
+    let choices = &ambiguous["structuredContent"]["ambiguity"]["choices"];
+    assert_eq!(
+        ambiguous["structuredContent"]["kind"], "ambiguous",
+        "{ambiguous}"
+    );
+    assert_eq!(choices.as_array().map(Vec::len), Some(2), "{ambiguous}");
+    let chosen = c.call("edit", json!({"instruction": choices[1]["instruction"]}));
+    assert_ne!(chosen["isError"], true, "{chosen}");
+    assert_eq!(
+        chosen["structuredContent"]["moved"][0]["object"],
+        choices[1]["object"]
+    );
+    assert_ne!(c.call("undo", json!({}))["isError"], true);
     let hostile = c.call(
         "apply",
         json!({"object": "tool table", "expression": "std::fs::read(\"/etc/passwd\")"}),

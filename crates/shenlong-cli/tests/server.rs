@@ -21,7 +21,7 @@ fn settings(
     save: Option<std::path::PathBuf>,
 ) -> ServeSettings {
     ServeSettings {
-        llm: "offline".into(),
+        llm: shenlong::pipeline::backends::Spec::Offline,
         system: System::Cga,
         translator: TranslatorSettings {
             cache_dir: None,
@@ -88,7 +88,9 @@ async fn edit_undo_redo_history() {
     )
     .await;
     assert_eq!(status, StatusCode::OK, "{report}");
-    assert_eq!(report["query"], "put X1 on top of X2");
+    assert_eq!(report["understood"]["query"], "put X1 on top of X2");
+    assert_eq!(report["report"]["query"], "put X1 on top of X2");
+    assert_eq!(report["moved"][0]["object"], "orange bottle");
     let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
     assert_eq!(position(&scene, "orange bottle"), json!([0, 0.9, 0]));
     assert_eq!(scene["can_undo"], true);
@@ -101,16 +103,30 @@ async fn edit_undo_redo_history() {
         .any(|o| o["name"] == "orange bottle" && o["position"] == json!([0, 0.9, 0])));
     let (status, undone, _) = call(&app, "POST", "/api/undo", None).await;
     assert_eq!(status, StatusCode::OK);
-    assert_eq!(position(&undone, "orange bottle"), json!([-2, 0, 1.2]));
+    assert_eq!(undone["operation"], "undo");
+    assert_eq!(undone["history_id"], report["history_id"]);
+    assert_eq!(undone["moved"][0]["object"], "orange bottle");
+    assert_eq!(
+        undone["moved"][0]["after"]["position"],
+        json!([-2.0, 0.0, 1.2])
+    );
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(position(&scene, "orange bottle"), json!([-2, 0, 1.2]));
     let (_, history, _) = call(&app, "GET", "/api/history", None).await;
     assert_eq!(history["history"][0]["undone"], true);
     let (status, redone, _) = call(&app, "POST", "/api/redo", None).await;
     assert_eq!(status, StatusCode::OK);
-    assert_eq!(position(&redone, "orange bottle"), json!([0, 0.9, 0]));
+    assert_eq!(redone["operation"], "redo");
+    let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
+    assert_eq!(position(&scene, "orange bottle"), json!([0, 0.9, 0]));
     let (status, e, _) = call(&app, "POST", "/api/redo", None).await;
     assert_eq!(
-        (status, e["error"].as_str().unwrap()),
-        (StatusCode::CONFLICT, "nothing to redo")
+        (status, e["error"].as_str().unwrap(), e["kind"].as_str()),
+        (
+            StatusCode::CONFLICT,
+            "nothing to redo",
+            Some("nothing_to_redo")
+        )
     );
 }
 
@@ -255,7 +271,7 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
     let app = App::new(
         file,
         ServeSettings {
-            llm: "ollama:mock".into(),
+            llm: "ollama:mock".parse().unwrap(),
             ..settings(Some(slow.url.clone()), false, None)
         },
     );
@@ -292,7 +308,7 @@ fn over_loopback_a_slow_edit_does_not_block_reads() {
         "the edit is not in yet"
     );
     let report = editor.join().unwrap();
-    assert_eq!(report["model"], "mock", "{report}");
+    assert_eq!(report["report"]["model"], "mock", "{report}");
     assert_eq!(slow.count(), 2);
     let scene: Value = ureq::get(&format!("http://{address}/api/scene"))
         .call()
@@ -561,7 +577,7 @@ async fn a_save_that_fails_later_keeps_the_edit_and_says_so() {
     )
     .await;
     assert_eq!(status, StatusCode::OK, "{report}");
-    let warning = report["warning"].as_str().unwrap();
+    let warning = report["warnings"][0].as_str().unwrap();
     assert!(warning.contains("could not be saved"), "{warning}");
     assert!(report["history_id"].is_u64(), "the edit is in the history");
     let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
@@ -574,7 +590,7 @@ async fn a_save_that_fails_later_keeps_the_edit_and_says_so() {
     std::fs::create_dir(&folder).unwrap();
     let (status, undone, _) = call(&app, "POST", "/api/undo", Some("{}")).await;
     assert_eq!(status, StatusCode::OK);
-    assert!(undone.get("warning").is_none(), "{undone}");
+    assert_eq!(undone["warnings"], json!([]), "{undone}");
     assert!(save.exists());
 }
 
@@ -718,7 +734,11 @@ fn a_deep_gltf_hierarchy_is_applied_and_exported_without_a_crash() {
         .send(body)
         .unwrap();
     let applied: Value = response.body_mut().read_json().unwrap();
-    assert_eq!(applied["translation"], json!([1.0, 0.0, 0.0]), "{applied}");
+    assert_eq!(
+        applied["moved"][0]["after"]["position"],
+        json!([1.0, 0.0, 0.0]),
+        "{applied}"
+    );
     let exported = ureq::get(&format!("http://{address}/api/export?format=gltf"))
         .call()
         .unwrap()
@@ -946,17 +966,21 @@ async fn an_ambiguous_phrase_is_answered_with_its_candidates_as_data() {
         report["moved"],
         json!([{
             "object": "chair 3",
-            "before": {"position": [-0.45, 0, 0.75], "rotation": [0, 1, 0, 0], "scale": 1},
-            "after": {"position": [-0.65, 0, 0.75], "rotation": [0, 1, 0, 0], "scale": 1},
+            "how": "moved",
+            "before": {"position": [-0.45, 0.0, 0.75], "rotation": [0.0, 1.0, 0.0, 0.0], "scale": 1.0},
+            "after": {"position": [-0.65, 0.0, 0.75], "rotation": [0.0, 1.0, 0.0, 0.0], "scale": 1.0},
         }])
     );
     // Each grounded phrase's span is its bytes in the report's instruction.
-    let instruction = report["instruction"].as_str().unwrap();
-    for phrase in report["grounding"].as_array().unwrap() {
+    let instruction = report["report"]["instruction"].as_str().unwrap();
+    for phrase in report["report"]["grounding"].as_array().unwrap() {
         let [start, end] = [0, 1].map(|k| phrase["span"][k].as_u64().unwrap() as usize);
         assert_eq!(instruction[start..end], phrase["phrase"], "{phrase}");
     }
-    assert_eq!(report["grounding"][0]["objects"], json!(["chair 3"]));
+    assert_eq!(
+        report["report"]["grounding"][0]["objects"],
+        json!(["chair 3"])
+    );
     let (_, scene, _) = call(&app, "GET", "/api/scene", None).await;
     assert_eq!(position(&scene, "chair 3"), json!([-0.65, 0, 0.75]));
     assert_eq!(position(&scene, "chair 1"), json!([-0.45, 0, -0.75]));
@@ -967,26 +991,25 @@ async fn an_ambiguous_phrase_is_answered_with_its_candidates_as_data() {
     assert_eq!(value["ambiguity"]["phrase"], "the two chairs");
     assert_eq!(value["ambiguity"]["objects"], chairs);
 
-    // Other refusals answer the message alone.
-    for (body, expected) in [
+    // Other refusals answer their kind and the message alone.
+    for (body, expected, kind) in [
         (
             edit_body("move the 'sofaa' left"),
             StatusCode::UNPROCESSABLE_ENTITY,
+            "not_understood",
         ),
         (
             edit_body("sing to the fridge"),
             StatusCode::UNPROCESSABLE_ENTITY,
+            "not_understood",
         ),
-        ("not json".to_string(), StatusCode::BAD_REQUEST),
+        ("not json".to_string(), StatusCode::BAD_REQUEST, "bad_input"),
     ] {
         let (status, value, _) = call(&app, "POST", "/api/edit", Some(&body)).await;
         assert_eq!(status, expected, "{body}: {value}");
         assert!(value["error"].is_string(), "{body}: {value}");
-        assert_eq!(
-            value.as_object().unwrap().keys().collect::<Vec<_>>(),
-            ["error"],
-            "{body}: {value}"
-        );
+        assert_eq!(value["kind"], kind, "{body}: {value}");
+        assert!(value.get("ambiguity").is_none(), "{body}: {value}");
     }
 }
 
@@ -1045,8 +1068,11 @@ async fn the_last_edit_and_an_example_of_the_scene_are_there_for_a_page_opened_l
     assert_eq!(example, "put the kettle on the dining table");
     let (status, report) = post_edit(&app, &example).await;
     assert_eq!(status, StatusCode::OK, "{report}");
-    assert_eq!(report["bindings"][0]["object"], "kettle");
-    assert_eq!(report["bindings"][1]["object"], "dining table");
+    assert_eq!(report["understood"]["bindings"][0]["object"], "kettle");
+    assert_eq!(
+        report["understood"]["bindings"][1]["object"],
+        "dining table"
+    );
     let id = report["history_id"].clone();
     // The history holds the last edit's whole answer, for a page opened after it.
     let (_, history, _) = call(&app, "GET", "/api/history", None).await;
@@ -1065,12 +1091,12 @@ async fn the_last_edit_and_an_example_of_the_scene_are_there_for_a_page_opened_l
     assert_eq!(status, StatusCode::OK, "{report}");
     let (_, history, _) = call(&app, "GET", "/api/history", None).await;
     assert_eq!(
-        history["last_edit"]["instruction"],
+        history["last_edit"]["report"]["instruction"],
         "move the fridge 10 cm to the left"
     );
     assert_eq!(
         history["last_edit"]["moved"][0]["before"]["position"],
-        json!([2.1, 0, -1.6])
+        json!([2.1, 0.0, -1.6])
     );
 
     // The workshop's example is its own, and a scene whose names are no plain words has

@@ -506,16 +506,16 @@ function showReport(r, note) {
 
 // The edit the page shows: its report, its objects in green, and the ghosts of where they
 // were (while it is the latest change).
-function showEdit(report, current) {
+function showEdit(outcome, current) {
   edited.clear();
   if (current) {
-    for (const m of report.moved || []) edited.add(m.object);
-    showGhosts(report.moved);
+    for (const m of outcome.moved || []) edited.add(m.object);
+    showGhosts(outcome.moved);
   } else {
     clearGhosts();
   }
-  showReport(report, current ? null : 'Undone or followed by other changes.');
-  window.shenlong.lastReport = report;
+  if (outcome.report) showReport(outcome.report, current ? null : 'Undone or followed by other changes.');
+  window.shenlong.lastReport = outcome.report;
   restyle();
 }
 
@@ -598,13 +598,13 @@ async function run(instruction) {
   clearChoice();
   say('Editing…', 'busy');
   try {
-    const report = await api('/api/edit', { instruction, llm: $('llm').value.trim() || undefined, system: $('system').value });
+    const outcome = await api('/api/edit', { instruction, llm: $('llm').value.trim() || undefined, system: $('system').value, report: true });
     selected.clear();
     await load(true);
-    showEdit(report, true);
+    showEdit(outcome, true);
     await refreshHistory();
-    if (report.warning) say(`Done, but ${report.warning}`, 'error');
-    else say(`Done: ${report.objects.map((o) => o.object).join(', ')}`);
+    if (outcome.warnings.length) say(`Done, but ${outcome.warnings.join('; ')}`, 'error');
+    else say(`Done: ${outcome.report.objects.map((o) => o.object).join(', ')}`);
   } catch (error) {
     say(error.message, 'error');
     if (error.data && error.data.ambiguity) showChoice(error.data.ambiguity);
@@ -629,14 +629,14 @@ $('instruction').addEventListener('keydown', (event) => {
 
 async function step(undo) {
   try {
-    const data = await api(undo ? '/api/undo' : '/api/redo', {});
-    build(data.scene, true);
-    setUndoRedo(data);
+    const outcome = await api(undo ? '/api/undo' : '/api/redo', {});
+    await load(true);
     edited.clear();
     clearGhosts();
     clearChoice();
     await refreshHistory();
-    say(undo ? 'Undone' : 'Redone');
+    say(outcome.warnings.length ? `${undo ? 'Undone' : 'Redone'}, but ${outcome.warnings.join('; ')}` : (undo ? 'Undone' : 'Redone'),
+      outcome.warnings.length ? 'error' : undefined);
   } catch (error) {
     say(error.message, 'error');
   }

@@ -80,8 +80,14 @@ fn collisions(c: &mut Criterion) {
             .apply(0, &Multivector::translator(DVec3::new(1.2, 0.0, 0.0)), true)
             .unwrap();
         let options = shenlong::collide::ResolveOptions::default();
-        let check =
-            shenlong::collide::resolve(&mut edited.clone(), &before, &[0], &options).unwrap();
+        let check = shenlong::collide::resolve(
+            &mut edited.clone(),
+            &before,
+            &[0],
+            &shenlong::ground::kind::is_floor_bound,
+            &options,
+        )
+        .unwrap();
         assert_eq!(
             check.adjustments.len(),
             1,
@@ -93,8 +99,14 @@ fn collisions(c: &mut Criterion) {
                 b.iter_batched(
                     || edited.clone(),
                     |mut s| {
-                        shenlong::collide::resolve(&mut s, black_box(&before), &[0], &options)
-                            .unwrap()
+                        shenlong::collide::resolve(
+                            &mut s,
+                            black_box(&before),
+                            &[0],
+                            &shenlong::ground::kind::is_floor_bound,
+                            &options,
+                        )
+                        .unwrap()
                     },
                     criterion::BatchSize::LargeInput,
                 )

@@ -22,6 +22,7 @@ pub mod ground;
 pub mod io;
 pub(crate) mod lex;
 pub mod llm;
+pub mod number;
 pub mod offline;
 pub mod pipeline;
 pub mod render;

@@ -46,6 +46,15 @@ pub enum System {
     Omniverse,
 }
 
+impl std::str::FromStr for System {
+    type Err = String;
+
+    /// `cga`, `euclidean` or `omniverse` (any case).
+    fn from_str(name: &str) -> Result<Self, String> {
+        Self::parse(name)
+    }
+}
+
 impl System {
     /// All systems.
     pub const ALL: [System; 3] = [System::Cga, System::Euclidean, System::Omniverse];

@@ -608,21 +608,18 @@ mod cascade {
             cache_dir: None,
             ..Default::default()
         };
-        let t = shenlong::pipeline::backends::translator("offline+openai:m1", &settings).unwrap();
+        use shenlong::pipeline::backends::{translator, Spec};
+        let spec: Spec = "offline+openai:m1".parse().unwrap();
+        let t = translator(&spec, &settings).unwrap();
         assert_eq!(t.name(), "offline+m1");
         for bad in ["offline+", "offline+offline", "offline+nothing:x"] {
-            assert!(
-                shenlong::pipeline::backends::translator(bad, &settings).is_err(),
-                "{bad}"
-            );
+            assert!(bad.parse::<Spec>().is_err(), "{bad}");
         }
         let euclidean = shenlong::pipeline::backends::TranslatorSettings {
             system: System::Euclidean,
             ..settings
         };
-        let e = shenlong::pipeline::backends::translator("offline+openai:m1", &euclidean)
-            .err()
-            .unwrap();
+        let e = translator(&spec, &euclidean).err().unwrap().to_string();
         assert!(e.contains("CGA"), "{e}");
     }
 }

@@ -1,8 +1,9 @@
 """Shenlong for Blender: edit the open scene by instruction.
 
 "put the mug and the bowl on the dresser", "move the couch a bit to the left", "turn it 90
-degrees" (with the chair selected): the instruction goes to the `shenlong` binary with the
-visible mesh objects as boxes; Shenlong grounds the words to objects (or refuses, naming
+degrees" (with the chair selected): the instruction goes to the `shenlong` package — in
+Blender's own Python, bundled with this extension as a wheel — with the visible mesh
+objects as boxes; Shenlong grounds the words to objects (or refuses, naming
 the candidates), translates them into exact transformations — offline by default, or with
 a model — resolves collisions, and the add-on applies the motions to the objects' world
 matrices as one undo step. Nothing a model says is executed.
@@ -25,7 +26,7 @@ bl_info = {
 import json
 
 import bpy
-from bpy.props import EnumProperty, FloatProperty, StringProperty
+from bpy.props import EnumProperty, StringProperty
 
 from . import core
 
@@ -44,30 +45,6 @@ BACKENDS = [
 ]
 
 
-class ShenlongPreferences(bpy.types.AddonPreferences):
-    """Where the binary is and how long an edit may take."""
-
-    bl_idname = __package__
-
-    binary: StringProperty(
-        name="Shenlong binary",
-        description="Path to the shenlong executable (else SHENLONG_BIN, else PATH)",
-        subtype="FILE_PATH",
-        default="",
-    )
-    timeout: FloatProperty(
-        name="Timeout (s)",
-        description="How long one edit may take before it is given up",
-        default=core.DEFAULT_TIMEOUT,
-        min=1.0,
-        max=3600.0,
-    )
-
-    def draw(self, context):
-        self.layout.prop(self, "binary")
-        self.layout.prop(self, "timeout")
-
-
 class ShenlongSettings(bpy.types.PropertyGroup):
     """The panel's fields, kept with the scene."""
 
@@ -78,11 +55,6 @@ class ShenlongSettings(bpy.types.PropertyGroup):
     system: EnumProperty(name="Prompt system", items=SYSTEMS, default="cga")
     last_report: StringProperty(default="")
     last_error: StringProperty(default="")
-
-
-def _preferences(context):
-    addon = context.preferences.addons.get(__package__)
-    return addon.preferences if addon else None
 
 
 def llm_spec(settings) -> str:
@@ -112,9 +84,6 @@ class SHENLONG_OT_edit(bpy.types.Operator):
         settings = context.scene.shenlong
         instruction = self.instruction or settings.instruction
         try:
-            prefs = _preferences(context)
-            binary = core.find_binary(prefs.binary if prefs else None)
-            timeout = prefs.timeout if prefs else core.DEFAULT_TIMEOUT
             depsgraph = context.evaluated_depsgraph_get()
             selected = set(context.selected_objects)
             chosen = core.editable_objects(context.view_layer, selected)
@@ -122,14 +91,12 @@ class SHENLONG_OT_edit(bpy.types.Operator):
             names = {o.name for o in objects}
             selection = tuple(o.name for o in chosen if o in selected and o.name in names)
             result = core.run_edit(
-                binary,
                 objects,
                 instruction,
                 llm=llm_spec(settings),
                 system=settings.system,
                 base_url=settings.base_url.strip() or None,
                 selection=selection,
-                timeout=timeout,
             )
         except core.ShenlongError as e:
             settings.last_error = str(e)
@@ -192,7 +159,7 @@ def draw_panel(layout, settings):
             rep.label(text=line)
 
 
-CLASSES = (ShenlongPreferences, ShenlongSettings, SHENLONG_OT_edit, SHENLONG_PT_panel)
+CLASSES = (ShenlongSettings, SHENLONG_OT_edit, SHENLONG_PT_panel)
 
 
 def register():

@@ -1,5 +1,6 @@
 """The add-on's work, apart from Blender's user interface: which objects Shenlong sees, the
-frame conversion, running the `shenlong` binary, and applying its motions exactly.
+frame conversion, editing them with the `shenlong` package (in this process: the
+extension carries its wheel), and applying its motions exactly.
 
 Frame. Blender is right-handed with +Z up and objects facing −Y; Shenlong (like glTF) is
 right-handed with +Y up. The add-on converts exactly as Blender's own glTF exporter does:
@@ -13,17 +14,12 @@ Blender's hierarchy); a selected mesh is always one, wherever it is. Its box is 
 bounding box of its evaluated mesh (modifiers count), and its pivot the bottom centre of
 that box, as Shenlong's scene JSON defines it.
 
-Nothing here runs a shell or executes anything Shenlong (or a model) says: the binary is
-started with an argument list, and what comes back is numbers.
+Nothing here starts a process, writes a file or executes anything Shenlong (or a model)
+says: the package is called with the objects' boxes, and what comes back is numbers.
 """
 
 from __future__ import annotations
 
-import json
-import os
-import shutil
-import subprocess
-import tempfile
 from dataclasses import dataclass, field
 
 # Only mathutils is needed here (it comes with Blender and with the bpy module).
@@ -33,9 +29,6 @@ from mathutils import Matrix, Quaternion, Vector
 TO_SHENLONG = Matrix(((1.0, 0.0, 0.0), (0.0, 0.0, 1.0), (0.0, -1.0, 0.0)))
 #: Shenlong → Blender, the inverse (and transpose) of [`TO_SHENLONG`].
 TO_BLENDER = TO_SHENLONG.transposed()
-
-#: How long one edit may take, by default, in seconds (a model may be slow).
-DEFAULT_TIMEOUT = 300.0
 
 
 class ShenlongError(Exception):
@@ -84,21 +77,17 @@ class EditResult:
     summary: list[str] = field(default_factory=list)
 
 
-def find_binary(preference: str | None = None) -> str:
-    """The `shenlong` binary: the add-on preference, else `SHENLONG_BIN`, else `PATH`."""
-    for candidate in (preference, os.environ.get("SHENLONG_BIN")):
-        if candidate:
-            path = os.path.expanduser(candidate)
-            if os.path.isfile(path) and os.access(path, os.X_OK):
-                return path
-            raise ShenlongError(f"the Shenlong binary '{candidate}' is not an executable file")
-    found = shutil.which("shenlong")
-    if found:
-        return found
-    raise ShenlongError(
-        "the Shenlong binary was not found: set it in the add-on's preferences, "
-        "or SHENLONG_BIN, or put 'shenlong' on PATH"
-    )
+def package():
+    """The `shenlong` package: bundled with the extension as a wheel (Blender installs it),
+    or installed in the Python that runs `bpy`."""
+    try:
+        import shenlong
+    except ImportError as e:
+        raise ShenlongError(
+            f"the shenlong package is not installed ({e}); install the extension's zip, "
+            "which carries it"
+        ) from None
+    return shenlong
 
 
 def world_box(obj, depsgraph):
@@ -199,7 +188,6 @@ def box_corners(lo, hi):
 
 
 def run_edit(
-    binary: str,
     objects: list[SceneObject],
     instruction: str,
     *,
@@ -207,9 +195,9 @@ def run_edit(
     system: str = "cga",
     base_url: str | None = None,
     selection: tuple[str, ...] = (),
-    timeout: float = DEFAULT_TIMEOUT,
 ) -> EditResult:
-    """Runs `shenlong edit` on the objects and returns each moved object's motion.
+    """Edits the objects with the `shenlong` package, in this process, and returns each
+    moved object's motion.
 
     Raises ShenlongError with Shenlong's one-line message on a refusal or failure; the
     Blender scene is never touched here.
@@ -220,73 +208,42 @@ def run_edit(
         raise ShenlongError("the instruction contains a NUL character; retype it")
     if not objects:
         raise ShenlongError("there are no visible mesh objects to edit")
+    shenlong = package()
     scene = scene_json(objects)
-    with tempfile.TemporaryDirectory(prefix="shenlong-blender-") as tmp:
-        scene_path = os.path.join(tmp, "scene.json")
-        out_path = os.path.join(tmp, "edited.json")
-        report_path = os.path.join(tmp, "report.json")
-        with open(scene_path, "w", encoding="utf-8") as f:
-            json.dump(scene, f)
-        argv = [
-            binary, "edit",
-            "-o", out_path, "--json", report_path,
-            "--llm", llm, "--system", system,
-        ]
-        if base_url:
-            argv += ["--base-url", base_url]
-        for name in selection:
-            argv += ["--selected", name]
-        # `--` first: an instruction such as "--help" or "-h" is an instruction, not a flag.
-        argv += ["--", scene_path, instruction]
-        try:
-            proc = subprocess.run(
-                argv, capture_output=True, text=True, errors="replace",
-                timeout=timeout, check=False,
-            )
-        except subprocess.TimeoutExpired:
-            raise ShenlongError(f"Shenlong did not finish within {timeout:g} s") from None
-        except OSError as e:
-            raise ShenlongError(f"cannot run {binary}: {e.strerror or e}") from None
-        if proc.returncode != 0:
-            lines = [l for l in proc.stderr.strip().splitlines() if l.strip()]
-            message = lines[-1] if lines else f"Shenlong failed (exit code {proc.returncode})"
-            raise ShenlongError(message.removeprefix("shenlong: "))
-        try:
-            with open(out_path, encoding="utf-8") as f:
-                edited = json.load(f)
-            with open(report_path, encoding="utf-8") as f:
-                report = json.load(f)
-        except (OSError, ValueError) as e:
-            raise ShenlongError(
-                f"{binary} finished but wrote no readable result ({type(e).__name__}); "
-                "is it the shenlong binary?"
-            ) from None
     try:
-        motions = []
-        if len(edited["objects"]) != len(scene["objects"]):
-            raise ValueError("a different number of objects")
-        for before, after in zip(scene["objects"], edited["objects"]):
-            motion = motion_of(before, after)
-            if motion is not None:
-                motions.append(motion)
-        return EditResult(motions, report, summarise(report))
-    except (KeyError, TypeError, ValueError, AttributeError, IndexError) as e:
-        raise ShenlongError(f"{binary} wrote a result this add-on cannot read ({e})") from None
+        outcome = shenlong.Scene.from_dict(scene).edit(
+            instruction,
+            llm=llm,
+            system=system,
+            selected=list(selection),
+            report=True,
+            base_url=base_url,
+        )
+    except shenlong.EditError as e:
+        raise ShenlongError(str(e).splitlines()[0] if str(e) else type(e).__name__) from None
+    by_name = {o["name"]: o for o in scene["objects"]}
+    motions = []
+    for moved in outcome.moved:
+        motion = motion_of(by_name[moved.object], moved.object, moved.after)
+        if motion is not None:
+            motions.append(motion)
+    return EditResult(motions, outcome.report or {}, summarise(outcome.report or {}))
 
 
-def motion_of(before: dict, after: dict):
-    """The world motion (Blender frame) that takes an object from its pose in `before` to
-    its pose in `after`, or None when it did not move.
+def motion_of(before: dict, name: str, after):
+    """The world motion (Blender frame) that takes an object from its entry `before` in the
+    scene Shenlong was given to its pose `after` (a `shenlong.Pose`), or None when it did
+    not move.
 
     Shenlong's pose maps the box's local frame (pivot at the bottom centre) into the world:
     `x ↦ s·q(x) + t`. The object started unrotated and unscaled at `p0`, so its world
     motion is `x ↦ s·q(x − p0) + t`; in Blender's frame that is `C⁻¹ · that · C`.
     """
     p0 = Vector(before["position"])
-    t = Vector(after["position"])
-    x, y, z, w = after.get("rotation", [0.0, 0.0, 0.0, 1.0])
+    t = Vector(after.position)
+    x, y, z, w = after.rotation
     q = Quaternion((w, x, y, z)).normalized()
-    s = float(after.get("scale", 1.0))
+    s = float(after.scale)
     if (t - p0).length < 1e-12 and abs(q.angle) < 1e-12 and abs(s - 1.0) < 1e-12:
         return None
     linear = TO_BLENDER @ (q.to_matrix() * s) @ TO_SHENLONG
@@ -296,7 +253,7 @@ def motion_of(before: dict, after: dict):
     half = Vector((size.x / 2.0, 0.0, size.z / 2.0))
     local = box_corners(-half, Vector((half.x, size.y, half.z)))
     lo, hi = bounds(to_blender(q @ (c * s) + t) for c in local)
-    return Motion(after["name"], matrix, lo, hi)
+    return Motion(name, matrix, lo, hi)
 
 
 def apply_motions(objects_by_name: dict, motions: list[Motion]) -> None:

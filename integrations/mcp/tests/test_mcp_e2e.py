@@ -61,7 +61,9 @@ class McpEndToEnd(unittest.IsolatedAsyncioTestCase):
                             "edit", {"instruction": "put the 'orange bottle' on top of the 'tool table'"}
                         )
                     )
-                    self.assertEqual(report["bindings"][0]["object"], "orange bottle")
+                    self.assertEqual(report["understood"]["bindings"][0]["object"], "orange bottle")
+                    self.assertEqual([m["object"] for m in report["moved"]], ["orange bottle"])
+                    self.assertNotIn("report", report, "the whole report only when asked for")
                     listing = structured(await session.call_tool("list_objects", {}))
                     bottle = by_name(listing, "orange bottle")
                     self.assertAlmostEqual(bottle["world_box"]["min"][1], table_top, places=9)
@@ -70,6 +72,7 @@ class McpEndToEnd(unittest.IsolatedAsyncioTestCase):
                     refused = await session.call_tool("edit", {"instruction": "move the 'grand piano' left"})
                     self.assertTrue(refused.is_error)
                     self.assertIn("grand piano", refused.content[0].text)
+                    self.assertEqual(refused.structured_content["kind"], "not_understood")
 
                     applied = structured(
                         await session.call_tool(

@@ -1,6 +1,7 @@
 //! `shenlong apply`: apply one CGA expression to one object, with no translator.
 
-use anyhow::Result;
+use anyhow::{Context, Result};
+use shenlong::session::{bound_objects, ApplyRequest, Session};
 use std::path::PathBuf;
 
 /// Apply a CGA expression to one object of a scene and write the result.
@@ -30,6 +31,14 @@ pub struct Args {
     /// Do not carry the objects resting on this one.
     #[arg(long)]
     no_carry: bool,
+    /// Another object the expression uses, as VARIABLE=NAME: `--bind 'X2=tool table'`
+    /// (X2, X3 … in order).
+    #[arg(long = "bind", value_name = "X2=NAME")]
+    bind: Vec<String>,
+    /// Write the outcome as JSON — what moved, notes, the expression as understood — to
+    /// FILE, or to stderr without a value (where a refusal is written too, as JSON).
+    #[arg(long, value_name = "FILE", num_args = 0..=1, default_missing_value = "-")]
+    json: Option<String>,
     /// Also write the edit as ThreeDWorld commands (teleport_object, rotate_object_to,
     /// scale_object) to this file.
     #[arg(long, value_name = "FILE")]
@@ -39,22 +48,60 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let mut file = super::load_scene_with(&args.scene, &args.read)?;
+    let file = super::load_scene_with(&args.scene, &args.read)?;
     let options = args.collisions.edit_options(!args.no_carry)?;
-    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
-    let before = args.tdw.is_some().then(|| file.scene.clone());
-    let (placed, _) =
-        shenlong::pipeline::apply_expression(&mut file.scene, &args.object, &args.expr, &options)
-            .map_err(|e| super::edit_error(e).context(format!("--expr {}", args.expr)))?;
-    super::collision_notes(&placed);
+    let mut bind = std::collections::BTreeMap::new();
+    for pair in &args.bind {
+        let (variable, name) = pair
+            .split_once('=')
+            .with_context(|| format!("--bind {pair}: give VARIABLE=NAME, as X2='tool table'"))?;
+        bind.insert(variable.trim().to_string(), name.to_string());
+    }
+    let mut session = Session::saving_on_request(file, None);
+    let result = bound_objects(&args.object, &bind).and_then(|objects| {
+        session.apply(
+            &ApplyRequest {
+                objects: &objects,
+                expression: &args.expr,
+            },
+            &options,
+        )
+    });
+    let outcome = match result {
+        Ok(outcome) => outcome,
+        Err(refusal) => {
+            if args.json.as_deref() == Some("-") {
+                eprintln!("{}", super::refusal_json(&refusal));
+            }
+            return Err(super::refusal(refusal, false).context(format!("--expr {}", args.expr)));
+        }
+    };
+    let json = serde_json::to_string_pretty(&outcome)
+        .map_err(|e| anyhow::anyhow!("cannot write the outcome: {e}"))?;
+    let json_file = super::JsonOut::prepare(args.json.as_deref(), &json)?;
+    let before = args
+        .tdw
+        .is_some()
+        .then(|| session.before_last_change())
+        .flatten();
     super::write_edit(
-        &file,
-        before.as_ref(),
+        &session.file,
+        before
+            .as_ref()
+            .or(args.tdw.is_some().then_some(&session.file.scene)),
         super::Output {
             path: args.output.as_deref(),
             usd_layer: false,
         },
         args.tdw.as_deref(),
     )?;
+    if let Some(json_file) = json_file {
+        json_file.commit()?;
+    }
+    match args.json.as_deref() {
+        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&json)),
+        Some(_) => {}
+        None => super::notes(&outcome.notes),
+    }
     Ok(())
 }

@@ -1,8 +1,9 @@
 //! `shenlong edit`: the main job — an instruction applied to a scene.
 
-use anyhow::{Context, Result};
+use anyhow::Result;
 use shenlong::pipeline::backends::translator;
-use shenlong::pipeline::{edit, EditOptions, System};
+use shenlong::pipeline::{EditOptions, System};
+use shenlong::session::{EditRequest, Session};
 use std::path::PathBuf;
 
 /// Edit a scene by instruction: "move the 'sofa' to the right".
@@ -34,9 +35,11 @@ pub struct Args {
     #[arg(short, long, value_name = "OUT")]
     output: Option<PathBuf>,
     /// The prompt system: cga (Shenlong), euclidean or omniverse (the paper's baselines).
-    #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
-    system: String,
-    /// Write the edit report as JSON: to FILE, or to stderr without a value.
+    #[arg(long, value_name = "SYSTEM", default_value = "cga")]
+    system: System,
+    /// Write the edit's outcome as JSON — what moved, notes, the instruction as
+    /// understood and the whole report — to FILE, or to stderr without a value (where a
+    /// refusal is written too, as JSON: kind, error, ambiguity).
     #[arg(long, value_name = "FILE", num_args = 0..=1, default_missing_value = "-")]
     json: Option<String>,
     /// Do not carry the objects resting on a moved object.
@@ -61,89 +64,59 @@ pub struct Args {
 }
 
 pub fn run(args: Args) -> Result<()> {
-    let system = System::from_name(&args.system).expect("clap checked the name");
+    let system = args.system;
     let settings = args.translator.settings(system)?;
-    let mut file = super::load_scene_with(&args.scene, &args.read)?;
+    let file = super::load_scene_with(&args.scene, &args.read)?;
     let translator = translator(&args.translator.llm, &settings).map_err(super::llm_error)?;
     let options = EditOptions {
         carry: !args.no_carry,
         collisions: args.collisions.resolve_options()?,
-        selection: args
-            .selected
-            .iter()
-            .map(|name| {
-                file.scene
-                    .resolve(name)
-                    .map_err(|e| anyhow::anyhow!("--selected: {e}"))
-            })
-            .collect::<Result<_>>()?,
+        selection: Vec::new(),
     };
-    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
-    let before = args.tdw.is_some().then(|| file.scene.clone());
-    let result = edit(
-        &mut file.scene,
-        &args.instruction,
-        translator.as_ref(),
-        &options,
-    )
-    // The flag is the command line's to name; the library's message does not.
-    .map_err(super::edit_error)?;
-    let report = serde_json::to_string_pretty(&result.report)
-        .map_err(|e| anyhow::anyhow!("cannot write the edit report: {e}"))?;
-
-    // The report file is made ready first: when it cannot be written, neither is the
-    // scene (a failed command changes no file).
-    let json_file = match args.json.as_deref() {
-        Some(path) if path != "-" => Some(
-            shenlong::io::prepare(std::path::Path::new(path), format!("{report}\n").as_bytes())
-                .with_context(|| format!("cannot write {path}"))?,
-        ),
-        _ => None,
+    let mut session = Session::saving_on_request(file, None);
+    let request = EditRequest {
+        instruction: &args.instruction,
+        selected: &args.selected,
+        report: true,
     };
-    // A stream (a pipe, `/dev/full`) fails only when it is written: it is written before
-    // the scene, so that a report that cannot be written leaves the scene unwritten.
-    let json_file = match json_file {
-        Some(stream @ shenlong::io::Prepared::InPlace { .. }) => {
-            stream
-                .commit()
-                .with_context(|| format!("cannot write {}", args.json.as_deref().unwrap_or("")))?;
-            None
+    let outcome = match session.edit(&request, translator.as_ref(), &options) {
+        Ok(outcome) => outcome,
+        Err(refusal) => {
+            if args.json.as_deref() == Some("-") {
+                eprintln!("{}", super::refusal_json(&refusal));
+            }
+            let offline = args.translator.llm == shenlong::pipeline::backends::Spec::Offline;
+            return Err(super::refusal(refusal, offline));
         }
-        other => other,
     };
+    let json = serde_json::to_string_pretty(&outcome)
+        .map_err(|e| anyhow::anyhow!("cannot write the edit's outcome: {e}"))?;
+
+    let json_file = super::JsonOut::prepare(args.json.as_deref(), &json)?;
+    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
+    let before = args
+        .tdw
+        .is_some()
+        .then(|| session.before_last_change())
+        .flatten();
     super::write_edit(
-        &file,
-        before.as_ref(),
+        &session.file,
+        before
+            .as_ref()
+            .or(args.tdw.is_some().then_some(&session.file.scene)),
         super::Output {
             path: args.output.as_deref(),
             usd_layer: args.usd_layer,
         },
         args.tdw.as_deref(),
     )?;
-    if let (Some(prepared), Some(path)) = (json_file, args.json.as_deref()) {
-        prepared
-            .commit()
-            .with_context(|| format!("cannot write {path}"))?;
+    if let Some(json_file) = json_file {
+        json_file.commit()?;
     }
     match args.json.as_deref() {
-        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&report)),
+        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&json)),
         Some(_) => {}
-        None => {
-            for c in &result.report.collisions_resolved {
-                let d = c.displacement;
-                shenlong_cli::say!(
-                    "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}",
-                    c.object,
-                    d[0],
-                    d[1],
-                    d[2],
-                    c.collided_with.join(", ")
-                );
-            }
-            for o in &result.report.overlaps_remaining {
-                shenlong_cli::say!("note: {o} (--allow-collisions)");
-            }
-        }
+        None => super::notes(&outcome.notes),
     }
     Ok(())
 }

@@ -30,8 +30,8 @@ pub struct Args {
     #[arg(long, value_name = "FILE")]
     save: Option<PathBuf>,
     /// The prompt system for a model translator.
-    #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
-    system: String,
+    #[arg(long, value_name = "SYSTEM", default_value = "cga")]
+    system: System,
     #[command(flatten)]
     translator: super::TranslatorArgs,
     #[command(flatten)]
@@ -43,7 +43,7 @@ pub fn run(args: Args) -> Result<()> {
     if let Some(save) = &args.save {
         super::serve::check_save(&file, save)?;
     }
-    let system = System::from_name(&args.system).expect("clap checked the name");
+    let system = args.system;
     let settings = McpSettings {
         // Made once, here: a bad backend fails now rather than at the first edit.
         translator: shenlong::pipeline::backends::translator(

@@ -216,9 +216,10 @@ impl CollisionArgs {
 /// The translator, as every command that translates instructions offers it.
 #[derive(clap::Args, Debug)]
 pub struct TranslatorArgs {
-    /// The translator: offline, openai:MODEL, ollama:MODEL or replay:FILE.
+    /// The translator: offline, openai:MODEL, ollama:MODEL, replay:FILE, or a cascade
+    /// offline+openai:MODEL (the model only for what the offline translator cannot read).
     #[arg(long, value_name = "BACKEND", default_value = "offline")]
-    pub llm: String,
+    pub llm: shenlong::pipeline::backends::Spec,
     /// Attempts after the first when the model's reply cannot be used.
     #[arg(long, value_name = "N", default_value_t = 5)]
     pub retries: usize,
@@ -282,53 +283,91 @@ impl TranslatorArgs {
     }
 }
 
-/// Says on stderr what collision resolution adjusted or left overlapping.
-pub fn collision_notes(placed: &shenlong::pipeline::Placed) {
-    for c in &placed.collisions_resolved {
-        let d = c.displacement;
-        shenlong_cli::say!(
-            "note: moved '{}' by [{:.3}, {:.3}, {:.3}] m to clear {}{}",
-            c.object,
-            d[0],
-            d[1],
-            d[2],
-            c.collided_with.join(", "),
-            c.lifted_onto
-                .as_ref()
-                .map(|o| format!(", onto '{o}'"))
-                .unwrap_or_default()
-        );
-    }
-    for o in &placed.overlaps_remaining {
-        shenlong_cli::say!("note: {o} (--allow-collisions)");
+/// Says on stderr what an operation's notes say: collisions cleared, overlaps left,
+/// objects held.
+pub fn notes(notes: &[String]) {
+    for note in notes {
+        shenlong_cli::say!("note: {note}");
     }
 }
 
-/// A translator that cannot be made, in the command line's terms.
-pub fn llm_error(message: String) -> anyhow::Error {
-    let message = message
-        .replace("choose the cga prompt system", "use --system cga")
-        .replace("the base URL of a local", "--base-url for a local");
-    anyhow::anyhow!("--llm: {message}")
+/// An outcome's JSON to write with `--json FILE`: made ready before the scene is written
+/// and committed after it, so a failed command changes no file; a stream (a pipe,
+/// `/dev/full`) is written first, since it fails only when written.
+pub struct JsonOut {
+    path: String,
+    prepared: Option<shenlong::io::Prepared>,
 }
 
-/// An edit error as the command line words it: placement errors name the flag that
-/// overrides them.
-pub fn edit_error(e: shenlong::pipeline::EditError) -> anyhow::Error {
-    match e.kind {
-        shenlong::pipeline::EditErrorKind::Placement => anyhow::anyhow!(
-            "{}; use --allow-collisions to apply the edit anyway",
-            e.message
-        ),
-        shenlong::pipeline::EditErrorKind::NotUnderstood
-            if e.message
-                .starts_with("the offline translator could not read") =>
-        {
-            anyhow::anyhow!(
-                "{}, or use a language model with --llm (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
-                e.message
-            )
+impl JsonOut {
+    /// Readies `json` for `--json PATH` (`None` or `-`: nothing to ready).
+    pub fn prepare(path: Option<&str>, json: &str) -> Result<Option<Self>> {
+        let Some(path) = path.filter(|p| *p != "-") else {
+            return Ok(None);
+        };
+        let prepared = shenlong::io::prepare(Path::new(path), format!("{json}\n").as_bytes())
+            .with_context(|| format!("cannot write {path}"))?;
+        let prepared = match prepared {
+            stream @ shenlong::io::Prepared::InPlace { .. } => {
+                stream
+                    .commit()
+                    .with_context(|| format!("cannot write {path}"))?;
+                None
+            }
+            staged => Some(staged),
+        };
+        Ok(Some(Self {
+            path: path.to_string(),
+            prepared,
+        }))
+    }
+
+    /// Writes it, once the scene is written.
+    pub fn commit(self) -> Result<()> {
+        match self.prepared {
+            Some(prepared) => prepared
+                .commit()
+                .with_context(|| format!("cannot write {}", self.path)),
+            None => Ok(()),
         }
-        _ => anyhow::Error::new(e),
+    }
+}
+
+/// A refusal as JSON on one line, as the HTTP API and MCP answer it.
+pub fn refusal_json(refusal: &shenlong::session::OpError) -> String {
+    shenlong_cli::terminal::safe_json(&serde_json::to_string(refusal).unwrap_or_default())
+        .into_owned()
+}
+
+/// A translator that cannot be made, in the command line's terms: the flag that would
+/// make it, chosen by the error's kind.
+pub fn llm_error(error: shenlong::pipeline::backends::BackendError) -> anyhow::Error {
+    use shenlong::pipeline::backends::BackendError;
+    match error {
+        BackendError::OfflineNeedsCga(system) => anyhow::anyhow!(
+            "--llm: the offline translator answers in CGA only: use --system cga, or a model (openai:MODEL) for '{}'",
+            system.name()
+        ),
+        BackendError::NoApiKey => anyhow::anyhow!(
+            "--llm: the translator openai:MODEL needs OPENAI_API_KEY (or --base-url for a local OpenAI-compatible server)"
+        ),
+        other => anyhow::Error::new(other).context("--llm"),
+    }
+}
+
+/// A refusal as the command line says it: the library's line, then, by the refusal's
+/// kind, the flag that changes the outcome where there is one.
+pub fn refusal(refusal: shenlong::session::OpError, offline: bool) -> anyhow::Error {
+    use shenlong::session::ErrorKind;
+    let hint = match refusal.kind {
+        ErrorKind::NoFreePlace => Some("use --allow-collisions to apply the edit anyway"),
+        ErrorKind::NotUnderstood if offline && refusal.unread => Some(
+            "or use a language model with --llm (openai:MODEL, ollama:MODEL, or offline+openai:MODEL to ask one only for what the offline translator cannot read)",
+        ),
+        _ => None,
+    };
+    match hint {
+        Some(hint) => anyhow::anyhow!("{}; {hint}", refusal.message),
+        None => anyhow::Error::new(refusal),
     }
 }

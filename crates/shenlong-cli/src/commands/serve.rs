@@ -35,8 +35,8 @@ pub struct Args {
     #[arg(long)]
     allow_remote: bool,
     /// The default prompt system.
-    #[arg(long, value_name = "SYSTEM", default_value = "cga", value_parser = ["cga", "euclidean", "omniverse"])]
-    system: String,
+    #[arg(long, value_name = "SYSTEM", default_value = "cga")]
+    system: System,
     #[command(flatten)]
     translator: super::TranslatorArgs,
     #[command(flatten)]
@@ -48,7 +48,7 @@ pub fn run(args: Args) -> Result<()> {
     if let Some(save) = &args.save {
         check_save(&file, save)?;
     }
-    let system = System::from_name(&args.system).expect("clap checked the name");
+    let system = args.system;
     let settings = ServeSettings {
         llm: args.translator.llm.clone(),
         system,
@@ -82,7 +82,7 @@ pub fn run(args: Args) -> Result<()> {
             }
             shenlong_cli::say!(
                 "shenlong: warning: listening on {address}: anyone who can reach it can edit the scene{}",
-                if settings.llm == "offline" { "" } else { " and use the model's key" }
+                if settings.llm == shenlong::pipeline::backends::Spec::Offline { "" } else { " and use the model's key" }
             );
         }
         shenlong_cli::say!(

@@ -23,11 +23,11 @@ use rmcp::{schemars, tool, tool_handler, tool_router, ErrorData, Json, Peer, Rol
 use serde::Deserialize;
 use shenlong::collide::ResolveOptions;
 use shenlong::format::{Format, SceneFile};
-use shenlong::ground::Grounder;
-use shenlong::pipeline::{edit_with, EditOptions, Translator};
+use shenlong::pipeline::{EditOptions, Translator};
 use shenlong::scene::listing::{listing, SceneListing};
-use shenlong::scene::Scene;
-use shenlong::session::{Session, StepError};
+use shenlong::session::{
+    bound_objects, ApplyRequest as Apply, EditRequest as Edit, OpError, Outcome, Session,
+};
 use std::collections::BTreeMap;
 use std::path::PathBuf;
 use std::sync::atomic::{AtomicBool, Ordering};
@@ -51,10 +51,7 @@ struct State {
     session: Mutex<Session>,
     /// One change at a time.
     edits: tokio::sync::Mutex<()>,
-    grounder: Grounder,
     settings: McpSettings,
-    /// The scene before the last change, for `render {before: true}`.
-    previous: Mutex<Option<Scene>>,
     subscribed: AtomicBool,
 }
 
@@ -72,6 +69,14 @@ pub struct EditRequest {
     /// What to do, in words: "put the 'orange bottle' on top of the 'tool table'", "move
     /// the couch a bit to the left", "turn the chair nearest the desk to face the TV".
     pub instruction: String,
+    /// Objects the user has selected, by name: what "it", "them" and "the selection" mean
+    /// when the instruction names nothing before them.
+    #[serde(default)]
+    pub selected: Vec<String>,
+    /// Also answer the whole edit report (grounding of each phrase, the translator's
+    /// exchanges, expressions, versors, timings): several kilobytes.
+    #[serde(default)]
+    pub report: bool,
 }
 
 /// `apply`'s input.
@@ -155,15 +160,12 @@ const APPLY_DESCRIPTION: &str = "Apply a CGA (conformal geometric algebra) expre
 impl ShenlongMcp {
     /// A server for this scene.
     pub fn new(file: SceneFile, settings: McpSettings) -> Self {
-        let grounder = Grounder::new(&file.scene);
         let session = Session::saving_on_request(file, settings.save.clone());
         Self {
             state: Arc::new(State {
                 session: Mutex::new(session),
                 edits: tokio::sync::Mutex::new(()),
-                grounder,
                 settings,
-                previous: Mutex::new(None),
                 subscribed: AtomicBool::new(false),
             }),
             tool_router: Self::tool_router(),
@@ -185,35 +187,28 @@ impl ShenlongMcp {
         }
     }
 
-    /// Records a change and tells subscribers; its id (`None` when nothing moved).
-    async fn commit(
+    /// An operation's answer: its outcome, or its refusal as a tool error with the same
+    /// data (`{"kind", "error", "ambiguity"}`); subscribers are told when it changed
+    /// the scene.
+    async fn answer(
         &self,
-        before: Scene,
-        after: Scene,
-        kind: &str,
-        text: &str,
+        result: Result<Outcome, OpError>,
         peer: &Peer<RoleServer>,
-    ) -> Option<u64> {
-        // (This server saves only when asked, so a commit has no save to fail.)
-        let id = self.session().commit(after, kind, text).id;
-        if id.is_some() {
-            self.changed(before, peer).await;
+    ) -> Result<CallToolResult, ToolError> {
+        match result {
+            Ok(outcome) => {
+                if outcome.history_id.is_some() {
+                    self.notify(peer).await;
+                }
+                let value = serde_json::to_value(&outcome).map_err(|e| e.to_string())?;
+                Ok(CallToolResult::structured(value))
+            }
+            Err(mut error) => {
+                error.message = cut(error.message);
+                let value = serde_json::to_value(&error).map_err(|e| e.to_string())?;
+                Ok(CallToolResult::structured_error(value))
+            }
         }
-        id
-    }
-
-    fn previous(&self) -> std::sync::MutexGuard<'_, Option<Scene>> {
-        self.state
-            .previous
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
-    }
-
-    /// After any change (a commit, an undo, a redo): keeps the scene as it was, for
-    /// `render {before: true}`, and tells subscribers.
-    async fn changed(&self, before: Scene, peer: &Peer<RoleServer>) {
-        *self.previous() = Some(before);
-        self.notify(peer).await;
     }
 
     async fn notify(&self, peer: &Peer<RoleServer>) {
@@ -239,9 +234,6 @@ impl ShenlongMcp {
 /// (a 10 MB object name) is cut, so an answer stays small.
 const MAX_ERROR_CHARS: usize = 2000;
 
-/// The longest object name a request may give.
-const MAX_NAME_CHARS: usize = 1000;
-
 /// A tool's error: one line, cut to [`MAX_ERROR_CHARS`].
 #[derive(Debug)]
 pub struct ToolError(String);
@@ -258,13 +250,17 @@ impl From<&str> for ToolError {
     }
 }
 
+/// `message` cut to [`MAX_ERROR_CHARS`].
+fn cut(message: String) -> String {
+    match message.char_indices().nth(MAX_ERROR_CHARS) {
+        Some((at, _)) => format!("{}… (cut at {MAX_ERROR_CHARS} characters)", &message[..at]),
+        None => message,
+    }
+}
+
 impl rmcp::model::IntoContents for ToolError {
     fn into_contents(self) -> Vec<rmcp::model::ContentBlock> {
-        let message = match self.0.char_indices().nth(MAX_ERROR_CHARS) {
-            Some((cut, _)) => format!("{}… (cut at {MAX_ERROR_CHARS} characters)", &self.0[..cut]),
-            None => self.0,
-        };
-        vec![rmcp::model::ContentBlock::text(message)]
+        vec![rmcp::model::ContentBlock::text(cut(self.0))]
     }
 }
 
@@ -281,7 +277,7 @@ impl ShenlongMcp {
 
     /// An edit by instruction.
     #[tool(
-        description = "Edit the scene by an instruction in words, as a person would say it: \"put the orange bottle on top of the tool table\", \"move the couch a bit to the left\", \"turn the chair nearest the desk to face the TV\", \"put the mug and the bowl on the dresser\". Shenlong finds the objects meant (or refuses, naming the candidates — it never guesses), translates the instruction into exact CGA transformations, applies them, resolves collisions, and returns the edit report: how each phrase was grounded, the expressions, the motions and the collisions resolved. Undo with `undo`."
+        description = "Edit the scene by an instruction in words, as a person would say it: \"put the orange bottle on top of the tool table\", \"move the couch a bit to the left\", \"turn the chair nearest the desk to face the TV\", \"put the mug and the bowl on the dresser\". Shenlong finds the objects meant (or refuses, naming the candidates — it never guesses), translates the instruction into exact CGA transformations, applies them and resolves collisions. Answers what moved (each object with how — moved, carried or pushed — and its pose before and after), notes (collisions cleared, objects held), and the instruction as understood (objects as variables X1, X2 … and what each stands for); with report: true also the whole edit report. A refusal is an error whose `kind` says why (not_understood, ambiguous, no_free_place, held_would_move, bad_input, model) and, for `ambiguous`, `ambiguity.choices`: each candidate with the instruction that names it, ready to send. Name objects in every instruction (a name, or a description such as \"the chair by the window\"); `selected` names the objects \"it\" and \"them\" mean. Undo with `undo`."
     )]
     async fn edit(
         &self,
@@ -289,30 +285,21 @@ impl ShenlongMcp {
         peer: Peer<RoleServer>,
     ) -> Result<CallToolResult, ToolError> {
         let _turn = self.state.edits.lock().await;
-        let before = self.session().file.scene.clone();
-        let mut working = before.clone();
+        let working = self.session().working();
         let state = Arc::clone(&self.state);
         let options = self.options();
-        let instruction = request.instruction.clone();
-        let outcome = tokio::task::spawn_blocking(move || {
-            edit_with(
-                &mut working,
-                &state.grounder,
-                &instruction,
-                state.settings.translator.as_ref(),
-                &options,
-            )
-            .map(|e| (working, e.report))
+        let pending = tokio::task::spawn_blocking(move || {
+            let edit = Edit {
+                instruction: &request.instruction,
+                selected: &request.selected,
+                report: request.report,
+            };
+            working.edit(&edit, state.settings.translator.as_ref(), &options)
         })
         .await
         .map_err(|e| format!("the edit stopped: {e}"))?;
-        let (after, report) = outcome.map_err(|e| e.message)?;
-        let id = self
-            .commit(before, after, "edit", &request.instruction, &peer)
-            .await;
-        let mut value = serde_json::to_value(&report).map_err(|e| e.to_string())?;
-        value["history_id"] = serde_json::json!(id);
-        Ok(CallToolResult::structured(value))
+        let result = pending.map(|p| self.session().land(p));
+        self.answer(result, &peer).await
     }
 
     /// An expression applied to one object.
@@ -322,63 +309,41 @@ impl ShenlongMcp {
         Parameters(request): Parameters<ApplyRequest>,
         peer: Peer<RoleServer>,
     ) -> Result<CallToolResult, ToolError> {
+        let objects = match bound_objects(&request.object, &request.bind) {
+            Ok(objects) => objects,
+            Err(e) => return self.answer(Err(e), &peer).await,
+        };
         let _turn = self.state.edits.lock().await;
-        let mut names = vec![request.object.as_str()];
-        for k in 0..request.bind.len() {
-            let variable = format!("X{}", k + 2);
-            let name = request.bind.get(&variable).ok_or_else(|| {
-                format!(
-                    "bind X2, X3, … in order: {variable} is missing (got {})",
-                    request.bind.keys().cloned().collect::<Vec<_>>().join(", ")
-                )
-            })?;
-            names.push(name);
-        }
-        // A name no object could have is refused before anything quotes it.
-        if names.iter().any(|n| n.chars().count() > MAX_NAME_CHARS) {
-            return Err(
-                format!("an object name is longer than {MAX_NAME_CHARS} characters").into(),
-            );
-        }
-        let before = self.session().file.scene.clone();
-        let mut after = before.clone();
-        let names: Vec<String> = names.into_iter().map(str::to_string).collect();
-        let expression = request.expression.clone();
+        let working = self.session().working();
         let options = self.options();
         // Collision search can take its budget: off the async workers.
-        let (after, (placed, t)) = tokio::task::spawn_blocking(move || {
-            let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-            shenlong::pipeline::apply_expression_bound(&mut after, &refs, &expression, &options)
-                .map(|r| (after, r))
+        let pending = tokio::task::spawn_blocking(move || {
+            working.apply(
+                &Apply {
+                    objects: &objects,
+                    expression: &request.expression,
+                },
+                &options,
+            )
         })
         .await
-        .map_err(|e| format!("the edit stopped: {e}"))?
-        .map_err(|e| e.message)?;
-        let text = format!("{}: {}", request.object, request.expression);
-        let id = self.commit(before, after, "apply", &text, &peer).await;
-        let s = t.similarity;
-        Ok(CallToolResult::structured(serde_json::json!({
-            "object": request.object,
-            "expression": request.expression,
-            "history_id": id,
-            "translation": s.translation.to_array(),
-            "rotation": s.rotation.to_array(),
-            "scale": s.scale,
-            "carried": placed.carried,
-            "collisions_resolved": placed.collisions_resolved,
-        })))
+        .map_err(|e| format!("the edit stopped: {e}"))?;
+        let result = pending.map(|p| self.session().land(p));
+        self.answer(result, &peer).await
     }
 
     /// Undo the last change.
     #[tool(
-        description = "Undo the last change (edit or apply). Returns the id of the change undone."
+        description = "Undo the last change (edit, apply or redo). Answers the change's history_id and what moved back (each object's pose before and after); an error of kind nothing_to_undo when there is none."
     )]
     async fn undo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, ToolError> {
         self.step(true, &peer).await
     }
 
     /// Redo the last undone change.
-    #[tool(description = "Redo the last undone change. Returns the id of the change redone.")]
+    #[tool(
+        description = "Redo the last undone change. Answers the change's history_id and what moved; an error of kind nothing_to_redo when there is none."
+    )]
     async fn redo(&self, peer: Peer<RoleServer>) -> Result<CallToolResult, ToolError> {
         self.step(false, &peer).await
     }
@@ -406,11 +371,14 @@ impl ShenlongMcp {
         &self,
         Parameters(request): Parameters<RenderRequest>,
     ) -> Result<CallToolResult, ToolError> {
-        let scene = self.session().file.scene.clone();
-        let previous = if request.before {
-            self.previous().clone()
-        } else {
-            None
+        let (scene, previous) = {
+            let session = self.session();
+            let previous = if request.before {
+                session.before_last_change()
+            } else {
+                None
+            };
+            (session.file.scene.clone(), previous)
         };
         let svg = shenlong::render::plan_svg(&scene, previous.as_ref());
         let png = tokio::task::spawn_blocking(move || shenlong::render::svg_to_png(&svg))
@@ -490,17 +458,12 @@ fn blob(uri: String, mime: &str, bytes: Vec<u8>) -> ResourceContents {
 impl ShenlongMcp {
     async fn step(&self, undo: bool, peer: &Peer<RoleServer>) -> Result<CallToolResult, ToolError> {
         let _turn = self.state.edits.lock().await;
-        let before = self.session().file.scene.clone();
-        let id = match self.session().step(undo) {
-            Ok(change) => change.id.unwrap_or_default(),
-            Err(StepError::Nothing) => {
-                return Err(format!("nothing to {}", if undo { "undo" } else { "redo" }).into())
-            }
+        let result = if undo {
+            self.session().undo()
+        } else {
+            self.session().redo()
         };
-        self.changed(before, peer).await;
-        Ok(CallToolResult::structured(serde_json::json!({
-            if undo { "undone" } else { "redone" }: id
-        })))
+        self.answer(result, peer).await
     }
 }
 

@@ -19,10 +19,9 @@ use serde::Deserialize;
 use serde_json::{json, Value};
 use shenlong::collide::ResolveOptions;
 use shenlong::format::{Document, Format, SceneFile};
-use shenlong::pipeline::backends::{translator, TranslatorSettings};
-use shenlong::pipeline::{edit_with, EditErrorKind, EditOptions, System};
-use shenlong::scene::Scene;
-use shenlong::session::{Session, StepError};
+use shenlong::pipeline::backends::{translator, Spec, TranslatorSettings};
+use shenlong::pipeline::{EditOptions, System};
+use shenlong::session::{ApplyRequest as Apply, EditRequest as Edit, ErrorKind, OpError, Session};
 use std::path::PathBuf;
 use std::sync::{Arc, Mutex};
 
@@ -35,7 +34,7 @@ pub const MAX_INSTRUCTION: usize = shenlong::pipeline::template::MAX_INSTRUCTION
 #[derive(Clone, Debug)]
 pub struct ServeSettings {
     /// The default `--llm` backend.
-    pub llm: String,
+    pub llm: Spec,
     /// The default prompt system.
     pub system: System,
     /// Translator settings (retries, cache, base URL, timeout). The API key stays here.
@@ -57,8 +56,6 @@ pub struct App {
     settings: ServeSettings,
     /// The address the server listens on, besides loopback, that a `Host` may name.
     bound: Mutex<Option<std::net::IpAddr>>,
-    /// The scene's name index, built once: edits move objects, never rename them.
-    grounder: Arc<shenlong::ground::Grounder>,
     /// The answer to the last instruction edit (its report, `history_id` and `moved`), so
     /// a page opened later shows it.
     last_edit: Mutex<Option<Arc<Value>>>,
@@ -70,9 +67,7 @@ pub struct App {
 impl App {
     /// A server for this scene.
     pub fn new(file: SceneFile, settings: ServeSettings) -> Arc<Self> {
-        let grounder = Arc::new(shenlong::ground::Grounder::new(&file.scene));
         Arc::new(Self {
-            grounder,
             inner: Mutex::new(Inner {
                 session: Session::new(file, settings.save.clone()),
             }),
@@ -89,42 +84,67 @@ impl App {
     }
 }
 
-/// An error answer: a status and `{"error": "..."}`.
+/// An error answer: a status and the refusal as every front end writes it,
+/// `{"kind": "…", "error": "…", "ambiguity": {…}}` ([`OpError`]).
 #[derive(Debug)]
 pub struct ApiError {
     status: StatusCode,
-    message: String,
-    /// For a refusal that leaves a choice between objects: `{"phrase", "span", "objects",
-    /// "choices"}` ([`ambiguity_json`]), answered beside the message.
-    ambiguity: Option<Value>,
+    error: OpError,
 }
 
 impl ApiError {
+    /// A refusal of the request itself (its JSON, its size, its origin …): `bad_input`.
     fn new(status: StatusCode, message: impl Into<String>) -> Self {
         Self {
             status,
-            message: message.into(),
-            ambiguity: None,
+            error: OpError::new(ErrorKind::BadInput, message),
+        }
+    }
+
+    /// A failure of the server, not of the request.
+    fn internal(message: impl Into<String>) -> Self {
+        Self {
+            status: StatusCode::INTERNAL_SERVER_ERROR,
+            error: OpError::new(ErrorKind::Internal, message),
+        }
+    }
+}
+
+/// The HTTP status of a refusal's kind: 422 for what the request asked, 409 for what the
+/// scene does not allow now, 502 for a model server, 500 for a bug.
+#[must_use]
+pub fn status_of(kind: ErrorKind) -> StatusCode {
+    match kind {
+        ErrorKind::BadInput
+        | ErrorKind::NotUnderstood
+        | ErrorKind::Ambiguous
+        | ErrorKind::Export => StatusCode::UNPROCESSABLE_ENTITY,
+        ErrorKind::NoFreePlace
+        | ErrorKind::HeldWouldMove
+        | ErrorKind::NothingToUndo
+        | ErrorKind::NothingToRedo => StatusCode::CONFLICT,
+        ErrorKind::Model => StatusCode::BAD_GATEWAY,
+        ErrorKind::Internal => StatusCode::INTERNAL_SERVER_ERROR,
+    }
+}
+
+impl From<OpError> for ApiError {
+    fn from(error: OpError) -> Self {
+        Self {
+            status: status_of(error.kind),
+            error,
         }
     }
 }
 
 impl IntoResponse for ApiError {
     fn into_response(self) -> Response {
-        let mut body = json!({"error": self.message});
-        if let Some(ambiguity) = self.ambiguity {
-            body["ambiguity"] = ambiguity;
-        }
-        (self.status, Json(body)).into_response()
+        (self.status, Json(json!(self.error))).into_response()
     }
 }
 
 fn bad(message: impl Into<String>) -> ApiError {
     ApiError::new(StatusCode::BAD_REQUEST, message.into())
-}
-
-fn unprocessable(message: impl Into<String>) -> ApiError {
-    ApiError::new(StatusCode::UNPROCESSABLE_ENTITY, message.into())
 }
 
 fn json_body<T>(body: Result<Json<T>, JsonRejection>) -> Result<T, ApiError> {
@@ -331,12 +351,7 @@ async fn asset(uri: Uri) -> Response {
 /// The scene as the page draws it: scene-file JSON (boxes) plus supports. Whatever the
 /// file held, a scene that cannot be shown is an error answer, never a panic.
 fn scene_json(inner: &Inner) -> Result<Value, ApiError> {
-    let cannot = |e: String| {
-        ApiError::new(
-            StatusCode::INTERNAL_SERVER_ERROR,
-            format!("cannot show the scene: {e}"),
-        )
-    };
+    let cannot = |e: String| ApiError::internal(format!("cannot show the scene: {e}"));
     let bytes = inner
         .session
         .file
@@ -418,7 +433,7 @@ async fn scene(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
     let mut value = scene_json(&inner)?;
     let example = app
         .example
-        .get_or_init(|| example_instruction(&app, &inner.session.file.scene));
+        .get_or_init(|| example_instruction(&app, &inner.session));
     value["example"] = json!(example);
     Ok(Json(value))
 }
@@ -436,7 +451,9 @@ fn plain_name(name: &str) -> bool {
 /// offline translator both read: `put the screwdriver on the workbench` (its smallest
 /// object on the object with the largest footprint it does not already rest on), or
 /// `move the screwdriver 30 cm to the left`; `None` when no object has a plain name.
-fn example_instruction(app: &App, scene: &Scene) -> Option<String> {
+fn example_instruction(app: &App, session: &Session) -> Option<String> {
+    let scene = &session.file.scene;
+    let grounder = session.grounder();
     let plain: Vec<usize> = (0..scene.objects.len())
         .filter(|&i| plain_name(&scene.objects[i].name))
         .collect();
@@ -473,7 +490,7 @@ fn example_instruction(app: &App, scene: &Scene) -> Option<String> {
     tries.push((format!("move the {} 30 cm to the left", name(s)), vec![s]));
     tries.push((format!("move the '{}' 30 cm to the left", name(s)), vec![s]));
     let offline = translator(
-        "offline",
+        &Spec::Offline,
         &TranslatorSettings {
             system: app.settings.system,
             ..app.settings.translator.clone()
@@ -481,7 +498,7 @@ fn example_instruction(app: &App, scene: &Scene) -> Option<String> {
     )
     .ok()?;
     tries.into_iter().find_map(|(text, objects)| {
-        let templated = shenlong::pipeline::template_with(&app.grounder, &text, scene).ok()?;
+        let templated = shenlong::pipeline::template_with(&grounder, &text, scene).ok()?;
         (templated.objects == objects && offline.translate(&templated, scene).is_ok())
             .then_some(text)
     })
@@ -490,13 +507,16 @@ fn example_instruction(app: &App, scene: &Scene) -> Option<String> {
 /// The translator a request may choose: `offline`, or the one the server was started
 /// with. A request never names a backend of its own: `replay:FILE` or a model server
 /// would let a web page read files or spend the user's key.
-fn allowed_llm(configured: &str, requested: Option<&str>) -> Result<String, ApiError> {
-    match requested.map(str::trim) {
-        None | Some("") => Ok(configured.to_string()),
-        Some(r) if r == "offline" || r == configured => Ok(r.to_string()),
-        Some(other) => Err(bad(format!(
+fn allowed_llm(configured: &Spec, requested: Option<&str>) -> Result<Spec, ApiError> {
+    let requested = match requested.map(str::trim) {
+        None | Some("") => return Ok(configured.clone()),
+        Some(r) => r,
+    };
+    match requested.parse::<Spec>() {
+        Ok(spec) if spec == Spec::Offline || spec == *configured => Ok(spec),
+        _ => Err(bad(format!(
             "this server offers the translators 'offline' and '{configured}' (its --llm); '{}' is not one of them",
-            other.chars().take(80).collect::<String>()
+            requested.chars().take(80).collect::<String>()
         ))),
     }
 }
@@ -507,91 +527,35 @@ struct EditRequest {
     instruction: String,
     llm: Option<String>,
     system: Option<String>,
+    /// The objects selected, by name: what "it" and "them" mean.
+    #[serde(default)]
+    selected: Vec<String>,
+    /// Answer the whole edit report with the outcome (the page shows it).
+    #[serde(default = "yes")]
+    report: bool,
 }
 
-/// Records a change through the session (see [`Session::commit`]). A save that failed
-/// does not fail the request: the edit was made and kept, and the answer says so in its
-/// `warning`.
-fn commit(app: &App, after: Scene, kind: &str, text: &str) -> shenlong::session::Change {
-    app.lock().session.commit(after, kind, text)
+fn yes() -> bool {
+    true
 }
 
-/// A refusal's choice between objects, as the API answers it: the phrase, its bytes in
-/// the trimmed instruction, the objects it could mean, and for each object the
-/// instruction that names it (the phrase replaced by the quoted name; `null` when the
-/// name cannot be quoted or would make the instruction too long).
-fn ambiguity_json(instruction: &str, ambiguity: &shenlong::ground::Ambiguity) -> Value {
-    let text = instruction.trim();
-    // The page shows a few choices; the answer stays small whatever the scene (20,000
-    // chairs): the first MAX_CHOICES, and how many there are.
-    let shown = &ambiguity.objects[..ambiguity.objects.len().min(MAX_CHOICES)];
-    let choices: Vec<Value> = shown
-        .iter()
-        .map(|name| json!({"object": name, "instruction": naming(text, ambiguity.span, name)}))
-        .collect();
-    json!({
-        "phrase": ambiguity.phrase,
-        "span": ambiguity.span,
-        "objects": shown,
-        "total": ambiguity.objects.len(),
-        "choices": choices,
-    })
-}
-
-/// The most choices a refusal's answer lists (the page shows them as buttons).
-const MAX_CHOICES: usize = 24;
-
-/// `text` with the bytes `span` replaced by `name` in quotes the grounder reads as one
-/// name: the first pair whose closing quote is not in the name (`'…'`, `"…"`, `‘…’`,
-/// `“…”`, `` `…` ``; an apostrophe right after a letter would not open a quote).
-fn naming(text: &str, span: [usize; 2], name: &str) -> Option<String> {
-    let [start, end] = span;
-    if start > end || name.is_empty() {
-        return None;
+/// How edits run here: carrying, and the server's collision settings.
+fn edit_options(app: &App) -> EditOptions {
+    EditOptions {
+        carry: true,
+        collisions: app.settings.collisions.clone(),
+        selection: Vec::new(),
     }
-    let (before, after) = (text.get(..start)?, text.get(end..)?);
-    let after_word = before
-        .chars()
-        .next_back()
-        .is_some_and(char::is_alphanumeric);
-    let (open, close) = [('\'', '\''), ('"', '"'), ('‘', '’'), ('“', '”'), ('`', '`')]
-        .into_iter()
-        .find(|&(open, close)| !(name.contains(close) || (after_word && open == '\'')))?;
-    let named = format!("{before}{open}{name}{close}{after}");
-    (named.chars().count() <= MAX_INSTRUCTION).then_some(named)
 }
 
-/// Each object whose pose differs between `before` and `after`: its name and both poses
-/// (position, rotation `[x, y, z, w]`, scale), as the scene JSON writes them.
-fn moved_objects(before: &Scene, after: &Scene) -> Vec<Value> {
-    let number = shenlong::format::tidy_json;
-    let pose = |o: &shenlong::scene::Object| {
-        let s = o.similarity();
-        json!({
-            "position": s.translation.to_array().map(number),
-            "rotation": s.rotation.to_array().map(number),
-            "scale": number(s.scale),
-        })
-    };
-    before
-        .objects
-        .iter()
-        .zip(&after.objects)
-        .filter(|(a, b)| a.pose_differs(b))
-        .map(|(a, b)| json!({"object": b.name, "before": pose(a), "after": pose(b)}))
-        .collect()
-}
-
-/// The HTTP status of an edit error: 4xx for the request, 502 for a model server.
-fn edit_status(e: shenlong::pipeline::EditError) -> ApiError {
-    let status = match e.kind {
-        EditErrorKind::Instruction | EditErrorKind::NotUnderstood => {
-            StatusCode::UNPROCESSABLE_ENTITY
-        }
-        EditErrorKind::Placement | EditErrorKind::Held => StatusCode::CONFLICT,
-        EditErrorKind::Model => StatusCode::BAD_GATEWAY,
-    };
-    ApiError::new(status, e.message)
+/// An outcome as JSON, kept as the last edit's for a page opened later when it is one.
+fn answer(outcome: &shenlong::session::Outcome) -> Result<Value, ApiError> {
+    serde_json::to_value(outcome).map_err(|e| {
+        ApiError::internal(format!(
+            "the change was made (history {:?}) but its outcome cannot be written: {e}",
+            outcome.history_id
+        ))
+    })
 }
 
 async fn edit_scene(
@@ -614,76 +578,45 @@ async fn edit_scene(
         system,
         ..app.settings.translator.clone()
     };
-    let translator = translator(&llm, &settings).map_err(bad)?;
-    let options = EditOptions {
-        carry: true,
-        collisions: app.settings.collisions.clone(),
-        selection: Vec::new(),
-    };
-    // One edit at a time; reads go on meanwhile.
+    let translator = translator(&llm, &settings).map_err(|e| bad(e.to_string()))?;
+    let options = edit_options(&app);
+    // One edit at a time; reads go on meanwhile, on the scene as it was.
     let _turn = app.edits.lock().await;
-    let mut working = app.lock().session.file.scene.clone();
-    let instruction = request.instruction.clone();
-    let grounder = Arc::clone(&app.grounder);
-    let outcome = tokio::task::spawn_blocking(move || {
-        edit_with(
-            &mut working,
-            &grounder,
-            &instruction,
-            translator.as_ref(),
-            &options,
-        )
-        .map(|e| (working, e.report))
+    let working = app.lock().session.working();
+    let pending = tokio::task::spawn_blocking(move || {
+        let edit = Edit {
+            instruction: &request.instruction,
+            selected: &request.selected,
+            report: true,
+        };
+        working
+            .edit(&edit, translator.as_ref(), &options)
+            .map(|pending| (pending, request.report))
     })
     .await
-    .map_err(|e| {
-        ApiError::new(
-            StatusCode::INTERNAL_SERVER_ERROR,
-            format!("the edit stopped: {e}"),
-        )
-    })?;
-    let (after, report) = outcome.map_err(|e| {
-        let ambiguity = e
-            .ambiguity
-            .as_ref()
-            .map(|a| ambiguity_json(&request.instruction, a));
-        ApiError {
-            ambiguity,
-            ..edit_status(e)
-        }
-    })?;
-    let (change, moved) = {
-        let mut inner = app.lock();
-        let moved = moved_objects(&inner.session.file.scene, &after);
-        (
-            inner.session.commit(after, "edit", &request.instruction),
-            moved,
-        )
-    };
-    let mut value = serde_json::to_value(&report).map_err(|e| {
-        ApiError::new(
-            StatusCode::INTERNAL_SERVER_ERROR,
-            format!(
-                "the edit was made (history {:?}) but its report cannot be written: {e}",
-                change.id
-            ),
-        )
-    })?;
-    value["history_id"] = json!(change.id);
-    value["moved"] = Value::Array(moved);
-    if let Some(warning) = change.save_error {
-        value["warning"] = json!(warning);
+    .map_err(|e| ApiError::internal(format!("the edit stopped: {e}")))?;
+    let (pending, with_report) = pending?;
+    let mut outcome = app.lock().session.land(pending);
+    let kept = Arc::new(answer(&outcome)?);
+    *app.last_edit.lock().unwrap_or_else(|e| e.into_inner()) = Some(Arc::clone(&kept));
+    if !with_report {
+        outcome.report = None;
+        return Ok(Json(answer(&outcome)?));
     }
-    let value = Arc::new(value);
-    *app.last_edit.lock().unwrap_or_else(|e| e.into_inner()) = Some(Arc::clone(&value));
-    Ok(Json(Value::clone(&value)))
+    Ok(Json(Value::clone(&kept)))
 }
 
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields)]
 struct ApplyRequest {
+    /// The object moved: X1.
     object: String,
-    expr: String,
+    /// The expression (`expr` is read too).
+    #[serde(alias = "expr")]
+    expression: String,
+    /// Other objects the expression uses, by variable: `{"X2": "tool table"}`.
+    #[serde(default)]
+    bind: std::collections::BTreeMap<String, String>,
 }
 
 async fn apply(
@@ -691,49 +624,34 @@ async fn apply(
     body: Result<Json<ApplyRequest>, JsonRejection>,
 ) -> Result<Json<Value>, ApiError> {
     let request = json_body(body)?;
+    let objects = shenlong::session::bound_objects(&request.object, &request.bind)?;
+    let options = edit_options(&app);
     let _turn = app.edits.lock().await;
-    let mut after = app.lock().session.file.scene.clone();
-    let options = EditOptions {
-        carry: true,
-        collisions: app.settings.collisions.clone(),
-        selection: Vec::new(),
-    };
-    // The one library path every edit takes: supports are re-detected after it.
-    let (_, t) =
-        shenlong::pipeline::apply_expression(&mut after, &request.object, &request.expr, &options)
-            .map_err(edit_status)?;
-    let s = t.similarity;
-    let change = commit(
-        &app,
-        after,
-        "apply",
-        &format!("{}: {}", request.object, request.expr),
-    );
-    let mut value = json!({
-        "object": request.object, "expr": request.expr, "history_id": change.id,
-        "translation": s.translation.to_array(), "rotation": s.rotation.to_array(), "scale": s.scale,
-    });
-    if let Some(warning) = change.save_error {
-        value["warning"] = json!(warning);
-    }
-    Ok(Json(value))
+    let working = app.lock().session.working();
+    // Collision search can take its budget: off the async workers.
+    let pending = tokio::task::spawn_blocking(move || {
+        working.apply(
+            &Apply {
+                objects: &objects,
+                expression: &request.expression,
+            },
+            &options,
+        )
+    })
+    .await
+    .map_err(|e| ApiError::internal(format!("the edit stopped: {e}")))??;
+    let outcome = app.lock().session.land(pending);
+    Ok(Json(answer(&outcome)?))
 }
 
 fn step(app: &App, undo: bool) -> Result<Json<Value>, ApiError> {
     let mut inner = app.lock();
-    match inner.session.step(undo) {
-        Ok(change) => {
-            let mut value = scene_json(&inner)?;
-            if let Some(warning) = change.save_error {
-                value["warning"] = json!(warning);
-            }
-            Ok(Json(value))
-        }
-        Err(StepError::Nothing) => Err(ApiError::new(
-            StatusCode::CONFLICT,
-            format!("nothing to {}", if undo { "undo" } else { "redo" }),
-        )),
-    }
+    let outcome = if undo {
+        inner.session.undo()
+    } else {
+        inner.session.redo()
+    }?;
+    Ok(Json(answer(&outcome)?))
 }
 
 async fn undo(State(app): State<Arc<App>>) -> Result<Json<Value>, ApiError> {
@@ -796,7 +714,7 @@ async fn export(
         .session
         .file
         .to_bytes(format)
-        .map_err(|e| unprocessable(e.message))?;
+        .map_err(|e| OpError::new(ErrorKind::Export, e.message))?;
     let filename = format!(
         "{}.{extension}",
         inner
@@ -895,48 +813,5 @@ pub async fn serve_with(
                 .await;
             drop(permit);
         });
-    }
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-
-    #[test]
-    fn a_candidate_is_named_in_the_first_quotes_that_hold_it() {
-        let text = "move the chair 20 cm to the left";
-        assert_eq!(
-            naming(text, [5, 14], "chair 3").as_deref(),
-            Some("move 'chair 3' 20 cm to the left")
-        );
-        assert_eq!(
-            naming(text, [5, 14], "Bob's chair").as_deref(),
-            Some("move \"Bob's chair\" 20 cm to the left")
-        );
-        assert_eq!(
-            naming(text, [5, 14], "Bob's \"big\" chair").as_deref(),
-            Some("move ‘Bob's \"big\" chair’ 20 cm to the left")
-        );
-        // Right after a letter an apostrophe is part of the word, not a quote.
-        assert_eq!(naming("ab", [1, 2], "n").as_deref(), Some("a\"n\""));
-        // A name that every closing quote is in cannot be named.
-        assert_eq!(naming(text, [5, 14], "a'b\"c’d”e`"), None);
-    }
-
-    #[test]
-    fn a_span_that_is_not_the_instructions_own_names_nothing() {
-        let text = "move the café chair left";
-        // Inside the two bytes of 'é', backwards, past the end.
-        assert_eq!(naming(text, [9, 13], "x"), None);
-        assert_eq!(naming(text, [14, 9], "x"), None);
-        assert_eq!(naming(text, [9, 99], "x"), None);
-        assert_eq!(naming(text, [9, 20], "").as_deref(), None);
-        assert_eq!(
-            naming(text, [5, 20], "chair 2").as_deref(),
-            Some("move 'chair 2' left")
-        );
-        // An instruction the name would make too long is not offered.
-        let long = "n".repeat(MAX_INSTRUCTION);
-        assert_eq!(naming(text, [5, 20], &long), None);
     }
 }

@@ -17,7 +17,9 @@ mod detect;
 mod resolve;
 
 pub use detect::{find_collisions, find_collisions_in, Obstacle, Overlap};
-pub use resolve::{resolve, resolve_with, Adjustment, Resolution, ResolveError, ResolveOptions};
+pub use resolve::{
+    resolve, resolve_with, Adjustment, Boxes, FloorBound, Resolution, ResolveError, ResolveOptions,
+};
 
 /// How far two boxes must overlap on every axis to collide, in metres.
 pub const EPSILON: f64 = 1e-4;

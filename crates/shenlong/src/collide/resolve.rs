@@ -95,18 +95,44 @@ impl std::fmt::Display for ResolveError {
 
 impl std::error::Error for ResolveError {}
 
+/// Whether an object is floor furniture, which resolution never lifts onto anything
+/// (lifting is for small things): what the caller knows of the objects' kinds
+/// (`ground::kind::is_floor_bound` reads them from the lexicon).
+pub type FloorBound<'a> = &'a dyn Fn(&Scene, usize) -> bool;
+
 /// Finds collisions the edit created among `moved` objects (the edited ones; what rests on
 /// them moves with them) and moves each colliding group to the nearest free placement.
 /// `before` are the world boxes before the edit, in object order.
+///
+/// # Errors
+/// No free placement within the radius or the time budget (unless collisions are
+/// allowed); the scene is then as it was.
 pub fn resolve(
     scene: &mut Scene,
     before: &[Aabb],
     moved: &[usize],
+    floor_bound: FloorBound<'_>,
     options: &ResolveOptions,
 ) -> Result<Resolution, ResolveError> {
     let mut after = scene.world_aabbs();
     let mut grid = FloorGrid::new(&after);
-    resolve_with(scene, before, &mut after, &mut grid, moved, options)
+    let boxes = Boxes {
+        before,
+        after: &mut after,
+        grid: &mut grid,
+    };
+    resolve_with(scene, boxes, moved, floor_bound, options)
+}
+
+/// The world boxes an edit is resolved with: `before` the edit, `after` it (kept up to
+/// date as groups move) and a floor grid over `after`.
+pub struct Boxes<'b> {
+    /// Before the edit, in object order.
+    pub before: &'b [Aabb],
+    /// After it, in object order.
+    pub after: &'b mut [Aabb],
+    /// A grid over `after`.
+    pub grid: &'b mut FloorGrid,
 }
 
 /// [`resolve`] with the world boxes after the edit (`after`) and a grid over them, both
@@ -118,12 +144,16 @@ pub fn resolve(
 /// As [`resolve`].
 pub fn resolve_with(
     scene: &mut Scene,
-    before: &[Aabb],
-    after: &mut [Aabb],
-    grid: &mut FloorGrid,
+    boxes: Boxes<'_>,
     moved: &[usize],
+    floor_bound: FloorBound<'_>,
     options: &ResolveOptions,
 ) -> Result<Resolution, ResolveError> {
+    let Boxes {
+        before,
+        after,
+        grid,
+    } = boxes;
     let mut resolution = Resolution::default();
     // The boxes as they were, of every object the search moves, to put back exactly.
     let mut saved: Vec<(usize, Aabb)> = Vec::new();
@@ -134,6 +164,7 @@ pub fn resolve_with(
         grid,
         moved,
         options,
+        floor_bound,
         &mut resolution,
         &mut saved,
     ) {
@@ -151,6 +182,40 @@ pub fn resolve_with(
 }
 
 #[allow(clippy::too_many_arguments)]
+/// The search for free placements, one group after another: what every group's search
+/// shares.
+struct Search<'s> {
+    scene: &'s mut Scene,
+    before: &'s [Aabb],
+    after: &'s mut [Aabb],
+    grid: &'s mut FloorGrid,
+    options: &'s ResolveOptions,
+    floor_bound: FloorBound<'s>,
+    resolution: &'s mut Resolution,
+    saved: &'s mut Vec<(usize, Aabb)>,
+    floor: f64,
+    room: Option<Aabb>,
+    /// When the search (not the setup) started: what the time budget bounds.
+    started: Instant,
+    /// The horizontal grid of offsets, nearest first.
+    horizontal: Vec<DVec2>,
+}
+
+/// Where one group stands before its search: what it collides with, what can be in its
+/// way, and the level the edit put it on.
+struct Group<'g> {
+    objects: &'g [usize],
+    /// Its edited object.
+    root: usize,
+    hits: Vec<Obstacle>,
+    obstacles: Vec<usize>,
+    /// The bottom centre the edit asked for.
+    requested: DVec3,
+    /// The top face it stands on there, if any (else the floor).
+    surface: Option<usize>,
+}
+
+#[allow(clippy::too_many_arguments)]
 fn search(
     scene: &mut Scene,
     before: &[Aabb],
@@ -158,6 +223,7 @@ fn search(
     grid: &mut FloorGrid,
     moved: &[usize],
     options: &ResolveOptions,
+    floor_bound: FloorBound<'_>,
     resolution: &mut Resolution,
     saved: &mut Vec<(usize, Aabb)>,
 ) -> Result<(), ResolveError> {
@@ -177,41 +243,74 @@ fn search(
     resolution.setup_ms = ms(setup);
     // The budget starts here: what came before is proportional to the scene and always
     // runs, however large it is.
-    let started = Instant::now();
-    let horizontal = horizontal_offsets(options.step, options.radius);
-
+    let mut search = Search {
+        scene,
+        before,
+        after,
+        grid,
+        options,
+        floor_bound,
+        resolution,
+        saved,
+        floor,
+        room,
+        started: Instant::now(),
+        horizontal: horizontal_offsets(options.step, options.radius),
+    };
     for (g, group) in groups.iter().enumerate() {
-        let hits: Vec<Obstacle> = collisions
-            .iter()
-            .filter(|c| {
-                group.contains(&c.object)
-                    || matches!(c.with, Obstacle::Object(j) if group.contains(&j))
-            })
-            .map(|c| match c.with {
-                Obstacle::Object(j) if group.contains(&j) => Obstacle::Object(c.object),
-                other => other,
-            })
-            .fold(Vec::new(), |mut acc, o| {
-                if !acc.contains(&o) {
-                    acc.push(o);
-                }
-                acc
-            });
+        let hits = hits_of(&collisions, group);
         if hits.is_empty() {
             continue;
         }
-        let span = group
-            .iter()
-            .map(|&i| after[i])
-            .reduce(|a, b| a.union(&b))
-            .expect("groups are not empty");
-        let reach = options.radius + options.buffer + options.step;
+        let group = search.stand(&groups, g, hits, &in_group);
+        search.place(group)?;
+    }
+    search.resolution.search_ms = ms(search.started);
+    Ok(())
+}
+
+/// What a group collides with: each obstacle once, a collision with another group's
+/// object named by that object.
+fn hits_of(collisions: &[Overlap], group: &[usize]) -> Vec<Obstacle> {
+    collisions
+        .iter()
+        .filter(|c| {
+            group.contains(&c.object) || matches!(c.with, Obstacle::Object(j) if group.contains(&j))
+        })
+        .map(|c| match c.with {
+            Obstacle::Object(j) if group.contains(&j) => Obstacle::Object(c.object),
+            other => other,
+        })
+        .fold(Vec::new(), |mut acc, o| {
+            if !acc.contains(&o) {
+                acc.push(o);
+            }
+            acc
+        })
+}
+
+impl Search<'_> {
+    /// Group `g` as it stands: the obstacles that can matter (fixed ones near its reach,
+    /// and the other groups) and the level the edit put it on — the top of an object it
+    /// stands on there, or the floor. Resolution slides along that level first, keeping a
+    /// placement on a top face on that face, and lifts onto another object only when
+    /// nothing on the level is free within the radius.
+    fn stand<'g>(
+        &self,
+        groups: &'g [Vec<usize>],
+        g: usize,
+        hits: Vec<Obstacle>,
+        in_group: &[bool],
+    ) -> Group<'g> {
+        let group = &groups[g];
+        let span = self.span(group);
+        let reach = self.options.radius + self.options.buffer + self.options.step;
         let region = Aabb::new(
             span.min - DVec3::splat(reach),
             span.max + DVec3::splat(reach),
         );
-        // The obstacles that can matter: fixed ones near the region, and other groups.
-        let mut obstacles: Vec<usize> = grid
+        let mut obstacles: Vec<usize> = self
+            .grid
             .near_box(&region)
             .into_iter()
             .filter(|&k| !in_group[k])
@@ -223,32 +322,79 @@ fn search(
                 .filter(|(h, _)| *h != g)
                 .flat_map(|(_, m)| m.iter().copied()),
         );
+        let after = &*self.after;
         obstacles.retain(|&j| after[j].max.y >= region.min.y && after[j].min.y <= region.max.y);
-
-        let check = Placement {
-            group,
-            obstacles: &obstacles,
-            before,
-            after,
-            floor,
-            room: room.as_ref(),
-        };
-        let lifts = lifts(&span, &obstacles, after, floor, options.radius);
         let root = group[0];
         let requested = after[root].bottom_center();
-        // The level the edit put the object on: the top of an object it stands on there,
-        // or the floor. Resolution slides along that level first — keeping a placement on
-        // a top face on that face — and lifts onto another object only when nothing on
-        // the level is free within the radius.
         let surface = obstacles.iter().copied().find(|&j| {
             let t = after[j];
-            let b = after[root];
-            (b.min.y - t.max.y).abs() < 0.01
+            (after[root].min.y - t.max.y).abs() < 0.01
                 && requested.x >= t.min.x
                 && requested.x <= t.max.x
                 && requested.z >= t.min.z
                 && requested.z <= t.max.z
         });
+        Group {
+            objects: group,
+            root,
+            hits,
+            obstacles,
+            requested,
+            surface,
+        }
+    }
+
+    /// The union of the group's boxes.
+    fn span(&self, group: &[usize]) -> Aabb {
+        group
+            .iter()
+            .map(|&i| self.after[i])
+            .reduce(|a, b| a.union(&b))
+            .expect("groups are not empty")
+    }
+
+    /// Moves the group to the nearest free placement, leaves it overlapping (collisions
+    /// allowed), or refuses.
+    fn place(&mut self, group: Group<'_>) -> Result<(), ResolveError> {
+        match self.nearest_free(&group) {
+            // An earlier group's move already freed this one.
+            Some(offset) if offset == DVec3::ZERO => Ok(()),
+            Some(offset) => {
+                self.shift(group, offset);
+                Ok(())
+            }
+            None if self.options.allow_collisions => {
+                let left = find_collisions_in(
+                    self.grid,
+                    self.before,
+                    self.after,
+                    std::slice::from_ref(&group.objects.to_vec()),
+                    self.floor,
+                    self.room.as_ref(),
+                );
+                self.resolution.remaining.extend(left);
+                Ok(())
+            }
+            None => Err(self.no_place(&group)),
+        }
+    }
+
+    /// The nearest free offset for the group: on its level first, then lifted onto
+    /// surfaces (never for floor furniture, nor off a top face), then, on a top face, a
+    /// finer search of that face; among equally near ones, the one closest to where the
+    /// object was before the edit (it backs out the way it came). `None` when nothing is
+    /// free within the radius or the time budget ran out.
+    fn nearest_free(&mut self, group: &Group<'_>) -> Option<DVec3> {
+        let after = &*self.after;
+        let (root, requested, surface) = (group.root, group.requested, group.surface);
+        let span = self.span(group.objects);
+        let lifts = lifts(
+            &span,
+            &group.obstacles,
+            after,
+            self.floor,
+            self.options.radius,
+        );
         // Within the face when the edit put it within (a placement on the surface);
         // its footprint's centre over the face when it already overhung (real furniture
         // overhangs: a tv turned on its stand).
@@ -266,10 +412,9 @@ fn search(
             let c = b.center();
             c.x >= t.min.x && c.x <= t.max.x && c.z >= t.min.z && c.z <= t.max.z
         };
-        // Among equally near placements, prefer the one closest to where the object was
-        // before the edit: it backs out the way it came.
-        let origin = before[root].bottom_center();
+        let origin = self.before[root].bottom_center();
         // The level first (no lift, or back up to the floor), then lifts onto surfaces.
+        let floor = self.floor;
         let level: Vec<f64> = lifts
             .iter()
             .copied()
@@ -278,19 +423,19 @@ fn search(
         // Put on a top face, it stays on that face: never stacked on what stands there
         // (a stack is asked for by the instruction, which puts it on that object's top).
         // Floor furniture is never lifted onto anything: lifting is for small things.
-        let raised: Vec<f64> =
-            if surface.is_some() || crate::ground::kind::is_floor_bound(scene, root) {
-                Vec::new()
-            } else {
-                lifts
-                    .iter()
-                    .copied()
-                    .filter(|dy| !level.contains(dy))
-                    .collect()
-            };
+        let raised: Vec<f64> = if surface.is_some() || (self.floor_bound)(self.scene, root) {
+            Vec::new()
+        } else {
+            lifts
+                .iter()
+                .copied()
+                .filter(|dy| !level.contains(dy))
+                .collect()
+        };
         // On a top face, a free spot may be narrower than the grid: after the grid, the
         // face is searched again, [`SURFACE_REFINE`] times finer.
         // (Made only when the grid found nothing.)
+        let options = self.options;
         let fine: std::cell::OnceCell<Vec<DVec2>> = std::cell::OnceCell::new();
         let refined = std::iter::once(()).flat_map(|()| {
             let offsets = fine.get_or_init(|| {
@@ -302,128 +447,149 @@ fn search(
             });
             ordered_candidates(offsets, &[0.0])
         });
-        let mut candidates = ordered_candidates(&horizontal, &level)
-            .chain(ordered_candidates(&horizontal, &raised))
+        let candidates = ordered_candidates(&self.horizontal, &level)
+            .chain(ordered_candidates(&self.horizontal, &raised))
             .chain(refined)
-            .filter(|&offset| on_surface(offset))
-            .peekable();
-        let mut ties: Vec<DVec3> = Vec::new();
-        let mut found = None;
-        'search: while let Some(first) = candidates.next() {
-            ties.clear();
-            ties.push(first);
-            while let Some(next) =
-                candidates.next_if(|c| (c.length_squared() - first.length_squared()).abs() < 1e-12)
-            {
-                ties.push(next);
-            }
-            ties.sort_by(|a, b| {
-                let (da, db) = (
-                    (requested + *a - origin).length_squared(),
-                    (requested + *b - origin).length_squared(),
-                );
-                da.total_cmp(&db)
-            });
-            for &offset in &ties {
-                resolution.candidates_tested += 1;
-                if resolution.candidates_tested % 256 == 0
-                    && started.elapsed() > options.time_budget
-                {
-                    break 'search;
-                }
-                let buffer = if offset == DVec3::ZERO {
-                    0.0
-                } else {
-                    options.buffer
-                };
-                if check.is_free(offset, buffer) {
-                    found = Some(offset);
-                    break 'search;
-                }
-            }
+            .filter(|&offset| on_surface(offset));
+        let check = Placement {
+            group: group.objects,
+            obstacles: &group.obstacles,
+            before: self.before,
+            after,
+            floor,
+            room: self.room.as_ref(),
+        };
+        let order = |a: &DVec3, b: &DVec3| {
+            let (da, db) = (
+                (requested + *a - origin).length_squared(),
+                (requested + *b - origin).length_squared(),
+            );
+            da.total_cmp(&db)
+        };
+        first_free(
+            candidates,
+            order,
+            |offset| {
+                check.is_free(
+                    offset,
+                    if offset == DVec3::ZERO {
+                        0.0
+                    } else {
+                        options.buffer
+                    },
+                )
+            },
+            &mut self.resolution.candidates_tested,
+            self.started,
+            options.time_budget,
+        )
+    }
+
+    /// Moves the group by `offset` and records the adjustment.
+    fn shift(&mut self, group: Group<'_>, offset: DVec3) {
+        let w = cga::Similarity::translation(offset);
+        let motion = self.scene.apply_world(group.objects, &w);
+        self.resolution.motion.moves.extend(motion.moves);
+        for &i in group.objects {
+            let old = self.after[i];
+            self.saved.push((i, old));
+            self.after[i] = old.translated(offset);
+            self.grid.update(i, &old, &self.after[i]);
         }
-        match found {
-            // An earlier group's move already freed this one.
-            Some(offset) if offset == DVec3::ZERO => {}
-            Some(offset) => {
-                let w = cga::Similarity::translation(offset);
-                let motion = scene.apply_world(group, &w);
-                resolution.motion.moves.extend(motion.moves);
-                for &i in group {
-                    let old = after[i];
-                    saved.push((i, old));
-                    after[i] = old.translated(offset);
-                    grid.update(i, &old, &after[i]);
-                }
-                let bottom = after[root].min.y;
-                let centre = after[root].center();
-                let lifted_onto = if offset.y > EPSILON && bottom > floor + EPSILON {
-                    obstacles
-                        .iter()
-                        .copied()
-                        .filter(|&j| (after[j].max.y - bottom).abs() < 1e-6)
-                        .min_by(|&a, &b| {
-                            (after[a].center() - centre)
-                                .length_squared()
-                                .total_cmp(&(after[b].center() - centre).length_squared())
-                        })
-                } else {
-                    None
-                };
-                resolution.adjustments.push(Adjustment {
-                    object: root,
-                    group: group.clone(),
-                    requested,
-                    resolved: requested + offset,
-                    displacement: offset,
-                    collided_with: hits,
-                    lifted_onto,
-                });
+        let after = &*self.after;
+        let root = group.root;
+        let bottom = after[root].min.y;
+        let centre = after[root].center();
+        let lifted_onto = if offset.y > EPSILON && bottom > self.floor + EPSILON {
+            group
+                .obstacles
+                .iter()
+                .copied()
+                .filter(|&j| (after[j].max.y - bottom).abs() < 1e-6)
+                .min_by(|&a, &b| {
+                    (after[a].center() - centre)
+                        .length_squared()
+                        .total_cmp(&(after[b].center() - centre).length_squared())
+                })
+        } else {
+            None
+        };
+        self.resolution.adjustments.push(Adjustment {
+            object: root,
+            group: group.objects.to_vec(),
+            requested: group.requested,
+            resolved: group.requested + offset,
+            displacement: offset,
+            collided_with: group.hits,
+            lifted_onto,
+        });
+    }
+
+    /// Why no placement was found: what is in the way, and whether the search ran out of
+    /// time or space.
+    fn no_place(&self, group: &Group<'_>) -> ResolveError {
+        let scene = &*self.scene;
+        let name = &scene.objects[group.root].name;
+        let blocking: Vec<String> = group.hits.iter().map(|o| o.describe(scene)).collect();
+        if let Some(j) = group.surface {
+            return ResolveError {
+                message: format!(
+                    "no free spot for '{name}' on top of '{}': it is full where '{name}' would go ({} in the way)",
+                    scene.objects[j].name,
+                    blocking.join(", ")
+                ),
+            };
+        }
+        let why = if self.started.elapsed() > self.options.time_budget {
+            format!(
+                "the search stopped after {} ms",
+                self.options.time_budget.as_millis()
+            )
+        } else {
+            format!("none within {} m", self.options.radius)
+        };
+        ResolveError {
+            message: format!(
+                "no collision-free placement for '{name}' ({why}): it collides with {}",
+                blocking.join(", ")
+            ),
+        }
+    }
+}
+
+/// The first candidate offset that is free, taking candidates equally near together and,
+/// among them, in `order`; `None` when none is, or when the time budget ran out (checked
+/// every 256 candidates, counted in `tested`).
+fn first_free(
+    candidates: impl Iterator<Item = DVec3>,
+    order: impl Fn(&DVec3, &DVec3) -> Ordering,
+    is_free: impl Fn(DVec3) -> bool,
+    tested: &mut usize,
+    started: Instant,
+    budget: Duration,
+) -> Option<DVec3> {
+    let mut candidates = candidates.peekable();
+    let mut ties: Vec<DVec3> = Vec::new();
+    while let Some(first) = candidates.next() {
+        ties.clear();
+        ties.push(first);
+        while let Some(next) =
+            candidates.next_if(|c| (c.length_squared() - first.length_squared()).abs() < 1e-12)
+        {
+            ties.push(next);
+        }
+        ties.sort_by(&order);
+        for &offset in &ties {
+            *tested += 1;
+            if *tested % 256 == 0 && started.elapsed() > budget {
+                return None;
             }
-            None if options.allow_collisions => {
-                let left = find_collisions_in(
-                    grid,
-                    before,
-                    after,
-                    std::slice::from_ref(group),
-                    floor,
-                    room.as_ref(),
-                );
-                resolution.remaining.extend(left);
-            }
-            None => {
-                let blocking: Vec<String> = hits.iter().map(|o| o.describe(scene)).collect();
-                let why = if started.elapsed() > options.time_budget {
-                    format!(
-                        "the search stopped after {} ms",
-                        options.time_budget.as_millis()
-                    )
-                } else {
-                    format!("none within {} m", options.radius)
-                };
-                if let Some(j) = surface {
-                    return Err(ResolveError {
-                        message: format!(
-                            "no free spot for '{}' on top of '{}': it is full where '{}' would go ({} in the way)",
-                            scene.objects[root].name,
-                            scene.objects[j].name,
-                            scene.objects[root].name,
-                            blocking.join(", ")
-                        ),
-                    });
-                }
-                return Err(ResolveError {
-                    message: format!(
-                        "no collision-free placement for '{}' ({why}): it collides with {}",
-                        scene.objects[root].name,
-                        blocking.join(", ")
-                    ),
-                });
+            if is_free(offset) {
+                return Some(offset);
             }
         }
     }
-    resolution.search_ms = ms(started);
-    Ok(())
+    None
 }
 
 /// The edited objects with what rests on them; an object carried by an earlier edited

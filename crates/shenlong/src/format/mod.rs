@@ -28,28 +28,7 @@ use crate::scene::Scene;
 use std::fmt;
 use std::path::{Path, PathBuf};
 
-/// A number rounded to a nanometre (or nano-unit), so that rounding noise
-/// (`0.30000000000000004`) does not reach files; −0 becomes 0.
-pub fn tidy(x: f64) -> f64 {
-    let r = (x * 1e9).round() / 1e9;
-    if r == 0.0 {
-        0.0
-    } else {
-        r
-    }
-}
-
-/// A number as the scene files write it: rounded by [`tidy`]; whole numbers without a
-/// fraction.
-#[must_use]
-pub fn tidy_json(x: f64) -> serde_json::Value {
-    let rounded = tidy(x);
-    if rounded.fract() == 0.0 && rounded.abs() < 1e15 {
-        serde_json::Value::from(rounded as i64)
-    } else {
-        serde_json::Value::from(rounded)
-    }
-}
+pub use crate::number::{tidy, tidy_json};
 
 /// The deepest nesting of lists and objects a JSON file may have (scene JSON, glTF, ProcTHOR
 /// houses and asset databases). Real files nest a dozen levels at most; the limit keeps

@@ -405,18 +405,14 @@ impl Reader<'_> {
                 words::is_verb(w)
                     && !words::turns_or_scales(w)
                     && !matches!(
-                        w,
-                        "make"
-                            | "swap"
-                            | "switch"
-                            | "exchange"
-                            | "interchange"
-                            | "align"
-                            | "line"
-                            | "take"
-                            | "grab"
-                            | "pick"
-                            | "fetch"
+                        super::verbs::verb(w),
+                        Some((
+                            super::verbs::Action::Scale
+                                | super::verbs::Action::Swap
+                                | super::verbs::Action::Align
+                                | super::verbs::Action::Take,
+                            _
+                        ))
                     )
             })
     }

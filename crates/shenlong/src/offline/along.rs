@@ -18,7 +18,7 @@
 //! something standing elsewhere is not a request this reader can check.
 
 use super::clause::Clause;
-use super::read::{Produced, Reader};
+use super::reader::{Produced, Reader};
 use super::relations::Step;
 use super::words::Token;
 use std::ops::Range;

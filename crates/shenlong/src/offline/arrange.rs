@@ -4,7 +4,7 @@
 
 use super::build::*;
 use super::clause::Clause;
-use super::read::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, Reader};
 use super::relations::{boxed, Step, GAP};
 use super::words::Token;
 

@@ -418,10 +418,9 @@ fn joins_objects(tokens: &[Token], i: usize, current: &[Token]) -> bool {
             t,
             Token::Word(w) if matches!(
                 w.as_str(),
-                "between" | "swap" | "exchange" | "switch" | "interchange" | "trade"
-                    // "in the middle of X2 and X3" is between them.
-                    | "middle" | "centre" | "center"
-            )
+                // "in the middle of X2 and X3" is between them.
+                "between" | "middle" | "centre" | "center"
+            ) || matches!(words::verb(w), Some((words::Action::Swap, _)))
         )
     });
     // A list that ends the instruction or its sentence ("towards X2 and X3", "with X2

@@ -32,6 +32,7 @@ mod clause;
 mod idioms;
 mod mutual;
 mod read;
+mod reader;
 mod relate;
 mod relations;
 mod repeat;
@@ -53,7 +54,7 @@ use crate::scene::Scene;
 use crate::translate::{
     bindings, Answer, Exchange, System, Templated, TranslateError, Translation, Translator,
 };
-use read::{Facts, Reader};
+use reader::{Facts, Reader};
 use relations::Step;
 use std::time::Instant;
 
@@ -886,7 +887,7 @@ pub(crate) fn answer_or_refusal(
     }
     if reader.steps.is_empty() {
         return Err(Refusal {
-            message: read::not_read(query, query),
+            message: reader::not_read(query, query),
             settled: false,
         });
     }
@@ -1032,5 +1033,3 @@ impl Translator for OfflineTranslator {
 
 #[cfg(test)]
 mod tests;
-#[cfg(test)]
-mod tests_round3;

@@ -8,7 +8,7 @@
 use super::amounts::{self, Length};
 use super::build::{call, div, flat, mul, num, sub};
 use super::clause::Clause;
-use super::read::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, Reader};
 use super::relations::{boxed, middle, Step};
 
 /// Which way the subjects go relative to one another.

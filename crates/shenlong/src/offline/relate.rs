@@ -8,7 +8,7 @@
 use super::amounts::{self, Length, DEFAULT_METRES};
 use super::build;
 use super::clause::Clause;
-use super::read::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, Reader};
 use super::relations::{self, Level, Relation, Step};
 use super::room;
 use crate::expr::Expr;

@@ -5,7 +5,7 @@
 
 use super::build::*;
 use super::clause::Clause;
-use super::read::{Produced, Reader};
+use super::reader::{Produced, Reader};
 use super::relations::Step;
 use super::words::{self, Token};
 

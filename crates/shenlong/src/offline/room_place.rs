@@ -5,7 +5,7 @@
 //! written by [`super::room`]; a scene without a room refuses all but the floor.
 
 use super::clause::Clause;
-use super::read::{mark_to_the, Direction};
+use super::reader::{mark_to_the, Direction};
 use super::room::{self, Place};
 use super::words::{self, Action};
 use crate::expr::Expr;

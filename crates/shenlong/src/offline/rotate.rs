@@ -8,7 +8,7 @@
 use super::amounts::{self, DEFAULT_DEGREES};
 use super::build::*;
 use super::clause::Clause;
-use super::read::{mark_to_the, not_read, Direction, Produced, Reader};
+use super::reader::{mark_to_the, not_read, Direction, Produced, Reader};
 use super::relations::{boxed, Step};
 use super::view::View;
 use super::words::{self, Token};

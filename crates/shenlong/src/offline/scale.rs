@@ -6,7 +6,7 @@
 use super::amounts::{fraction_at, number_at, BIT, FAR};
 use super::build::dilator;
 use super::clause::Clause;
-use super::read::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, Reader};
 use super::relations::Step;
 use super::words::Token;
 

@@ -6,7 +6,7 @@
 use super::amounts::{self, Length, DEFAULT_METRES};
 use super::build::*;
 use super::clause::Clause;
-use super::read::{mark_to_the, not_read, Direction, Produced, Reader};
+use super::reader::{mark_to_the, not_read, Direction, Produced, Reader};
 use super::relations::Step;
 use super::room;
 use super::words;

@@ -1,6 +1,7 @@
-//! Choosing a translator from a `--llm` spec: `offline`, `openai:MODEL`, `ollama:MODEL`,
+//! Choosing a translator: a [`Spec`] — `offline`, `openai:MODEL`, `ollama:MODEL`,
 //! `replay:FILE`, or a cascade `offline+SPEC` (the offline translator first, the model for
-//! what it does not read).
+//! what it does not read) — parsed once where it is given (a flag, a request), and the
+//! [`TranslatorSettings`] around it.
 
 use super::prompts::System;
 use super::translate::{LlmTranslator, Translator};
@@ -10,7 +11,130 @@ use crate::llm::record::Recorder;
 use crate::llm::replay::Replay;
 use crate::llm::Backend;
 use std::path::PathBuf;
+use std::str::FromStr;
 use std::time::Duration;
+
+/// A translator, as `--llm` names it.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Spec {
+    /// The built-in offline translator.
+    Offline,
+    /// A model on an OpenAI-compatible server: `openai:MODEL`.
+    OpenAi {
+        /// The model's name.
+        model: String,
+    },
+    /// A model on an Ollama server: `ollama:MODEL`.
+    Ollama {
+        /// The model's name.
+        model: String,
+    },
+    /// Answers recorded with `--record`: `replay:FILE`.
+    Replay {
+        /// The file of recorded exchanges.
+        file: PathBuf,
+    },
+    /// The offline translator first, the model (never another cascade or `offline`) for
+    /// what it does not read: `offline+SPEC`.
+    Cascade(Box<Spec>),
+}
+
+/// A `--llm` value that names no translator.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SpecError {
+    /// `offline+` without a model after it, or with `offline` again.
+    #[error("translator '{0}': a cascade is offline+MODEL, e.g. offline+openai:gpt-4o")]
+    Cascade(String),
+    /// `openai:` or `ollama:` without a model.
+    #[error("the translator {kind}:MODEL needs a model name, e.g. {kind}:{example}")]
+    NoModel {
+        /// `openai` or `ollama`.
+        kind: &'static str,
+        /// A model of that kind.
+        example: &'static str,
+    },
+    /// `replay:` without a file.
+    #[error("the translator replay:FILE needs the file of recorded exchanges")]
+    NoReplayFile,
+    /// Anything else.
+    #[error("unknown translator '{0}': use offline, openai:MODEL, ollama:MODEL, replay:FILE, or offline+ one of those")]
+    Unknown(String),
+}
+
+impl FromStr for Spec {
+    type Err = SpecError;
+
+    fn from_str(text: &str) -> Result<Self, SpecError> {
+        let text = text.trim();
+        if let Some(model) = text.strip_prefix("offline+") {
+            let model = model.trim();
+            if model.is_empty() || model.starts_with("offline") {
+                return Err(SpecError::Cascade(text.chars().take(80).collect()));
+            }
+            return Ok(Self::Cascade(Box::new(model.parse()?)));
+        }
+        let (kind, rest) = text.split_once(':').unwrap_or((text, ""));
+        match kind {
+            "offline" if rest.is_empty() => Ok(Self::Offline),
+            "openai" | "ollama" if rest.trim().is_empty() => Err(SpecError::NoModel {
+                kind: if kind == "openai" { "openai" } else { "ollama" },
+                example: if kind == "openai" {
+                    "gpt-4o"
+                } else {
+                    "llama3.1"
+                },
+            }),
+            "openai" => Ok(Self::OpenAi {
+                model: rest.to_string(),
+            }),
+            "ollama" => Ok(Self::Ollama {
+                model: rest.to_string(),
+            }),
+            "replay" if rest.is_empty() => Err(SpecError::NoReplayFile),
+            "replay" => Ok(Self::Replay {
+                file: PathBuf::from(rest),
+            }),
+            _ => Err(SpecError::Unknown(kind.chars().take(80).collect())),
+        }
+    }
+}
+
+impl std::fmt::Display for Spec {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Self::Offline => f.write_str("offline"),
+            Self::OpenAi { model } => write!(f, "openai:{model}"),
+            Self::Ollama { model } => write!(f, "ollama:{model}"),
+            Self::Replay { file } => write!(f, "replay:{}", file.display()),
+            Self::Cascade(model) => write!(f, "offline+{model}"),
+        }
+    }
+}
+
+/// A translator that cannot be made from its spec and settings.
+#[derive(Debug, thiserror::Error)]
+pub enum BackendError {
+    /// The offline translator with a prompt system other than CGA.
+    #[error("the offline translator answers in CGA only: choose the cga prompt system, or a model (openai:MODEL) for '{}'", .0.name())]
+    OfflineNeedsCga(System),
+    /// `openai:MODEL` at OpenAI itself without a key.
+    #[error("the translator openai:MODEL needs OPENAI_API_KEY (or the base URL of a local OpenAI-compatible server)")]
+    NoApiKey,
+    /// The replay file cannot be read.
+    #[error("{0}")]
+    Replay(String),
+    /// The file to record exchanges in cannot be opened.
+    #[error("cannot open {} to record: {source}", .path.display())]
+    Record {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        source: std::io::Error,
+    },
+    /// A cascade whose model cannot be used.
+    #[error("{0}")]
+    Cascade(String),
+}
 
 /// Everything besides the spec that configures a translator.
 #[derive(Clone, Debug)]
@@ -51,95 +175,43 @@ impl Default for TranslatorSettings {
     }
 }
 
-/// The translator a spec names.
+/// The translator `spec` names, with `settings`.
+///
+/// # Errors
+/// The offline translator with another system than CGA, OpenAI without a key, a replay
+/// file that cannot be read, a record file that cannot be opened.
 pub fn translator(
-    spec: &str,
+    spec: &Spec,
     settings: &TranslatorSettings,
-) -> Result<Box<dyn Translator>, String> {
-    let spec = spec.trim();
-    if let Some(model) = spec.strip_prefix("offline+") {
-        if model.trim().is_empty() || model.trim().starts_with("offline") {
-            return Err(format!(
-                "translator '{spec}': a cascade is offline+MODEL, e.g. offline+openai:gpt-4o"
+) -> Result<Box<dyn Translator>, BackendError> {
+    let (kind, model) = match spec {
+        Spec::Cascade(model) => {
+            let model = translator(model, settings)?;
+            return Ok(Box::new(
+                super::cascade::Cascade::new(model).map_err(BackendError::Cascade)?,
             ));
         }
-        let model = translator(model, settings)?;
-        return Ok(Box::new(super::cascade::Cascade::new(model)?));
-    }
-    let (kind, rest) = spec.split_once(':').unwrap_or((spec, ""));
-    let backend: Box<dyn Backend> = match kind {
-        "offline" => {
+        Spec::Offline => {
             if settings.system != System::Cga {
-                return Err(format!(
-                    "the offline translator answers in CGA only: choose the cga prompt system, or a model (openai:MODEL) for '{}'",
-                    settings.system.name()
-                ));
+                return Err(BackendError::OfflineNeedsCga(settings.system));
             }
             return Ok(Box::new(crate::offline::OfflineTranslator::new()));
         }
-        "openai" | "ollama" => {
-            if rest.is_empty() {
-                return Err(format!(
-                    "the translator {kind}:MODEL needs a model name, e.g. {kind}:{}",
-                    if kind == "openai" {
-                        "gpt-4o"
-                    } else {
-                        "llama3.1"
-                    }
-                ));
-            }
-            let env_base = if kind == "openai" {
-                std::env::var("OPENAI_BASE_URL")
-                    .ok()
-                    .filter(|s| !s.is_empty())
-            } else {
-                None
-            };
-            let default_base = if kind == "openai" {
-                OPENAI_BASE_URL
-            } else {
-                OLLAMA_BASE_URL
-            };
-            let base_url = settings
-                .base_url
-                .clone()
-                .or(env_base)
-                .unwrap_or_else(|| default_base.to_string());
-            let api_key = settings.api_key.clone().or_else(|| {
-                if kind == "openai" {
-                    std::env::var("OPENAI_API_KEY")
-                        .ok()
-                        .filter(|s| !s.is_empty())
-                } else {
-                    None
-                }
-            });
-            if kind == "openai" && api_key.is_none() && base_url == OPENAI_BASE_URL {
-                return Err("the translator openai:MODEL needs OPENAI_API_KEY (or the base URL of a local OpenAI-compatible server)".into());
-            }
-            let mut options = ClientOptions::new(base_url, rest, api_key);
-            options.request_timeout = settings.timeout;
-            options.connect_timeout = settings.connect_timeout;
-            options.deadline = settings.deadline;
-            Box::new(OpenAiClient::new(options))
+        Spec::OpenAi { model } => ("openai", model),
+        Spec::Ollama { model } => ("ollama", model),
+        Spec::Replay { .. } => ("replay", &String::new()),
+    };
+    let backend: Box<dyn Backend> = match spec {
+        Spec::Replay { file } => {
+            Box::new(Replay::load(file).map_err(|e| BackendError::Replay(e.message))?)
         }
-        "replay" => {
-            if rest.is_empty() {
-                return Err("the translator replay:FILE needs the file of recorded exchanges".into());
-            }
-            Box::new(Replay::load(std::path::Path::new(rest)).map_err(|e| e.message)?)
-        }
-        other => {
-            return Err(format!(
-                "unknown translator '{other}': use offline, openai:MODEL, ollama:MODEL, replay:FILE, or offline+ one of those"
-            ))
-        }
+        _ => Box::new(model_client(kind == "openai", model, settings)?),
     };
     let recorder = match &settings.record {
-        Some(path) => Some(
-            Recorder::open(path)
-                .map_err(|e| format!("cannot open {} to record: {e}", path.display()))?,
-        ),
+        Some(path) => Some(Recorder::open(path).map_err(|source| BackendError::Record {
+            path: path.clone(),
+            source,
+        })?),
         None => None,
     };
     // Replays are deterministic already; caching them would only hide the file's answers.
@@ -156,4 +228,75 @@ pub fn translator(
         cache,
         recorder,
     }))
+}
+
+/// The client of an OpenAI-compatible (`openai`) or Ollama server for `model`: the base
+/// URL from the settings, else `OPENAI_BASE_URL` (for OpenAI), else the default; the key
+/// from the settings, else `OPENAI_API_KEY` (for OpenAI).
+fn model_client(
+    openai: bool,
+    model: &str,
+    settings: &TranslatorSettings,
+) -> Result<OpenAiClient, BackendError> {
+    let from_env = |name: &str| std::env::var(name).ok().filter(|s| !s.is_empty());
+    let base_url = settings
+        .base_url
+        .clone()
+        .or_else(|| openai.then(|| from_env("OPENAI_BASE_URL")).flatten())
+        .unwrap_or_else(|| {
+            if openai {
+                OPENAI_BASE_URL
+            } else {
+                OLLAMA_BASE_URL
+            }
+            .to_string()
+        });
+    let api_key = settings
+        .api_key
+        .clone()
+        .or_else(|| openai.then(|| from_env("OPENAI_API_KEY")).flatten());
+    if openai && api_key.is_none() && base_url == OPENAI_BASE_URL {
+        return Err(BackendError::NoApiKey);
+    }
+    let mut options = ClientOptions::new(base_url, model, api_key);
+    options.request_timeout = settings.timeout;
+    options.connect_timeout = settings.connect_timeout;
+    options.deadline = settings.deadline;
+    Ok(OpenAiClient::new(options))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn specs_read_and_write_back() {
+        for text in [
+            "offline",
+            "openai:gpt-4o",
+            "ollama:llama3.1",
+            "replay:answers.jsonl",
+            "offline+openai:gpt-4o",
+        ] {
+            let spec: Spec = text.parse().unwrap();
+            assert_eq!(spec.to_string(), text);
+        }
+        assert_eq!(" offline ".parse::<Spec>(), Ok(Spec::Offline));
+    }
+
+    #[test]
+    fn bad_specs_say_what_is_missing() {
+        for (text, expected) in [
+            ("offline+", "a cascade is offline+MODEL"),
+            ("offline+offline", "a cascade is offline+MODEL"),
+            ("openai:", "needs a model name, e.g. openai:gpt-4o"),
+            ("ollama", "needs a model name, e.g. ollama:llama3.1"),
+            ("replay:", "needs the file"),
+            ("gemini:pro", "unknown translator 'gemini'"),
+            ("offline:x", "unknown translator 'offline'"),
+        ] {
+            let e = text.parse::<Spec>().unwrap_err().to_string();
+            assert!(e.contains(expected), "{text}: {e}");
+        }
+    }
 }

@@ -5,7 +5,7 @@
 use super::template::{template_selected, Templated};
 use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
-use crate::ground::{Grounder, Reason};
+use crate::ground::{GroundError, Grounder, Reason};
 use crate::scene::{AppliedMotion, Scene};
 use crate::translate::{Near, ReplyCounts};
 use serde::Serialize;
@@ -83,7 +83,7 @@ pub struct EditReport {
 }
 
 /// A variable and its object.
-#[derive(Clone, Debug, Serialize)]
+#[derive(Clone, Debug, PartialEq, Eq, Serialize)]
 pub struct Binding {
     /// `X1`.
     pub variable: String,
@@ -192,10 +192,18 @@ pub struct EditError {
 /// the user's input, 5xx for a model server).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum EditErrorKind {
-    /// The instruction is empty, too long, or names an unknown object.
+    /// The request itself is malformed: an empty or over-long instruction, an unknown
+    /// object given by name (a selection, an expression's binding), an object bound twice.
+    BadInput,
+    /// Grounding refused the instruction: it names no object, an object the scene lacks,
+    /// or a phrase that could mean several (`ambiguity`).
     Instruction,
-    /// The translator cannot read the instruction.
+    /// The translator read the instruction and refused it on its meaning ("put it back"
+    /// with no earlier pose), or the expression is not a transformation.
     NotUnderstood,
+    /// The translator left words of the instruction unread: another (a language model)
+    /// may read them.
+    Unread,
     /// The model or its server failed, or gave no usable answer.
     Model,
     /// No collision-free placement was found.
@@ -217,8 +225,9 @@ impl std::error::Error for EditError {}
 pub struct Edit {
     /// The report.
     pub report: EditReport,
-    /// The motions applied, in order, for undo.
-    pub motions: Vec<AppliedMotion>,
+    /// The objects the translator's answers moved (what they carried and what collision
+    /// resolution shifted is in the report).
+    pub moved: Vec<usize>,
 }
 
 fn ms(since: Instant) -> f64 {
@@ -253,7 +262,10 @@ pub fn edit_with(
     let templated: Templated = template_selected(grounder, instruction, scene, &options.selection)
         .map_err(|e| EditError {
             message: e.to_string(),
-            kind: EditErrorKind::Instruction,
+            kind: match e {
+                GroundError::Empty | GroundError::TooLong { .. } => EditErrorKind::BadInput,
+                _ => EditErrorKind::Instruction,
+            },
             replies: ReplyCounts::default(),
             ambiguity: e.ambiguity(),
         })?;
@@ -263,10 +275,10 @@ pub fn edit_with(
     let translation = translator
         .translate(&templated, scene)
         .map_err(|e| EditError {
-            kind: if e.not_understood {
-                EditErrorKind::NotUnderstood
-            } else {
-                EditErrorKind::Model
+            kind: match (e.not_understood, e.settled) {
+                (true, false) => EditErrorKind::Unread,
+                (true, true) => EditErrorKind::NotUnderstood,
+                (false, _) => EditErrorKind::Model,
             },
             message: e.message,
             replies: e.replies,
@@ -290,7 +302,7 @@ pub fn edit_with(
     timings.collide_setup = placed.collide_setup_ms;
     timings.collide_search = placed.collide_search_ms;
     let Placed {
-        motions,
+        moved,
         carried,
         collisions_resolved,
         overlaps_remaining,
@@ -375,14 +387,12 @@ pub fn edit_with(
         timings_ms: timings,
         tokens,
     };
-    Ok(Edit { report, motions })
+    Ok(Edit { report, moved })
 }
 
 /// What placing an edit's motions did to the scene.
 #[derive(Clone, Debug)]
 pub struct Placed {
-    /// The motions applied, in order, for undo ([`Scene::undo`] them last first).
-    pub motions: Vec<AppliedMotion>,
     /// The objects moved by the motions themselves.
     pub moved: Vec<usize>,
     /// Objects carried along with the ones they rest on.
@@ -455,10 +465,7 @@ pub fn place_holding(
             o.support_from_file = from_file;
         }
     }
-    result.map(|mut placed| {
-        placed.motions = motions;
-        placed
-    })
+    result
 }
 
 /// A placement refusal for a held object.
@@ -653,10 +660,13 @@ fn place_into(
     if let Some(resolve_options) = &options.collisions {
         let resolution = collide::resolve_with(
             scene,
-            &before,
-            &mut boxes,
-            &mut grid,
+            collide::Boxes {
+                before: &before,
+                after: &mut boxes,
+                grid: &mut grid,
+            },
             &moved,
+            &crate::ground::kind::is_floor_bound,
             resolve_options,
         )
         .map_err(|e| EditError {
@@ -710,7 +720,6 @@ fn place_into(
     let collide_ms = ms(t0);
 
     Ok(Placed {
-        motions: Vec::new(),
         moved,
         carried,
         collisions_resolved,
@@ -751,7 +760,7 @@ pub fn apply_expression_bound(
 ) -> Result<(Placed, crate::expr::Transformation), EditError> {
     let instruction = |message: String| EditError {
         message,
-        kind: EditErrorKind::Instruction,
+        kind: EditErrorKind::BadInput,
         replies: ReplyCounts::default(),
         ambiguity: None,
     };

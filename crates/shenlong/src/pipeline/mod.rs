@@ -11,8 +11,8 @@ pub mod template;
 pub mod translate;
 
 pub use edit::{
-    apply_expression, apply_expression_bound, edit, edit_with, place, Edit, EditError,
-    EditErrorKind, EditOptions, EditReport, Placed,
+    apply_expression, apply_expression_bound, edit, edit_with, place, Binding, CollisionReport,
+    Edit, EditError, EditErrorKind, EditOptions, EditReport, Placed,
 };
 
 pub use crate::translate::bindings;

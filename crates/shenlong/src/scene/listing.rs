@@ -2,7 +2,7 @@
 //! programs: the MCP server's `list_objects` and the Python package's `Scene.objects()`.
 
 use super::{Scene, Shape};
-use crate::format::tidy;
+use crate::number::tidy;
 use glam::DVec3;
 use serde::Serialize;
 

@@ -1,5 +1,6 @@
 use super::*;
 use crate::collide::{find_collisions, Obstacle, EPSILON};
+use crate::ground::kind::is_floor_bound;
 use cga::Multivector;
 use proptest::prelude::*;
 
@@ -12,7 +13,7 @@ fn edit(
 ) -> Result<Resolution, ResolveError> {
     let before = scene.world_aabbs();
     scene.apply(i, &Multivector::translator(t), true).unwrap();
-    resolve(scene, &before, &[i], options)
+    resolve(scene, &before, &[i], &is_floor_bound, options)
 }
 
 fn room() -> Scene {
@@ -153,7 +154,14 @@ fn several_moved_objects_do_not_collide_with_each_other() {
         true,
     )
     .unwrap();
-    let r = resolve(&mut s, &before, &[a, b], &ResolveOptions::default()).unwrap();
+    let r = resolve(
+        &mut s,
+        &before,
+        &[a, b],
+        &is_floor_bound,
+        &ResolveOptions::default(),
+    )
+    .unwrap();
     assert_eq!(
         r.adjustments.len(),
         1,
@@ -323,7 +331,7 @@ proptest! {
         let requested = DVec3::new(target.0, 0.0, target.1) - start;
         s.apply(0, &Multivector::translator(requested), true).unwrap();
         let after = s.world_aabbs();
-        match resolve(&mut s, &before, &[0], &options) {
+        match resolve(&mut s, &before, &[0], &is_floor_bound, &options) {
             Ok(r) => {
                 let offset = r.adjustments.first().map_or(DVec3::ZERO, |a| a.displacement);
                 let buffer = if offset == DVec3::ZERO { 0.0 } else { options.buffer };

@@ -1,11 +1,25 @@
-//! Round three of the words, end to end on scenes named as 3D tools export them: where
+//! Names as 3D tools export them (`Sofa_Fabric`, `Lamp_Table.003`, `SM_FloorLamp_01`), end
+//! to end through the offline translator: where
 //! each object ends up (or that the edit is refused, naming the candidates).
 
-use super::OfflineTranslator;
-use crate::geometry::Aabb;
-use crate::pipeline::{edit, EditOptions};
-use crate::scene::Scene;
 use glam::DVec3;
+use shenlong::geometry::Aabb;
+use shenlong::offline::OfflineTranslator;
+use shenlong::pipeline::{edit, EditOptions};
+use shenlong::scene::{Object, Scene};
+
+/// Adds an unturned, unscaled box standing on `at`.
+fn push_box(scene: &mut Scene, name: &str, size: [f64; 3], at: [f64; 3]) {
+    let object = Object::new_box(
+        name,
+        DVec3::from(size),
+        DVec3::from(at),
+        glam::DQuat::IDENTITY,
+        1.0,
+    )
+    .expect("a finite box");
+    scene.objects.push(object);
+}
 
 /// A living room exported from Blender: no categories, names as the tool wrote them.
 fn exported() -> Scene {
@@ -34,7 +48,7 @@ fn exported() -> Scene {
         ("Books_Stack", [0.25, 0.1, 0.2], [0.2, 0.41, -1.0]),
         ("Lamp_Standing.001", [0.35, 1.5, 0.35], [3.7, 0.0, 2.7]),
     ] {
-        s.push_box(name, size, at);
+        push_box(&mut s, name, size, at);
     }
     s.detect_supports();
     s
@@ -251,8 +265,8 @@ fn motion_verbs_from_the_lexicon() {
 #[test]
 fn a_destination_after_a_verb_of_placing_is_not_a_pick() {
     let mut s = exported();
-    s.push_box("Mug_Coffee", [0.1, 0.1, 0.1], [-0.3, 0.75, 0.3]);
-    s.push_box("Mug_Coffee.001", [0.1, 0.1, 0.1], [2.0, 0.4, 0.0]);
+    push_box(&mut s, "Mug_Coffee", [0.1, 0.1, 0.1], [-0.3, 0.75, 0.3]);
+    push_box(&mut s, "Mug_Coffee.001", [0.1, 0.1, 0.1], [2.0, 0.4, 0.0]);
     s.detect_supports();
     // Two mugs: "next to the vase" is where one goes, not which.
     refused(
@@ -320,7 +334,7 @@ fn study() -> Scene {
         ("Novel", [0.05, 0.2, 0.15], [2.0, 1.43, -2.8]),
         ("Pouf", [0.5, 0.4, 0.5], [0.0, 0.0, 0.0]),
     ] {
-        s.push_box(name, size, at);
+        push_box(&mut s, name, size, at);
     }
     s.detect_supports();
     s
@@ -410,7 +424,7 @@ fn diner() -> Scene {
         ("Remote", [0.05, 0.02, 0.15], [0.0, 0.75, 0.0]),
         ("teacher desk", [1.2, 0.75, 0.6], [-3.0, 0.0, 0.0]),
     ] {
-        s.push_box(name, size, at);
+        push_box(&mut s, name, size, at);
     }
     s.detect_supports();
     s
@@ -434,7 +448,7 @@ fn numbers_in_exported_names_say_which() {
     only_moved(&s, &a, &[("SM_Chair_02", [0.1, 0.0, 0.0])]);
     // With an unnumbered chair among them, numbers do not count them: refused.
     let mut t = diner();
-    t.push_box("Chair_Office", [0.5, 0.9, 0.5], [-3.0, 0.0, 2.0]);
+    push_box(&mut t, "Chair_Office", [0.5, 0.9, 0.5], [-3.0, 0.0, 2.0]);
     refused(
         &t,
         "push the second chair 10cm to the right",
@@ -601,7 +615,7 @@ fn loft() -> Scene {
         ("Mug_Red", [0.1, 0.1, 0.1], [2.8, 1.2, 0.0]),
         ("Table_Coffee", [1.0, 0.45, 0.6], [0.0, 0.0, 1.5]),
     ] {
-        s.push_box(name, size, at);
+        push_box(&mut s, name, size, at);
     }
     s.detect_supports();
     s
@@ -644,7 +658,7 @@ fn meeting() -> Scene {
         ("bin", [0.3, 0.4, 0.3], [2.5, 0.0, 2.5]),
         ("whiteboard", [1.6, 1.0, 0.05], [0.0, 1.0, -2.97]),
     ] {
-        s.push_box(name, size, at);
+        push_box(&mut s, name, size, at);
     }
     s.detect_supports();
     s
