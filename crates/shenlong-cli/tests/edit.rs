@@ -158,7 +158,11 @@ fn a_model_that_never_answers_right_leaves_the_output_alone() {
 fn backend_specs_are_checked() {
     for (option, value, message) in [
         ("--llm", "openai:gpt-4o", "needs OPENAI_API_KEY"),
-        ("--llm", "claude", "'--llm <BACKEND>': unknown translator 'claude'"),
+        (
+            "--llm",
+            "claude",
+            "'--llm <BACKEND>': unknown translator 'claude'",
+        ),
         (
             "--system",
             "omniverse",
