@@ -109,7 +109,6 @@ fn moved_between(before: &crate::scene::Object, after: &crate::scene::Object) ->
 /// `scene` is shown (the same objects, in the same order).
 pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
     let footprints: Vec<Vec<DVec2>> = scene.objects.iter().map(footprint).collect();
-    let boxes = scene.world_aabbs();
     let old: Option<Vec<Vec<DVec2>>> = before.map(|b| b.objects.iter().map(footprint).collect());
     let moved: Vec<bool> = match before {
         Some(b) => scene
@@ -120,29 +119,65 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
             .collect(),
         None => vec![false; scene.objects.len()],
     };
-
-    // The extent to draw: the room and every footprint, old and new.
-    let mut extent: Option<Aabb> = scene.bounds;
-    let all_points = footprints.iter().chain(old.iter().flatten()).flatten();
-    for p in all_points {
-        let b = Aabb::new(DVec3::new(p.x, 0.0, p.y), DVec3::new(p.x, 0.0, p.y));
-        extent = Some(extent.map_or(b, |e| e.union(&b)));
+    let plan = Plan::fit(scene.bounds, footprints.iter().chain(old.iter().flatten()));
+    let mut svg = String::new();
+    plan.header(&mut svg, scene);
+    if let Some(old) = &old {
+        plan.ghosts(&mut svg, old, &moved);
     }
-    let extent = extent.unwrap_or(Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)));
-    let size = DVec2::new(extent.size().x.max(1e-6), extent.size().z.max(1e-6));
-    let k = (WIDTH - 2.0 * MARGIN) / size.x;
-    let height = (size.y * k + 2.0 * MARGIN + HEADER).min(4000.0);
-    let k = k.min((height - 2.0 * MARGIN - HEADER) / size.y);
-    let to_px = |p: DVec2| {
+    // Objects, lowest top first, so things resting on others are drawn over them.
+    let boxes = scene.world_aabbs();
+    let mut order: Vec<usize> = (0..scene.objects.len()).collect();
+    order.sort_by(|&a, &b| boxes[a].max.y.total_cmp(&boxes[b].max.y));
+    for &i in &order {
+        plan.object(&mut svg, &scene.objects[i], &footprints[i], moved[i]);
+    }
+    if let Some(before) = before {
+        plan.arrows(&mut svg, before, scene, &moved);
+    }
+    plan.labels(&mut svg, scene, &footprints, &order);
+    svg.push_str("</svg>\n");
+    svg
+}
+
+/// The drawing's frame: the part of the floor drawn, metres to pixels, the picture's
+/// height.
+struct Plan {
+    extent: Aabb,
+    /// Pixels per metre.
+    k: f64,
+    height: f64,
+}
+
+impl Plan {
+    /// The frame that holds the room and every footprint given.
+    fn fit<'a>(room: Option<Aabb>, footprints: impl Iterator<Item = &'a Vec<DVec2>>) -> Self {
+        let mut extent: Option<Aabb> = room;
+        for p in footprints.flatten() {
+            let b = Aabb::new(DVec3::new(p.x, 0.0, p.y), DVec3::new(p.x, 0.0, p.y));
+            extent = Some(extent.map_or(b, |e| e.union(&b)));
+        }
+        let extent = extent.unwrap_or(Aabb::new(DVec3::splat(-1.0), DVec3::splat(1.0)));
+        let size = DVec2::new(extent.size().x.max(1e-6), extent.size().z.max(1e-6));
+        let k = (WIDTH - 2.0 * MARGIN) / size.x;
+        let height = (size.y * k + 2.0 * MARGIN + HEADER).min(4000.0);
+        let k = k.min((height - 2.0 * MARGIN - HEADER) / size.y);
+        Self { extent, k, height }
+    }
+
+    /// A floor point (x, z) in pixels.
+    fn to_px(&self, p: DVec2) -> DVec2 {
         DVec2::new(
-            MARGIN + (p.x - extent.min.x) * k,
-            HEADER + MARGIN + (p.y - extent.min.z) * k,
+            MARGIN + (p.x - self.extent.min.x) * self.k,
+            HEADER + MARGIN + (p.y - self.extent.min.z) * self.k,
         )
-    };
-    let path = |points: &[DVec2]| {
+    }
+
+    /// A closed SVG path through floor points.
+    fn path(&self, points: &[DVec2]) -> String {
         let mut d = String::new();
         for (i, p) in points.iter().enumerate() {
-            let q = to_px(*p);
+            let q = self.to_px(*p);
             let _ = write!(
                 d,
                 "{}{:.1},{:.1} ",
@@ -153,72 +188,74 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
         }
         d.push('Z');
         d
-    };
+    }
 
-    let mut svg = String::new();
-    let _ = writeln!(
-        svg,
-        r##"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH:.0}" height="{height:.0}" viewBox="0 0 {WIDTH:.0} {height:.0}" font-family="DejaVu Sans, Arial, sans-serif">"##
-    );
-    svg.push_str(
-        r##"<defs><marker id="arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#1b7f3b"/></marker></defs>
-<rect width="100%" height="100%" fill="#ffffff"/>
-"##,
-    );
-    let title = escape(&scene.name);
-    let _ = writeln!(
-        svg,
-        r##"<text x="{MARGIN}" y="24" font-size="16" font-weight="bold" fill="#222">{title}</text><text x="{:.0}" y="24" font-size="12" fill="#555" text-anchor="end">top view · +x → right · +z (forward) ↓ down</text>"##,
-        WIDTH - MARGIN
-    );
-    // The room.
-    if let Some(room) = scene.bounds {
-        let a = to_px(DVec2::new(room.min.x, room.min.z));
-        let b = to_px(DVec2::new(room.max.x, room.max.z));
+    /// The document's start, the title, the room and a scale bar.
+    fn header(&self, svg: &mut String, scene: &Scene) {
+        let height = self.height;
         let _ = writeln!(
             svg,
-            r##"<rect x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="#f7f5f0" stroke="#444" stroke-width="4"/>"##,
-            a.x,
-            a.y,
-            b.x - a.x,
-            b.y - a.y
+            r##"<svg xmlns="http://www.w3.org/2000/svg" width="{WIDTH:.0}" height="{height:.0}" viewBox="0 0 {WIDTH:.0} {height:.0}" font-family="DejaVu Sans, Arial, sans-serif">"##
+        );
+        svg.push_str(
+            r##"<defs><marker id="arrow" viewBox="0 0 10 10" refX="9" refY="5" markerWidth="7" markerHeight="7" orient="auto-start-reverse"><path d="M0,0 L10,5 L0,10 z" fill="#1b7f3b"/></marker></defs>
+<rect width="100%" height="100%" fill="#ffffff"/>
+"##,
+        );
+        let title = escape(&scene.name);
+        let _ = writeln!(
+            svg,
+            r##"<text x="{MARGIN}" y="24" font-size="16" font-weight="bold" fill="#222">{title}</text><text x="{:.0}" y="24" font-size="12" fill="#555" text-anchor="end">top view · +x → right · +z (forward) ↓ down</text>"##,
+            WIDTH - MARGIN
+        );
+        if let Some(room) = scene.bounds {
+            let a = self.to_px(DVec2::new(room.min.x, room.min.z));
+            let b = self.to_px(DVec2::new(room.max.x, room.max.z));
+            let _ = writeln!(
+                svg,
+                r##"<rect x="{:.1}" y="{:.1}" width="{:.1}" height="{:.1}" fill="#f7f5f0" stroke="#444" stroke-width="4"/>"##,
+                a.x,
+                a.y,
+                b.x - a.x,
+                b.y - a.y
+            );
+        }
+        // A 1 m scale bar (or the largest power of ten that fits).
+        let k = self.k;
+        let mut unit = 1.0;
+        while unit * k > 200.0 {
+            unit /= 10.0;
+        }
+        while unit * k < 20.0 {
+            unit *= 10.0;
+        }
+        let bar_y = height - 14.0;
+        let _ = writeln!(
+            svg,
+            r##"<line x1="{MARGIN}" y1="{bar_y:.1}" x2="{:.1}" y2="{bar_y:.1}" stroke="#222" stroke-width="3"/><text x="{:.1}" y="{:.1}" font-size="11" fill="#222">{unit} m</text>"##,
+            MARGIN + unit * k,
+            MARGIN + unit * k + 6.0,
+            bar_y + 4.0
         );
     }
-    // A 1 m scale bar (or the largest power of ten that fits).
-    let mut unit = 1.0;
-    while unit * k > 200.0 {
-        unit /= 10.0;
-    }
-    while unit * k < 20.0 {
-        unit *= 10.0;
-    }
-    let bar_y = height - 14.0;
-    let _ = writeln!(
-        svg,
-        r##"<line x1="{MARGIN}" y1="{bar_y:.1}" x2="{:.1}" y2="{bar_y:.1}" stroke="#222" stroke-width="3"/><text x="{:.1}" y="{:.1}" font-size="11" fill="#222">{unit} m</text>"##,
-        MARGIN + unit * k,
-        MARGIN + unit * k + 6.0,
-        bar_y + 4.0
-    );
 
-    // Old footprints of the objects that moved, ghosted.
-    if let Some(old) = &old {
+    /// The old footprints of the objects that moved, ghosted.
+    fn ghosts(&self, svg: &mut String, old: &[Vec<DVec2>], moved: &[bool]) {
         for (i, points) in old.iter().enumerate() {
             if moved[i] {
                 let _ = writeln!(
                     svg,
                     r##"<path d="{}" fill="none" stroke="#888" stroke-width="1.5" stroke-dasharray="5,4"/>"##,
-                    path(points)
+                    self.path(points)
                 );
             }
         }
     }
-    // Objects, lowest top first, so things resting on others are drawn over them.
-    let mut order: Vec<usize> = (0..scene.objects.len()).collect();
-    order.sort_by(|&a, &b| boxes[a].max.y.total_cmp(&boxes[b].max.y));
-    for &i in &order {
-        let object = &scene.objects[i];
-        let (fill, stroke) = if moved[i] {
+
+    /// One object's footprint (green when it moved, brown when it rests on another), and
+    /// for a box a tick from its centre toward its front.
+    fn object(&self, svg: &mut String, object: &Object, footprint: &[DVec2], moved: bool) {
+        let (fill, stroke) = if moved {
             ("#9fe0a8", "#1b7f3b")
         } else if object.support.is_some() {
             ("#f6c79a", "#a0522d")
@@ -228,18 +265,17 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
         let _ = writeln!(
             svg,
             r##"<path d="{}" fill="{fill}" fill-opacity="0.85" stroke="{stroke}" stroke-width="1.2"><title>{}</title></path>"##,
-            path(&footprints[i]),
+            self.path(footprint),
             escape(&short(&object.name, MAX_TITLE_CHARS))
         );
-        // A tick from the centre toward the front of box objects.
         if let Shape::Box { size } = &object.shape {
             let pose = object.similarity();
             let centre = pose.transform_point(DVec3::new(0.0, 0.0, 0.0));
             let reach = (object.front * *size * 0.5).length();
             let front = pose.transform_point(object.front * reach);
             let (a, b) = (
-                to_px(DVec2::new(centre.x, centre.z)),
-                to_px(DVec2::new(front.x, front.z)),
+                self.to_px(DVec2::new(centre.x, centre.z)),
+                self.to_px(DVec2::new(front.x, front.z)),
             );
             if (b - a).length() > 3.0 {
                 let _ = writeln!(
@@ -250,14 +286,18 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
             }
         }
     }
-    // Arrows from old to new positions.
-    if let Some(before) = before {
+
+    /// Arrows from where the moved objects were to where they are.
+    fn arrows(&self, svg: &mut String, before: &Scene, scene: &Scene, moved: &[bool]) {
         for (i, (a, b)) in before.objects.iter().zip(&scene.objects).enumerate() {
             if !moved[i] {
                 continue;
             }
             let (p, q) = (a.world_aabb().center(), b.world_aabb().center());
-            let (p, q) = (to_px(DVec2::new(p.x, p.z)), to_px(DVec2::new(q.x, q.z)));
+            let (p, q) = (
+                self.to_px(DVec2::new(p.x, p.z)),
+                self.to_px(DVec2::new(q.x, q.z)),
+            );
             if (q - p).length() > 4.0 {
                 let _ = writeln!(
                     svg,
@@ -267,64 +307,67 @@ pub fn plan_svg(scene: &Scene, before: Option<&Scene>) -> String {
             }
         }
     }
-    // Labels last, on top of everything, with a white halo; each is nudged up or down
-    // until it clears the labels already placed (supports first, then what rests on them).
-    // A label that finds no clear place, or whose object is too small to read on the
-    // plan, is left out; names are cut to a readable length. Placed labels are kept in a
-    // grid, so this is linear in the objects.
-    const CELL: f64 = 64.0;
-    let mut placed: Vec<(DVec2, DVec2)> = Vec::new();
-    let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> =
-        std::collections::HashMap::new();
-    let cell = |p: DVec2| ((p.x / CELL).floor() as i64, (p.y / CELL).floor() as i64);
-    for &i in &order {
-        let footprint_px: Vec<DVec2> = footprints[i].iter().map(|p| to_px(*p)).collect();
-        let extent = footprint_px
-            .iter()
-            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
-                (lo.min(p.x), hi.max(p.x))
-            });
-        if extent.1 - extent.0 < MIN_LABELLED_PX {
-            continue;
-        }
-        let centre = footprints[i].iter().fold(DVec2::ZERO, |s, p| s + *p)
-            / footprints[i].len().max(1) as f64;
-        let c = to_px(centre);
-        let name = short(&scene.objects[i].name, MAX_LABEL_CHARS);
-        let half = DVec2::new(3.3 * name.chars().count() as f64 + 2.0, 7.0);
-        let clear = |at: DVec2| {
-            let (cx, cy) = cell(at);
-            let reach = ((half.x + 3.3 * MAX_LABEL_CHARS as f64 + 2.0) / CELL).ceil() as i64;
-            for gx in cx - reach..=cx + reach {
-                for gy in cy - 1..=cy + 1 {
-                    for &k in grid.get(&(gx, gy)).into_iter().flatten() {
-                        let (p, h) = placed[k];
-                        if (at.x - p.x).abs() < half.x + h.x && (at.y - p.y).abs() < half.y + h.y {
-                            return false;
+
+    /// Labels last, on top of everything, with a white halo; each is nudged up or down
+    /// until it clears the labels already placed (supports first, then what rests on
+    /// them). A label that finds no clear place, or whose object is too small to read on
+    /// the plan, is left out; names are cut to a readable length. Placed labels are kept
+    /// in a grid, so this is linear in the objects.
+    fn labels(&self, svg: &mut String, scene: &Scene, footprints: &[Vec<DVec2>], order: &[usize]) {
+        const CELL: f64 = 64.0;
+        let mut placed: Vec<(DVec2, DVec2)> = Vec::new();
+        let mut grid: std::collections::HashMap<(i64, i64), Vec<usize>> =
+            std::collections::HashMap::new();
+        let cell = |p: DVec2| ((p.x / CELL).floor() as i64, (p.y / CELL).floor() as i64);
+        for &i in order {
+            let footprint_px: Vec<DVec2> = footprints[i].iter().map(|p| self.to_px(*p)).collect();
+            let extent = footprint_px
+                .iter()
+                .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                    (lo.min(p.x), hi.max(p.x))
+                });
+            if extent.1 - extent.0 < MIN_LABELLED_PX {
+                continue;
+            }
+            let centre = footprints[i].iter().fold(DVec2::ZERO, |s, p| s + *p)
+                / footprints[i].len().max(1) as f64;
+            let c = self.to_px(centre);
+            let name = short(&scene.objects[i].name, MAX_LABEL_CHARS);
+            let half = DVec2::new(3.3 * name.chars().count() as f64 + 2.0, 7.0);
+            let clear = |at: DVec2| {
+                let (cx, cy) = cell(at);
+                let reach = ((half.x + 3.3 * MAX_LABEL_CHARS as f64 + 2.0) / CELL).ceil() as i64;
+                for gx in cx - reach..=cx + reach {
+                    for gy in cy - 1..=cy + 1 {
+                        for &k in grid.get(&(gx, gy)).into_iter().flatten() {
+                            let (p, h) = placed[k];
+                            if (at.x - p.x).abs() < half.x + h.x
+                                && (at.y - p.y).abs() < half.y + h.y
+                            {
+                                return false;
+                            }
                         }
                     }
                 }
-            }
-            true
-        };
-        let Some(at) = [0.0, 13.0, -13.0, 26.0, -26.0, 39.0, -39.0]
-            .iter()
-            .map(|dy| DVec2::new(c.x, c.y + dy))
-            .find(|at| clear(*at))
-        else {
-            continue;
-        };
-        grid.entry(cell(at)).or_default().push(placed.len());
-        placed.push((at, half));
-        let label = escape(&name);
-        let _ = writeln!(
-            svg,
-            r##"<text x="{:.1}" y="{:.1}" font-size="11" text-anchor="middle" dominant-baseline="middle" fill="#111" stroke="#fff" stroke-width="3" paint-order="stroke">{label}</text>"##,
-            at.x, at.y
-        );
+                true
+            };
+            let Some(at) = [0.0, 13.0, -13.0, 26.0, -26.0, 39.0, -39.0]
+                .iter()
+                .map(|dy| DVec2::new(c.x, c.y + dy))
+                .find(|at| clear(*at))
+            else {
+                continue;
+            };
+            grid.entry(cell(at)).or_default().push(placed.len());
+            placed.push((at, half));
+            let label = escape(&name);
+            let _ = writeln!(
+                svg,
+                r##"<text x="{:.1}" y="{:.1}" font-size="11" text-anchor="middle" dominant-baseline="middle" fill="#111" stroke="#fff" stroke-width="3" paint-order="stroke">{label}</text>"##,
+                at.x, at.y
+            );
+        }
     }
-    svg.push_str("</svg>\n");
-    svg
 }
 
 /// `text` as XML 1.0 character data or an attribute value: `& < > " '` as entities, and

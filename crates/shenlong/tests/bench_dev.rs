@@ -204,7 +204,7 @@ fn bad_suites_fail_before_anything_runs() {
     assert!(Suite::parse(base, dir).is_ok());
     assert!(err(&base.replace("\"simple\"", "\"easy\"")).contains("unknown category 'easy'"));
     assert!(err(&base.replace("\"moved\"", "\"teleported\""))
-        .contains("expect[0]: unknown check 'teleported'"));
+        .contains("expect[0]: unknown variant `teleported`"));
     assert!(err(&base.replace("\"object\": \"A\"", "\"object\": \"B\""))
         .contains("names {B}, which the text does not have"));
     // A query with no placeholder may name an object `TV`.

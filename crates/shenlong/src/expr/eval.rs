@@ -430,26 +430,62 @@ impl<'a> Evaluator<'a> {
             values.push(self.expect_mv(v, arg)?);
         }
         let result = match function {
-            Function::T => self.translator(&values, args, expr)?,
-            Function::R => self.rotor(&values, args, expr)?,
-            Function::D => {
-                self.arity(function, &values, 1, "a scale factor", expr)?;
+            Function::Min
+            | Function::Max
+            | Function::Atan2
+            | Function::Abs
+            | Function::Sin
+            | Function::Cos
+            | Function::Tan
+            | Function::Asin
+            | Function::Acos
+            | Function::Atan
+            | Function::Sqrt
+            | Function::Radians
+            | Function::Degrees => self.math(function, &values, args, expr)?,
+            _ => self.versor(function, &values, args, expr)?,
+        };
+        Ok(Value::Mv(result))
+    }
+
+    /// A call of a function that makes a versor or a point: T, R, D, up, down, and the
+    /// Euclidean baseline's translation, rotations, scaling and identity.
+    fn versor(
+        &mut self,
+        function: Function,
+        values: &[Multivector],
+        args: &[Expr],
+        expr: &Expr,
+    ) -> Result<Multivector, ExprError> {
+        Ok(match function {
+            Function::T => self.translator(values, args, expr)?,
+            Function::R => self.rotor(values, args, expr)?,
+            Function::D | Function::Scaling => {
+                self.arity(function, values, 1, "a scale factor", expr)?;
                 let s = self.number(function, &values[0], &args[0])?;
-                Multivector::dilator(s).map_err(|e| self.error(cga_message(&e), expr))?
+                Multivector::dilator(s).map_err(|e| {
+                    let message = cga_message(&e);
+                    let message = if function == Function::Scaling {
+                        message.replace("D(", "scaling(")
+                    } else {
+                        message
+                    };
+                    self.error(message, expr)
+                })?
             }
             Function::Up => {
-                self.arity(function, &values, 1, "a Euclidean vector", expr)?;
+                self.arity(function, values, 1, "a Euclidean vector", expr)?;
                 Multivector::up(self.euclidean(function, &values[0], &args[0])?)
             }
             Function::Down => {
-                self.arity(function, &values, 1, "a conformal point", expr)?;
+                self.arity(function, values, 1, "a conformal point", expr)?;
                 let x = values[0]
                     .down()
                     .map_err(|e| self.error(cga_message(&e), &args[0]))?;
                 Multivector::from_vector(x)
             }
             Function::Translation => {
-                self.arity(function, &values, 3, "dx, dy, dz", expr)?;
+                self.arity(function, values, 3, "dx, dy, dz", expr)?;
                 let mut t = [0.0; 3];
                 for (k, (v, a)) in values.iter().zip(args).enumerate() {
                     t[k] = self.number(function, v, a)?;
@@ -457,7 +493,7 @@ impl<'a> Evaluator<'a> {
                 Multivector::translator(DVec3::from(t))
             }
             Function::RotationX | Function::RotationY | Function::RotationZ => {
-                self.arity(function, &values, 1, "an angle in radians", expr)?;
+                self.arity(function, values, 1, "an angle in radians", expr)?;
                 let angle = self.number(function, &values[0], &args[0])?;
                 // Right-hand rule about each axis: y → z about x, z → x about y, x → y about z.
                 let (u, v) = match function {
@@ -467,16 +503,22 @@ impl<'a> Evaluator<'a> {
                 };
                 Multivector::rotor(angle, &u, &v).map_err(|e| self.error(cga_message(&e), expr))?
             }
-            Function::Scaling => {
-                self.arity(function, &values, 1, "a scale factor", expr)?;
-                let s = self.number(function, &values[0], &args[0])?;
-                Multivector::dilator(s)
-                    .map_err(|e| self.error(cga_message(&e).replace("D(", "scaling("), expr))?
-            }
-            Function::Identity => {
-                self.arity(function, &values, 0, "nothing", expr)?;
+            _ => {
+                self.arity(function, values, 0, "nothing", expr)?;
                 Multivector::ONE
             }
+        })
+    }
+
+    /// A call of a math function: min, max, atan2, abs and the functions of one number.
+    fn math(
+        &mut self,
+        function: Function,
+        values: &[Multivector],
+        args: &[Expr],
+        expr: &Expr,
+    ) -> Result<Multivector, ExprError> {
+        Ok(match function {
             Function::Min | Function::Max => {
                 if values.len() < 2 {
                     return Err(self.error(
@@ -496,20 +538,20 @@ impl<'a> Evaluator<'a> {
                 Multivector::scalar(best)
             }
             Function::Atan2 => {
-                self.arity(function, &values, 2, "two numbers: y, x", expr)?;
+                self.arity(function, values, 2, "two numbers: y, x", expr)?;
                 let y = self.number(function, &values[0], &args[0])?;
                 let x = self.number(function, &values[1], &args[1])?;
                 Multivector::scalar(y.atan2(x))
             }
             Function::Abs => {
-                self.arity(function, &values, 1, "one value", expr)?;
+                self.arity(function, values, 1, "one value", expr)?;
                 match scalar_of(&values[0]) {
                     Some(x) => Multivector::scalar(x.abs()),
                     None => Multivector::scalar(values[0].norm()),
                 }
             }
             _ => {
-                self.arity(function, &values, 1, "one number", expr)?;
+                self.arity(function, values, 1, "one number", expr)?;
                 let x = self.number(function, &values[0], &args[0])?;
                 let (value, domain) = match function {
                     Function::Sin => (x.sin(), ""),
@@ -520,8 +562,7 @@ impl<'a> Evaluator<'a> {
                     Function::Atan => (x.atan(), ""),
                     Function::Sqrt => (x.sqrt(), " ≥ 0"),
                     Function::Radians => (x.to_radians(), ""),
-                    Function::Degrees => (x.to_degrees(), ""),
-                    _ => unreachable!("handled above"),
+                    _ => (x.to_degrees(), ""),
                 };
                 if !value.is_finite() {
                     return Err(self.error(
@@ -534,8 +575,7 @@ impl<'a> Evaluator<'a> {
                 }
                 Multivector::scalar(value)
             }
-        };
-        Ok(Value::Mv(result))
+        })
     }
 
     fn arity(

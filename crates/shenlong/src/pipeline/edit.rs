@@ -174,6 +174,97 @@ pub struct Tokens {
     pub estimated: bool,
 }
 
+impl EditReport {
+    /// The report of an edit that went through: how the instruction was grounded and
+    /// templated, what the translator answered, what placing it did, and the timings.
+    fn new(
+        scene: &Scene,
+        templated: &Templated,
+        translation: super::translate::Translation,
+        translator: &dyn Translator,
+        placed: Placed,
+        timings: Timings,
+    ) -> Self {
+        let name = |i: usize| scene.objects[i].name.clone();
+        let tokens = translation
+            .exchanges
+            .iter()
+            .fold(Tokens::default(), |mut t, e| {
+                t.prompt += e.usage.prompt_tokens;
+                t.completion += e.usage.completion_tokens;
+                t.estimated |= e.usage.estimated;
+                t
+            });
+        let objects = translation
+            .answers
+            .iter()
+            .map(|a| {
+                let s = a.transformation.similarity;
+                ObjectChange {
+                    variable: a.variable.clone(),
+                    object: name(a.object),
+                    expressions: a.expressions.clone(),
+                    translation: s.translation.to_array(),
+                    rotation: s.rotation.to_array(),
+                    rotation_degrees: s.rotation.to_axis_angle().1.to_degrees(),
+                    scale: s.scale,
+                    versor: a.transformation.versor.coefficients().to_vec(),
+                }
+            })
+            .collect();
+        let system = translator.system();
+        let variable_of = |object: usize| {
+            let k = templated
+                .objects
+                .iter()
+                .position(|&o| o == object)
+                .expect("every grounded object is bound");
+            Templated::variable(k)
+        };
+        let grounding = templated
+            .phrases
+            .iter()
+            .map(|p| GroundedPhrase {
+                phrase: p.text.clone(),
+                span: [p.span.start, p.span.end],
+                objects: p.objects.iter().map(|&o| name(o)).collect(),
+                variables: p.objects.iter().map(|&o| variable_of(o)).collect(),
+                reasons: p.reasons.clone(),
+            })
+            .collect();
+        Self {
+            instruction: templated.instruction.clone(),
+            query: templated.query.clone(),
+            bindings: templated
+                .objects
+                .iter()
+                .enumerate()
+                .map(|(k, &i)| Binding {
+                    variable: Templated::variable(k),
+                    object: name(i),
+                })
+                .collect(),
+            grounding,
+            system: system.name().into(),
+            prompt_version: system.version().into(),
+            model: translator.name(),
+            answered_by: translation.answered_by,
+            offline_refusal: translation.offline_refusal,
+            replies: translation.replies,
+            exchanges: translation.exchanges,
+            retries: translation.retries,
+            cache_hit: translation.cache_hit,
+            objects,
+            collisions_resolved: placed.collisions_resolved,
+            overlaps_remaining: placed.overlaps_remaining,
+            carried: placed.carried,
+            held: templated.held.iter().map(|&o| name(o)).collect(),
+            timings_ms: timings,
+            tokens,
+        }
+    }
+}
+
 /// Why an edit failed; the scene is unchanged.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EditError {
@@ -204,6 +295,8 @@ pub enum EditErrorKind {
     /// The translator left words of the instruction unread: another (a language model)
     /// may read them.
     Unread,
+    /// A motion beyond what poses hold exactly (a translation of 10²⁰ m).
+    Motion,
     /// The model or its server failed, or gave no usable answer.
     Model,
     /// No collision-free placement was found.
@@ -296,97 +389,14 @@ pub fn edit_with(
         .iter()
         .filter_map(|a| a.near.map(|n| (a.object, n)))
         .collect();
-    let placed = place_holding(scene, &moves, options, &templated.held, &near)?;
+    let mut placed = place_holding(scene, &moves, options, &templated.held, &near)?;
     timings.apply = placed.apply_ms;
     timings.collide = placed.collide_ms;
     timings.collide_setup = placed.collide_setup_ms;
     timings.collide_search = placed.collide_search_ms;
-    let Placed {
-        moved,
-        carried,
-        collisions_resolved,
-        overlaps_remaining,
-        ..
-    } = placed;
-    let name = |i: usize| scene.objects[i].name.clone();
-
+    let moved = std::mem::take(&mut placed.moved);
     timings.total = ms(started);
-    let tokens = translation
-        .exchanges
-        .iter()
-        .fold(Tokens::default(), |mut t, e| {
-            t.prompt += e.usage.prompt_tokens;
-            t.completion += e.usage.completion_tokens;
-            t.estimated |= e.usage.estimated;
-            t
-        });
-    let objects = translation
-        .answers
-        .iter()
-        .map(|a| {
-            let s = a.transformation.similarity;
-            ObjectChange {
-                variable: a.variable.clone(),
-                object: name(a.object),
-                expressions: a.expressions.clone(),
-                translation: s.translation.to_array(),
-                rotation: s.rotation.to_array(),
-                rotation_degrees: s.rotation.to_axis_angle().1.to_degrees(),
-                scale: s.scale,
-                versor: a.transformation.versor.coefficients().to_vec(),
-            }
-        })
-        .collect();
-    let system = translator.system();
-    let variable_of = |object: usize| {
-        let k = templated
-            .objects
-            .iter()
-            .position(|&o| o == object)
-            .expect("every grounded object is bound");
-        Templated::variable(k)
-    };
-    let grounding = templated
-        .phrases
-        .iter()
-        .map(|p| GroundedPhrase {
-            phrase: p.text.clone(),
-            span: [p.span.start, p.span.end],
-            objects: p.objects.iter().map(|&o| name(o)).collect(),
-            variables: p.objects.iter().map(|&o| variable_of(o)).collect(),
-            reasons: p.reasons.clone(),
-        })
-        .collect();
-    let report = EditReport {
-        instruction: templated.instruction.clone(),
-        query: templated.query.clone(),
-        bindings: templated
-            .objects
-            .iter()
-            .enumerate()
-            .map(|(k, &i)| Binding {
-                variable: Templated::variable(k),
-                object: name(i),
-            })
-            .collect(),
-        grounding,
-        system: system.name().into(),
-        prompt_version: system.version().into(),
-        model: translator.name(),
-        answered_by: translation.answered_by,
-        offline_refusal: translation.offline_refusal,
-        replies: translation.replies,
-        exchanges: translation.exchanges,
-        retries: translation.retries,
-        cache_hit: translation.cache_hit,
-        objects,
-        collisions_resolved,
-        overlaps_remaining,
-        carried,
-        held: templated.held.iter().map(|&o| name(o)).collect(),
-        timings_ms: timings,
-        tokens,
-    };
+    let report = EditReport::new(scene, &templated, translation, translator, placed, timings);
     Ok(Edit { report, moved })
 }
 
@@ -590,45 +600,100 @@ fn place_into(
             scene.objects[object].name
         )));
     }
-    let before = scene.world_aabbs();
-    // What hung when the edit began (a whiteboard) never comes to rest on what moves under
-    // it.
-    let hung: Vec<bool> = before
-        .iter()
-        .enumerate()
-        .map(|(i, b)| scene.hangs_at(i, b))
-        .collect();
-    let mut boxes = before.clone();
-    let mut grid = crate::geometry::FloorGrid::new(&boxes);
+    let mut boxes = EditBoxes::new(scene);
+    let (moved, carried) = apply_moves(scene, moves, options.carry, held, &mut boxes, motions)?;
+    let apply_ms = ms(t0);
+    let t0 = Instant::now();
+    let resolved = match &options.collisions {
+        Some(resolve_options) => {
+            resolve_collisions(scene, &moved, resolve_options, &mut boxes, motions)?
+        }
+        None => Resolved::default(),
+    };
+    Ok(Placed {
+        moved,
+        carried,
+        collisions_resolved: resolved.collisions_resolved,
+        overlaps_remaining: resolved.overlaps_remaining,
+        apply_ms,
+        collide_ms: ms(t0),
+        collide_setup_ms: resolved.setup_ms,
+        collide_search_ms: resolved.search_ms,
+    })
+}
+
+/// The world boxes of an edit being placed: as they were, as they are now (with a floor
+/// grid over them, both kept up to date), and which objects hung when the edit began (a
+/// whiteboard never comes to rest on what moves under it).
+struct EditBoxes {
+    before: Vec<crate::geometry::Aabb>,
+    now: Vec<crate::geometry::Aabb>,
+    grid: crate::geometry::FloorGrid,
+    hung: Vec<bool>,
+}
+
+impl EditBoxes {
+    fn new(scene: &Scene) -> Self {
+        let before = scene.world_aabbs();
+        let hung = before
+            .iter()
+            .enumerate()
+            .map(|(i, b)| scene.hangs_at(i, b))
+            .collect();
+        let now = before.clone();
+        let grid = crate::geometry::FloorGrid::new(&now);
+        Self {
+            before,
+            now,
+            grid,
+            hung,
+        }
+    }
+
+    /// Brings the boxes of the objects `motion` moved up to date; those objects.
+    fn update(&mut self, scene: &Scene, motion: &AppliedMotion) -> Vec<usize> {
+        let changed: Vec<usize> = motion.objects().collect();
+        for &i in &changed {
+            let old = self.now[i];
+            self.now[i] = scene.objects[i].world_aabb();
+            self.grid.update(i, &old, &self.now[i]);
+        }
+        changed
+    }
+
+    /// Re-detects what rests on what around the objects `changed`.
+    fn resupport(&self, scene: &mut Scene, changed: &[usize]) {
+        scene.detect_supports_around(&self.now, &self.grid, changed, &self.hung);
+    }
+}
+
+/// Applies each motion about its object's pivot, carrying what rests on it (unless
+/// `carry` is off; never what is held); every motion computed against the scene as it
+/// was, so an object carried by an earlier motion first goes back, then takes its own.
+/// The objects moved, and the names of those carried.
+fn apply_moves(
+    scene: &mut Scene,
+    moves: &[(usize, cga::Multivector)],
+    carry: bool,
+    held: &[usize],
+    boxes: &mut EditBoxes,
+    motions: &mut Vec<AppliedMotion>,
+) -> Result<(Vec<usize>, Vec<String>), EditError> {
     let mut moved = Vec::new();
     let mut carried = Vec::new();
     // World motion each object has picked up so far in this edit by being carried.
     let mut carried_motion: Vec<Option<cga::Similarity>> = vec![None; scene.objects.len()];
-    let update = |scene: &Scene,
-                  motion: &AppliedMotion,
-                  boxes: &mut [crate::geometry::Aabb],
-                  grid: &mut crate::geometry::FloorGrid| {
-        let changed: Vec<usize> = motion.objects().collect();
-        for &i in &changed {
-            let old = boxes[i];
-            boxes[i] = scene.objects[i].world_aabb();
-            grid.update(i, &old, &boxes[i]);
-        }
-        changed
-    };
     for &(object, ref versor) in moves {
-        // Every motion is computed against the scene as it was, so an object carried by an
-        // earlier motion first goes back to where it was, then takes its own.
         if let Some(w) = carried_motion[object].take() {
             let back = scene.apply_world(&[object], &w.inverse());
-            update(scene, &back, &mut boxes, &mut grid);
+            boxes.update(scene, &back);
             motions.push(back);
         }
         let motion = scene
-            .apply_holding(object, versor, options.carry, held)
+            .apply_holding(object, versor, carry, held)
             .map_err(|e| EditError {
                 message: e.to_string(),
-                kind: EditErrorKind::NotUnderstood,
+                kind: EditErrorKind::Motion,
                 replies: ReplyCounts::default(),
                 ambiguity: None,
             })?;
@@ -644,91 +709,93 @@ fn place_into(
             }
         }
         moved.push(object);
-        let changed = update(scene, &motion, &mut boxes, &mut grid);
+        let changed = boxes.update(scene, &motion);
         motions.push(motion);
         // The moved object rests wherever it was put now, not on its old support: a later
         // motion that moves the old support must not carry it back.
         scene.objects[object].support_from_file = false;
-        scene.detect_supports_around(&boxes, &grid, &changed, &hung);
+        boxes.resupport(scene, &changed);
     }
-    let apply_ms = ms(t0);
+    Ok((moved, carried))
+}
 
-    let t0 = Instant::now();
-    let mut collisions_resolved = Vec::new();
-    let mut overlaps_remaining = Vec::new();
-    let (mut collide_setup_ms, mut collide_search_ms) = (0.0, 0.0);
-    if let Some(resolve_options) = &options.collisions {
-        let resolution = collide::resolve_with(
-            scene,
-            collide::Boxes {
-                before: &before,
-                after: &mut boxes,
-                grid: &mut grid,
-            },
-            &moved,
-            &crate::ground::kind::is_floor_bound,
-            resolve_options,
-        )
-        .map_err(|e| EditError {
-            message: e.message,
-            kind: EditErrorKind::Placement,
-            replies: ReplyCounts::default(),
-            ambiguity: None,
-        })?;
-        collide_setup_ms = resolution.setup_ms;
-        collide_search_ms = resolution.search_ms;
-        let changed: Vec<usize> = resolution.motion.objects().collect();
-        motions.push(resolution.motion.clone());
-        for a in &resolution.adjustments {
-            // Resolution that undoes the whole move leaves a silent no-op: say so instead.
-            let start = before[a.object].bottom_center();
-            let wanted = (a.requested - start).length();
-            if wanted > 0.02 && (a.resolved - start).length() < 0.01 {
-                let blocking: Vec<String> =
-                    a.collided_with.iter().map(|o| o.describe(scene)).collect();
-                return Err(EditError {
-                    message: format!(
-                        "'{}' cannot go there: it collides with {}, and the nearest free place is where it already is",
-                        scene.objects[a.object].name,
-                        blocking.join(", ")
-                    ),
-                    kind: EditErrorKind::Placement,
- replies: ReplyCounts::default(),
- ambiguity: None,
-});
-            }
-            collisions_resolved.push(CollisionReport {
-                object: scene.objects[a.object].name.clone(),
-                requested: a.requested.to_array(),
-                resolved: a.resolved.to_array(),
-                displacement: a.displacement.to_array(),
-                collided_with: a.collided_with.iter().map(|o| o.describe(scene)).collect(),
-                lifted_onto: a.lifted_onto.map(|j| scene.objects[j].name.clone()),
-            });
-        }
-        for o in &resolution.remaining {
-            overlaps_remaining.push(format!(
-                "'{}' overlaps {}",
-                scene.objects[o.object].name,
-                o.with.describe(scene)
-            ));
-        }
-        if !changed.is_empty() {
-            scene.detect_supports_around(&boxes, &grid, &changed, &hung);
-        }
-    }
-    let collide_ms = ms(t0);
+/// What collision resolution did, as the report says it.
+#[derive(Default)]
+struct Resolved {
+    collisions_resolved: Vec<CollisionReport>,
+    overlaps_remaining: Vec<String>,
+    setup_ms: f64,
+    search_ms: f64,
+}
 
-    Ok(Placed {
+/// Moves each colliding group to the nearest free placement ([`collide::resolve_with`]);
+/// refuses a resolution that would quietly undo the whole move.
+fn resolve_collisions(
+    scene: &mut Scene,
+    moved: &[usize],
+    resolve_options: &ResolveOptions,
+    boxes: &mut EditBoxes,
+    motions: &mut Vec<AppliedMotion>,
+) -> Result<Resolved, EditError> {
+    let placement = |message: String| EditError {
+        message,
+        kind: EditErrorKind::Placement,
+        replies: ReplyCounts::default(),
+        ambiguity: None,
+    };
+    let resolution = collide::resolve_with(
+        scene,
+        collide::Boxes {
+            before: &boxes.before,
+            after: &mut boxes.now,
+            grid: &mut boxes.grid,
+        },
         moved,
-        carried,
-        collisions_resolved,
-        overlaps_remaining,
-        apply_ms,
-        collide_ms,
-        collide_setup_ms,
-        collide_search_ms,
-    })
+        &crate::ground::kind::is_floor_bound,
+        resolve_options,
+    )
+    .map_err(|e| placement(e.message))?;
+    let changed: Vec<usize> = resolution.motion.objects().collect();
+    motions.push(resolution.motion.clone());
+    let mut resolved = Resolved {
+        setup_ms: resolution.setup_ms,
+        search_ms: resolution.search_ms,
+        ..Resolved::default()
+    };
+    for a in &resolution.adjustments {
+        let describe = |obstacles: &[collide::Obstacle]| -> Vec<String> {
+            obstacles.iter().map(|o| o.describe(scene)).collect()
+        };
+        // Resolution that undoes the whole move leaves a silent no-op: say so instead.
+        let start = boxes.before[a.object].bottom_center();
+        let wanted = (a.requested - start).length();
+        if wanted > 0.02 && (a.resolved - start).length() < 0.01 {
+            return Err(placement(format!(
+                "'{}' cannot go there: it collides with {}, and the nearest free place is where it already is",
+                scene.objects[a.object].name,
+                describe(&a.collided_with).join(", ")
+            )));
+        }
+        resolved.collisions_resolved.push(CollisionReport {
+            object: scene.objects[a.object].name.clone(),
+            requested: a.requested.to_array(),
+            resolved: a.resolved.to_array(),
+            displacement: a.displacement.to_array(),
+            collided_with: describe(&a.collided_with),
+            lifted_onto: a.lifted_onto.map(|j| scene.objects[j].name.clone()),
+        });
+    }
+    for o in &resolution.remaining {
+        resolved.overlaps_remaining.push(format!(
+            "'{}' overlaps {}",
+            scene.objects[o.object].name,
+            o.with.describe(scene)
+        ));
+    }
+    if !changed.is_empty() {
+        boxes.resupport(scene, &changed);
+    }
+    Ok(resolved)
 }
 
 /// Applies one CGA expression to one object (it is X1; `room` is bound when the scene has

@@ -28,6 +28,86 @@ pub struct LlmTranslator {
     pub recorder: Option<Recorder>,
 }
 
+impl LlmTranslator {
+    /// The cached answer to these first messages, when there is one that still reads.
+    fn cached(
+        &self,
+        first: &[Message],
+        templated: &Templated,
+        scene: &Scene,
+        started: Instant,
+    ) -> Option<Translation> {
+        let cache = self.cache.as_ref()?;
+        let scope = self.backend.cache_scope();
+        let reply = cache.get(self.system.name(), self.system.version(), &scope, first)?;
+        let answers = self.system.parse_reply(&reply, templated, scene).ok()?;
+        Some(Translation {
+            answers,
+            exchanges: vec![Exchange {
+                messages: first.to_vec(),
+                reply,
+                elapsed_ms: 0.0,
+                usage: Usage::default(),
+                error: None,
+                cached: true,
+            }],
+            retries: 0,
+            cache_hit: true,
+            elapsed: started.elapsed(),
+            answered_by: self.name(),
+            offline_refusal: None,
+            replies: ReplyCounts {
+                received: 1,
+                parsed: 1,
+                valid: 1,
+            },
+        })
+    }
+
+    /// Appends the exchange to the record file, when recording.
+    fn record(
+        &self,
+        messages: &[Message],
+        completion: &crate::llm::Completion,
+    ) -> Result<(), TranslateError> {
+        let Some(recorder) = &self.recorder else {
+            return Ok(());
+        };
+        let record = Record {
+            system: self.system.name().into(),
+            prompt_version: self.system.version().into(),
+            model: self.backend.model().to_string(),
+            messages: messages.to_vec(),
+            reply: cap(&completion.text),
+            elapsed_ms: completion.elapsed.as_secs_f64() * 1000.0,
+            usage: completion.usage,
+        };
+        recorder.append(&record).map_err(|e| {
+            TranslateError::model(format!(
+                "cannot record to {}: {e}",
+                recorder.path().display()
+            ))
+        })
+    }
+
+    /// The answers a reply gives, or why it cannot be used (too large to read).
+    fn read_reply(
+        &self,
+        text: &str,
+        templated: &Templated,
+        scene: &Scene,
+    ) -> Result<Vec<crate::translate::Answer>, crate::expr::ExprError> {
+        if text.len() > MAX_REPLY_BYTES {
+            return Err(crate::expr::ExprError::whole(format!(
+                "the reply is too large ({} KiB; at most {} KiB): answer with one short JSON object",
+                text.len() / 1024,
+                MAX_REPLY_BYTES / 1024
+            )));
+        }
+        self.system.parse_reply(text, templated, scene)
+    }
+}
+
 impl Translator for LlmTranslator {
     fn name(&self) -> String {
         self.backend.model().to_string()
@@ -55,35 +135,10 @@ impl Translator for LlmTranslator {
             )));
         }
         let first = self.system.messages(templated, scene);
-        let mut exchanges = Vec::new();
-        if let Some(cache) = &self.cache {
-            if let Some(reply) = cache.get(name, version, &scope, &first) {
-                if let Ok(answers) = self.system.parse_reply(&reply, templated, scene) {
-                    exchanges.push(Exchange {
-                        messages: first,
-                        reply,
-                        elapsed_ms: 0.0,
-                        usage: Usage::default(),
-                        error: None,
-                        cached: true,
-                    });
-                    return Ok(Translation {
-                        answers,
-                        exchanges,
-                        retries: 0,
-                        cache_hit: true,
-                        elapsed: started.elapsed(),
-                        answered_by: self.name(),
-                        offline_refusal: None,
-                        replies: ReplyCounts {
-                            received: 1,
-                            parsed: 1,
-                            valid: 1,
-                        },
-                    });
-                }
-            }
+        if let Some(hit) = self.cached(&first, templated, scene, started) {
+            return Ok(hit);
         }
+        let mut exchanges = Vec::new();
         let mut replies = ReplyCounts::default();
         let mut messages = first.clone();
         for attempt in 0..=self.retries {
@@ -97,33 +152,9 @@ impl Translator for LlmTranslator {
             let completion = self.backend.complete(&messages).map_err(|e| {
                 TranslateError::model(format!("{model}: {}", e.message)).with_replies(replies)
             })?;
-            if let Some(recorder) = &self.recorder {
-                let record = Record {
-                    system: name.into(),
-                    prompt_version: version.into(),
-                    model: model.clone(),
-                    messages: messages.clone(),
-                    reply: cap(&completion.text),
-                    elapsed_ms: completion.elapsed.as_secs_f64() * 1000.0,
-                    usage: completion.usage,
-                };
-                recorder.append(&record).map_err(|e| {
-                    TranslateError::model(format!(
-                        "cannot record to {}: {e}",
-                        recorder.path().display()
-                    ))
-                })?;
-            }
+            self.record(&messages, &completion)?;
             let too_large = completion.text.len() > MAX_REPLY_BYTES;
-            let parsed = if too_large {
-                Err(crate::expr::ExprError::whole(format!(
-                    "the reply is too large ({} KiB; at most {} KiB): answer with one short JSON object",
-                    completion.text.len() / 1024,
-                    MAX_REPLY_BYTES / 1024
-                )))
-            } else {
-                self.system.parse_reply(&completion.text, templated, scene)
-            };
+            let parsed = self.read_reply(&completion.text, templated, scene);
             replies.received += 1;
             if !too_large && self.system.reply_parses(&completion.text) {
                 replies.parsed += 1;

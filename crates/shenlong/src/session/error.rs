@@ -12,7 +12,8 @@ use serde::Serialize;
 #[serde(rename_all = "snake_case")]
 pub enum ErrorKind {
     /// The request is malformed: an empty or over-long instruction, an unknown object
-    /// named in `selected` or bound to an expression, an object bound twice.
+    /// named in `selected` or bound to an expression, an object bound twice, a motion
+    /// beyond what poses hold exactly.
     BadInput,
     /// The instruction names nothing the scene has, or the translator cannot read it, or
     /// the expression is not a transformation.
@@ -98,7 +99,7 @@ impl OpError {
             .as_ref()
             .map(|a| Box::new(Choices::new(instruction, a)));
         let kind = match error.kind {
-            EditErrorKind::BadInput => ErrorKind::BadInput,
+            EditErrorKind::BadInput | EditErrorKind::Motion => ErrorKind::BadInput,
             EditErrorKind::Instruction if ambiguity.is_some() => ErrorKind::Ambiguous,
             EditErrorKind::Instruction | EditErrorKind::NotUnderstood | EditErrorKind::Unread => {
                 ErrorKind::NotUnderstood

@@ -322,23 +322,66 @@ fn unchanged_collisions_and_bounds() {
 
 #[test]
 fn parsing_is_strict() {
-    let e = Check::parse(&json!({"check": "teleported", "object": "A"})).unwrap_err();
+    let error = |v: serde_json::Value| Check::parse(&v).unwrap_err().to_string();
+    let e = error(json!({"check": "teleported", "object": "A"}));
+    assert!(e.contains("teleported") && e.contains("moved"), "{e}");
+    let e = error(json!({"check": "moved", "object": "A", "delta": [1, 0, 0], "tolerance": 1}));
     assert!(
-        e.starts_with("unknown check 'teleported': use moved, direction"),
+        e.contains("unknown field `tolerance`") && e.contains("`tol`"),
         "{e}"
     );
-    let e =
-        Check::parse(&json!({"check": "moved", "object": "A", "delta": [1, 0, 0], "tolerance": 1}))
-            .unwrap_err();
-    assert_eq!(
-        e,
-        "check 'moved' has no field 'tolerance' (it takes object, delta, tol)"
-    );
-    let e = Check::parse(&json!({"check": "direction", "object": "A", "axis": "up"})).unwrap_err();
+    let e = error(json!({"check": "direction", "object": "A", "axis": "up"}));
     assert!(e.contains("unknown axis 'up'"), "{e}");
-    assert!(
-        Check::parse(&json!({"check": "side", "object": "A", "other": "B", "side": "above"}))
-            .is_err()
-    );
+    let e = error(json!({"check": "side", "object": "A", "other": "B", "side": "above"}));
+    assert!(e.contains("above") && e.contains("behind"), "{e}");
     assert!(Check::parse(&json!({"object": "A"})).is_err());
+    assert!(Check::parse(&json!({"check": "no_collision", "object": "A"})).is_err());
+    let e = error(json!({"check": "scaled", "object": "A"}));
+    assert!(e.contains("missing field `factor`"), "{e}");
+    let e = error(json!({"check": "unchanged", "objects": "everything"}));
+    assert!(e.contains("did not match"), "{e}");
+}
+
+#[test]
+fn parsing_fills_in_the_defaults() {
+    assert_eq!(
+        Check::parse(&json!({"check": "rotated", "object": "A"})).unwrap(),
+        Check::Rotated {
+            object: "A".into(),
+            axis: 1,
+            degrees: 90.0,
+            either_sign: false,
+            tol: 5.0
+        }
+    );
+    assert_eq!(
+        Check::parse(
+            &json!({"check": "side", "object": "A", "other": "B", "side": "back", "max_gap": null})
+        )
+        .unwrap(),
+        Check::Side {
+            object: "A".into(),
+            other: "B".into(),
+            side: (2, -1.0),
+            max_gap: 0.5
+        }
+    );
+    assert_eq!(
+        Check::parse(&json!({"check": "at", "object": "A", "position": [1, null, 2]})).unwrap(),
+        Check::At {
+            object: "A".into(),
+            position: [Some(1.0), None, Some(2.0)],
+            tol: 0.05
+        }
+    );
+    assert_eq!(
+        Check::parse(&json!({"check": "unchanged", "objects": ["A", "B"]})).unwrap(),
+        Check::Unchanged {
+            objects: Some(vec!["A".into(), "B".into()])
+        }
+    );
+    assert_eq!(
+        Check::parse(&json!({"check": "inside_bounds"})).unwrap(),
+        Check::InsideBounds
+    );
 }
