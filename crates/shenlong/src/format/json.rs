@@ -436,26 +436,7 @@ fn object_from_raw<'a>(
     };
     let scale = match o.scale {
         None => 1.0,
-        Some(raw) => {
-            let s = match serde_json::from_str::<f64>(raw.get()) {
-                Ok(s) if s.is_finite() => s,
-                _ => {
-                    let v = value_of(text, raw)?;
-                    if v.is_null() {
-                        1.0
-                    } else {
-                        number(&v, &field("scale"))?
-                    }
-                }
-            };
-            if !(MIN_SCALE..=MAX_SCALE).contains(&s) {
-                return Err(FormatError::new(format!(
-                    "{} must be in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]",
-                    field("scale")
-                )));
-            }
-            s
-        }
+        Some(raw) => scale_of(text, raw, &field("scale"))?,
     };
     let mut object = Object::new_box(name, size, position, rotation, scale)
         .map_err(|e| FormatError::new(format!("objects[{i}]: {e}")))?;
@@ -482,6 +463,27 @@ fn object_from_raw<'a>(
         },
     };
     Ok((object, pose, o.on))
+}
+
+/// An object's `scale`: a finite number within [`MIN_SCALE`, `MAX_SCALE`], `null` for 1.
+fn scale_of(text: &str, raw: &RawValue, field: &str) -> Result<f64, FormatError> {
+    let s = match serde_json::from_str::<f64>(raw.get()) {
+        Ok(s) if s.is_finite() => s,
+        _ => {
+            let v = value_of(text, raw)?;
+            if v.is_null() {
+                1.0
+            } else {
+                number(&v, field)?
+            }
+        }
+    };
+    if !(MIN_SCALE..=MAX_SCALE).contains(&s) {
+        return Err(FormatError::new(format!(
+            "{field} must be in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]"
+        )));
+    }
+    Ok(s)
 }
 
 fn strip_position(message: &str) -> String {

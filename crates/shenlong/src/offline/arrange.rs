@@ -4,7 +4,7 @@
 
 use super::build::*;
 use super::clause::Clause;
-use super::reader::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, ReadError, Reader};
 use super::relations::{boxed, Step, GAP};
 use super::words::Token;
 
@@ -39,7 +39,7 @@ fn named_axis(c: &mut Clause) -> Option<usize> {
 impl Reader<'_> {
     /// "swap X1 and X2": each goes to the other's place, centred where it stood, on its
     /// floor level.
-    pub(super) fn swap(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+    pub(super) fn swap(&mut self, c: &mut Clause, text: &str) -> Result<Produced, ReadError> {
         let vars = c.variables();
         if vars.is_empty() && self.last_subjects.len() == 2 {
             // "X1 and X2: swap them" ("swap 'em", "swap the two"): the two named before.
@@ -59,10 +59,10 @@ impl Reader<'_> {
         if vars.len() > 2 {
             let known = self.facts.known;
             let names: Vec<String> = vars.iter().map(|&(_, v)| known.label(v)).collect();
-            return Err(format!(
+            return Err(ReadError::Unclear(format!(
                 "a swap takes two objects, and {} are named: say which two",
                 names.join(", ")
-            ));
+            )));
         }
         for i in 0..c.len() {
             if matches!(
@@ -113,7 +113,7 @@ impl Reader<'_> {
         &mut self,
         c: &mut Clause,
         text: &str,
-    ) -> Option<Result<Produced, String>> {
+    ) -> Option<Result<Produced, ReadError>> {
         let w = (0..c.len()).find(|&i| {
             c.free(i)
                 && c.word(i) == Some("where")
@@ -134,16 +134,16 @@ impl Reader<'_> {
         };
         Some(match subjects.as_slice() {
             [s] if *s != t => Ok(vec![(*s, Step::Translate(to_place_of(*s, t)))]),
-            _ => Err(format!(
+            _ => Err(ReadError::Unclear(format!(
                 "only one object can go where another is, in \"{}\"",
                 text.trim()
-            )),
+            ))),
         })
     }
 
     /// "align X1 with X2" (along x, or the axis named): centred on X2 along that axis.
     /// With no `with` and several objects, a row ([`Reader::row`]).
-    pub(super) fn align(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+    pub(super) fn align(&mut self, c: &mut Clause, text: &str) -> Result<Produced, ReadError> {
         let axis_named = named_axis(c);
         let with = c.find(&["with"]).or_else(|| c.find(&["to"]));
         let vars = c.variables();

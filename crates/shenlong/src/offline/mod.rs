@@ -54,6 +54,7 @@ use crate::scene::Scene;
 use crate::translate::{
     bindings, Answer, Exchange, System, Templated, TranslateError, Translation, Translator,
 };
+pub use reader::ReadError;
 use reader::{Facts, Reader};
 use relations::Step;
 use std::time::Instant;
@@ -164,7 +165,7 @@ impl<'s> Known<'s> {
         t: usize,
         e: usize,
         sign: f64,
-    ) -> Result<(), String> {
+    ) -> Result<(), ReadError> {
         let Some((scene, objects)) = self.scene else {
             return Ok(());
         };
@@ -182,16 +183,16 @@ impl<'s> Known<'s> {
             (_, true) => "forward",
         };
         if ahead < -1e-6 {
-            return Err(format!(
+            return Err(ReadError::Unclear(format!(
                 "'{}' is not {way} of '{}': moving it {way} never reaches it",
                 scene.objects[b].name, scene.objects[a].name
-            ));
+            )));
         }
         if overlap <= 1e-6 {
-            return Err(format!(
+            return Err(ReadError::Unclear(format!(
                 "'{}' is not straight {way} of '{}': moving it {way} passes it by",
                 scene.objects[b].name, scene.objects[a].name
-            ));
+            )));
         }
         Ok(())
     }
@@ -476,7 +477,7 @@ impl Known<'_> {
         &self,
         s: usize,
         t: usize,
-    ) -> Result<Option<relations::Relation>, String> {
+    ) -> Result<Option<relations::Relation>, ReadError> {
         let Some((scene, a, b, surface)) = self.beside_on_support(s, t) else {
             return Ok(None);
         };
@@ -592,7 +593,7 @@ impl Known<'_> {
         s: usize,
         t: usize,
         y: usize,
-    ) -> Result<Option<relations::Relation>, String> {
+    ) -> Result<Option<relations::Relation>, ReadError> {
         let Some((scene, objects)) = self.scene else {
             return Ok(None);
         };
@@ -607,7 +608,13 @@ impl Known<'_> {
     ///
     /// # Errors
     /// One line naming the objects.
-    pub(crate) fn between_on(&self, s: usize, z: usize, w: usize, y: usize) -> Result<(), String> {
+    pub(crate) fn between_on(
+        &self,
+        s: usize,
+        z: usize,
+        w: usize,
+        y: usize,
+    ) -> Result<(), ReadError> {
         let Some((scene, objects)) = self.scene else {
             return Ok(());
         };
@@ -642,13 +649,13 @@ impl Known<'_> {
         let (near, far) = if d[e] >= 0.0 { (pb, qb) } else { (qb, pb) };
         let room = far.min[e] - near.max[e];
         if !on_top || room < me.size()[e] {
-            return Err(format!(
+            return Err(ReadError::NoFit(format!(
                 "'{}' does not fit on '{}' between '{}' and '{}'; say where else it should go",
                 name(a),
                 name(c),
                 name(p),
                 name(q)
-            ));
+            )));
         }
         Ok(())
     }
@@ -656,16 +663,16 @@ impl Known<'_> {
     /// Refuses a place beside `b` on `surface` when `b` stands inside the surface's box (an
     /// egg in a fridge, a pillow in a sofa's seat): anything put beside it would end inside
     /// the surface.
-    fn not_sunk(scene: &Scene, b: usize, surface: usize) -> Result<(), String> {
+    fn not_sunk(scene: &Scene, b: usize, surface: usize) -> Result<(), ReadError> {
         let (target, top) = (
             scene.objects[b].world_aabb(),
             scene.objects[surface].world_aabb(),
         );
         if target.min.y < top.max.y - crate::scene::SUPPORT_GAP {
-            return Err(format!(
+            return Err(ReadError::NoFit(format!(
                 "'{}' stands inside '{}', so nothing put beside it would stand on '{}'; say where else it should go",
                 scene.objects[b].name, scene.objects[surface].name, scene.objects[surface].name
-            ));
+            )));
         }
         Ok(())
     }
@@ -682,7 +689,7 @@ impl Known<'_> {
         a: usize,
         b: usize,
         surface: usize,
-    ) -> Result<relations::Relation, String> {
+    ) -> Result<relations::Relation, ReadError> {
         Self::not_sunk(scene, b, surface)?;
         let (me, target, top) = (
             scene.objects[a].world_aabb(),
@@ -705,10 +712,10 @@ impl Known<'_> {
             .into_iter()
             .find_map(|(e, sign)| Self::side_within(&me, &target, &top, e, sign))
             .ok_or_else(|| {
-                format!(
+                ReadError::NoFit(format!(
                     "'{}' does not fit next to '{}' on '{}': there is no room on any side of it; say where else it should go",
                     scene.objects[a].name, scene.objects[b].name, scene.objects[surface].name
-                )
+                ))
             })
     }
 }
@@ -780,7 +787,7 @@ impl Known<'_> {
         t: usize,
         e: usize,
         sign: f64,
-    ) -> Result<Option<relations::Relation>, String> {
+    ) -> Result<Option<relations::Relation>, ReadError> {
         let Some((scene, a, b, surface)) = self.beside_on_support(s, t) else {
             return Ok(None);
         };
@@ -791,13 +798,13 @@ impl Known<'_> {
         );
         match Self::side_within(&me, &target, &top, e, sign) {
             Some(relation) => Ok(Some(relation)),
-            None => Err(format!(
+            None => Err(ReadError::NoFit(format!(
                 "'{}' does not fit {} '{}' on '{}': it would hang over the edge; say where else it should go",
                 scene.objects[a].name,
                 relations::side_name(e, sign),
                 scene.objects[b].name,
                 scene.objects[surface].name
-            )),
+            ))),
         }
     }
 }
@@ -852,27 +859,9 @@ fn runs(scene: &Scene, boxes: &[crate::geometry::Aabb], i: usize) -> [f64; 4] {
 /// changes, with what is `known` of the bound objects.
 ///
 /// # Errors
-/// The unread part of the instruction, quoted.
-pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<Entry>, String> {
-    answer_or_refusal(query, variables, known).map_err(|r| r.message)
-}
-
-/// Why the offline translator gives no answer.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub(crate) struct Refusal {
-    /// One line for the user.
-    pub message: String,
-    /// Read and refused on its meaning ("put X1 back"), not for words it does not read: no
-    /// model should be asked instead.
-    pub settled: bool,
-}
-
-/// [`answer`], with whether a refusal is settled ([`Refusal`]).
-pub(crate) fn answer_or_refusal(
-    query: &str,
-    variables: usize,
-    known: &Known<'_>,
-) -> Result<Vec<Entry>, Refusal> {
+/// Why it gives no answer: the unread part of the instruction, quoted, or what the
+/// instruction leaves open.
+pub fn answer(query: &str, variables: usize, known: &Known<'_>) -> Result<Vec<Entry>, ReadError> {
     let facts = Facts { variables, known };
     let tokens = words::tokenize(query);
     let mut reader = Reader::new(&facts);
@@ -880,16 +869,10 @@ pub(crate) fn answer_or_refusal(
     let last = clauses.len().saturating_sub(1);
     for (k, mut c) in clauses.into_iter().enumerate() {
         reader.more_follow = k < last;
-        reader.clause(&mut c).map_err(|message| Refusal {
-            message,
-            settled: reader.settled,
-        })?;
+        reader.clause(&mut c)?;
     }
     if reader.steps.is_empty() {
-        return Err(Refusal {
-            message: reader::not_read(query, query),
-            settled: false,
-        });
+        return Err(reader::not_read(query, query));
     }
     // A list acts in the pivot frame of the object's original place: turns and scales go
     // first (about the object itself), then the translations (which commute).
@@ -944,7 +927,7 @@ pub fn reply_text(entries: &[Entry]) -> String {
 ///
 /// # Errors
 /// As [`answer`].
-pub fn reply_for(query: &str, variables: usize) -> Result<String, String> {
+pub fn reply_for(query: &str, variables: usize) -> Result<String, ReadError> {
     let known = Known {
         room: true,
         yaw: vec![0.0; variables],
@@ -969,14 +952,13 @@ impl Translator for OfflineTranslator {
     ) -> Result<Translation, TranslateError> {
         let started = Instant::now();
         let known = Known::of(scene, &templated.objects);
-        let entries = answer_or_refusal(&templated.query, templated.objects.len(), &known)
-            .map_err(|r| {
-                if r.settled {
-                    TranslateError::settled(r.message)
-                } else {
-                    TranslateError::not_understood(r.message)
-                }
-            })?;
+        let entries = answer(&templated.query, templated.objects.len(), &known).map_err(|r| {
+            if r.settled() {
+                TranslateError::settled(r.to_string())
+            } else {
+                TranslateError::not_understood(r.to_string())
+            }
+        })?;
         let bindings: Bindings = bindings(scene, &templated.objects);
         let reply = reply_text(&entries);
         let mut answers = Vec::new();

@@ -8,7 +8,7 @@
 use super::amounts::{self, Length};
 use super::build::{call, div, flat, mul, num, sub};
 use super::clause::Clause;
-use super::reader::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, ReadError, Reader};
 use super::relations::{boxed, middle, Step};
 
 /// Which way the subjects go relative to one another.
@@ -52,7 +52,7 @@ impl Reader<'_> {
         &mut self,
         c: &mut Clause,
         text: &str,
-    ) -> Option<Result<Produced, String>> {
+    ) -> Option<Result<Produced, ReadError>> {
         let (at, len, way) = (0..c.len()).find_map(|i| {
             PHRASES
                 .iter()

@@ -11,7 +11,7 @@
 //! - a swap, a row or an alignment ([`super::arrange`]).
 
 use super::clause::Clause;
-use super::reader::{not_read, Direction, Produced, Reader};
+use super::reader::{not_read, Direction, Produced, ReadError, Reader};
 use super::relate::find_relation;
 use super::relations::Step;
 use super::room_place::room_place;
@@ -19,10 +19,6 @@ use super::rotate::find_facing;
 use super::view::{view_at, View};
 use super::words::{self, Action, Token};
 use crate::translate::Near;
-
-/// Why "put X1 back" is refused: it asks for a pose before an earlier edit, which a
-/// single instruction does not have.
-const RETURN_REFUSED: &str = "\"put … back\" asks for where it was before an earlier edit, and there is none to return to here; to move it backwards, say how far (\"move it back 50 cm\")";
 
 /// Verbs that with "back" and nothing more return an object ("put the chair back");
 /// other verbs with "back" move it backwards ("push the chair back").
@@ -155,7 +151,7 @@ impl Reader<'_> {
     ///
     /// # Errors
     /// A word of the clause not read (quoted), or a variable beyond those bound.
-    pub fn clause(&mut self, c: &mut Clause) -> Result<(), String> {
+    pub fn clause(&mut self, c: &mut Clause) -> Result<(), ReadError> {
         self.wall_of_objects(c);
         self.foot_of_object(c);
         prepare(c);
@@ -234,7 +230,7 @@ impl Reader<'_> {
         &self,
         c: &mut Clause,
         shifted: Option<&(Vec<usize>, Vec<Direction>)>,
-    ) -> Option<Result<(), String>> {
+    ) -> Option<Result<(), ReadError>> {
         let (subjects, dirs) = shifted?;
         let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
         let words: Vec<&str> = free.iter().map(|&i| c.word(i).unwrap_or("")).collect();
@@ -268,11 +264,11 @@ impl Reader<'_> {
         for &s in subjects {
             if self.facts.known.heads_towards(s, t, way) == Some(false) {
                 let known = self.facts.known;
-                return Some(Err(format!(
+                return Some(Err(ReadError::Unclear(format!(
                     "moving {} that way takes it away from {}, not towards it: say which you mean",
                     known.label(s),
                     known.label(t)
-                )));
+                ))));
             }
         }
         for &i in &free {
@@ -285,7 +281,7 @@ impl Reader<'_> {
     /// rest on `X3` once placed — a check, not a motion ([`Near::On`]). They must rest on
     /// it now; where one does not, the clause is refused naming both. `None` for any other
     /// clause, or with nothing moved before.
-    fn keep_on(&mut self, c: &mut Clause) -> Option<Result<(), String>> {
+    fn keep_on(&mut self, c: &mut Clause) -> Option<Result<(), ReadError>> {
         let free: Vec<usize> = (0..c.len()).filter(|&i| c.free(i)).collect();
         let (first, rest) = free.split_first()?;
         if !matches!(c.word(*first), Some("keep" | "leave")) || self.last_subjects.is_empty() {
@@ -327,11 +323,11 @@ impl Reader<'_> {
         let known = self.facts.known;
         for &s in &subjects {
             if !known.rests_on(s, target) {
-                return Some(Err(format!(
+                return Some(Err(ReadError::Unclear(format!(
                     "{} is not on {} now, so it cannot stay on it: say where it goes",
                     known.label(s),
                     known.label(target)
-                )));
+                ))));
             }
             self.near.entry(s).or_insert(Near::On(target));
         }
@@ -454,7 +450,7 @@ impl Reader<'_> {
     ///
     /// # Errors
     /// A variable beyond those bound.
-    fn record(&mut self, produced: Produced) -> Result<(), String> {
+    fn record(&mut self, produced: Produced) -> Result<(), ReadError> {
         self.last_produced.clone_from(&produced);
         if let Some(&(first, _)) = produced.first() {
             self.last_steps = produced
@@ -465,11 +461,10 @@ impl Reader<'_> {
         }
         for (v, step) in produced {
             if v >= self.facts.variables {
-                return Err(format!(
-                    "the instruction names X{} but only {} objects are named",
-                    v + 1,
-                    self.facts.variables
-                ));
+                return Err(ReadError::Unbound {
+                    variable: v + 1,
+                    bound: self.facts.variables,
+                });
             }
             self.steps.entry(v).or_default().push(step);
         }
@@ -511,7 +506,7 @@ impl Reader<'_> {
         &mut self,
         c: &mut Clause,
         text: &str,
-    ) -> Result<Vec<usize>, String> {
+    ) -> Result<Vec<usize>, ReadError> {
         let subjects = self.subjects(c, None);
         if subjects.is_empty() {
             return Err(not_read(text, text));
@@ -556,7 +551,7 @@ impl Reader<'_> {
 
     /// Reads the clause by its verb (the last clause's with none; a turn when it says
     /// "face"), dispatching to the stage that reads the rest.
-    fn read(&mut self, c: &mut Clause) -> Result<Produced, String> {
+    fn read(&mut self, c: &mut Clause) -> Result<Produced, ReadError> {
         let text = c.text();
         let verb = self.verb(c);
         // "face it" where "it" is the object turned: the one thing named as the last
@@ -572,8 +567,7 @@ impl Reader<'_> {
         let facing = find_facing(c, other);
         if let Some((_, _, at)) = verb {
             if asks_return(c, at) {
-                self.settled = true;
-                return Err(RETURN_REFUSED.to_string());
+                return Err(ReadError::Return);
             }
         }
         let (mut action, implied) = match verb {
@@ -731,7 +725,7 @@ impl Reader<'_> {
     /// "drag X1 into the corner by X2" (near, next to, nearest): the room's corner on
     /// X2's side of its centre along both axes. `None` where the clause says no such
     /// thing, or the scene has no room.
-    fn corner_by(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, String>> {
+    fn corner_by(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, ReadError>> {
         let i = (0..c.len()).find(|&i| c.free(i) && c.word(i) == Some("corner"))?;
         let by = match (c.word(i + 1), c.word(i + 2)) {
             (Some("next" | "closest" | "nearest"), Some("to")) => 2,
@@ -778,7 +772,7 @@ impl Reader<'_> {
         action: Action,
         implied: Option<Direction>,
         text: &str,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         // A relation to an object named before: "move X2 next to it".
         if find_relation(c).is_none() {
             if let Some((r, targets)) = self.pronoun_relation(c) {

@@ -48,25 +48,62 @@ pub(crate) struct Reader<'a> {
     /// Whether more clauses follow the one being read: a remark about the objects ("X1 is
     /// way too low, bring it up") is read only before what is to be done.
     pub(super) more_follow: bool,
-    /// Whether the clause refused was read and refused on its meaning ("put X1 back"): no
-    /// other translator should be asked to read it (a model might read a move backwards).
-    pub(super) settled: bool,
 }
 
 /// What one clause asks: each variable with one step, in order.
 pub(super) type Produced = Vec<(usize, Step)>;
 
-/// The message for words the translator could not read: those words (the clause, objects
-/// as X1 …, only when none of it was read). Front ends add their own advice (the CLI
-/// names `--llm`).
-pub(crate) fn not_read(unread: &str, clause: &str) -> String {
+/// Why the offline translator gives no answer: the kind of refusal, and one line for the
+/// user. Front ends add their own advice (the CLI names `--llm` for [`ReadError::Unread`]).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ReadError {
+    /// Words it could not read: those words (the clause, objects as X1 …, only when none of
+    /// it was read). Another translator (a model) may read them.
+    #[error("the offline translator could not read \"{0}\"; rephrase it")]
+    Unread(String),
+    /// Read, but what is asked is left open or goes against the scene (a swap of three, a
+    /// way that leads away from the target, an object drawn up to nothing): what to say.
+    #[error("{0}")]
+    Unclear(String),
+    /// Read, but the object does not fit where it is to go: where else to say.
+    #[error("{0}")]
+    NoFit(String),
+    /// An amount that must be a length and is not ("2 degrees closer to the wall").
+    #[error("an amount {0} must be a length")]
+    NotALength(&'static str),
+    /// A place in the room, in a scene without one.
+    #[error("the scene has no room (no \"bounds\"), so \"{0}\" has no walls or centre to go to")]
+    NoRoom(String),
+    /// A variable beyond those bound.
+    #[error("the instruction names X{variable} but only {bound} objects are named")]
+    Unbound {
+        /// The variable's number (X3 is 3).
+        variable: usize,
+        /// How many are bound.
+        bound: usize,
+    },
+    /// "Put … back" asks for a pose before an earlier edit, which a one-shot edit has not.
+    #[error("\"put … back\" asks for where it was before an earlier edit, and there is none to return to here; to move it backwards, say how far (\"move it back 50 cm\")")]
+    Return,
+}
+
+impl ReadError {
+    /// Whether it was read and refused on its meaning ("put X1 back"), not for words it
+    /// does not read: no other translator (a model, which might read a move backwards)
+    /// should be asked instead.
+    #[must_use]
+    pub fn settled(&self) -> bool {
+        matches!(self, Self::Return)
+    }
+}
+
+/// The refusal of words the translator could not read: those words, or the clause when
+/// none of it was read.
+pub(crate) fn not_read(unread: &str, clause: &str) -> ReadError {
     if unread == clause || unread.is_empty() {
-        format!(
-            "the offline translator could not read \"{}\"; rephrase it",
-            clause.trim()
-        )
+        ReadError::Unread(clause.trim().to_string())
     } else {
-        format!("the offline translator could not read \"{unread}\"; rephrase it")
+        ReadError::Unread(unread.to_string())
     }
 }
 
@@ -108,7 +145,6 @@ impl<'a> Reader<'a> {
             last_shift: None,
             last_produced: Vec::new(),
             more_follow: false,
-            settled: false,
         }
     }
 }

@@ -8,7 +8,7 @@
 use super::amounts::{self, Length, DEFAULT_METRES};
 use super::build;
 use super::clause::Clause;
-use super::reader::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, ReadError, Reader};
 use super::relations::{self, Level, Relation, Step};
 use super::room;
 use crate::expr::Expr;
@@ -408,7 +408,7 @@ impl Reader<'_> {
         r: Range<usize>,
         targets: &[usize],
         text: &str,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         c.mark(r.clone());
         mark_particles_before(c, r.start);
         let subjects = self.subjects(c, Some(r.start));
@@ -435,7 +435,7 @@ impl Reader<'_> {
         c: &mut Clause,
         r: Found,
         text: &str,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         // "move X1 off X2 onto X3": where it is taken from, then where it goes.
         if r.kind == RelKind::Fixed(Relation::Off) {
             let end = r.targets.last().map_or(r.range.end, |&(t, _)| t + 1);
@@ -463,10 +463,10 @@ impl Reader<'_> {
         if targets.len() > 1 && !two_ends && !by_middle {
             let known = self.facts.known;
             let names: Vec<String> = targets.iter().map(|&t| known.label(t)).collect();
-            return Err(format!(
+            return Err(ReadError::Unclear(format!(
                 "which of {} each object goes to is not said in \"{text}\": name one, or say it for each",
                 names.join(" and ")
-            ));
+            )));
         }
         // "on the floor next to X2", "down on the ground beside X2": beside X2, on the floor.
         let beside = matches!(
@@ -525,7 +525,7 @@ impl Reader<'_> {
         r: &Found,
         subjects: &[usize],
         targets: &[usize],
-    ) -> Result<Relation, String> {
+    ) -> Result<Relation, ReadError> {
         let relation = match r.kind {
             // "slide X1 right until it touches X2", "push X1 left against X2": along
             // that direction, when X2 lies straight that way.
@@ -580,7 +580,7 @@ impl Reader<'_> {
         relation: Relation,
         targets: &[usize],
         text: &str,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         self.last_subjects = subjects.to_vec();
         self.last_targets = targets.to_vec();
         let near = match (relation, targets) {
@@ -643,7 +643,7 @@ impl Reader<'_> {
         relation: Relation,
         s: usize,
         t: usize,
-    ) -> Option<Result<Expr, String>> {
+    ) -> Option<Result<Expr, ReadError>> {
         let known = self.facts.known;
         let unmoved = |v: usize| !self.steps.contains_key(&v);
         let constant =
@@ -661,12 +661,12 @@ impl Reader<'_> {
                         .filter(|_| placed)
                         .map(constant)
                         .ok_or_else(|| {
-                            format!(
+                            ReadError::Unclear(format!(
                                 "{} is drawn up to no table{} to put {} in front of it: say where it goes",
                                 known.label(t),
                                 table.map(|y| format!(" like {}", known.label(y))).unwrap_or_default(),
                                 known.label(s)
-                            )
+                            ))
                         }),
                 )
             }
@@ -688,7 +688,7 @@ impl Reader<'_> {
         s: usize,
         targets: &[usize],
         text: &str,
-    ) -> Result<Expr, String> {
+    ) -> Result<Expr, ReadError> {
         let floor = room::floor(self.facts.known.room);
         let t = *targets.first().ok_or_else(|| not_read(text, text))?;
         // Where an earlier clause moved the target, the scene's numbers no longer say

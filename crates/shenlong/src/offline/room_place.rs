@@ -5,7 +5,7 @@
 //! written by [`super::room`]; a scene without a room refuses all but the floor.
 
 use super::clause::Clause;
-use super::reader::{mark_to_the, Direction};
+use super::reader::{mark_to_the, Direction, ReadError};
 use super::room::{self, Place};
 use super::words::{self, Action};
 use crate::expr::Expr;
@@ -77,14 +77,11 @@ pub(super) fn is_room_word(w: &str) -> bool {
 }
 
 /// Refuses a place in the room in a scene without one.
-fn need_room(c: &Clause, has_room: bool) -> Result<(), String> {
+fn need_room(c: &Clause, has_room: bool) -> Result<(), ReadError> {
     if has_room {
         Ok(())
     } else {
-        Err(format!(
-            "the scene has no room (no \"bounds\"), so \"{}\" has no walls or centre to go to",
-            c.text()
-        ))
+        Err(ReadError::NoRoom(c.text()))
     }
 }
 
@@ -144,7 +141,7 @@ fn floor(c: &mut Clause) -> Option<RoomPlace> {
 }
 
 /// "into the back left corner", "in a corner" (the nearest along each axis not named).
-fn corner(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
+fn corner(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, ReadError> {
     let Some(i) = c.find(&["corner"]) else {
         return Ok(None);
     };
@@ -183,7 +180,7 @@ fn wall_centre(
     c: &mut Clause,
     action: Action,
     has_room: bool,
-) -> Result<Option<RoomPlace>, String> {
+) -> Result<Option<RoomPlace>, ReadError> {
     let Some(i) = c.find(&["wall"]) else {
         return Ok(None);
     };
@@ -217,7 +214,7 @@ fn wall_centre(
 }
 
 /// "against the left wall", "to the wall" (the nearest).
-fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
+fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, ReadError> {
     let Some(i) = c.find(&["wall"]).or_else(|| c.find(&["walls"])) else {
         return Ok(None);
     };
@@ -273,7 +270,7 @@ fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
         let amount = match super::amounts::length(c, false) {
             Some(super::amounts::Length::Metres(m)) => Some(m),
             None => None,
-            Some(_) => return Err("an amount closer to a wall must be a length".into()),
+            Some(_) => return Err(ReadError::NotALength("closer to a wall")),
         };
         return Ok(Some(RoomPlace::CloserToWall(wall, amount)));
     }
@@ -282,7 +279,7 @@ fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
         let amount = match super::amounts::length(c, false) {
             Some(super::amounts::Length::Metres(m)) => m,
             None => super::amounts::DEFAULT_METRES,
-            Some(_) => return Err("an amount away from a wall must be a length".into()),
+            Some(_) => return Err(ReadError::NotALength("away from a wall")),
         };
         return Ok(Some(RoomPlace::AwayFromWall(wall, amount)));
     }
@@ -290,7 +287,7 @@ fn wall(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
 }
 
 /// "to the middle of the room", "centre X1" (the verb says it).
-fn centre(c: &mut Clause, action: Action, has_room: bool) -> Result<Option<RoomPlace>, String> {
+fn centre(c: &mut Clause, action: Action, has_room: bool) -> Result<Option<RoomPlace>, ReadError> {
     let centre_word = ["centre", "center", "middle"]
         .iter()
         .find_map(|w| c.find(&[w]));
@@ -317,9 +314,7 @@ fn centre(c: &mut Clause, action: Action, has_room: bool) -> Result<Option<RoomP
         let amount = match super::amounts::length(c, false) {
             Some(super::amounts::Length::Metres(m)) => Some(m),
             None => None,
-            Some(_) => {
-                return Err("an amount towards the middle of the room must be a length".into())
-            }
+            Some(_) => return Err(ReadError::NotALength("towards the middle of the room")),
         };
         return Ok(Some(RoomPlace::TowardsCentre(amount)));
     }
@@ -327,7 +322,7 @@ fn centre(c: &mut Clause, action: Action, has_room: bool) -> Result<Option<RoomP
 }
 
 /// "to the other side of the room", "across the room": mirrored through its centre.
-fn other_side(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
+fn other_side(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, ReadError> {
     for i in 0..c.len() {
         let other_side = c.words_at(i, &["the", "other", "side", "of", "the"])
             && c.word(i + 5).is_some_and(is_room_word);
@@ -348,7 +343,7 @@ fn other_side(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, Strin
 
 /// "towards the back of the room" (a way towards that wall), "to the front of the room"
 /// (against it).
-fn side_of_room(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, String> {
+fn side_of_room(c: &mut Clause, has_room: bool) -> Result<Option<RoomPlace>, ReadError> {
     for (i, w) in (0..c.len()).filter_map(|i| c.word(i).map(|w| (i, w.to_string()))) {
         if let Some(d) = words::direction(&w) {
             let of_room =
@@ -380,7 +375,7 @@ pub(super) fn room_place(
     c: &mut Clause,
     action: Action,
     has_room: bool,
-) -> Result<Option<RoomPlace>, String> {
+) -> Result<Option<RoomPlace>, ReadError> {
     if let Some(place) = floor(c) {
         return Ok(Some(place));
     }

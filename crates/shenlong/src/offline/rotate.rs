@@ -8,7 +8,7 @@
 use super::amounts::{self, DEFAULT_DEGREES};
 use super::build::*;
 use super::clause::Clause;
-use super::reader::{mark_to_the, not_read, Direction, Produced, Reader};
+use super::reader::{mark_to_the, not_read, Direction, Produced, ReadError, Reader};
 use super::relations::{boxed, Step};
 use super::view::View;
 use super::words::{self, Token};
@@ -266,7 +266,7 @@ impl Reader<'_> {
         c: &mut Clause,
         facing: Option<Facing>,
         text: &str,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         if let Some(turned) = self.face_each_other(c, text) {
             return turned;
         }
@@ -287,7 +287,7 @@ impl Reader<'_> {
 
     /// Each subject (the variables before the phrase) turned about the vertical so that
     /// its front (or back) points at the target, both where earlier clauses left them.
-    fn face(&mut self, c: &mut Clause, f: Facing, text: &str) -> Result<Produced, String> {
+    fn face(&mut self, c: &mut Clause, f: Facing, text: &str) -> Result<Produced, ReadError> {
         c.mark(f.range.clone());
         c.mark(f.target_at..f.target_at + 1);
         let targets = more_targets(c, f.target, f.target_at);
@@ -405,7 +405,11 @@ impl Reader<'_> {
 
     /// "turn X1 and X2 to face each other": each of two turned to face the other. `None`
     /// when the clause does not say so.
-    fn face_each_other(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, String>> {
+    fn face_each_other(
+        &mut self,
+        c: &mut Clause,
+        text: &str,
+    ) -> Option<Result<Produced, ReadError>> {
         let at = (1..c.len()).find(|&i| {
             (c.words_at(i, &["each", "other"]) || c.words_at(i, &["one", "another"]))
                 && matches!(c.word(i - 1), Some("face" | "faces" | "facing"))
@@ -431,7 +435,7 @@ impl Reader<'_> {
 
     /// "face the same way as X2", "in the same direction as X2": its front along X2's.
     /// `None` when the clause says neither.
-    fn same_way_as(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, String>> {
+    fn same_way_as(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, ReadError>> {
         for words in [
             &["the", "same", "way", "as"][..],
             &["the", "same", "direction", "as"],
@@ -455,7 +459,7 @@ impl Reader<'_> {
 
     /// "face the left wall", "face the middle of the room", "face the wall" (the nearest):
     /// `None` when the clause names no wall, centre or room, or the scene has no room.
-    fn face_room(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, String>> {
+    fn face_room(&mut self, c: &mut Clause, text: &str) -> Option<Result<Produced, ReadError>> {
         let i = ["face", "faces", "facing"]
             .iter()
             .find_map(|w| c.find(&[w]))?;
@@ -498,7 +502,7 @@ impl Reader<'_> {
 
     /// A turn by an angle ("45 degrees clockwise", "a quarter turn to the left", "turn it
     /// around"), about the vertical or a named axis.
-    fn turn_by_angle(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+    fn turn_by_angle(&mut self, c: &mut Clause, text: &str) -> Result<Produced, ReadError> {
         let subjects = self.required_subjects(c, text)?;
         let plane = rotation_plane(c);
         let degrees = turn_degrees(c);
@@ -517,7 +521,7 @@ impl Reader<'_> {
         cut: usize,
         text: &str,
         angle: impl Fn(usize) -> Expr,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         let subjects = self.subjects(c, Some(cut));
         if subjects.is_empty() {
             return Err(not_read(text, text));
@@ -531,7 +535,7 @@ impl Reader<'_> {
 
     /// "straighten X1", "square it with the walls": each subject's heading snapped to the
     /// nearest multiple of 90° of the room (from its known turn).
-    pub(super) fn straighten(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+    pub(super) fn straighten(&mut self, c: &mut Clause, text: &str) -> Result<Produced, ReadError> {
         let subjects = self.required_subjects(c, text)?;
         for i in 0..c.len() {
             if matches!(

@@ -6,7 +6,7 @@
 use super::amounts::{fraction_at, number_at, BIT, FAR};
 use super::build::dilator;
 use super::clause::Clause;
-use super::reader::{not_read, Produced, Reader};
+use super::reader::{not_read, Produced, ReadError, Reader};
 use super::relations::Step;
 use super::words::Token;
 
@@ -210,7 +210,7 @@ pub(crate) fn scale(c: &mut Clause) -> Option<f64> {
 
 impl Reader<'_> {
     /// "make X1 20 % bigger": each subject scaled about itself by the factor ([`scale`]).
-    pub(super) fn scale(&mut self, c: &mut Clause, text: &str) -> Result<Produced, String> {
+    pub(super) fn scale(&mut self, c: &mut Clause, text: &str) -> Result<Produced, ReadError> {
         let subjects = self.required_subjects(c, text)?;
         let factor = scale(c).ok_or_else(|| not_read(text, text))?;
         Ok(subjects

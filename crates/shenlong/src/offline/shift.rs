@@ -6,7 +6,7 @@
 use super::amounts::{self, Length, DEFAULT_METRES};
 use super::build::*;
 use super::clause::Clause;
-use super::reader::{mark_to_the, not_read, Direction, Produced, Reader};
+use super::reader::{mark_to_the, not_read, Direction, Produced, ReadError, Reader};
 use super::relations::Step;
 use super::room;
 use super::words;
@@ -62,7 +62,7 @@ impl Reader<'_> {
         subjects: &[usize],
         implied: Option<Direction>,
         text: &str,
-    ) -> Result<Produced, String> {
+    ) -> Result<Produced, ReadError> {
         let mut dirs = directions(c);
         let amount = amount(c);
         if dirs.is_empty() {
@@ -93,7 +93,7 @@ impl Reader<'_> {
             let parts = dirs
                 .iter()
                 .map(|&(e, sign)| self.along(s, e, sign, amount, text))
-                .collect::<Result<Vec<Expr>, String>>()?;
+                .collect::<Result<Vec<Expr>, ReadError>>()?;
             out.push((s, Step::Translate(sum(parts))));
         }
         Ok(out)
@@ -109,17 +109,17 @@ impl Reader<'_> {
         subjects: &[usize],
         amount: Option<Length>,
         text: &str,
-    ) -> Option<Result<Produced, String>> {
+    ) -> Option<Result<Produced, ReadError>> {
         let i = (0..c.len()).find(|&i| c.words_at(i, &["in"]) || c.words_at(i, &["out"]))?;
         let inwards = c.words_at(i, &["in"]);
         c.mark(i..i + 1);
         let mut out = Vec::new();
         for &s in subjects {
             let Some(((e, sign), gap)) = self.facts.known.drawn_up_to(s) else {
-                return Some(Err(format!(
+                return Some(Err(ReadError::Unclear(format!(
                     "{} is drawn up to nothing to push it in or pull it out from, in \"{text}\": say where",
                     self.facts.known.label(s)
-                )));
+                ))));
             };
             let sign = if inwards { sign } else { -sign };
             let metres = match amount {
@@ -159,7 +159,7 @@ impl Reader<'_> {
         sign: f64,
         amount: Option<Length>,
         text: &str,
-    ) -> Result<Expr, String> {
+    ) -> Result<Expr, ReadError> {
         let has_room = self.facts.known.room;
         Ok(match amount {
             Some(Length::Metres(m)) => scaled_axis(num(sign * m), e),
@@ -170,10 +170,10 @@ impl Reader<'_> {
             // "as far as it will go": up to the first obstacle, measured now.
             Some(Length::UntilBlocked) => {
                 let run = self.facts.known.run(s, e, sign).ok_or_else(|| {
-                    format!(
+                    ReadError::Unclear(format!(
                         "nothing stops {} that way in \"{text}\": say how far",
                         self.facts.known.label(s)
-                    )
+                    ))
                 })?;
                 scaled_axis(num(sign * run), e)
             }

@@ -61,7 +61,7 @@ pub(super) fn outcome(query: &str, boxes: &[Box3], room: bool) -> Result<Vec<Sim
             .collect(),
         ..Known::default()
     };
-    let entries = answer(query, boxes.len(), &known)?;
+    let entries = answer(query, boxes.len(), &known).map_err(|e| e.to_string())?;
     let bindings = bindings(boxes, room);
     let mut out = vec![Similarity::IDENTITY; boxes.len()];
     for e in entries {

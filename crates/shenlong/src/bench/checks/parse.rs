@@ -220,6 +220,37 @@ impl Raw {
                 factor,
                 tol: or(tol, 0.02),
             },
+            Raw::At {
+                object,
+                position,
+                tol,
+            } => Check::At {
+                object,
+                position,
+                tol: or(tol, 0.05),
+            },
+            Raw::Unchanged { objects } => Check::Unchanged {
+                objects: match objects {
+                    Some(Objects::List(list)) => Some(list),
+                    Some(Objects::Others(OthersWord::Others)) | None => None,
+                },
+            },
+            Raw::NoCollision {} => Check::NoCollision,
+            Raw::InsideBounds {} => Check::InsideBounds,
+            Raw::Swapped { object, other, tol } => Check::Swapped {
+                object,
+                other,
+                tol: or(tol, 0.05),
+            },
+            Raw::Refused { mentions } => Check::Refused { mentions },
+            relation => relation.relation_with_defaults(),
+        }
+    }
+
+    /// [`Raw::with_defaults`] for the checks of where an object ended relative to another.
+    fn relation_with_defaults(self) -> Check {
+        let or = Option::unwrap_or;
+        match self {
             Raw::OnTop {
                 object,
                 support,
@@ -276,15 +307,6 @@ impl Raw {
                 axis: axis.0,
                 tol: or(tol, 0.05),
             },
-            Raw::At {
-                object,
-                position,
-                tol,
-            } => Check::At {
-                object,
-                position,
-                tol: or(tol, 0.05),
-            },
             Raw::Faces {
                 object,
                 target,
@@ -305,20 +327,16 @@ impl Raw {
                 min: or(min, 0.0),
                 max: or(max, f64::INFINITY),
             },
-            Raw::Unchanged { objects } => Check::Unchanged {
-                objects: match objects {
-                    Some(Objects::List(list)) => Some(list),
-                    Some(Objects::Others(OthersWord::Others)) | None => None,
-                },
-            },
-            Raw::NoCollision {} => Check::NoCollision,
-            Raw::InsideBounds {} => Check::InsideBounds,
-            Raw::Swapped { object, other, tol } => Check::Swapped {
-                object,
-                other,
-                tol: or(tol, 0.05),
-            },
-            Raw::Refused { mentions } => Check::Refused { mentions },
+            Raw::Moved { .. }
+            | Raw::Direction { .. }
+            | Raw::Rotated { .. }
+            | Raw::Scaled { .. }
+            | Raw::At { .. }
+            | Raw::Unchanged { .. }
+            | Raw::NoCollision {}
+            | Raw::InsideBounds {}
+            | Raw::Swapped { .. }
+            | Raw::Refused { .. } => self.with_defaults(),
         }
     }
 }
