@@ -391,7 +391,7 @@ fn bench_json(
     }
     detached(py, move || {
         let suite = Suite::load(&suite).map_err(|e| e.to_string())?;
-        let systems = System::parse_list(&systems)?;
+        let systems = System::parse_list(&systems).map_err(|e| e.to_string())?;
         // Everything is checked before anything runs: scenes, backends.
         let scenes = suite.load_scenes().map_err(|e| e.to_string())?;
         let translators = systems

@@ -393,20 +393,37 @@ fn escape(text: &str) -> String {
 
 /// Rasterises an SVG (such as [`plan_svg`]'s) to PNG bytes, with the system's fonts for
 /// the labels.
+///
+/// # Errors
+/// An SVG that cannot be read, a picture of no size, a PNG that cannot be encoded.
 #[cfg(feature = "png")]
-pub fn svg_to_png(svg: &str) -> Result<Vec<u8>, String> {
+pub fn svg_to_png(svg: &str) -> Result<Vec<u8>, PictureError> {
     use resvg::{tiny_skia, usvg};
     let mut options = usvg::Options::default();
     options.fontdb_mut().load_system_fonts();
-    let tree =
-        usvg::Tree::from_str(svg, &options).map_err(|e| format!("cannot read the SVG: {e}"))?;
+    let tree = usvg::Tree::from_str(svg, &options)?;
     let size = tree.size().to_int_size();
-    let mut pixmap = tiny_skia::Pixmap::new(size.width(), size.height())
-        .ok_or_else(|| "the picture has no size".to_string())?;
+    let mut pixmap =
+        tiny_skia::Pixmap::new(size.width(), size.height()).ok_or(PictureError::NoSize)?;
     resvg::render(&tree, tiny_skia::Transform::default(), &mut pixmap.as_mut());
     pixmap
         .encode_png()
-        .map_err(|e| format!("cannot encode the PNG: {e}"))
+        .map_err(|e| PictureError::Png(e.to_string()))
+}
+
+/// Why a plan cannot be made a PNG.
+#[cfg(feature = "png")]
+#[derive(Debug, thiserror::Error)]
+pub enum PictureError {
+    /// The SVG cannot be read.
+    #[error("cannot read the SVG: {0}")]
+    Svg(#[from] resvg::usvg::Error),
+    /// The picture has no pixels.
+    #[error("the picture has no size")]
+    NoSize,
+    /// The PNG encoder failed.
+    #[error("cannot encode the PNG: {0}")]
+    Png(String),
 }
 
 #[cfg(test)]

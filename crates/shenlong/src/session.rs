@@ -69,6 +69,11 @@ fn object_bytes(o: &Object) -> usize {
         }
 }
 
+/// The scene could not be written to the session's file; the change stays in memory.
+#[derive(Debug, thiserror::Error)]
+#[error("the edit was made but could not be saved: {0}")]
+pub struct SaveError(#[from] crate::format::FormatError);
+
 /// The most memory the undo history keeps; the oldest steps go first past it.
 pub const MAX_HISTORY_BYTES: usize = 64 << 20;
 
@@ -200,7 +205,10 @@ impl Session {
         self.file.scene = after;
         Change {
             id: Some(id),
-            save_error: self.autosave.then(|| self.save().err()).flatten(),
+            save_error: self
+                .autosave
+                .then(|| self.save().err().map(|e| e.to_string()))
+                .flatten(),
         }
     }
 
@@ -235,20 +243,20 @@ impl Session {
         }
         Ok(Change {
             id: Some(id),
-            save_error: self.autosave.then(|| self.save().err()).flatten(),
+            save_error: self
+                .autosave
+                .then(|| self.save().err().map(|e| e.to_string()))
+                .flatten(),
         })
     }
 
     /// Writes the scene to the save file, if there is one (atomically).
     ///
     /// # Errors
-    /// A message saying the change was made but not saved.
-    pub fn save(&self) -> Result<(), String> {
+    /// The file could not be written; the change is kept in memory.
+    pub fn save(&self) -> Result<(), SaveError> {
         match &self.save {
-            Some(path) => self
-                .file
-                .save(path)
-                .map_err(|e| format!("the edit was made but could not be saved: {e}")),
+            Some(path) => Ok(self.file.save(path)?),
             None => Ok(()),
         }
     }

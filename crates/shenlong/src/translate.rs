@@ -47,12 +47,23 @@ pub enum System {
 }
 
 impl std::str::FromStr for System {
-    type Err = String;
+    type Err = SystemError;
 
     /// `cga`, `euclidean` or `omniverse` (any case).
-    fn from_str(name: &str) -> Result<Self, String> {
+    fn from_str(name: &str) -> Result<Self, SystemError> {
         Self::parse(name)
     }
+}
+
+/// A prompt system's name that names none.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum SystemError {
+    /// A name that is not a system's.
+    #[error("unknown system '{0}': use cga, euclidean, omniverse")]
+    Unknown(String),
+    /// A list with no name in it.
+    #[error("no prompt system named: use cga, euclidean, omniverse")]
+    None,
 }
 
 impl System {
@@ -79,16 +90,15 @@ impl System {
     ///
     /// # Errors
     /// An unknown name, with the names there are.
-    pub fn parse(name: &str) -> Result<Self, String> {
-        Self::from_name(name)
-            .ok_or_else(|| format!("unknown system '{name}': use cga, euclidean, omniverse"))
+    pub fn parse(name: &str) -> Result<Self, SystemError> {
+        Self::from_name(name).ok_or_else(|| SystemError::Unknown(name.chars().take(80).collect()))
     }
 
     /// Systems named in a list separated by commas (`cga,euclidean`), each once, in order.
     ///
     /// # Errors
     /// An unknown name, or a list that names none.
-    pub fn parse_list(text: &str) -> Result<Vec<Self>, String> {
+    pub fn parse_list(text: &str) -> Result<Vec<Self>, SystemError> {
         let mut systems = Vec::new();
         for name in text.split(',').map(str::trim).filter(|s| !s.is_empty()) {
             let system = Self::parse(name)?;
@@ -97,7 +107,7 @@ impl System {
             }
         }
         if systems.is_empty() {
-            return Err("no prompt system named: use cga, euclidean, omniverse".into());
+            return Err(SystemError::None);
         }
         Ok(systems)
     }

@@ -73,7 +73,7 @@ fn parse_shard(text: &str) -> Result<(usize, usize), String> {
             .parse()
             .map_err(|_| format!("'{n}' is not a number of shards"))?,
     );
-    shenlong::bench::run::check_shard(k, n)?;
+    shenlong::bench::run::check_shard(k, n).map_err(|e| e.to_string())?;
     Ok((k, n))
 }
 

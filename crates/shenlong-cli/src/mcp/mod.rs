@@ -383,7 +383,8 @@ impl ShenlongMcp {
         let svg = shenlong::render::plan_svg(&scene, previous.as_ref());
         let png = tokio::task::spawn_blocking(move || shenlong::render::svg_to_png(&svg))
             .await
-            .map_err(|e| format!("the render stopped: {e}"))??;
+            .map_err(|e| format!("the render stopped: {e}"))?
+            .map_err(|e| e.to_string())?;
         let data = base64::engine::general_purpose::STANDARD.encode(png);
         Ok(CallToolResult::success(vec![ContentBlock::image(
             data,
@@ -402,7 +403,7 @@ impl ShenlongMcp {
                 "this server was started without --save, so it has no file to save to".into(),
             );
         };
-        session.save()?;
+        session.save().map_err(|e| e.to_string())?;
         Ok(CallToolResult::structured(
             serde_json::json!({"saved": path.display().to_string()}),
         ))

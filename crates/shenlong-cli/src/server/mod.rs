@@ -570,7 +570,7 @@ async fn edit_scene(
         ));
     }
     let system = match &request.system {
-        Some(name) => System::parse(name).map_err(bad)?,
+        Some(name) => System::parse(name).map_err(|e| bad(e.to_string()))?,
         None => app.settings.system,
     };
     let llm = allowed_llm(&app.settings.llm, request.llm.as_deref())?;

@@ -9,6 +9,12 @@ mod whole;
 
 pub use parse::CheckError;
 
+/// Why a check failed: what was measured, in one line (`'mug' moved by [0.1, 0, 0]
+/// (wanted [-1, any, any])`).
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{0}")]
+pub struct Failure(pub String);
+
 use crate::geometry::Aabb;
 use crate::scene::Scene;
 use glam::{DQuat, DVec3};
@@ -205,7 +211,7 @@ impl Check {
         message: &str,
         scene: &Scene,
         bound: &HashMap<String, usize>,
-    ) -> Result<(), String> {
+    ) -> Result<(), Failure> {
         match self {
             Check::Refused { mentions } => {
                 for m in mentions {
@@ -213,7 +219,9 @@ impl Check {
                         .get(m)
                         .map_or(m.as_str(), |&i| scene.objects[i].name.as_str());
                     if !message.to_lowercase().contains(&name.to_lowercase()) {
-                        return Err(format!("the refusal does not name '{name}': {message}"));
+                        return Err(Failure(format!(
+                            "the refusal does not name '{name}': {message}"
+                        )));
                     }
                 }
                 Ok(())
@@ -229,7 +237,7 @@ impl Check {
         before: &Scene,
         after: &Scene,
         bound: &HashMap<String, usize>,
-    ) -> Result<(), String> {
+    ) -> Result<(), Failure> {
         let c = Ctx {
             before,
             after,
@@ -299,9 +307,9 @@ impl Check {
                 min,
                 max,
             } => relation::distance(&c, object, other, min, max),
-            Check::Refused { .. } => {
-                Err("the edit succeeded, but it should have been refused".to_string())
-            }
+            Check::Refused { .. } => Err(Failure(
+                "the edit succeeded, but it should have been refused".to_string(),
+            )),
         }
     }
 }
@@ -316,12 +324,12 @@ pub(super) struct Ctx<'a> {
 
 impl Ctx<'_> {
     /// The object a reference names: a bound placeholder, else an object's name.
-    fn find(&self, r: &ObjectRef) -> Result<usize, String> {
+    fn find(&self, r: &ObjectRef) -> Result<usize, Failure> {
         self.bound
             .get(r)
             .copied()
             .or_else(|| self.after.find(r))
-            .ok_or_else(|| format!("no object '{r}' in the scene"))
+            .ok_or_else(|| Failure(format!("no object '{r}' in the scene")))
     }
 
     /// Object `i`'s world box before the edit.

@@ -74,7 +74,7 @@ pub enum FolderError {
         /// The file.
         path: PathBuf,
         /// What is wrong with it.
-        reason: String,
+        reason: super::run::ShardError,
     },
 }
 

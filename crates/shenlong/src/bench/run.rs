@@ -73,16 +73,35 @@ pub struct RunOptions {
 ///
 /// # Errors
 /// A shard outside that range, said as `shard K/N: …`.
-pub fn check_shard(k: usize, n: usize) -> Result<(), String> {
+pub fn check_shard(k: usize, n: usize) -> Result<(), ShardError> {
     if n == 0 || k == 0 || k > n {
-        return Err(format!("shard {k}/{n}: K must be between 1 and N"));
+        return Err(ShardError::OutOfRange { k, n });
     }
     if n > MAX_SHARDS {
-        return Err(format!(
-            "shard {k}/{n}: a run is split into {MAX_SHARDS} shards at most"
-        ));
+        return Err(ShardError::TooMany { k, n });
     }
     Ok(())
+}
+
+/// A shard `K/N` that names none.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum ShardError {
+    /// K outside 1..=N.
+    #[error("shard {k}/{n}: K must be between 1 and N")]
+    OutOfRange {
+        /// The shard.
+        k: usize,
+        /// Of how many.
+        n: usize,
+    },
+    /// More shards than [`MAX_SHARDS`].
+    #[error("shard {k}/{n}: a run is split into {MAX_SHARDS} shards at most")]
+    TooMany {
+        /// The shard.
+        k: usize,
+        /// Of how many.
+        n: usize,
+    },
 }
 
 /// The most shards a run is split into (more than any pool of machines a user has).
@@ -154,7 +173,7 @@ pub fn run_one(
             outcome.replies = e.replies;
             for check in &query.expect {
                 if let Err(reason) = check.evaluate_refusal(&e.message, scene, &bound) {
-                    outcome.failures.push(reason);
+                    outcome.failures.push(reason.0);
                 }
             }
             outcome.success = outcome.failures.is_empty();
@@ -175,7 +194,7 @@ pub fn run_one(
             outcome.replies = r.replies;
             for check in &query.expect {
                 if let Err(reason) = check.evaluate(scene, &after, &bound) {
-                    outcome.failures.push(reason);
+                    outcome.failures.push(reason.0);
                 }
             }
             outcome.success = outcome.failures.is_empty();

@@ -760,7 +760,7 @@ pub const MAX_RESOURCE_BYTES: u64 = 1 << 30;
 /// paths, no `..`, no link out of the folder — and at a regular file (not a device or a
 /// pipe) of at most [`MAX_RESOURCE_BYTES`]. A hostile file cannot make Shenlong read
 /// elsewhere, hang on a FIFO or run out of memory on `/dev/zero`.
-pub(crate) fn resolve_uri(base_dir: &Path, uri: &str) -> Result<PathBuf, String> {
+pub(crate) fn resolve_uri(base_dir: &Path, uri: &str) -> Result<PathBuf, UriError> {
     let decoded = percent_decode(uri);
     let relative = PathBuf::from(&decoded);
     let escapes = relative.is_absolute()
@@ -773,10 +773,7 @@ pub(crate) fn resolve_uri(base_dir: &Path, uri: &str) -> Result<PathBuf, String>
             )
         });
     if escapes {
-        return Err(format!(
-            "the URI '{}' points outside the glTF file's folder; only relative paths inside it are read",
-            uri.chars().take(200).collect::<String>()
-        ));
+        return Err(UriError::Escapes(uri.chars().take(200).collect()));
     }
     let base = if base_dir.as_os_str().is_empty() {
         Path::new(".")
@@ -785,32 +782,37 @@ pub(crate) fn resolve_uri(base_dir: &Path, uri: &str) -> Result<PathBuf, String>
     };
     let path = base.join(&relative);
     let Ok(real_base) = base.canonicalize() else {
-        return Err(format!(
-            "cannot find '{}' beside the glTF file",
-            relative.display()
-        ));
+        return Err(UriError::Refused(relative, super::NotInside::Missing));
     };
     match super::file_inside(&path, &real_base) {
         Ok(()) => Ok(path),
-        Err(super::NotInside::Missing) => Err(format!(
-            "cannot find '{}' beside the glTF file",
-            relative.display()
-        )),
-        Err(super::NotInside::Outside) => Err(format!(
-            "'{}' links outside the glTF file's folder; only files inside it are read",
-            relative.display()
-        )),
-        Err(super::NotInside::Unreadable(e)) => {
-            Err(format!("cannot read '{}': {e}", relative.display()))
+        Err(why) => Err(UriError::Refused(relative, why)),
+    }
+}
+
+/// Why a glTF file's URI is not read.
+#[derive(Debug, thiserror::Error)]
+pub(crate) enum UriError {
+    /// An absolute path, a scheme or `..`: somewhere else than the file's folder.
+    #[error("the URI '{0}' points outside the glTF file's folder; only relative paths inside it are read")]
+    Escapes(String),
+    /// The file it names is not one Shenlong reads.
+    #[error("{}", refused(.0, .1))]
+    Refused(PathBuf, super::NotInside),
+}
+
+fn refused(relative: &Path, why: &super::NotInside) -> String {
+    let name = relative.display();
+    match why {
+        super::NotInside::Missing => format!("cannot find '{name}' beside the glTF file"),
+        super::NotInside::Outside => {
+            format!("'{name}' links outside the glTF file's folder; only files inside it are read")
         }
-        Err(super::NotInside::NotAFile) => {
-            Err(format!("'{}' is not a regular file", relative.display()))
+        super::NotInside::Unreadable(e) => format!("cannot read '{name}': {e}"),
+        super::NotInside::NotAFile => format!("'{name}' is not a regular file"),
+        super::NotInside::TooLarge => {
+            format!("'{name}' is larger than {} MiB", MAX_RESOURCE_BYTES >> 20)
         }
-        Err(super::NotInside::TooLarge) => Err(format!(
-            "'{}' is larger than {} MiB",
-            relative.display(),
-            MAX_RESOURCE_BYTES >> 20
-        )),
     }
 }
 

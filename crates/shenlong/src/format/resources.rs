@@ -70,7 +70,7 @@ pub(crate) fn plan(document: &GltfDocument, output: &Path) -> Result<Option<Copi
         if copies.uris.contains_key(&uri) {
             continue;
         }
-        let source = gltf::resolve_uri(base, &uri).map_err(FormatError::new)?;
+        let source = gltf::resolve_uri(base, &uri).map_err(|e| FormatError::new(e.to_string()))?;
         let key = source.canonicalize().unwrap_or_else(|_| source.clone());
         let new_uri = match by_source.get(&key) {
             Some(u) => u.clone(),

@@ -170,23 +170,11 @@ impl FolderResolver {
 
     /// Whether a resolved path is a regular file inside the folder (a file inside a
     /// package: its package), or why not.
-    fn inside(&self, resolved: &ResolvedPath) -> Result<(), String> {
+    fn inside(&self, resolved: &ResolvedPath) -> Result<(), super::NotInside> {
         let text = resolved.to_string_lossy();
         let outer = ar::split_package_relative_path_outer(&text)
             .map_or_else(|| text.to_string(), |(package, _)| package);
-        super::file_inside(Path::new(&outer), &self.root).map_err(|why| match why {
-            super::NotInside::Outside => {
-                "is outside the stage's folder; only files inside it are read".to_string()
-            }
-            super::NotInside::Missing => "does not exist".to_string(),
-            super::NotInside::NotAFile => {
-                "is not a regular file (a folder, pipe or device); only files are read".to_string()
-            }
-            super::NotInside::TooLarge => {
-                format!("is larger than {} MiB", MAX_USD_BYTES >> 20)
-            }
-            super::NotInside::Unreadable(e) => format!("cannot be read: {e}"),
-        })
+        super::file_inside(Path::new(&outer), &self.root)
     }
 }
 
@@ -201,7 +189,7 @@ impl Resolver for FolderResolver {
             Ok(()) => Some(resolved),
             Err(why) => {
                 if let Ok(mut list) = self.refused.lock() {
-                    list.push((asset_path.to_string(), why));
+                    list.push((asset_path.to_string(), why_not(&why)));
                 }
                 None
             }
@@ -216,7 +204,7 @@ impl Resolver for FolderResolver {
         if let Err(why) = self.inside(resolved_path) {
             return Err(std::io::Error::new(
                 std::io::ErrorKind::PermissionDenied,
-                why,
+                why_not(&why),
             ));
         }
         self.inner.open_asset(resolved_path)
@@ -1231,6 +1219,21 @@ mod layer;
 mod lex;
 mod patch;
 mod sandbox;
+/// Why an asset a stage points to is not read, as the refusal says it (after the path).
+fn why_not(why: &super::NotInside) -> String {
+    match why {
+        super::NotInside::Outside => {
+            "is outside the stage's folder; only files inside it are read".to_string()
+        }
+        super::NotInside::Missing => "does not exist".to_string(),
+        super::NotInside::NotAFile => {
+            "is not a regular file (a folder, pipe or device); only files are read".to_string()
+        }
+        super::NotInside::TooLarge => format!("is larger than {} MiB", MAX_USD_BYTES >> 20),
+        super::NotInside::Unreadable(e) => format!("cannot be read: {e}"),
+    }
+}
+
 #[cfg(test)]
 mod tests;
 mod walk;

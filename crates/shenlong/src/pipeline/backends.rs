@@ -131,9 +131,9 @@ pub enum BackendError {
         /// Why.
         source: std::io::Error,
     },
-    /// A cascade whose model cannot be used.
-    #[error("{0}")]
-    Cascade(String),
+    /// A cascade whose model does not answer in CGA.
+    #[error(transparent)]
+    Cascade(#[from] super::cascade::NotCga),
 }
 
 /// Everything besides the spec that configures a translator.
@@ -187,9 +187,7 @@ pub fn translator(
     let (kind, model) = match spec {
         Spec::Cascade(model) => {
             let model = translator(model, settings)?;
-            return Ok(Box::new(
-                super::cascade::Cascade::new(model).map_err(BackendError::Cascade)?,
-            ));
+            return Ok(Box::new(super::cascade::Cascade::new(model)?));
         }
         Spec::Offline => {
             if settings.system != System::Cga {

@@ -16,17 +16,19 @@ pub struct Cascade {
     model: Box<dyn Translator>,
 }
 
+/// A cascade over a model that does not answer in CGA.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("a cascade answers in CGA (its offline part cannot answer in '{}'): choose the cga prompt system", .0.name())]
+pub struct NotCga(pub System);
+
 impl Cascade {
     /// A cascade over `model` (which must answer in CGA, as the offline translator does).
     ///
     /// # Errors
     /// If the model's prompt system is not CGA.
-    pub fn new(model: Box<dyn Translator>) -> Result<Self, String> {
+    pub fn new(model: Box<dyn Translator>) -> Result<Self, NotCga> {
         if model.system() != System::Cga {
-            return Err(format!(
-                "a cascade answers in CGA (its offline part cannot answer in '{}'): choose the cga prompt system",
-                model.system().name()
-            ));
+            return Err(NotCga(model.system()));
         }
         Ok(Self {
             offline: OfflineTranslator::new(),

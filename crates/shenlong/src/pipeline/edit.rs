@@ -836,7 +836,9 @@ pub fn apply_expression_bound(
     }
     let mut indices = Vec::with_capacity(objects.len());
     for name in objects {
-        let index = scene.resolve(name).map_err(instruction)?;
+        let index = scene
+            .resolve(name)
+            .map_err(|e| instruction(e.to_string()))?;
         if indices.contains(&index) {
             return Err(instruction(format!(
                 "'{}' is bound twice: each variable names a different object",

@@ -193,7 +193,7 @@ impl System {
                     }
                     let object = object_of(&variable)?;
                     let transformation = omniverse_transformation(scene, object, value)
-                        .map_err(|m| ExprError::whole(format!("{variable}: {m}")))?;
+                        .map_err(|m| ExprError::whole(format!("{variable}: {}", m.message)))?;
                     answers.push(Answer {
                         near: None,
                         variable,
@@ -260,28 +260,28 @@ fn omniverse_transformation(
     scene: &Scene,
     i: usize,
     value: &Value,
-) -> Result<Transformation, String> {
-    let triple = |key: &str| -> Result<Option<[f64; 3]>, String> {
+) -> Result<Transformation, ExprError> {
+    let triple = |key: &str| -> Result<Option<[f64; 3]>, ExprError> {
         match value.get(key) {
             None | Some(Value::Null) => Ok(None),
             Some(v) => {
-                let list = v
-                    .as_array()
-                    .filter(|a| a.len() == 3)
-                    .ok_or(format!("\"{key}\" must be a list of three numbers"))?;
+                let list = v.as_array().filter(|a| a.len() == 3).ok_or_else(|| {
+                    ExprError::whole(format!("\"{key}\" must be a list of three numbers"))
+                })?;
                 let mut out = [0.0; 3];
                 for (k, item) in list.iter().enumerate() {
-                    out[k] = item
-                        .as_f64()
-                        .filter(|x| x.is_finite())
-                        .ok_or(format!("\"{key}\"[{k}] must be a number"))?;
+                    out[k] = item.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
+                        ExprError::whole(format!("\"{key}\"[{k}] must be a number"))
+                    })?;
                 }
                 Ok(Some(out))
             }
         }
     };
     if !value.is_object() {
-        return Err("give an object with \"position\" and \"rotation\"".into());
+        return Err(ExprError::whole(
+            "give an object with \"position\" and \"rotation\"",
+        ));
     }
     let (_, centre, euler) = omniverse_pose(scene, i);
     let target_centre = triple("position")?.map_or(centre, DVec3::from);
@@ -297,8 +297,8 @@ fn omniverse_transformation(
         scale: 1.0,
     }
     .to_versor()
-    .map_err(|e| e.to_string())?;
-    expr::to_transformation(&m).map_err(|e| e.message)
+    .map_err(|e| ExprError::whole(e.to_string()))?;
+    expr::to_transformation(&m)
 }
 
 #[cfg(test)]

@@ -56,6 +56,24 @@ pub fn pose_within_limits(pose: &Similarity) -> bool {
         && (MIN_SCALE..=MAX_SCALE).contains(&pose.scale)
 }
 
+/// No object has the name asked for; the closest names, if any are close.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown object '{name}'{}", did_you_mean(suggestions))]
+pub struct UnknownObject {
+    /// The name asked for.
+    pub name: String,
+    /// Up to two names of the scene that are close to it, closest first.
+    pub suggestions: Vec<String>,
+}
+
+fn did_you_mean(suggestions: &[String]) -> String {
+    match suggestions {
+        [] => String::new(),
+        [one] => format!(" — did you mean '{one}'?"),
+        [a, b, ..] => format!(" — did you mean '{a}' or '{b}'?"),
+    }
+}
+
 /// A scene: a name, optional room bounds and the objects.
 #[derive(Clone, Debug)]
 pub struct Scene {
@@ -296,7 +314,10 @@ impl Scene {
 
     /// The index of the object with this name, or an error that suggests the closest
     /// names: `unknown object 'sofaa' — did you mean 'sofa'?`.
-    pub fn resolve(&self, name: &str) -> Result<usize, String> {
+    ///
+    /// # Errors
+    /// No object has the name.
+    pub fn resolve(&self, name: &str) -> Result<usize, UnknownObject> {
         if let Some(i) = self.find(name) {
             return Ok(i);
         }
@@ -313,12 +334,14 @@ impl Scene {
             .filter(|(score, _)| *score >= 0.75)
             .collect();
         scored.sort_by(|a, b| b.0.total_cmp(&a.0));
-        let suggestion = match scored.as_slice() {
-            [] => String::new(),
-            [(_, one)] => format!(" — did you mean '{one}'?"),
-            [(_, a), (_, b), ..] => format!(" — did you mean '{a}' or '{b}'?"),
-        };
-        Err(format!("unknown object '{}'{suggestion}", name.trim()))
+        Err(UnknownObject {
+            name: name.trim().to_string(),
+            suggestions: scored
+                .iter()
+                .take(2)
+                .map(|(_, n)| (*n).to_string())
+                .collect(),
+        })
     }
 
     /// The world bounding box of every object, in order.

@@ -201,10 +201,13 @@ fn find_is_case_insensitive() {
 fn unknown_names_get_suggestions() {
     let s = workshop();
     assert_eq!(
-        s.resolve("tool tabel").unwrap_err(),
+        s.resolve("tool tabel").unwrap_err().to_string(),
         "unknown object 'tool tabel' — did you mean 'tool table'?"
     );
-    assert_eq!(s.resolve("xyz").unwrap_err(), "unknown object 'xyz'");
+    assert_eq!(
+        s.resolve("xyz").unwrap_err().to_string(),
+        "unknown object 'xyz'"
+    );
     assert_eq!(s.resolve("CHAIR"), Ok(2));
 }
 

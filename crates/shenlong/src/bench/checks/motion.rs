@@ -1,7 +1,7 @@
 //! Checks of how an object moved: by how much, which way, turned, scaled, where it ended,
 //! swapped with another.
 
-use super::{angle_difference, opt3, signed_angle_about, v3, Ctx, ObjectRef};
+use super::{angle_difference, opt3, signed_angle_about, v3, Ctx, Failure, ObjectRef};
 use glam::{DQuat, DVec3};
 
 /// Moved by `delta` (per axis; `None` = any), within `tol`: the displacement of the bottom centre of its box.
@@ -10,18 +10,18 @@ pub(super) fn moved(
     object: &ObjectRef,
     delta: &[Option<f64>; 3],
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let i = c.find(object)?;
     let d = c.b1(i).bottom_center() - c.b0(i).bottom_center();
     for axis in 0..3 {
         if let Some(want) = delta[axis] {
             if (d[axis] - want).abs() > *tol {
-                return Err(format!(
+                return Err(Failure(format!(
                     "'{}' moved by {} (wanted {})",
                     c.name(i),
                     v3(d),
                     opt3(delta)
-                ));
+                )));
             }
         }
     }
@@ -34,7 +34,7 @@ pub(super) fn direction(
     object: &ObjectRef,
     (axis, sign): (&usize, &f64),
     min: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let i = c.find(object)?;
     let d = c.b1(i).bottom_center() - c.b0(i).bottom_center();
     let along = d[*axis] * sign;
@@ -43,20 +43,20 @@ pub(super) fn direction(
         .map(|a| d[a].abs())
         .fold(0.0, f64::max);
     if along < *min {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' moved {:.3} m that way (at least {min} wanted): {}",
             c.name(i),
             along,
             v3(d)
-        ));
+        )));
     }
     if across > (0.1f64).max(0.25 * along) {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' also moved {:.3} m across: {}",
             c.name(i),
             across,
             v3(d)
-        ));
+        )));
     }
     Ok(())
 }
@@ -69,7 +69,7 @@ pub(super) fn rotated(
     degrees: &f64,
     either_sign: &bool,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let i = c.find(object)?;
     let delta = c.after.objects[i].similarity().rotation
         * c.before.objects[i].similarity().rotation.inverse();
@@ -84,14 +84,14 @@ pub(super) fn rotated(
         .1
         .to_degrees();
     if !ok || residual > *tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' turned {:.1}° about {} (wanted {}{degrees}°), off-axis {:.1}°",
             c.name(i),
             turned,
             ["x", "y", "z"][*axis],
             if *either_sign { "±" } else { "" },
             residual
-        ));
+        )));
     }
     Ok(())
 }
@@ -102,14 +102,14 @@ pub(super) fn scaled(
     object: &ObjectRef,
     factor: &f64,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let i = c.find(object)?;
     let s = c.after.objects[i].similarity().scale / c.before.objects[i].similarity().scale;
     if (s / factor - 1.0).abs() > *tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' scaled by {s:.3} (wanted {factor})",
             c.name(i)
-        ));
+        )));
     }
     Ok(())
 }
@@ -120,18 +120,18 @@ pub(super) fn at(
     object: &ObjectRef,
     position: &[Option<f64>; 3],
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let i = c.find(object)?;
     let p = c.b1(i).bottom_center();
     for axis in 0..3 {
         if let Some(want) = position[axis] {
             if (p[axis] - want).abs() > *tol {
-                return Err(format!(
+                return Err(Failure(format!(
                     "'{}' is at {} (wanted {})",
                     c.name(i),
                     v3(p),
                     opt3(position)
-                ));
+                )));
             }
         }
     }
@@ -144,12 +144,12 @@ pub(super) fn swapped(
     object: &ObjectRef,
     other: &ObjectRef,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let (ai, aj) = (c.b1(i).bottom_center(), c.b1(j).bottom_center());
     let (bi, bj) = (c.b0(i).bottom_center(), c.b0(j).bottom_center());
     if (ai - bj).length() > *tol || (aj - bi).length() > *tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' is {:.3} m from where '{}' was, and '{}' {:.3} m from where '{}' was",
             c.name(i),
             (ai - bj).length(),
@@ -157,7 +157,7 @@ pub(super) fn swapped(
             c.name(j),
             (aj - bi).length(),
             c.name(i)
-        ));
+        )));
     }
     Ok(())
 }

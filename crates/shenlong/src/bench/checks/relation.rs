@@ -1,7 +1,7 @@
 //! Checks of where an object ended relative to another: on it, next to it, on one side,
 //! above or below, between two, aligned, facing, at a distance.
 
-use super::{overlap_xz, v3, Ctx, ObjectRef};
+use super::{overlap_xz, v3, Ctx, Failure, ObjectRef};
 use glam::DVec3;
 
 /// Resting on the top face of `support`, its centre over it.
@@ -10,7 +10,7 @@ pub(super) fn on_top(
     object: &ObjectRef,
     support: &ObjectRef,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(support)?);
     let (a, b) = (c.b1(i), c.b1(j));
     let centre = a.center();
@@ -19,7 +19,7 @@ pub(super) fn on_top(
         && centre.z >= b.min.z - 0.01
         && centre.z <= b.max.z + 0.01;
     if (a.min.y - b.max.y).abs() > *tol || !over {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' (bottom {:.3}, centre {}) is not on top of '{}' (top {:.3}, {} to {})",
             c.name(i),
             a.min.y,
@@ -28,7 +28,7 @@ pub(super) fn on_top(
             b.max.y,
             v3(b.min),
             v3(b.max)
-        ));
+        )));
     }
     Ok(())
 }
@@ -39,7 +39,7 @@ pub(super) fn next_to(
     object: &ObjectRef,
     other: &ObjectRef,
     max_gap: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let (a, b) = (c.b1(i), c.b1(j));
     let o = a.overlap(&b);
@@ -47,14 +47,14 @@ pub(super) fn next_to(
     let inside = o.x > 0.02 && o.z > 0.02 && o.y > 0.02;
     let level = o.y > -0.05;
     if inside || gap > *max_gap || !level {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' is not next to '{}': gap {:.3} m{}{}",
             c.name(i),
             c.name(j),
             gap,
             if inside { ", overlapping" } else { "" },
             if level { "" } else { ", at another height" }
-        ));
+        )));
     }
     Ok(())
 }
@@ -66,7 +66,7 @@ pub(super) fn side(
     other: &ObjectRef,
     (axis, sign): (&usize, &f64),
     max_gap: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let (a, b) = (c.b1(i), c.b1(j));
     let gap = if *sign > 0.0 {
@@ -78,7 +78,7 @@ pub(super) fn side(
     let overlapping_across =
         a.max[across] > b.min[across] - 0.05 && a.min[across] < b.max[across] + 0.05;
     if gap < -0.02 || gap > *max_gap || !overlapping_across {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' is not on that side of '{}': gap {:.3} m along {}, {}",
             c.name(i),
             c.name(j),
@@ -89,7 +89,7 @@ pub(super) fn side(
             } else {
                 "off to the side"
             }
-        ));
+        )));
     }
     Ok(())
 }
@@ -100,16 +100,16 @@ pub(super) fn above(
     object: &ObjectRef,
     other: &ObjectRef,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     if c.b1(i).min.y < c.b1(j).max.y - tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' (bottom {:.3}) is not above '{}' (top {:.3})",
             c.name(i),
             c.b1(i).min.y,
             c.name(j),
             c.b1(j).max.y
-        ));
+        )));
     }
     Ok(())
 }
@@ -120,18 +120,18 @@ pub(super) fn below(
     object: &ObjectRef,
     other: &ObjectRef,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     if c.b1(i).max.y > c.b1(j).min.y + tol
         && !(c.b1(i).center().y < c.b1(j).center().y && overlap_xz(&c.b1(i), &c.b1(j)))
     {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' (top {:.3}) is not below '{}' (bottom {:.3})",
             c.name(i),
             c.b1(i).max.y,
             c.name(j),
             c.b1(j).min.y
-        ));
+        )));
     }
     Ok(())
 }
@@ -143,7 +143,7 @@ pub(super) fn between(
     a: &ObjectRef,
     b: &ObjectRef,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, ja, jb) = (c.find(object)?, c.find(a)?, c.find(b)?);
     let flat = |v: DVec3| glam::DVec2::new(v.x, v.z);
     let (p, pa, pb) = (
@@ -159,14 +159,14 @@ pub(super) fn between(
     };
     let off = (p - (pa + seg * t.clamp(0.0, 1.0))).length();
     if !(-0.05..=1.05).contains(&t) || off > *tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' is not between '{}' and '{}' (at {:.2} along, {:.3} m off the line)",
             c.name(i),
             c.name(ja),
             c.name(jb),
             t,
             off
-        ));
+        )));
     }
     Ok(())
 }
@@ -178,17 +178,17 @@ pub(super) fn aligned(
     other: &ObjectRef,
     axis: &usize,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let d = c.b1(i).center()[*axis] - c.b1(j).center()[*axis];
     if d.abs() > *tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' and '{}' are {:.3} m apart along {}",
             c.name(i),
             c.name(j),
             d.abs(),
             ["x", "y", "z"][*axis]
-        ));
+        )));
     }
     Ok(())
 }
@@ -199,7 +199,7 @@ pub(super) fn faces(
     object: &ObjectRef,
     target: &ObjectRef,
     tol: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(target)?);
     let forward = c.after.objects[i].world_front();
     let to = c.b1(j).center() - c.b1(i).center();
@@ -208,20 +208,20 @@ pub(super) fn faces(
         glam::DVec2::new(to.x, to.z),
     );
     if f2.length() < 1e-9 || t2.length() < 1e-9 {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' has no horizontal front or '{}' is right above it",
             c.name(i),
             c.name(j)
-        ));
+        )));
     }
     let angle = f2.angle_to(t2).to_degrees().abs();
     if angle > *tol {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' faces {:.0}° away from '{}'",
             c.name(i),
             angle,
             c.name(j)
-        ));
+        )));
     }
     Ok(())
 }
@@ -233,16 +233,16 @@ pub(super) fn distance(
     other: &ObjectRef,
     min: &f64,
     max: &f64,
-) -> Result<(), String> {
+) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let d = (c.b1(i).center() - c.b1(j).center()).length();
     if d < *min || d > *max {
-        return Err(format!(
+        return Err(Failure(format!(
             "'{}' is {:.3} m from '{}' (wanted {min} to {max})",
             c.name(i),
             d,
             c.name(j)
-        ));
+        )));
     }
     Ok(())
 }

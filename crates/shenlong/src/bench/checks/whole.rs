@@ -1,12 +1,12 @@
 //! Checks of the whole scene: what must not have moved, no new collision, everything
 //! inside the room.
 
-use super::{Ctx, ObjectRef};
+use super::{Ctx, Failure, ObjectRef};
 use crate::collide::find_collisions;
 use crate::geometry::Aabb;
 
 /// These objects — or every object the check's placeholders do not name, with what they carried — did not move.
-pub(super) fn unchanged(c: &Ctx<'_>, objects: &Option<Vec<ObjectRef>>) -> Result<(), String> {
+pub(super) fn unchanged(c: &Ctx<'_>, objects: &Option<Vec<ObjectRef>>) -> Result<(), Failure> {
     let list: Vec<usize> = match objects {
         Some(list) => list.iter().map(|r| c.find(r)).collect::<Result<_, _>>()?,
         None => {
@@ -28,14 +28,17 @@ pub(super) fn unchanged(c: &Ctx<'_>, objects: &Option<Vec<ObjectRef>>) -> Result
             || p.rotation.dot(q.rotation).abs() < 1.0 - 1e-9
             || (p.scale - q.scale).abs() > 1e-9
         {
-            return Err(format!("'{}' changed but should not have", c.name(i)));
+            return Err(Failure(format!(
+                "'{}' changed but should not have",
+                c.name(i)
+            )));
         }
     }
     Ok(())
 }
 
 /// The edit created no collision.
-pub(super) fn no_collision(c: &Ctx<'_>) -> Result<(), String> {
+pub(super) fn no_collision(c: &Ctx<'_>) -> Result<(), Failure> {
     let (bb, ab) = (c.before.world_aabbs(), c.after.world_aabbs());
     let moved: Vec<usize> = (0..ab.len())
         .filter(|&i| {
@@ -46,16 +49,16 @@ pub(super) fn no_collision(c: &Ctx<'_>) -> Result<(), String> {
     let found = find_collisions(&bb, &ab, &groups, c.after.floor(), c.after.bounds.as_ref());
     match found.first() {
         None => Ok(()),
-        Some(hit) => Err(format!(
+        Some(hit) => Err(Failure(format!(
             "'{}' collides with {}",
             c.after.objects[hit.object].name,
             hit.with.describe(c.after)
-        )),
+        ))),
     }
 }
 
 /// Every object inside the room, or no farther out than before.
-pub(super) fn inside_bounds(c: &Ctx<'_>) -> Result<(), String> {
+pub(super) fn inside_bounds(c: &Ctx<'_>) -> Result<(), Failure> {
     let Some(room) = c.after.bounds else {
         return Ok(());
     };
@@ -68,11 +71,11 @@ pub(super) fn inside_bounds(c: &Ctx<'_>) -> Result<(), String> {
                 .max(0.0)
         };
         if out(&a) > out(&b) + 1e-3 {
-            return Err(format!(
+            return Err(Failure(format!(
                 "'{}' sticks {:.3} m out of the room",
                 c.name(i),
                 out(&a)
-            ));
+            )));
         }
     }
     Ok(())
