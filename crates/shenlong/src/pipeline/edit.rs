@@ -379,10 +379,11 @@ pub fn edit_with(
         })?;
     timings.translate = ms(t0);
 
-    let moves: Vec<(usize, cga::Multivector)> = translation
+    // The answers' transformations as the translator split them, T·R·D: not split again.
+    let moves: Vec<(usize, cga::Similarity)> = translation
         .answers
         .iter()
-        .map(|a| (a.object, a.transformation.versor))
+        .map(|a| (a.object, a.transformation.similarity))
         .collect();
     let near: Vec<(usize, Near)> = translation
         .answers
@@ -435,7 +436,7 @@ pub struct Placed {
 /// A motion beyond the exact range, or no free placement; `scene` is then as it was.
 pub fn place(
     scene: &mut Scene,
-    moves: &[(usize, cga::Multivector)],
+    moves: &[(usize, cga::Similarity)],
     options: &EditOptions,
 ) -> Result<Placed, EditError> {
     place_holding(scene, moves, options, &[], &[])
@@ -452,7 +453,7 @@ pub fn place(
 /// longer next to what it was put next to.
 pub fn place_holding(
     scene: &mut Scene,
-    moves: &[(usize, cga::Multivector)],
+    moves: &[(usize, cga::Similarity)],
     options: &EditOptions,
     held: &[usize],
     near: &[(usize, Near)],
@@ -588,7 +589,7 @@ fn check_held(
 
 fn place_into(
     scene: &mut Scene,
-    moves: &[(usize, cga::Multivector)],
+    moves: &[(usize, cga::Similarity)],
     options: &EditOptions,
     held: &[usize],
     motions: &mut Vec<AppliedMotion>,
@@ -673,7 +674,7 @@ impl EditBoxes {
 /// The objects moved, and the names of those carried.
 fn apply_moves(
     scene: &mut Scene,
-    moves: &[(usize, cga::Multivector)],
+    moves: &[(usize, cga::Similarity)],
     carry: bool,
     held: &[usize],
     boxes: &mut EditBoxes,
@@ -683,14 +684,14 @@ fn apply_moves(
     let mut carried = Vec::new();
     // World motion each object has picked up so far in this edit by being carried.
     let mut carried_motion: Vec<Option<cga::Similarity>> = vec![None; scene.objects.len()];
-    for &(object, ref versor) in moves {
+    for &(object, ref step) in moves {
         if let Some(w) = carried_motion[object].take() {
             let back = scene.apply_world(&[object], &w.inverse());
             boxes.update(scene, &back);
             motions.push(back);
         }
         let motion = scene
-            .apply_holding(object, versor, carry, held)
+            .move_holding(object, step, carry, held)
             .map_err(|e| EditError {
                 message: e.to_string(),
                 kind: EditErrorKind::Motion,
@@ -854,14 +855,13 @@ pub fn apply_expression_bound(
         replies: ReplyCounts::default(),
         ambiguity: None,
     })?;
-    Ok((place(scene, &[(indices[0], t.versor)], options)?, t))
+    Ok((place(scene, &[(indices[0], t.similarity)], options)?, t))
 }
 
 #[cfg(test)]
 mod place_tests {
     use super::*;
     use crate::scene::Object;
-    use cga::Multivector;
     use glam::DVec3;
 
     fn room() -> Scene {
@@ -896,13 +896,19 @@ mod place_tests {
         let lamp = s.push_box("lamp", [0.2, 0.4, 0.2], [-2.0, 0.6, 1.0]);
         s.detect_supports();
         // The chair right under the board's bottom edge: touching, not carrying.
-        let under = Multivector::translator(DVec3::new(-2.0, 0.0, -1.7));
+        let under = cga::Similarity::translation(DVec3::new(-2.0, 0.0, -1.7));
         place(&mut s, &[(chair, under)], &EditOptions::default()).unwrap();
         assert_eq!(s.objects[board].support, None);
         // The tables swapped with the lamp held: it now stands on the right table.
         let swap = [
-            (left, Multivector::translator(DVec3::new(4.0, 0.0, 1.0))),
-            (right, Multivector::translator(DVec3::new(-4.0, 0.0, -1.0))),
+            (
+                left,
+                cga::Similarity::translation(DVec3::new(4.0, 0.0, 1.0)),
+            ),
+            (
+                right,
+                cga::Similarity::translation(DVec3::new(-4.0, 0.0, -1.0)),
+            ),
         ];
         place_holding(&mut s, &swap, &EditOptions::default(), &[lamp], &[]).unwrap();
         assert_eq!(s.objects[lamp].support, Some(right));
@@ -915,7 +921,7 @@ mod place_tests {
         let supports: Vec<_> = scene.objects.iter().map(|o| o.support).collect();
         assert_eq!(supports[1], Some(0));
         // Into the middle of the wall block, with no free place within 0.5 m.
-        let m = Multivector::translator(DVec3::new(3.0, 0.0, 0.0));
+        let m = cga::Similarity::translation(DVec3::new(3.0, 0.0, 0.0));
         let e = place(&mut scene, &[(0, m)], &options()).unwrap_err();
         assert_eq!(e.kind, EditErrorKind::Placement, "{e}");
         let after: Vec<_> = scene.objects.iter().map(Object::similarity).collect();
@@ -923,7 +929,7 @@ mod place_tests {
         let now: Vec<_> = scene.objects.iter().map(|o| o.support).collect();
         assert_eq!(now, supports);
         // A motion beyond the limits is refused the same way.
-        let far = Multivector::translator(DVec3::new(5e6, 0.0, 0.0));
+        let far = cga::Similarity::translation(DVec3::new(5e6, 0.0, 0.0));
         assert!(place(&mut scene, &[(1, far)], &options()).is_err());
         let after: Vec<_> = scene.objects.iter().map(Object::similarity).collect();
         assert_eq!(after, poses);
@@ -932,7 +938,7 @@ mod place_tests {
     #[test]
     fn a_cup_taken_off_the_table_is_not_carried_by_it_later() {
         let mut scene = room();
-        let off = Multivector::translator(DVec3::new(1.5, -0.8, 0.0));
+        let off = cga::Similarity::translation(DVec3::new(1.5, -0.8, 0.0));
         place(&mut scene, &[(1, off)], &options()).unwrap();
         assert_eq!(
             scene.objects[1].support, None,
@@ -941,13 +947,13 @@ mod place_tests {
         let cup = scene.objects[1].world_aabb();
         place(
             &mut scene,
-            &[(0, Multivector::translator(DVec3::new(0.0, 0.0, -1.0)))],
+            &[(0, cga::Similarity::translation(DVec3::new(0.0, 0.0, -1.0)))],
             &options(),
         )
         .unwrap();
         assert_eq!(scene.objects[1].world_aabb(), cup, "the cup stayed");
         // And one put back on the table is carried again.
-        let back = Multivector::translator(DVec3::new(-1.5, 0.8, -1.0));
+        let back = cga::Similarity::translation(DVec3::new(-1.5, 0.8, -1.0));
         place(&mut scene, &[(1, back)], &options()).unwrap();
         assert_eq!(scene.objects[1].support, Some(0));
     }

@@ -439,6 +439,18 @@ impl Scene {
     /// twice [`MAX_COORDINATE`] or scales outside [[`MIN_SCALE`], [`MAX_SCALE`]].
     pub fn world_motion(&self, index: usize, m: &Multivector) -> Result<Similarity, MotionError> {
         let step = Similarity::from_versor(m).map_err(MotionError::NotSimilarity)?;
+        self.world_motion_of(index, &step)
+    }
+
+    /// [`Scene::world_motion`] of a transformation already split into T·R·D.
+    ///
+    /// # Errors
+    /// As [`Scene::world_motion`], but for the split.
+    pub fn world_motion_of(
+        &self,
+        index: usize,
+        step: &Similarity,
+    ) -> Result<Similarity, MotionError> {
         if !step.translation.is_finite()
             || step.translation.abs().max_element() > 2.0 * MAX_COORDINATE
         {
@@ -479,7 +491,23 @@ impl Scene {
         carry: bool,
         held: &[usize],
     ) -> Result<AppliedMotion, MotionError> {
-        let world = self.world_motion(index, m)?;
+        let step = Similarity::from_versor(m).map_err(MotionError::NotSimilarity)?;
+        self.move_holding(index, &step, carry, held)
+    }
+
+    /// [`Scene::apply_holding`] of a transformation already split into T·R·D (as an
+    /// answer's [`crate::expr::Transformation`] carries it): the split is not made again.
+    ///
+    /// # Errors
+    /// As [`Scene::apply`].
+    pub fn move_holding(
+        &mut self,
+        index: usize,
+        step: &Similarity,
+        carry: bool,
+        held: &[usize],
+    ) -> Result<AppliedMotion, MotionError> {
+        let world = self.world_motion_of(index, step)?;
         let mut targets = vec![index];
         if carry {
             targets.extend(self.carried_by_except(index, held));
