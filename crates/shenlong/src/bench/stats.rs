@@ -1,5 +1,8 @@
-//! Statistics for comparing systems: means, standard deviations, Welch's t-test.
+//! Statistics for comparing systems: means, standard deviations, Welch's t-test (its
+//! p-value from the `stats` feature, on by default: without it, reports leave the tests of
+//! significance out).
 
+#[cfg(feature = "stats")]
 use statrs::distribution::{ContinuousCDF, StudentsT};
 
 /// Mean and sample standard deviation (0 for fewer than two values).
@@ -19,6 +22,7 @@ pub fn mean_std(values: &[f64]) -> (f64, f64) {
 /// Welch's two-sample t-test: the t statistic, the Welch–Satterthwaite degrees of freedom
 /// and the two-sided p-value. `None` when a sample has fewer than two values or both have
 /// no variance.
+#[cfg(feature = "stats")]
 pub fn welch(a: &[f64], b: &[f64]) -> Option<(f64, f64, f64)> {
     if a.len() < 2 || b.len() < 2 {
         return None;
@@ -37,7 +41,14 @@ pub fn welch(a: &[f64], b: &[f64]) -> Option<(f64, f64, f64)> {
     Some((t, df, p))
 }
 
-#[cfg(test)]
+/// Without the `stats` feature there is no Student's t distribution: no test of
+/// significance.
+#[cfg(not(feature = "stats"))]
+pub fn welch(_: &[f64], _: &[f64]) -> Option<(f64, f64, f64)> {
+    None
+}
+
+#[cfg(all(test, feature = "stats"))]
 mod tests {
     use super::*;
 

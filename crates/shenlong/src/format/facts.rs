@@ -170,6 +170,7 @@ pub(crate) struct Derived {
     /// Per object, its node.
     pub nodes: Vec<usize>,
     /// Per object, the object it is nested under in the file, if any.
+    #[cfg_attr(not(feature = "usd"), allow(dead_code))]
     pub ancestors: Vec<Option<usize>>,
 }
 

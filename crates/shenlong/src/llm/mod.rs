@@ -1,11 +1,16 @@
 //! Language-model backends: one seam ([`Backend`]) with an OpenAI-compatible HTTP client
 //! (OpenAI, Ollama, vLLM, llama.cpp, LM Studio), a replay of recorded exchanges, and the
-//! cache and recorder around them.
+//! cache and recorder around them. The HTTP client, its token estimates and the reply
+//! cache are the `models` feature (on by default): without it, the library still
+//! translates offline and replays recorded answers.
 
+#[cfg(feature = "models")]
 pub mod cache;
+#[cfg(feature = "models")]
 pub mod openai;
 pub mod record;
 pub mod replay;
+#[cfg(feature = "models")]
 pub mod tokens;
 
 use serde::{Deserialize, Serialize};
@@ -13,7 +18,7 @@ use std::time::Duration;
 
 /// The longest reply read from a model, in bytes: a larger one is refused, never echoed
 /// back in a retry, and recorded only in part. A model server's HTTP body is read up to
-/// [`openai::MAX_BODY_BYTES`] (this and room for the JSON around it) and no further.
+/// `openai::MAX_BODY_BYTES` (this and room for the JSON around it) and no further.
 pub const MAX_REPLY_BYTES: usize = 256 * 1024;
 
 /// One chat message.

@@ -5,7 +5,9 @@
 
 use super::prompts::System;
 use super::translate::{LlmTranslator, Translator};
+#[cfg(feature = "models")]
 use crate::llm::cache::Cache;
+#[cfg(feature = "models")]
 use crate::llm::openai::{ClientOptions, OpenAiClient, OLLAMA_BASE_URL, OPENAI_BASE_URL};
 use crate::llm::record::Recorder;
 use crate::llm::replay::Replay;
@@ -131,6 +133,9 @@ pub enum BackendError {
         /// Why.
         source: std::io::Error,
     },
+    /// A model server's translator, in a library built without the `models` feature.
+    #[error("the translator {0} needs a model server, and this build has no client for one (the `models` feature)")]
+    NoModels(String),
     /// A cascade whose model does not answer in CGA.
     #[error(transparent)]
     Cascade(#[from] super::cascade::NotCga),
@@ -169,7 +174,7 @@ impl Default for TranslatorSettings {
             timeout: Duration::from_secs(120),
             connect_timeout: Duration::from_secs(10),
             deadline: Duration::from_secs(300),
-            cache_dir: Cache::default_dir(),
+            cache_dir: default_cache_dir(),
             record: None,
         }
     }
@@ -184,7 +189,7 @@ pub fn translator(
     spec: &Spec,
     settings: &TranslatorSettings,
 ) -> Result<Box<dyn Translator>, BackendError> {
-    let (kind, model) = match spec {
+    let backend: Box<dyn Backend> = match spec {
         Spec::Cascade(model) => {
             let model = translator(model, settings)?;
             return Ok(Box::new(super::cascade::Cascade::new(model)?));
@@ -195,15 +200,17 @@ pub fn translator(
             }
             return Ok(Box::new(crate::offline::OfflineTranslator::new()));
         }
-        Spec::OpenAi { model } => ("openai", model),
-        Spec::Ollama { model } => ("ollama", model),
-        Spec::Replay { .. } => ("replay", &String::new()),
-    };
-    let backend: Box<dyn Backend> = match spec {
         Spec::Replay { file } => {
             Box::new(Replay::load(file).map_err(|e| BackendError::Replay(e.message))?)
         }
-        _ => Box::new(model_client(kind == "openai", model, settings)?),
+        #[cfg(feature = "models")]
+        Spec::OpenAi { model } => Box::new(model_client(true, model, settings)?),
+        #[cfg(feature = "models")]
+        Spec::Ollama { model } => Box::new(model_client(false, model, settings)?),
+        #[cfg(not(feature = "models"))]
+        Spec::OpenAi { .. } | Spec::Ollama { .. } => {
+            return Err(BackendError::NoModels(spec.to_string()))
+        }
     };
     let recorder = match &settings.record {
         Some(path) => Some(Recorder::open(path).map_err(|source| BackendError::Record {
@@ -212,25 +219,35 @@ pub fn translator(
         })?),
         None => None,
     };
-    // Replays are deterministic already; caching them would only hide the file's answers.
-    let cache = if kind == "replay" {
-        None
-    } else {
-        settings.cache_dir.clone().map(Cache::new)
-    };
     Ok(Box::new(LlmTranslator {
         backend,
         system: settings.system,
         retries: settings.retries,
         deadline: settings.deadline,
-        cache,
+        // Replays are deterministic already; caching them would only hide the file's
+        // answers.
+        #[cfg(feature = "models")]
+        cache: if matches!(spec, Spec::Replay { .. }) {
+            None
+        } else {
+            settings.cache_dir.clone().map(Cache::new)
+        },
         recorder,
     }))
+}
+
+/// Where replies are cached by default: the user's cache folder (`models` feature).
+fn default_cache_dir() -> Option<PathBuf> {
+    #[cfg(feature = "models")]
+    return Cache::default_dir();
+    #[cfg(not(feature = "models"))]
+    None
 }
 
 /// The client of an OpenAI-compatible (`openai`) or Ollama server for `model`: the base
 /// URL from the settings, else `OPENAI_BASE_URL` (for OpenAI), else the default; the key
 /// from the settings, else `OPENAI_API_KEY` (for OpenAI).
+#[cfg(feature = "models")]
 fn model_client(
     openai: bool,
     model: &str,

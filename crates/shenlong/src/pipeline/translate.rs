@@ -1,9 +1,10 @@
 //! Translation: a templated instruction → one transformation per variable, behind one
 //! seam ([`Translator`]) for language models and the built-in offline translator.
 
+#[cfg(feature = "models")]
 use crate::llm::cache::Cache;
 use crate::llm::record::{Record, Recorder};
-use crate::llm::{Backend, Message, Usage};
+use crate::llm::{Backend, Message};
 use crate::scene::Scene;
 pub use crate::translate::{Exchange, TranslateError, Translation, Translator};
 use crate::translate::{ReplyCounts, System, Templated};
@@ -23,6 +24,7 @@ pub struct LlmTranslator {
     /// Time allowed for the whole translation.
     pub deadline: Duration,
     /// Where valid replies are kept, if anywhere.
+    #[cfg(feature = "models")]
     pub cache: Option<Cache>,
     /// Where every exchange is recorded, if anywhere.
     pub recorder: Option<Recorder>,
@@ -30,6 +32,7 @@ pub struct LlmTranslator {
 
 impl LlmTranslator {
     /// The cached answer to these first messages, when there is one that still reads.
+    #[cfg(feature = "models")]
     fn cached(
         &self,
         first: &[Message],
@@ -47,7 +50,7 @@ impl LlmTranslator {
                 messages: first.to_vec(),
                 reply,
                 elapsed_ms: 0.0,
-                usage: Usage::default(),
+                usage: crate::llm::Usage::default(),
                 error: None,
                 cached: true,
             }],
@@ -62,6 +65,30 @@ impl LlmTranslator {
                 valid: 1,
             },
         })
+    }
+
+    /// Without the `models` feature there is no reply cache.
+    #[cfg(not(feature = "models"))]
+    fn cached(&self, _: &[Message], _: &Templated, _: &Scene, _: Instant) -> Option<Translation> {
+        None
+    }
+
+    /// Keeps a valid reply to these first messages in the cache, if there is one (a
+    /// cache that cannot be written only costs a later request).
+    fn keep(&self, first: &[Message], reply: &str) {
+        #[cfg(feature = "models")]
+        if let Some(cache) = &self.cache {
+            let scope = self.backend.cache_scope();
+            let _ = cache.put(
+                self.system.name(),
+                self.system.version(),
+                &scope,
+                first,
+                reply,
+            );
+        }
+        #[cfg(not(feature = "models"))]
+        let _ = (first, reply);
     }
 
     /// Appends the exchange to the record file, when recording.
@@ -123,12 +150,7 @@ impl Translator for LlmTranslator {
         scene: &Scene,
     ) -> Result<Translation, TranslateError> {
         let started = Instant::now();
-        let (name, version, model) = (
-            self.system.name(),
-            self.system.version(),
-            self.backend.model().to_string(),
-        );
-        let scope = self.backend.cache_scope();
+        let model = self.backend.model().to_string();
         if let Some(name) = leaked_name(&templated.query, scene) {
             return Err(TranslateError::not_understood(format!(
                 "'{name}' is still written in the instruction after grounding, so it is not sent to the model; name the object so grounding reads it (quote it: '{name}')"
@@ -172,10 +194,7 @@ impl Translator for LlmTranslator {
             });
             match parsed {
                 Ok(answers) => {
-                    if let Some(cache) = &self.cache {
-                        // A cache that cannot be written only costs a later request.
-                        let _ = cache.put(name, version, &scope, &first, &completion.text);
-                    }
+                    self.keep(&first, &completion.text);
                     return Ok(Translation {
                         answers,
                         exchanges,
