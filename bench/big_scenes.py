@@ -165,7 +165,8 @@ def main() -> int:
                     print(f"{n} objects: the edit failed: {stderr.strip()}", file=sys.stderr)
                     return 1
                 with open(report, encoding="utf-8") as f:
-                    r = json.load(f)
+                    # `--json` writes the edit's outcome; the whole report is in it.
+                    r = json.load(f)["report"]
                 if not r.get("collisions_resolved"):
                     print(f"{n} objects: the edit resolved no collision", file=sys.stderr)
                     return 1

@@ -10,14 +10,15 @@
 //! thinks, and nobody ever sees half an edit.
 
 pub mod error;
+mod ops;
 pub mod outcome;
 
 pub use error::{Choice, Choices, ErrorKind, OpError};
+pub use ops::{bound_objects, ApplyRequest, EditRequest, Pending, Working, MAX_NAME_CHARS};
 pub use outcome::{How, Moved, Operation, Outcome, Pose, Understood};
 
 use crate::format::{Format, SceneFile};
 use crate::ground::Grounder;
-use crate::pipeline::{EditOptions, Translator};
 use crate::scene::{Object, Scene};
 use std::path::PathBuf;
 use std::sync::{Arc, OnceLock};
@@ -73,6 +74,18 @@ fn object_bytes(o: &Object) -> usize {
 #[derive(Debug, thiserror::Error)]
 #[error("the edit was made but could not be saved: {0}")]
 pub struct SaveError(#[from] crate::format::FormatError);
+
+/// Each object whose pose or support differs between `before` and `after`, with both.
+fn diff(before: &Scene, after: &Scene) -> Vec<(usize, Object, Object)> {
+    before
+        .objects
+        .iter()
+        .zip(&after.objects)
+        .enumerate()
+        .filter(|(_, (a, b))| a.pose_differs(b) || a.support != b.support)
+        .map(|(i, (a, b))| (i, a.clone(), b.clone()))
+        .collect()
+}
 
 /// The most memory the undo history keeps; the oldest steps go first past it.
 pub const MAX_HISTORY_BYTES: usize = 64 << 20;
@@ -162,15 +175,14 @@ impl Session {
     /// cleared; the scene is saved. A failed save loses nothing: the change stays, in
     /// memory and in the history, and the failure is reported with it.
     pub fn commit(&mut self, after: Scene, kind: &str, text: &str) -> Change {
-        let before = &self.file.scene;
-        let changes: Vec<(usize, Object, Object)> = before
-            .objects
-            .iter()
-            .zip(&after.objects)
-            .enumerate()
-            .filter(|(_, (a, b))| a.pose_differs(b) || a.support != b.support)
-            .map(|(i, (a, b))| (i, a.clone(), b.clone()))
-            .collect();
+        let changes = diff(&self.file.scene, &after);
+        self.file.scene = after;
+        self.record(changes, kind, text)
+    }
+
+    /// Records a change already made to the scene — each object it changed, as it was and
+    /// as it is — on the undo stack and in the history, and saves.
+    fn record(&mut self, changes: Vec<(usize, Object, Object)>, kind: &str, text: &str) -> Change {
         if changes.is_empty() {
             return Change {
                 id: None,
@@ -202,7 +214,6 @@ impl Session {
             objects: changed,
             undone: false,
         });
-        self.file.scene = after;
         Change {
             id: Some(id),
             save_error: self
@@ -279,241 +290,7 @@ impl Session {
     }
 }
 
-/// What an edit asks for, besides how it runs ([`EditOptions`]).
-#[derive(Clone, Copy, Debug, Default)]
-pub struct EditRequest<'a> {
-    /// The instruction, in words.
-    pub instruction: &'a str,
-    /// The objects the user has selected, by name: what "it" and "them" mean when
-    /// nothing is named before them.
-    pub selected: &'a [String],
-    /// Answer the whole edit report with the outcome.
-    pub report: bool,
-}
-
-/// A CGA expression to apply: `objects[0]` is X1, the object moved; the others are X2,
-/// X3 … whose boxes the expression may use.
-#[derive(Clone, Copy, Debug)]
-pub struct ApplyRequest<'a> {
-    /// The objects bound, by name, X1 first.
-    pub objects: &'a [String],
-    /// The expression.
-    pub expression: &'a str,
-}
-
-/// A copy of the session's scene to run one operation on, away from the session (and any
-/// lock around it); [`Session::land`] swaps its result in.
-pub struct Working {
-    scene: Scene,
-    grounder: Arc<Grounder>,
-}
-
-/// A finished operation not yet in the session.
-pub struct Pending {
-    scene: Scene,
-    operation: Operation,
-    text: String,
-    /// The objects the operation moved itself.
-    moved: Vec<usize>,
-    carried: Vec<String>,
-    understood: Option<Understood>,
-    notes: Vec<String>,
-    report: Option<Box<crate::pipeline::EditReport>>,
-}
-
-impl Working {
-    /// The scene being worked on.
-    #[must_use]
-    pub fn scene(&self) -> &Scene {
-        &self.scene
-    }
-
-    /// Runs an instruction.
-    ///
-    /// # Errors
-    /// An unknown selected object; whatever the edit refuses ([`OpError::from_edit`]).
-    pub fn edit(
-        mut self,
-        request: &EditRequest<'_>,
-        translator: &dyn Translator,
-        options: &EditOptions,
-    ) -> Result<Pending, OpError> {
-        let selection = request
-            .selected
-            .iter()
-            .map(|name| {
-                self.scene
-                    .resolve(name)
-                    .map_err(|e| OpError::new(ErrorKind::BadInput, format!("selected: {e}")))
-            })
-            .collect::<Result<Vec<_>, _>>()?;
-        let options = EditOptions {
-            selection,
-            ..options.clone()
-        };
-        let done = crate::pipeline::edit_with(
-            &mut self.scene,
-            &self.grounder,
-            request.instruction,
-            translator,
-            &options,
-        )
-        .map_err(|e| OpError::from_edit(e, request.instruction))?;
-        let r = &done.report;
-        Ok(Pending {
-            operation: Operation::Edit,
-            text: request.instruction.to_string(),
-            moved: done.moved,
-            carried: r.carried.clone(),
-            understood: Some(Understood {
-                query: r.query.clone(),
-                bindings: r.bindings.clone(),
-            }),
-            notes: outcome::notes(&r.collisions_resolved, &r.overlaps_remaining, &r.held),
-            report: request.report.then(|| Box::new(done.report)),
-            scene: self.scene,
-        })
-    }
-
-    /// Applies an expression.
-    ///
-    /// # Errors
-    /// No object, an unknown one or one bound twice; an expression that is not a
-    /// transformation; what placement refuses.
-    pub fn apply(
-        mut self,
-        request: &ApplyRequest<'_>,
-        options: &EditOptions,
-    ) -> Result<Pending, OpError> {
-        let names: Vec<&str> = request.objects.iter().map(String::as_str).collect();
-        let (placed, _) = crate::pipeline::apply_expression_bound(
-            &mut self.scene,
-            &names,
-            request.expression,
-            options,
-        )
-        .map_err(|e| OpError::from_edit(e, request.expression))?;
-        let bindings = names
-            .iter()
-            .enumerate()
-            .map(|(k, name)| crate::pipeline::Binding {
-                variable: crate::translate::Templated::variable(k),
-                // The name as the scene spells it (the request may differ in case).
-                object: self.scene.find(name).map_or_else(
-                    || (*name).to_string(),
-                    |i| self.scene.objects[i].name.clone(),
-                ),
-            })
-            .collect();
-        let text = format!("{}: {}", names[0], request.expression);
-        Ok(Pending {
-            operation: Operation::Apply,
-            text,
-            moved: placed.moved,
-            carried: placed.carried.clone(),
-            understood: Some(Understood {
-                query: request.expression.to_string(),
-                bindings,
-            }),
-            notes: outcome::notes(&placed.collisions_resolved, &placed.overlaps_remaining, &[]),
-            report: None,
-            scene: self.scene,
-        })
-    }
-}
-
 impl Session {
-    /// The scene's name index, built once.
-    pub fn grounder(&self) -> Arc<Grounder> {
-        Arc::clone(
-            self.grounder
-                .get_or_init(|| Arc::new(Grounder::new(&self.file.scene))),
-        )
-    }
-
-    /// A copy of the scene to run an operation on ([`Working::edit`], [`Working::apply`]);
-    /// [`Session::land`] its result.
-    #[must_use]
-    pub fn working(&self) -> Working {
-        Working {
-            scene: self.file.scene.clone(),
-            grounder: self.grounder(),
-        }
-    }
-
-    /// Runs an instruction on the scene and records it.
-    ///
-    /// # Errors
-    /// As [`Working::edit`]; the scene is then as it was.
-    pub fn edit(
-        &mut self,
-        request: &EditRequest<'_>,
-        translator: &dyn Translator,
-        options: &EditOptions,
-    ) -> Result<Outcome, OpError> {
-        let pending = self.working().edit(request, translator, options)?;
-        Ok(self.land(pending))
-    }
-
-    /// Applies a CGA expression to one object and records it.
-    ///
-    /// # Errors
-    /// As [`Working::apply`]; the scene is then as it was.
-    pub fn apply(
-        &mut self,
-        request: &ApplyRequest<'_>,
-        options: &EditOptions,
-    ) -> Result<Outcome, OpError> {
-        let pending = self.working().apply(request, options)?;
-        Ok(self.land(pending))
-    }
-
-    /// Makes a finished operation's scene the session's, recording what it changed.
-    pub fn land(&mut self, pending: Pending) -> Outcome {
-        let moved = self.moved_between(&pending.scene, |i, name| {
-            if pending.moved.contains(&i) {
-                How::Moved
-            } else if pending.carried.iter().any(|c| c == name) {
-                How::Carried
-            } else {
-                How::Pushed
-            }
-        });
-        let kind = match pending.operation {
-            Operation::Apply => "apply",
-            _ => "edit",
-        };
-        let change = self.commit(pending.scene, kind, &pending.text);
-        Outcome {
-            operation: pending.operation,
-            history_id: change.id,
-            moved,
-            understood: pending.understood,
-            notes: pending.notes,
-            warnings: change.save_error.into_iter().collect(),
-            report: pending.report,
-        }
-    }
-
-    /// Each object whose pose differs between the session's scene and `after`, with why
-    /// (`how` of its index and name).
-    fn moved_between(&self, after: &Scene, how: impl Fn(usize, &str) -> How) -> Vec<Moved> {
-        self.file
-            .scene
-            .objects
-            .iter()
-            .zip(&after.objects)
-            .enumerate()
-            .filter(|(_, (a, b))| a.pose_differs(b))
-            .map(|(i, (a, b))| Moved {
-                object: b.name.clone(),
-                how: how(i, &b.name),
-                before: Pose::of(a),
-                after: Pose::of(b),
-            })
-            .collect()
-    }
-
     /// Takes back the last change.
     ///
     /// # Errors
@@ -573,41 +350,4 @@ impl Session {
             .to_bytes(format)
             .map_err(|e| OpError::new(ErrorKind::Export, e.to_string()))
     }
-}
-
-/// The longest object name a request may bind: a name no object could have is refused
-/// before anything quotes it.
-pub const MAX_NAME_CHARS: usize = 1000;
-
-/// The objects an expression binds, X1 first: `object`, then `bind`'s X2, X3 … in order.
-///
-/// # Errors
-/// [`ErrorKind::BadInput`]: a gap in the variables (X3 without X2), a variable other than
-/// X2 … Xn, a name longer than [`MAX_NAME_CHARS`].
-pub fn bound_objects(
-    object: &str,
-    bind: &std::collections::BTreeMap<String, String>,
-) -> Result<Vec<String>, OpError> {
-    let mut names = vec![object.to_string()];
-    for k in 0..bind.len() {
-        let variable = crate::translate::Templated::variable(k + 1);
-        let name = bind.get(&variable).ok_or_else(|| {
-            let given: Vec<String> = bind.keys().map(|k| k.chars().take(40).collect()).collect();
-            OpError::new(
-                ErrorKind::BadInput,
-                format!(
-                    "bind X2, X3, … in order: {variable} is missing (got {})",
-                    given.join(", ")
-                ),
-            )
-        })?;
-        names.push(name.clone());
-    }
-    if names.iter().any(|n| n.chars().count() > MAX_NAME_CHARS) {
-        return Err(OpError::new(
-            ErrorKind::BadInput,
-            format!("an object name is longer than {MAX_NAME_CHARS} characters"),
-        ));
-    }
-    Ok(names)
 }

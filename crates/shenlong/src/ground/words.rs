@@ -281,28 +281,19 @@ pub fn singular(word: &str) -> Vec<String> {
     out
 }
 
-/// Verbs that turn or scale an object where it is, and so take no place.
+/// Verbs that turn, scale or straighten an object where it is, and so take no place (as
+/// the one verb table, [`super::verbs::verb`], files them), and `face`.
 pub(crate) fn turns_or_scales(w: &str) -> bool {
-    matches!(
-        w,
-        "rotate"
-            | "turn"
-            | "spin"
-            | "twist"
-            | "flip"
-            | "swivel"
-            | "pivot"
-            | "scale"
-            | "resize"
-            | "grow"
-            | "shrink"
-            | "enlarge"
-            | "double"
-            | "halve"
-            | "triple"
-            | "straighten"
-            | "face"
-    )
+    w == "face"
+        || matches!(
+            super::verbs::verb(w),
+            Some((
+                super::verbs::Action::Rotate
+                    | super::verbs::Action::Scale
+                    | super::verbs::Action::Straighten,
+                _
+            ))
+        )
 }
 
 /// Determiners and quantifiers that open a noun phrase.

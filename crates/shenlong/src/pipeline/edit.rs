@@ -321,6 +321,8 @@ pub struct Edit {
     /// The objects the translator's answers moved (what they carried and what collision
     /// resolution shifted is in the report).
     pub moved: Vec<usize>,
+    /// The motions applied, in order: what undo takes back.
+    pub motions: Vec<AppliedMotion>,
 }
 
 fn ms(since: Instant) -> f64 {
@@ -396,9 +398,14 @@ pub fn edit_with(
     timings.collide_setup = placed.collide_setup_ms;
     timings.collide_search = placed.collide_search_ms;
     let moved = std::mem::take(&mut placed.moved);
+    let motions = std::mem::take(&mut placed.motions);
     timings.total = ms(started);
     let report = EditReport::new(scene, &templated, translation, translator, placed, timings);
-    Ok(Edit { report, moved })
+    Ok(Edit {
+        report,
+        moved,
+        motions,
+    })
 }
 
 /// What placing an edit's motions did to the scene.
@@ -406,6 +413,9 @@ pub fn edit_with(
 pub struct Placed {
     /// The objects moved by the motions themselves.
     pub moved: Vec<usize>,
+    /// The motions applied, in order — the edit's and collision resolution's: what undo
+    /// takes back ([`Scene::undo`] them last first).
+    pub motions: Vec<AppliedMotion>,
     /// Objects carried along with the ones they rest on.
     pub carried: Vec<String>,
     /// Objects moved to clear collisions.
@@ -476,7 +486,7 @@ pub fn place_holding(
             o.support_from_file = from_file;
         }
     }
-    result
+    result.map(|placed| Placed { motions, ..placed })
 }
 
 /// A placement refusal for a held object.
@@ -613,6 +623,7 @@ fn place_into(
     };
     Ok(Placed {
         moved,
+        motions: Vec::new(),
         carried,
         collisions_resolved: resolved.collisions_resolved,
         overlaps_remaining: resolved.overlaps_remaining,

@@ -206,6 +206,18 @@ impl Object {
         self.pose
     }
 
+    /// This object as it was before an edit: the pose it had and the support it rested
+    /// on (`(support, from the file)`); everything else an edit does not change.
+    #[must_use]
+    pub(crate) fn as_it_was(&self, pose: Similarity, support: (Option<usize>, bool)) -> Object {
+        Object {
+            pose,
+            support: support.0,
+            support_from_file: support.1,
+            ..self.clone()
+        }
+    }
+
     /// Whether this object's pose differs from `other`'s beyond rounding: what counts as
     /// a move for the edit history and for the editor's `moved` list.
     #[must_use]
