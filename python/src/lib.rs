@@ -73,8 +73,8 @@ fn detached<T: Send>(py: Python<'_>, f: impl FnOnce() -> Result<T, String> + Sen
 }
 
 /// Runs an operation on the session without the GIL, after the calls before it, guarded
-/// against panics (a bug answers an `internal` refusal; the scene is as it was: every
-/// change is made on a working copy and swapped in at its end).
+/// against panics (a bug answers an `internal` refusal; the scene is as it was: edits and
+/// applies run on a working copy swapped in at their end).
 fn operate(
     py: Python<'_>,
     session: &std::sync::Mutex<Session>,
@@ -301,7 +301,11 @@ impl PyScene {
                 selected: &selected,
                 report,
             };
-            outcome_json(session.edit(&request, translator.as_ref(), &options))
+            // On a working copy: even a bug caught mid-edit leaves the scene as it was.
+            let pending = session
+                .working()
+                .edit(&request, translator.as_ref(), &options);
+            outcome_json(pending.map(|p| session.land(p)))
         })
     }
 
@@ -328,7 +332,8 @@ impl PyScene {
                 objects: &objects,
                 expression: &expr,
             };
-            outcome_json(session.apply(&request, &options))
+            let pending = session.working().apply(&request, &options);
+            outcome_json(pending.map(|p| session.land(p)))
         })
     }
 
