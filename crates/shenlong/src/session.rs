@@ -5,9 +5,11 @@
 //! change touched (not copies of the scene); a history; saving to the one file given at
 //! start-up (after each change, or when asked).
 //!
-//! An edit runs on a working copy of the scene ([`Session::working`]) and is swapped in
-//! when it succeeded ([`Session::land`]): a server can answer reads while a language model
-//! thinks, and nobody ever sees half an edit.
+//! An edit runs in place ([`Session::edit`]: the scene is as it was on any error, and undo
+//! records the motions' objects as they were), or on a working copy
+//! ([`Session::working`]) swapped in when it succeeded ([`Session::land`]): a server
+//! answers reads while a language model thinks, and nobody ever sees half an edit. Both
+//! give the same outcome and the same undo (`session/ops.rs`).
 
 pub mod error;
 mod ops;

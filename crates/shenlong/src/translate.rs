@@ -235,49 +235,52 @@ pub struct ReplyCounts {
 }
 
 /// Why an instruction could not be translated.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("{message}")]
 pub struct TranslateError {
     /// One line for the user.
     pub message: String,
-    /// Whether the instruction itself was not understood (as opposed to a model or its
-    /// server failing).
-    pub not_understood: bool,
-    /// Whether it was read and refused on its meaning ("put the chair back" with no earlier
-    /// pose): another translator (a model after the offline one) must not be asked.
-    pub settled: bool,
+    /// Which kind of failure.
+    pub kind: TranslateErrorKind,
     /// The replies received before giving up.
     pub replies: ReplyCounts,
 }
 
+/// The kinds of translation failure.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TranslateErrorKind {
+    /// The model or its server failed, or gave no usable answer.
+    Model,
+    /// The translator could not read the instruction: another (a model after the offline
+    /// translator) may.
+    NotUnderstood,
+    /// Read and refused on its meaning ("put the chair back" with no earlier pose): no
+    /// other translator is asked.
+    Settled,
+}
+
 impl TranslateError {
-    /// A model or server failure.
-    pub fn model(message: impl Into<String>) -> Self {
+    fn of(kind: TranslateErrorKind, message: impl Into<String>) -> Self {
         Self {
             message: message.into(),
-            not_understood: false,
-            settled: false,
+            kind,
             replies: ReplyCounts::default(),
         }
+    }
+
+    /// A model or server failure.
+    pub fn model(message: impl Into<String>) -> Self {
+        Self::of(TranslateErrorKind::Model, message)
     }
 
     /// An instruction the translator cannot read.
     pub fn not_understood(message: impl Into<String>) -> Self {
-        Self {
-            message: message.into(),
-            not_understood: true,
-            settled: false,
-            replies: ReplyCounts::default(),
-        }
+        Self::of(TranslateErrorKind::NotUnderstood, message)
     }
 
     /// An instruction read and refused on its meaning: no other translator is asked.
     pub fn settled(message: impl Into<String>) -> Self {
-        Self {
-            message: message.into(),
-            not_understood: true,
-            settled: true,
-            replies: ReplyCounts::default(),
-        }
+        Self::of(TranslateErrorKind::Settled, message)
     }
 
     /// The same error, with the replies received.
@@ -286,14 +289,6 @@ impl TranslateError {
         Self { replies, ..self }
     }
 }
-
-impl std::fmt::Display for TranslateError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for TranslateError {}
 
 /// Turns templated instructions into transformations.
 pub trait Translator: Send + Sync {

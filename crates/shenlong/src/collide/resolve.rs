@@ -80,20 +80,50 @@ fn ms(since: Instant) -> f64 {
     since.elapsed().as_secs_f64() * 1000.0
 }
 
-/// Why the edit cannot be placed.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct ResolveError {
-    /// One line for the user: which object, what blocks it, what to try.
-    pub message: String,
+/// Why the edit cannot be placed: which object, what blocks it, and why the search ended.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
+pub enum ResolveError {
+    /// Put on a top face that is full where it would go.
+    #[error("no free spot for '{object}' on top of '{surface}': it is full where '{object}' would go ({} in the way)", blocking.join(", "))]
+    SurfaceFull {
+        /// The object placed.
+        object: String,
+        /// What it was put on.
+        surface: String,
+        /// What is in the way.
+        blocking: Vec<String>,
+    },
+    /// No free placement within the search's reach or time.
+    #[error("no collision-free placement for '{object}' ({end}): it collides with {}", blocking.join(", "))]
+    NoPlace {
+        /// The object placed.
+        object: String,
+        /// Why the search ended.
+        end: SearchEnd,
+        /// What it collides with.
+        blocking: Vec<String>,
+    },
 }
 
-impl std::fmt::Display for ResolveError {
+/// How a search for a free placement ended without one.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum SearchEnd {
+    /// Its time budget ran out.
+    OutOfTime(Duration),
+    /// Nothing free within the radius, in metres.
+    OutOfReach(f64),
+}
+
+impl std::fmt::Display for SearchEnd {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
+        match self {
+            Self::OutOfTime(budget) => {
+                write!(f, "the search stopped after {} ms", budget.as_millis())
+            }
+            Self::OutOfReach(radius) => write!(f, "none within {radius} m"),
+        }
     }
 }
-
-impl std::error::Error for ResolveError {}
 
 /// Whether an object is floor furniture, which resolution never lifts onto anything
 /// (lifting is for small things): what the caller knows of the objects' kinds
@@ -529,30 +559,24 @@ impl Search<'_> {
     /// time or space.
     fn no_place(&self, group: &Group<'_>) -> ResolveError {
         let scene = &*self.scene;
-        let name = &scene.objects[group.root].name;
+        let object = scene.objects[group.root].name.clone();
         let blocking: Vec<String> = group.hits.iter().map(|o| o.describe(scene)).collect();
         if let Some(j) = group.surface {
-            return ResolveError {
-                message: format!(
-                    "no free spot for '{name}' on top of '{}': it is full where '{name}' would go ({} in the way)",
-                    scene.objects[j].name,
-                    blocking.join(", ")
-                ),
+            return ResolveError::SurfaceFull {
+                object,
+                surface: scene.objects[j].name.clone(),
+                blocking,
             };
         }
-        let why = if self.started.elapsed() > self.options.time_budget {
-            format!(
-                "the search stopped after {} ms",
-                self.options.time_budget.as_millis()
-            )
+        let end = if self.started.elapsed() > self.options.time_budget {
+            SearchEnd::OutOfTime(self.options.time_budget)
         } else {
-            format!("none within {} m", self.options.radius)
+            SearchEnd::OutOfReach(self.options.radius)
         };
-        ResolveError {
-            message: format!(
-                "no collision-free placement for '{name}' ({why}): it collides with {}",
-                blocking.join(", ")
-            ),
+        ResolveError::NoPlace {
+            object,
+            end,
+            blocking,
         }
     }
 }

@@ -8,7 +8,7 @@
 use super::prompts::System;
 use crate::offline::OfflineTranslator;
 use crate::scene::Scene;
-use crate::translate::{Templated, TranslateError, Translation, Translator};
+use crate::translate::{Templated, TranslateError, TranslateErrorKind, Translation, Translator};
 
 /// The offline translator, then a model for what it does not read.
 pub struct Cascade {
@@ -54,7 +54,7 @@ impl Translator for Cascade {
         let refusal = match self.offline.translate(templated, scene) {
             Ok(translation) => return Ok(translation),
             // (Refused on its meaning, "put the chair back": no model is asked.)
-            Err(e) if e.not_understood && !e.settled => e.message,
+            Err(e) if e.kind == TranslateErrorKind::NotUnderstood => e.message,
             Err(e) => return Err(e),
         };
         match self.model.translate(templated, scene) {
@@ -64,9 +64,7 @@ impl Translator for Cascade {
             }
             Err(e) => Err(TranslateError {
                 message: format!("{} (the offline translator: {refusal})", e.message),
-                not_understood: e.not_understood,
-                settled: e.settled,
-                replies: e.replies,
+                ..e
             }),
         }
     }

@@ -7,7 +7,7 @@ use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
 use crate::ground::{GroundError, Grounder, Reason};
 use crate::scene::{AppliedMotion, Scene};
-use crate::translate::{Near, ReplyCounts};
+use crate::translate::{Near, ReplyCounts, TranslateErrorKind};
 use serde::Serialize;
 use std::time::Instant;
 
@@ -370,10 +370,10 @@ pub fn edit_with(
     let translation = translator
         .translate(&templated, scene)
         .map_err(|e| EditError {
-            kind: match (e.not_understood, e.settled) {
-                (true, false) => EditErrorKind::Unread,
-                (true, true) => EditErrorKind::NotUnderstood,
-                (false, _) => EditErrorKind::Model,
+            kind: match e.kind {
+                TranslateErrorKind::NotUnderstood => EditErrorKind::Unread,
+                TranslateErrorKind::Settled => EditErrorKind::NotUnderstood,
+                TranslateErrorKind::Model => EditErrorKind::Model,
             },
             message: e.message,
             replies: e.replies,
@@ -766,7 +766,7 @@ fn resolve_collisions(
         &crate::ground::kind::is_floor_bound,
         resolve_options,
     )
-    .map_err(|e| placement(e.message))?;
+    .map_err(|e| placement(e.to_string()))?;
     let changed: Vec<usize> = resolution.motion.objects().collect();
     motions.push(resolution.motion.clone());
     let mut resolved = Resolved {

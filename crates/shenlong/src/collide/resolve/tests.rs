@@ -211,7 +211,7 @@ fn no_placement_names_what_blocks_and_changes_nothing_else() {
     };
     let e = edit(&mut s, a, DVec3::new(0.0, 0.0, 0.6), &options).unwrap_err();
     assert_eq!(
-        e.message,
+        e.to_string(),
         "no collision-free placement for 'piano' (none within 0.3 m): it collides with 'bench'"
     );
     let mut s2 = Scene::new("tight");
@@ -356,7 +356,7 @@ proptest! {
                     }
                 }
             }
-            Err(e) => prop_assert!(e.message.starts_with("no collision-free placement"), "{e}"),
+            Err(e) => prop_assert!(e.to_string().starts_with("no collision-free placement"), "{e}"),
         }
     }
 }
@@ -468,11 +468,11 @@ fn a_full_surface_is_refused_saying_so() {
     )
     .unwrap_err();
     assert!(
-        e.message
+        e.to_string()
             .contains("no free spot for 'cup' on top of 'stool'"),
         "{e}"
     );
-    assert!(e.message.contains("'book'"), "{e}");
+    assert!(e.to_string().contains("'book'"), "{e}");
 }
 
 /// A closet barely larger than the crate standing in it (the crate's index is 0): pushed
@@ -537,7 +537,7 @@ fn floor_furniture_is_never_lifted_onto_another_object() {
     )
     .unwrap_err();
     assert!(
-        e.message
+        e.to_string()
             .starts_with("no collision-free placement for 'chair'"),
         "{e}"
     );
