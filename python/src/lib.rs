@@ -290,11 +290,7 @@ impl PyScene {
     ) -> PyResult<String> {
         let system = System::parse(&system).map_err(error)?;
         let translator = make_translator_at(&llm, system, base_url).map_err(error)?;
-        let options = EditOptions {
-            carry,
-            collisions: collisions(collide),
-            selection: Vec::new(),
-        };
+        let options = EditOptions::new(carry, collisions(collide));
         operate(py, &self.session, move |session| {
             let request = EditRequest {
                 instruction: &instruction,
@@ -322,11 +318,7 @@ impl PyScene {
         bind: std::collections::BTreeMap<String, String>,
     ) -> PyResult<String> {
         let objects = bound_objects(&name, &bind).map_err(|e| refusal(&e))?;
-        let options = EditOptions {
-            carry,
-            collisions: collisions(collide),
-            selection: Vec::new(),
-        };
+        let options = EditOptions::new(carry, collisions(collide));
         operate(py, &self.session, move |session| {
             let request = ApplyRequest {
                 objects: &objects,

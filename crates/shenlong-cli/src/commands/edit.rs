@@ -68,11 +68,7 @@ pub fn run(args: Args) -> Result<()> {
     let settings = args.translator.settings(system)?;
     let file = super::load_scene_with(&args.scene, &args.read)?;
     let translator = translator(&args.translator.llm, &settings).map_err(super::llm_error)?;
-    let options = EditOptions {
-        carry: !args.no_carry,
-        collisions: args.collisions.resolve_options()?,
-        selection: Vec::new(),
-    };
+    let options = EditOptions::new(!args.no_carry, args.collisions.resolve_options()?);
     let mut session = Session::saving_on_request(file, None);
     let request = EditRequest {
         instruction: &args.instruction,

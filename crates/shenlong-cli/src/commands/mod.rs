@@ -205,11 +205,10 @@ impl CollisionArgs {
 
     /// The edit options these flags ask for.
     pub fn edit_options(&self, carry: bool) -> Result<shenlong::pipeline::EditOptions> {
-        Ok(shenlong::pipeline::EditOptions {
+        Ok(shenlong::pipeline::EditOptions::new(
             carry,
-            collisions: self.resolve_options()?,
-            selection: Vec::new(),
-        })
+            self.resolve_options()?,
+        ))
     }
 }
 

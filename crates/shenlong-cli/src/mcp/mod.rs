@@ -180,11 +180,7 @@ impl ShenlongMcp {
     }
 
     fn options(&self) -> EditOptions {
-        EditOptions {
-            carry: true,
-            collisions: self.state.settings.collisions.clone(),
-            selection: Vec::new(),
-        }
+        EditOptions::new(true, self.state.settings.collisions.clone())
     }
 
     /// An operation's answer: its outcome, or its refusal as a tool error with the same

@@ -541,11 +541,7 @@ fn yes() -> bool {
 
 /// How edits run here: carrying, and the server's collision settings.
 fn edit_options(app: &App) -> EditOptions {
-    EditOptions {
-        carry: true,
-        collisions: app.settings.collisions.clone(),
-        selection: Vec::new(),
-    }
+    EditOptions::new(true, app.settings.collisions.clone())
 }
 
 /// An outcome as JSON, kept as the last edit's for a page opened later when it is one.

@@ -128,11 +128,7 @@ pub fn run_one(
 ) -> Outcome {
     let query = &suite.queries[instance.query];
     let mut after = scene.clone();
-    let options = EditOptions {
-        carry: true,
-        collisions: collide.then(Default::default),
-        selection: Vec::new(),
-    };
+    let options = EditOptions::new(true, collide.then(Default::default));
     let result = edit(&mut after, &instance.instruction, translator, &options);
     // The placeholders, and the objects the checks are about by name: "others" are the
     // objects none of these name (a swap's other object is a subject of its own check).

@@ -23,6 +23,19 @@ pub struct EditOptions {
     pub selection: Vec<usize>,
 }
 
+impl EditOptions {
+    /// Carrying what rests on a moved object as `carry` says, collisions resolved with
+    /// `collisions` (`None`: not looked for), nothing selected: what every front end asks.
+    #[must_use]
+    pub fn new(carry: bool, collisions: Option<ResolveOptions>) -> Self {
+        Self {
+            carry,
+            collisions,
+            selection: Vec::new(),
+        }
+    }
+}
+
 impl Default for EditOptions {
     fn default() -> Self {
         Self {
