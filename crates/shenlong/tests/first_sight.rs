@@ -1588,3 +1588,81 @@ fn a_number_word_that_starts_an_amount_is_no_instance_number() {
     .unwrap();
     assert!(close(moved(CLASS, &s, "Desk 4"), [0.762, 0.0, 0.0]));
 }
+
+/// A potting shed: a stack of crates on a pallet, a wheelbarrow, a heater by the door,
+/// and boxes of three heights with meaningless names.
+const SHED: &str = r#"{
+  "name": "shed",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "pallet", "position": [-3, 0, -2], "size": [1.2, 0.15, 0.8]},
+    {"name": "crate A", "position": [-3.3, 0.15, -2], "size": [0.5, 0.4, 0.5]},
+    {"name": "crate B", "position": [-2.7, 0.15, -2], "size": [0.5, 0.4, 0.5]},
+    {"name": "crate C", "position": [-3.3, 0.55, -2], "size": [0.5, 0.4, 0.5]},
+    {"name": "wheelbarrow", "position": [2, 0, -2], "size": [0.7, 0.6, 1.4]},
+    {"name": "sack of compost", "position": [0, 0, 2], "size": [0.4, 0.25, 0.6]},
+    {"name": "door", "position": [4.97, 0, 0], "size": [0.05, 2.1, 0.9]},
+    {"name": "heater", "position": [3.8, 0, 0], "size": [0.6, 0.7, 0.3]},
+    {"name": "Cube.001", "position": [-1, 0, 3], "size": [0.8, 1.9, 0.8]},
+    {"name": "Cube.002", "position": [1, 0, 3], "size": [0.8, 0.5, 0.8]},
+    {"name": "Cube.003", "position": [-4, 1.2, 3.5], "size": [0.25, 0.15, 0.2]}
+  ]
+}"#;
+
+#[test]
+fn a_stack_moved_with_everything_on_it_moves_once_in_any_order() {
+    for instruction in [
+        "move the pallet and everything on it 1 metre forward",
+        "move crate C, crate A, crate B and the pallet 1 metre forward",
+    ] {
+        let s = after(SHED, instruction).unwrap();
+        for name in ["pallet", "crate A", "crate B", "crate C"] {
+            assert!(
+                close(moved(SHED, &s, name), [0.0, 0.0, 1.0]),
+                "{instruction}: {name} moved {:?}",
+                moved(SHED, &s, name)
+            );
+        }
+    }
+}
+
+#[test]
+fn a_complaint_before_what_to_do_is_no_move_of_its_own() {
+    // "too close to the door" says what is wrong; "further left" is the move.
+    let s = after(
+        SHED,
+        "the heater's too close to the door, move it further left",
+    )
+    .unwrap();
+    let d = moved(SHED, &s, "heater");
+    assert!(d.x < -0.05 && d.z.abs() < 1e-9, "the heater moved {d:?}");
+    // Said alone, it asks nothing: refused.
+    assert!(after(SHED, "the heater is too close to the door").is_err());
+}
+
+#[test]
+fn in_a_container_is_refused_never_done_beside_it() {
+    let e = after(SHED, "put the sack of compost in the wheelbarrow").unwrap_err();
+    assert!(e.contains("inside 'wheelbarrow'"), "{e}");
+    assert!(after(SHED, "put the sack of compost into the wheelbarrow").is_err());
+    // "In front of" is a place beside, not inside.
+    let s = after(SHED, "put the sack of compost in front of the wheelbarrow").unwrap();
+    assert!(aabb(&s, "sack of compost").min.z > aabb(&s, "wheelbarrow").max.z - 1e-9);
+}
+
+#[test]
+fn two_descriptions_that_land_on_one_object_are_refused() {
+    let e = after(
+        SHED,
+        "put the little cube on the tall box and move the short box a bit to the right",
+    )
+    .unwrap_err();
+    assert!(e.contains("both read as the same object"), "{e}");
+    // The same words twice are one object, as said.
+    let s = after(
+        SHED,
+        "put the tall box next to the door and turn the tall box around",
+    )
+    .unwrap();
+    assert!(moved(SHED, &s, "Cube.001").length() > 0.5);
+}

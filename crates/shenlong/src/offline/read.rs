@@ -382,10 +382,12 @@ impl Reader<'_> {
                 _ => None,
             })
             .collect();
+        // "X1 is …", or a complaint with the verb left out ("X1's too close to X2", where
+        // the grounder took the "'s" with the name).
         let copula = free.get(named).is_some_and(|&i| {
             matches!(
                 c.word(i),
-                Some("is" | "are" | "looks" | "look" | "seems" | "seem")
+                Some("is" | "are" | "looks" | "look" | "seems" | "seem" | "too")
             )
         });
         let rest = free.get(named + 1..).unwrap_or(&[]);
@@ -397,6 +399,8 @@ impl Reader<'_> {
                         && words::direction(w).is_none()
                         && words::length_unit(w).is_none()
                 }
+                // "is too close to X2": the state names another object.
+                Some(Token::Variable(_)) => true,
                 _ => false,
             });
         if subjects.is_empty() || !copula || !asks_nothing {
@@ -793,6 +797,19 @@ impl Reader<'_> {
         }
         // A relation to another object.
         if let Some(r) = find_relation(c) {
+            if r.inside(c) {
+                let known = self.facts.known;
+                let subjects = self.required_subjects(c, text)?;
+                return Err(ReadError::Inside {
+                    object: subjects
+                        .iter()
+                        .filter(|&&s| s != r.target())
+                        .map(|&s| known.label(s))
+                        .collect::<Vec<_>>()
+                        .join(" and "),
+                    container: known.label(r.target()),
+                });
+            }
             return self.relate(c, r, text);
         }
         let subjects = self.required_subjects(c, text)?;

@@ -82,18 +82,28 @@ pub enum ReadError {
         /// How many are bound.
         bound: usize,
     },
+    /// "In", "into" or "inside" an object: objects are solid boxes here, with no room
+    /// inside (a wheelbarrow, a box, a bookcase), so putting one in another would end
+    /// beside it.
+    #[error("Shenlong sees each object as a solid box, so it cannot put {object} inside {container} yet; say \"on {container}\" to put it on top, or where beside it it goes")]
+    Inside {
+        /// What was to go in.
+        object: String,
+        /// What it was to go in.
+        container: String,
+    },
     /// "Put … back" asks for a pose before an earlier edit, which a one-shot edit has not.
     #[error("\"put … back\" asks for where it was before an earlier edit, and there is none to return to here; to move it backwards, say how far (\"move it back 50 cm\")")]
     Return,
 }
 
 impl ReadError {
-    /// Whether it was read and refused on its meaning ("put X1 back"), not for words it
-    /// does not read: no other translator (a model, which might read a move backwards)
-    /// should be asked instead.
+    /// Whether it was read and refused on its meaning ("put X1 back", "put X1 in X2"), not
+    /// for words it does not read: no other translator (a model, which might read a move
+    /// backwards or put the object beside its container) should be asked instead.
     #[must_use]
     pub fn settled(&self) -> bool {
-        matches!(self, Self::Return)
+        matches!(self, Self::Return | Self::Inside { .. })
     }
 }
 

@@ -42,6 +42,19 @@ pub(super) struct Found {
     trailing: Option<usize>,
 }
 
+impl Found {
+    /// Whether it puts its subjects in, into or inside its target (not "in front of").
+    pub(super) fn inside(&self, c: &Clause) -> bool {
+        self.kind == RelKind::Fixed(Relation::To)
+            && matches!(c.word(self.range.start), Some("in" | "into" | "inside"))
+    }
+
+    /// Its first target's variable.
+    pub(super) fn target(&self) -> usize {
+        self.targets[0].1
+    }
+}
+
 /// The relation markers, longest first.
 const MARKERS: &[(&[&str], RelKind)] = &[
     (

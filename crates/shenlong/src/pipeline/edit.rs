@@ -710,7 +710,18 @@ fn apply_moves(
     let mut carried_motion: Vec<Option<cga::Similarity>> = vec![None; scene.objects.len()];
     for &(object, ref step) in moves {
         if let Some(w) = carried_motion[object].take() {
-            let back = scene.apply_world(&[object], &w.inverse());
+            // It goes back with what it carries now, as its own motion will carry it: a
+            // box on it that took its own motion already stays where that put it ("the
+            // shelf and everything on it", in any order).
+            let mut group = vec![object];
+            if carry {
+                group.extend(scene.carried_by_except(object, held));
+            }
+            let back = scene.apply_world(&group, &w.inverse());
+            for m in back.moves.iter().filter(|m| m.object != object) {
+                let so_far = carried_motion[m.object].unwrap_or(cga::Similarity::IDENTITY);
+                carried_motion[m.object] = Some(m.world * so_far);
+            }
             boxes.update(scene, &back);
             motions.push(back);
         }

@@ -47,7 +47,7 @@ pub fn template_selected(
     selection: &[usize],
 ) -> Result<Templated, GroundError> {
     let mut grounding = grounder.ground_with_selection(instruction, scene, selection)?;
-    check_phrases(&mut grounding)?;
+    check_phrases(&mut grounding, scene)?;
     let text = grounding.instruction.as_str();
     // What is held is cut from the query (a cut that would take a bound phrase with it is
     // not made: the words stay, and the translator reads or refuses them).
@@ -125,7 +125,10 @@ pub fn template_selected(
 ///
 /// # Errors
 /// [`GroundError::NoPick`] naming the words read twice.
-fn check_phrases(grounding: &mut crate::ground::Grounding) -> Result<(), GroundError> {
+fn check_phrases(
+    grounding: &mut crate::ground::Grounding,
+    scene: &Scene,
+) -> Result<(), GroundError> {
     grounding
         .phrases
         .sort_by_key(|p| (p.span.start, p.span.end));
@@ -140,6 +143,48 @@ fn check_phrases(grounding: &mut crate::ground::Grounding) -> Result<(), GroundE
                 phrase: words.to_string(),
                 reason: "these words name objects in two ways at once (the scene has objects named like the words of the instruction); put the object's name in quotes".to_string(),
             });
+        }
+    }
+    one_object_two_picks(grounding, scene)
+}
+
+/// Refuses two phrases that each pick one object by what it looks like or where it is,
+/// worded differently, and land on the same object ("put the little cube on the tall
+/// box and move the short box"): people who describe an object twice in different words
+/// mean two objects, so one of the picks is not the object meant.
+fn one_object_two_picks(
+    grounding: &crate::ground::Grounding,
+    scene: &Scene,
+) -> Result<(), GroundError> {
+    let picked: Vec<&crate::ground::Phrase> = grounding
+        .phrases
+        .iter()
+        .filter(|p| {
+            let words: Vec<String> = p.text.split_whitespace().map(str::to_lowercase).collect();
+            p.objects.len() == 1
+                && p.reasons
+                    .iter()
+                    .any(|r| r.kind == crate::ground::ReasonKind::Modifier)
+                // "the left one" refers back to a noun said before.
+                && !matches!(words.last().map(String::as_str), Some("one" | "ones"))
+        })
+        .collect();
+    let norm = |text: &str| {
+        text.split_whitespace()
+            .map(str::to_lowercase)
+            .collect::<Vec<_>>()
+    };
+    for (k, a) in picked.iter().enumerate() {
+        for b in &picked[k + 1..] {
+            if a.objects == b.objects && norm(&a.text) != norm(&b.text) {
+                return Err(GroundError::NoPick {
+                    phrase: format!("{}\" and \"{}", a.text, b.text),
+                    reason: format!(
+                        "both read as the same object, '{}'; name each one (its name in quotes) or describe it so that it stands out",
+                        scene.objects[a.objects[0]].name
+                    ),
+                });
+            }
         }
     }
     Ok(())
