@@ -1666,3 +1666,39 @@ fn two_descriptions_that_land_on_one_object_are_refused() {
     .unwrap();
     assert!(moved(SHED, &s, "Cube.001").length() > 0.5);
 }
+
+/// Boxes of three heights by a window, a little cube on the short one, and a tiny box on
+/// a shelf across the room: names that say nothing.
+const DEPOT: &str = r#"{
+  "name": "depot",
+  "bounds": {"min": [-5, 0, -4], "max": [5, 3, 4]},
+  "objects": [
+    {"name": "window", "position": [0, 1, 3.97], "size": [2.0, 1.2, 0.05]},
+    {"name": "Cube.010", "position": [-1, 0, 3.2], "size": [0.8, 1.9, 0.8]},
+    {"name": "Cube.011", "position": [1, 0, 3.2], "size": [0.8, 0.5, 0.8]},
+    {"name": "Cube.012", "position": [1, 0.5, 3.2], "size": [0.3, 0.3, 0.3]},
+    {"name": "shelf", "position": [-4, 0, -3], "size": [1.0, 1.2, 0.4]},
+    {"name": "Cube.013", "position": [-4, 1.2, -3], "size": [0.25, 0.15, 0.2]}
+  ]
+}"#;
+
+#[test]
+fn the_short_one_after_the_tall_box_by_the_window_is_the_other_box_there() {
+    let s = after(DEPOT, "swap the tall box by the window with the short one").unwrap();
+    // The tall box stands where the short box stood, and the short box where it stood.
+    let (tall, short) = (aabb(&s, "Cube.010"), aabb(&s, "Cube.011"));
+    assert!(
+        (tall.center().x - 1.0).abs() < 0.05,
+        "tall box at {:?}",
+        tall.center()
+    );
+    assert!(
+        (short.center().x + 1.0).abs() < 0.05,
+        "short box at {:?}",
+        short.center()
+    );
+    assert!(
+        moved(DEPOT, &s, "Cube.013").length() < 1e-9,
+        "the shelf's box stayed"
+    );
+}

@@ -524,10 +524,38 @@ impl Reader<'_> {
         // "the blue one" with nothing before it: one of all the objects, which its
         // modifiers must pick.
         let everything: Vec<usize>;
+        let contrast: Vec<usize>;
         let (pool, text) = match nps.last() {
             // "of the two stools at the island, … the left one": one of those two.
             Some(previous) if self.partitive(previous.range.start) => {
                 (&previous.objects, previous.head.clone())
+            }
+            // "the tall box by the door … the short one": with a size word of its own and
+            // no modifier after it, one of the boxes by the door the size word picked
+            // among, not of every box.
+            Some(previous)
+                if previous.near.is_some()
+                    && k > 0
+                    && self.word(k - 1).and_then(words::size_word).is_some()
+                    && !self.word(k + 1).is_some_and(|w| {
+                        words::is_preposition(w)
+                            || matches!(w, "closest" | "nearest" | "that" | "which" | "with")
+                    }) =>
+            {
+                // Of those, the ones that stand where the one named stands (on the floor,
+                // or on the same thing): the short box beside the tall one, not the cube on
+                // top of it.
+                let near = previous.near.as_deref().unwrap_or(&previous.pool);
+                let level = |o: usize| self.scene.objects[o].support;
+                contrast = match previous.objects.as_slice() {
+                    [one] => near
+                        .iter()
+                        .copied()
+                        .filter(|&o| level(o) == level(*one))
+                        .collect(),
+                    _ => near.to_vec(),
+                };
+                (&contrast, previous.head.clone())
             }
             Some(previous) => (&previous.pool, previous.head.clone()),
             None if k > 0

@@ -179,6 +179,10 @@ struct Np {
     objects: Vec<usize>,
     /// The head's candidates before any pick: what "the other one" picks from.
     pool: Vec<usize>,
+    /// What a modifier after the head left for a size word to pick from ("the tall box
+    /// by the door": the boxes by the door): what a contrasting "the short one" picks
+    /// from.
+    near: Option<Vec<usize>>,
     reasons: Vec<Reason>,
     /// Its head's text: what "one" stands for next.
     head: String,
@@ -194,6 +198,7 @@ impl Np {
         Self {
             range,
             pool: objects.clone(),
+            near: None,
             objects,
             reasons: vec![Reason {
                 kind: ReasonKind::Group,
@@ -807,6 +812,7 @@ impl<'a> Reader<'a> {
                     range: start..k + 1,
                     objects: vec![index],
                     pool: vec![index],
+                    near: None,
                     reasons: vec![Reason {
                         kind: ReasonKind::Quoted,
                         detail: format!("'{}' is quoted", name.trim()),

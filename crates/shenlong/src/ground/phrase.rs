@@ -42,6 +42,10 @@ struct Draft {
     /// A modifier after the head has picked or described: a second one ("the box against
     /// the wall with the monkey on it") narrows what it left.
     posted: bool,
+    /// What the modifier after the head left, for a size word before it to pick from
+    /// ("the tall box by the door": the boxes by the door): what a contrasting "the short
+    /// one" picks from next.
+    near: Option<Vec<usize>>,
 }
 
 /// How a noun phrase opens: where it starts, how many its determiners ask for, and a
@@ -96,6 +100,12 @@ impl Reader<'_> {
             self.post_stage(&head, &mut draft, &mut mods, bound, mode)?;
         }
         let objects = std::mem::take(&mut draft.objects);
+        // Several left by the modifier after the head for a size word before it to pick
+        // from: the group a contrasting "the short one" picks from next.
+        let sized = (first..h).any(|k| self.word(k).and_then(words::size_word).is_some());
+        if draft.posted && sized && objects.len() > 1 {
+            draft.near = Some(objects.clone());
+        }
         let phrase = self.span_text(&(draft.start..draft.end));
         draft.objects = self.pick_by_premodifiers(
             &head,
@@ -290,6 +300,7 @@ impl Reader<'_> {
             pool: head.literal.clone(),
             modified,
             posted: false,
+            near: None,
         })
     }
 
@@ -625,6 +636,7 @@ impl Reader<'_> {
             mut objects,
             mut reasons,
             pool,
+            near,
             ..
         } = draft;
         let phrase = self.span_text(&(start..end));
@@ -651,6 +663,7 @@ impl Reader<'_> {
             range: start..end,
             objects,
             pool,
+            near,
             reasons,
             head: head.text,
             owners: None,
