@@ -63,20 +63,67 @@ pub struct Completion {
     pub elapsed: Duration,
 }
 
-/// Why a backend gave no reply.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct LlmError {
-    /// One line for the user; never contains the API key.
-    pub message: String,
+/// Why a backend gave no reply. Every text in it has had the API key taken out.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub enum LlmError {
+    /// The request failed — the server's status, the transport, the form of its reply —
+    /// on the last of `attempts` tries.
+    #[error("{reason}{}", tries(*.attempts))]
+    Request {
+        /// What failed, one line.
+        reason: String,
+        /// How many tries were made.
+        attempts: u32,
+    },
+    /// Another try would have had to wait past the deadline.
+    #[error("{reason} (gave up: waiting {:.0} s more would pass the deadline of {:.0} s)", .wait.as_secs_f64(), .deadline.as_secs_f64())]
+    GaveUp {
+        /// What failed on the last try.
+        reason: String,
+        /// The wait another try needed.
+        wait: Duration,
+        /// The deadline of the whole translation.
+        deadline: Duration,
+    },
+    /// The server asked every request to wait past the deadline.
+    #[error("the server asked every request to wait past the deadline of {:.0} s", .0.as_secs_f64())]
+    Throttled(Duration),
+    /// A recording (`replay:FILE`) cannot be read.
+    #[error("cannot read {path}: {reason}")]
+    Unreadable {
+        /// The file.
+        path: String,
+        /// Why.
+        reason: String,
+    },
+    /// A line of a recording is not an exchange.
+    #[error("{path} line {line}: not a recorded exchange: {reason}")]
+    BadRecord {
+        /// The file.
+        path: String,
+        /// The line, from 1.
+        line: usize,
+        /// Why.
+        reason: String,
+    },
+    /// A recording has no reply to this request.
+    #[error("{recording} has no recorded reply for this request (last user message: {user:?})")]
+    NotRecorded {
+        /// The file.
+        recording: String,
+        /// The request's last user message, cut to 120 characters.
+        user: String,
+    },
 }
 
-impl std::fmt::Display for LlmError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
+/// " (after N attempts)" for more than one.
+fn tries(attempts: u32) -> String {
+    if attempts > 1 {
+        format!(" (after {attempts} attempts)")
+    } else {
+        String::new()
     }
 }
-
-impl std::error::Error for LlmError {}
 
 /// A language model that answers chat messages.
 pub trait Backend: Send + Sync {

@@ -67,7 +67,8 @@ impl ClientOptions {
 
 /// Why one request failed, and whether another attempt may succeed.
 struct AttemptError {
-    error: LlmError,
+    /// What failed, one line.
+    reason: String,
     retry: bool,
     /// The wait the server asked for (`Retry-After`).
     retry_after: Option<Duration>,
@@ -76,9 +77,7 @@ struct AttemptError {
 impl AttemptError {
     fn new(message: impl Into<String>, retry: bool, retry_after: Option<Duration>) -> Self {
         Self {
-            error: LlmError {
-                message: message.into(),
-            },
+            reason: message.into(),
             retry,
             retry_after,
         }
@@ -283,16 +282,12 @@ impl Backend for OpenAiClient {
         let mut last = None;
         for attempt in 1..=self.options.max_attempts.max(1) {
             if !self.wait_for_pool(started) {
-                return Err(LlmError {
-                    message: format!(
-                        "the server asked every request to wait past the deadline of {:.0} s",
-                        self.options.deadline.as_secs_f64()
-                    ),
-                });
+                return Err(LlmError::Throttled(self.options.deadline));
             }
+            let key = self.options.api_key.as_deref();
             match self.attempt(&body) {
                 Ok((text, usage)) => {
-                    let text = super::redact(&text, self.options.api_key.as_deref());
+                    let text = super::redact(&text, key);
                     let usage = usage.unwrap_or_else(|| tokens::estimate(messages, &text));
                     return Ok(Completion {
                         text,
@@ -301,19 +296,14 @@ impl Backend for OpenAiClient {
                     });
                 }
                 Err(AttemptError {
-                    error,
+                    reason,
                     retry,
                     retry_after,
                 }) => {
                     if !retry || attempt == self.options.max_attempts {
-                        let tries = if attempt > 1 {
-                            format!(" (after {attempt} attempts)")
-                        } else {
-                            String::new()
-                        };
-                        let key = self.options.api_key.as_deref();
-                        return Err(LlmError {
-                            message: super::redact(&format!("{}{tries}", error.message), key),
+                        return Err(LlmError::Request {
+                            reason: super::redact(&reason, key),
+                            attempts: attempt,
                         });
                     }
                     let pause = retry_after.unwrap_or(wait);
@@ -329,30 +319,25 @@ impl Backend for OpenAiClient {
                         }
                     }
                     if started.elapsed() + pause > self.options.deadline {
-                        return Err(LlmError {
-                            message: super::redact(
-                                &format!(
-                                    "{} (gave up: waiting {:.0} s more would pass the deadline of {:.0} s)",
-                                    error.message,
-                                    pause.as_secs_f64(),
-                                    self.options.deadline.as_secs_f64()
-                                ),
-                                self.options.api_key.as_deref(),
-                            ),
+                        return Err(LlmError::GaveUp {
+                            reason: super::redact(&reason, key),
+                            wait: pause,
+                            deadline: self.options.deadline,
                         });
                     }
                     std::thread::sleep(pause);
                     wait *= 2;
-                    last = Some(error);
+                    last = Some(reason);
                 }
             }
         }
-        Err(last
-            .map(|e| LlmError {
-                message: super::redact(&e.message, self.options.api_key.as_deref()),
-            })
-            .unwrap_or(LlmError {
-                message: "no attempt was made".into(),
-            }))
+        // (Every last attempt returns above; this is what the loop would leave.)
+        Err(LlmError::Request {
+            reason: super::redact(
+                &last.unwrap_or_else(|| "no attempt was made".into()),
+                self.options.api_key.as_deref(),
+            ),
+            attempts: self.options.max_attempts,
+        })
     }
 }

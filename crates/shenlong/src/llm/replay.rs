@@ -20,8 +20,9 @@ impl Replay {
     /// Loads a recording (JSON lines written by `--record`).
     pub fn load(path: &Path) -> Result<Self, LlmError> {
         let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES).map_err(|e| {
-            LlmError {
-                message: format!("cannot read {}: {e}", path.display()),
+            LlmError::Unreadable {
+                path: path.display().to_string(),
+                reason: e.to_string(),
             }
         })?;
         let mut records = Vec::new();
@@ -30,12 +31,10 @@ impl Replay {
             .enumerate()
             .filter(|(_, l)| !l.trim().is_empty())
         {
-            let record: Record = serde_json::from_str(line).map_err(|e| LlmError {
-                message: format!(
-                    "{} line {}: not a recorded exchange: {e}",
-                    path.display(),
-                    n + 1
-                ),
+            let record: Record = serde_json::from_str(line).map_err(|e| LlmError::BadRecord {
+                path: path.display().to_string(),
+                line: n + 1,
+                reason: e.to_string(),
             })?;
             records.push(record);
         }
@@ -76,11 +75,9 @@ impl Backend for Replay {
                 .find(|m| m.role == "user")
                 .map_or("", |m| m.content.as_str());
             let user: String = user.chars().take(120).collect();
-            return Err(LlmError {
-                message: format!(
-                    "{} has no recorded reply for this request (last user message: {user:?})",
-                    self.source
-                ),
+            return Err(LlmError::NotRecorded {
+                recording: self.source.clone(),
+                user,
             });
         };
         used[i] = true;

@@ -201,7 +201,7 @@ pub fn translator(
             return Ok(Box::new(crate::offline::OfflineTranslator::new()));
         }
         Spec::Replay { file } => {
-            Box::new(Replay::load(file).map_err(|e| BackendError::Replay(e.message))?)
+            Box::new(Replay::load(file).map_err(|e| BackendError::Replay(e.to_string()))?)
         }
         #[cfg(feature = "models")]
         Spec::OpenAi { model } => Box::new(model_client(true, model, settings)?),

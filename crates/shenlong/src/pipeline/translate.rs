@@ -172,7 +172,7 @@ impl Translator for LlmTranslator {
                 .with_replies(replies));
             }
             let completion = self.backend.complete(&messages).map_err(|e| {
-                TranslateError::model(format!("{model}: {}", e.message)).with_replies(replies)
+                TranslateError::model(format!("{model}: {e}")).with_replies(replies)
             })?;
             self.record(&messages, &completion)?;
             let too_large = completion.text.len() > MAX_REPLY_BYTES;
