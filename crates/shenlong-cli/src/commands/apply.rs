@@ -67,41 +67,17 @@ pub fn run(args: Args) -> Result<()> {
             &options,
         )
     });
-    let outcome = match result {
-        Ok(outcome) => outcome,
-        Err(refusal) => {
-            if args.json.as_deref() == Some("-") {
-                eprintln!("{}", super::refusal_json(&refusal));
-            }
-            return Err(super::refusal(refusal, false).context(format!("--expr {}", args.expr)));
-        }
-    };
-    let json = serde_json::to_string_pretty(&outcome)
-        .map_err(|e| anyhow::anyhow!("cannot write the outcome: {e}"))?;
-    let json_file = super::JsonOut::prepare(args.json.as_deref(), &json)?;
-    let before = args
-        .tdw
-        .is_some()
-        .then(|| session.before_last_change())
-        .flatten();
-    super::write_edit(
-        &session.file,
-        before
-            .as_ref()
-            .or(args.tdw.is_some().then_some(&session.file.scene)),
+    let outcome = result.map_err(|e| {
+        super::refused(e, args.json.as_deref(), false).context(format!("--expr {}", args.expr))
+    })?;
+    super::finish(
+        &session,
+        &outcome,
+        args.json.as_deref(),
         super::Output {
             path: args.output.as_deref(),
             usd_layer: false,
         },
         args.tdw.as_deref(),
-    )?;
-    if let Some(json_file) = json_file {
-        json_file.commit()?;
-    }
-    match args.json.as_deref() {
-        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&json)),
-        Some(_) => {}
-        None => super::notes(&outcome.notes),
-    }
-    Ok(())
+    )
 }

@@ -75,44 +75,18 @@ pub fn run(args: Args) -> Result<()> {
         selected: &args.selected,
         report: true,
     };
-    let outcome = match session.edit(&request, translator.as_ref(), &options) {
-        Ok(outcome) => outcome,
-        Err(refusal) => {
-            if args.json.as_deref() == Some("-") {
-                eprintln!("{}", super::refusal_json(&refusal));
-            }
-            let offline = args.translator.llm == shenlong::pipeline::backends::Spec::Offline;
-            return Err(super::refusal(refusal, offline));
-        }
-    };
-    let json = serde_json::to_string_pretty(&outcome)
-        .map_err(|e| anyhow::anyhow!("cannot write the edit's outcome: {e}"))?;
-
-    let json_file = super::JsonOut::prepare(args.json.as_deref(), &json)?;
-    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise.
-    let before = args
-        .tdw
-        .is_some()
-        .then(|| session.before_last_change())
-        .flatten();
-    super::write_edit(
-        &session.file,
-        before
-            .as_ref()
-            .or(args.tdw.is_some().then_some(&session.file.scene)),
+    let offline = args.translator.llm == shenlong::pipeline::backends::Spec::Offline;
+    let outcome = session
+        .edit(&request, translator.as_ref(), &options)
+        .map_err(|e| super::refused(e, args.json.as_deref(), offline))?;
+    super::finish(
+        &session,
+        &outcome,
+        args.json.as_deref(),
         super::Output {
             path: args.output.as_deref(),
             usd_layer: args.usd_layer,
         },
         args.tdw.as_deref(),
-    )?;
-    if let Some(json_file) = json_file {
-        json_file.commit()?;
-    }
-    match args.json.as_deref() {
-        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&json)),
-        Some(_) => {}
-        None => super::notes(&outcome.notes),
-    }
-    Ok(())
+    )
 }

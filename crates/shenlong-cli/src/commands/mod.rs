@@ -332,10 +332,51 @@ impl JsonOut {
     }
 }
 
-/// A refusal as JSON on one line, as the HTTP API and MCP answer it.
-pub fn refusal_json(refusal: &shenlong::session::OpError) -> String {
-    shenlong_cli::terminal::safe_json(&serde_json::to_string(refusal).unwrap_or_default())
-        .into_owned()
+/// The tail every editing command shares once its operation answered: the outcome as
+/// JSON for `--json` (a file made ready before the scene and written after it, or stderr
+/// for `-`), the edited scene to `output` (with the ThreeDWorld commands of the change for
+/// `tdw`), and without `--json` the notes on stderr.
+pub fn finish(
+    session: &shenlong::session::Session,
+    outcome: &shenlong::session::Outcome,
+    json: Option<&str>,
+    output: Output<'_>,
+    tdw: Option<&Path>,
+) -> Result<()> {
+    let text = serde_json::to_string_pretty(outcome)
+        .map_err(|e| anyhow::anyhow!("cannot write the outcome: {e}"))?;
+    let json_file = JsonOut::prepare(json, &text)?;
+    // The scene as it was, for the ThreeDWorld commands only: no copy otherwise (and the
+    // scene itself when nothing changed).
+    let before = tdw.and_then(|_| session.before_last_change());
+    let before = before
+        .as_ref()
+        .or(tdw.is_some().then_some(&session.file.scene));
+    write_edit(&session.file, before, output, tdw)?;
+    if let Some(json_file) = json_file {
+        json_file.commit()?;
+    }
+    match json {
+        Some("-") => eprintln!("{}", shenlong_cli::terminal::safe_json(&text)),
+        Some(_) => {}
+        None => notes(&outcome.notes),
+    }
+    Ok(())
+}
+
+/// A refused operation, said by the command line: with `--json -`, the refusal's JSON on
+/// one line of stderr first, as the HTTP API and MCP answer it; then the error to print
+/// ([`refusal`]).
+pub fn refused(
+    refusal_: shenlong::session::OpError,
+    json: Option<&str>,
+    offline: bool,
+) -> anyhow::Error {
+    if json == Some("-") {
+        let line = serde_json::to_string(&refusal_).unwrap_or_default();
+        eprintln!("{}", shenlong_cli::terminal::safe_json(&line));
+    }
+    refusal(refusal_, offline)
 }
 
 /// A translator that cannot be made, in the command line's terms: the flag that would
