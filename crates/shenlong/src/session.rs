@@ -122,9 +122,10 @@ pub struct Session {
     /// The scene's name index, built on the first edit: edits move objects, never rename
     /// them.
     grounder: OnceLock<Arc<Grounder>>,
-    /// The objects the latest change (a commit, an undo, a redo) changed, as they were
-    /// before it: what [`Session::before_last_change`] shows.
-    last_before: Option<Vec<(usize, Object)>>,
+    /// Which way the latest change went: `Some(false)` for a commit or a redo (its step on
+    /// top of the undo stack), `Some(true)` for an undo (on top of the redo stack); `None`
+    /// before any.
+    latest_undone: Option<bool>,
 }
 
 impl Session {
@@ -140,7 +141,7 @@ impl Session {
             autosave: true,
             history_budget: MAX_HISTORY_BYTES,
             grounder: OnceLock::new(),
-            last_before: None,
+            latest_undone: None,
         }
     }
 
@@ -198,7 +199,7 @@ impl Session {
             .collect();
         let id = self.next_id;
         self.next_id += 1;
-        self.last_before = Some(changes.iter().map(|(i, a, _)| (*i, a.clone())).collect());
+        self.latest_undone = Some(false);
         self.undo.push(Step { id, changes });
         // Keep the history within its budget, dropping the oldest steps.
         let mut total: usize = self.undo.iter().map(Step::bytes).sum();
@@ -238,12 +239,7 @@ impl Session {
         let Some(step) = popped else {
             return Err(StepError::Nothing);
         };
-        self.last_before = Some(
-            step.changes
-                .iter()
-                .map(|(i, _, _)| (*i, self.file.scene.objects[*i].clone()))
-                .collect(),
-        );
+        self.latest_undone = Some(undo);
         step.apply(&mut self.file.scene, undo);
         let id = step.id;
         if undo {
@@ -278,12 +274,30 @@ impl Session {
     /// redo), made when asked; `None` before any change.
     #[must_use]
     pub fn before_last_change(&self) -> Option<Scene> {
-        let before = self.last_before.as_ref()?;
         let mut scene = self.file.scene.clone();
-        for (i, object) in before {
-            scene.objects[*i] = object.clone();
+        for (i, from, _) in self.latest_changes()? {
+            scene.objects[i] = from.clone();
         }
         Some(scene)
+    }
+
+    /// The objects the latest change (a commit, an undo, a redo) changed, each as it was
+    /// before the change and as the change left it: read off the step on top of the stack
+    /// it went to.
+    fn latest_changes(&self) -> Option<impl Iterator<Item = (usize, &Object, &Object)>> {
+        let undone = self.latest_undone?;
+        let step = if undone {
+            self.redo.last()
+        } else {
+            self.undo.last()
+        }?;
+        Some(step.changes.iter().map(move |(i, before, after)| {
+            if undone {
+                (*i, after, before)
+            } else {
+                (*i, before, after)
+            }
+        }))
     }
 
     /// The file the session saves to.
@@ -318,17 +332,16 @@ impl Session {
         let change = self
             .step(undo)
             .map_err(|StepError::Nothing| OpError::new(kind, format!("nothing to {verb}")))?;
-        let scene = &self.file.scene;
         let moved = self
-            .last_before
-            .iter()
+            .latest_changes()
+            .into_iter()
             .flatten()
-            .filter(|(i, a)| a.pose_differs(&scene.objects[*i]))
-            .map(|(i, a)| Moved {
-                object: a.name.clone(),
+            .filter(|(_, from, to)| from.pose_differs(to))
+            .map(|(_, from, to)| Moved {
+                object: to.name.clone(),
                 how: How::Moved,
-                before: Pose::of(a),
-                after: Pose::of(&scene.objects[*i]),
+                before: Pose::of(from),
+                after: Pose::of(to),
             })
             .collect();
         Ok(Outcome {
