@@ -367,16 +367,16 @@ impl ShenlongMcp {
         &self,
         Parameters(request): Parameters<RenderRequest>,
     ) -> Result<CallToolResult, ToolError> {
-        let (scene, previous) = {
+        // The plan is drawn from the session's scene as it is, with no copy of it; only
+        // the picture is made off the async workers.
+        let svg = {
             let session = self.session();
-            let previous = if request.before {
-                session.before_last_change()
-            } else {
-                None
-            };
-            (session.file.scene.clone(), previous)
+            let previous = request
+                .before
+                .then(|| session.before_last_change())
+                .flatten();
+            shenlong::render::plan_svg(&session.file.scene, previous.as_ref())
         };
-        let svg = shenlong::render::plan_svg(&scene, previous.as_ref());
         let png = tokio::task::spawn_blocking(move || shenlong::render::svg_to_png(&svg))
             .await
             .map_err(|e| format!("the render stopped: {e}"))?
