@@ -797,19 +797,6 @@ impl Reader<'_> {
         }
         // A relation to another object.
         if let Some(r) = find_relation(c) {
-            if r.inside(c) {
-                let known = self.facts.known;
-                let subjects = self.required_subjects(c, text)?;
-                return Err(ReadError::Inside {
-                    object: subjects
-                        .iter()
-                        .filter(|&&s| s != r.target())
-                        .map(|&s| known.label(s))
-                        .collect::<Vec<_>>()
-                        .join(" and "),
-                    container: known.label(r.target()),
-                });
-            }
             return self.relate(c, r, text);
         }
         let subjects = self.required_subjects(c, text)?;

@@ -28,6 +28,9 @@ pub(super) enum RelKind {
     /// thing that goes on it ("the lamp to the right end of its table"), else beside that
     /// face ("chair 6 to the left end of the table").
     End(usize, f64),
+    /// In, into or inside the target: refused ([`ReadError::Inside`]), since every object
+    /// is a solid box here and the nearest free place would be beside it.
+    Inside,
 }
 
 /// A relation phrase found in a clause.
@@ -40,19 +43,6 @@ pub(super) struct Found {
     targets: Vec<(usize, usize)>,
     /// A word after the target that is part of the phrase (`place` in `at X2's place`).
     trailing: Option<usize>,
-}
-
-impl Found {
-    /// Whether it puts its subjects in, into or inside its target (not "in front of").
-    pub(super) fn inside(&self, c: &Clause) -> bool {
-        self.kind == RelKind::Fixed(Relation::To)
-            && matches!(c.word(self.range.start), Some("in" | "into" | "inside"))
-    }
-
-    /// Its first target's variable.
-    pub(super) fn target(&self) -> usize {
-        self.targets[0].1
-    }
 }
 
 /// The relation markers, longest first.
@@ -191,9 +181,9 @@ const MARKERS: &[(&[&str], RelKind)] = &[
     (&["nearer"], RelKind::Closer),
     (&["toward"], RelKind::Closer),
     (&["towards"], RelKind::Closer),
-    (&["into"], RelKind::Fixed(Relation::To)),
-    (&["inside"], RelKind::Fixed(Relation::To)),
-    (&["in"], RelKind::Fixed(Relation::To)),
+    (&["into"], RelKind::Inside),
+    (&["inside"], RelKind::Inside),
+    (&["in"], RelKind::Inside),
     (&["to"], RelKind::Fixed(Relation::To)),
     (&["upto"], RelKind::Fixed(Relation::UpTo)),
     (&["at"], RelKind::Fixed(Relation::To)),
@@ -433,6 +423,12 @@ impl Reader<'_> {
             .find(|(w, _)| c.words_at_any(r.start, w))
             .map(|(_, k)| *k);
         let relation = match kind {
+            Some(RelKind::Inside) => {
+                return Err(match targets.first() {
+                    Some(&target) => self.inside(&subjects, target),
+                    None => not_read(text, text),
+                })
+            }
             Some(RelKind::Fixed(rel)) => rel,
             // ("at the left end of it": beside that face.)
             Some(RelKind::End(e, sign)) => Relation::Side(e, sign),
@@ -440,6 +436,19 @@ impl Reader<'_> {
             Some(RelKind::Closer) | None => Relation::Closer(None),
         };
         self.each(&subjects, relation, targets, text)
+    }
+
+    /// The refusal of putting `subjects` in, into or inside `container`.
+    fn inside(&self, subjects: &[usize], container: usize) -> ReadError {
+        let known = self.facts.known;
+        ReadError::Inside {
+            object: subjects
+                .iter()
+                .map(|&s| known.label(s))
+                .collect::<Vec<_>>()
+                .join(" and "),
+            container: known.label(container),
+        }
     }
 
     /// The subjects (the variables before the phrase) moved into the relation `r` names.
@@ -540,6 +549,7 @@ impl Reader<'_> {
         targets: &[usize],
     ) -> Result<Relation, ReadError> {
         let relation = match r.kind {
+            RelKind::Inside => return Err(self.inside(subjects, targets[0])),
             // "slide X1 right until it touches X2", "push X1 left against X2": along
             // that direction, when X2 lies straight that way.
             RelKind::Fixed(Relation::Against) => match self.direction_before(c, r.range.start) {
