@@ -9,7 +9,7 @@ pub(super) fn on_top(
     c: &Ctx<'_>,
     object: &ObjectRef,
     support: &ObjectRef,
-    tol: &f64,
+    tol: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(support)?);
     let (a, b) = (c.b1(i), c.b1(j));
@@ -18,7 +18,7 @@ pub(super) fn on_top(
         && centre.x <= b.max.x + 0.01
         && centre.z >= b.min.z - 0.01
         && centre.z <= b.max.z + 0.01;
-    if (a.min.y - b.max.y).abs() > *tol || !over {
+    if (a.min.y - b.max.y).abs() > tol || !over {
         return Err(Failure(format!(
             "'{}' (bottom {:.3}, centre {}) is not on top of '{}' (top {:.3}, {} to {})",
             c.name(i),
@@ -38,7 +38,7 @@ pub(super) fn next_to(
     c: &Ctx<'_>,
     object: &ObjectRef,
     other: &ObjectRef,
-    max_gap: &f64,
+    max_gap: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let (a, b) = (c.b1(i), c.b1(j));
@@ -46,7 +46,7 @@ pub(super) fn next_to(
     let gap = (-o.x).max(0.0).hypot((-o.z).max(0.0));
     let inside = o.x > 0.02 && o.z > 0.02 && o.y > 0.02;
     let level = o.y > -0.05;
-    if inside || gap > *max_gap || !level {
+    if inside || gap > max_gap || !level {
         return Err(Failure(format!(
             "'{}' is not next to '{}': gap {:.3} m{}{}",
             c.name(i),
@@ -64,26 +64,26 @@ pub(super) fn side(
     c: &Ctx<'_>,
     object: &ObjectRef,
     other: &ObjectRef,
-    (axis, sign): (&usize, &f64),
-    max_gap: &f64,
+    (axis, sign): (usize, f64),
+    max_gap: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let (a, b) = (c.b1(i), c.b1(j));
-    let gap = if *sign > 0.0 {
-        a.min[*axis] - b.max[*axis]
+    let gap = if sign > 0.0 {
+        a.min[axis] - b.max[axis]
     } else {
-        b.min[*axis] - a.max[*axis]
+        b.min[axis] - a.max[axis]
     };
     let across = 2 - axis;
     let overlapping_across =
         a.max[across] > b.min[across] - 0.05 && a.min[across] < b.max[across] + 0.05;
-    if gap < -0.02 || gap > *max_gap || !overlapping_across {
+    if gap < -0.02 || gap > max_gap || !overlapping_across {
         return Err(Failure(format!(
             "'{}' is not on that side of '{}': gap {:.3} m along {}, {}",
             c.name(i),
             c.name(j),
             gap,
-            ["x", "y", "z"][*axis],
+            ["x", "y", "z"][axis],
             if overlapping_across {
                 "facing it"
             } else {
@@ -99,16 +99,17 @@ pub(super) fn above(
     c: &Ctx<'_>,
     object: &ObjectRef,
     other: &ObjectRef,
-    tol: &f64,
+    tol: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
-    if c.b1(i).min.y < c.b1(j).max.y - tol {
+    let (a, b) = (c.b1(i), c.b1(j));
+    if a.min.y < b.max.y - tol {
         return Err(Failure(format!(
             "'{}' (bottom {:.3}) is not above '{}' (top {:.3})",
             c.name(i),
-            c.b1(i).min.y,
+            a.min.y,
             c.name(j),
-            c.b1(j).max.y
+            b.max.y
         )));
     }
     Ok(())
@@ -119,18 +120,17 @@ pub(super) fn below(
     c: &Ctx<'_>,
     object: &ObjectRef,
     other: &ObjectRef,
-    tol: &f64,
+    tol: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
-    if c.b1(i).max.y > c.b1(j).min.y + tol
-        && !(c.b1(i).center().y < c.b1(j).center().y && overlap_xz(&c.b1(i), &c.b1(j)))
-    {
+    let (a, b) = (c.b1(i), c.b1(j));
+    if a.max.y > b.min.y + tol && !(a.center().y < b.center().y && overlap_xz(&a, &b)) {
         return Err(Failure(format!(
             "'{}' (top {:.3}) is not below '{}' (bottom {:.3})",
             c.name(i),
-            c.b1(i).max.y,
+            a.max.y,
             c.name(j),
-            c.b1(j).min.y
+            b.min.y
         )));
     }
     Ok(())
@@ -142,7 +142,7 @@ pub(super) fn between(
     object: &ObjectRef,
     a: &ObjectRef,
     b: &ObjectRef,
-    tol: &f64,
+    tol: f64,
 ) -> Result<(), Failure> {
     let (i, ja, jb) = (c.find(object)?, c.find(a)?, c.find(b)?);
     let flat = |v: DVec3| glam::DVec2::new(v.x, v.z);
@@ -158,7 +158,7 @@ pub(super) fn between(
         0.0
     };
     let off = (p - (pa + seg * t.clamp(0.0, 1.0))).length();
-    if !(-0.05..=1.05).contains(&t) || off > *tol {
+    if !(-0.05..=1.05).contains(&t) || off > tol {
         return Err(Failure(format!(
             "'{}' is not between '{}' and '{}' (at {:.2} along, {:.3} m off the line)",
             c.name(i),
@@ -176,18 +176,18 @@ pub(super) fn aligned(
     c: &Ctx<'_>,
     object: &ObjectRef,
     other: &ObjectRef,
-    axis: &usize,
-    tol: &f64,
+    axis: usize,
+    tol: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
-    let d = c.b1(i).center()[*axis] - c.b1(j).center()[*axis];
-    if d.abs() > *tol {
+    let d = c.b1(i).center()[axis] - c.b1(j).center()[axis];
+    if d.abs() > tol {
         return Err(Failure(format!(
             "'{}' and '{}' are {:.3} m apart along {}",
             c.name(i),
             c.name(j),
             d.abs(),
-            ["x", "y", "z"][*axis]
+            ["x", "y", "z"][axis]
         )));
     }
     Ok(())
@@ -198,7 +198,7 @@ pub(super) fn faces(
     c: &Ctx<'_>,
     object: &ObjectRef,
     target: &ObjectRef,
-    tol: &f64,
+    tol: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(target)?);
     let forward = c.after.objects[i].world_front();
@@ -215,7 +215,7 @@ pub(super) fn faces(
         )));
     }
     let angle = f2.angle_to(t2).to_degrees().abs();
-    if angle > *tol {
+    if angle > tol {
         return Err(Failure(format!(
             "'{}' faces {:.0}° away from '{}'",
             c.name(i),
@@ -231,12 +231,12 @@ pub(super) fn distance(
     c: &Ctx<'_>,
     object: &ObjectRef,
     other: &ObjectRef,
-    min: &f64,
-    max: &f64,
+    min: f64,
+    max: f64,
 ) -> Result<(), Failure> {
     let (i, j) = (c.find(object)?, c.find(other)?);
     let d = (c.b1(i).center() - c.b1(j).center()).length();
-    if d < *min || d > *max {
+    if d < min || d > max {
         return Err(Failure(format!(
             "'{}' is {:.3} m from '{}' (wanted {min} to {max})",
             c.name(i),
