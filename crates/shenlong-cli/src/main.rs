@@ -76,10 +76,25 @@ fn main() -> ExitCode {
     match result {
         Ok(()) => ExitCode::SUCCESS,
         Err(error) => {
-            // One line: the chain of causes joined, newlines folded.
-            let message = format!("{error:#}").replace('\n', " ");
-            shenlong_cli::say!("shenlong: {message}");
+            shenlong_cli::say!("shenlong: {}", one_line(&error));
             ExitCode::FAILURE
         }
     }
+}
+
+/// The error and its causes in one line, each said once: the library's errors say their
+/// cause in their own message (for callers that print only that) and keep it as their
+/// source too, so a cause already said is not repeated.
+fn one_line(error: &anyhow::Error) -> String {
+    let mut line = String::new();
+    for cause in error.chain() {
+        let text = cause.to_string();
+        if !line.contains(&text) {
+            if !line.is_empty() {
+                line.push_str(": ");
+            }
+            line.push_str(&text);
+        }
+    }
+    line.replace('\n', " ")
 }

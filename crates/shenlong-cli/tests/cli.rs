@@ -180,6 +180,14 @@ fn bad_scene_files_fail_with_the_field_named() {
         dir.path().join("k.obj").to_str().unwrap(),
     ]);
     assert_fails_cleanly(&o, "unknown scene format '.obj'");
+    // A file that is not there: said once, with the system's reason once.
+    let missing = dir.path().join("missing.json");
+    let o = shenlong(&["edit", missing.to_str().unwrap(), "move X1 left"]);
+    assert_fails_cleanly(&o, "cannot read");
+    let err = stderr(&o);
+    assert_eq!(err.matches("cannot read").count(), 1, "{err}");
+    assert_eq!(err.matches("missing.json").count(), 1, "{err}");
+    assert_eq!(err.matches("No such file").count(), 1, "{err}");
 }
 
 #[test]

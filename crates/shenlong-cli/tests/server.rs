@@ -694,10 +694,10 @@ fn a_scene_nested_too_deep_never_stops_the_server() {
     std::fs::write(&deep, support::nested_scene_json(200)).unwrap();
     match shenlong::format::SceneFile::load(&deep) {
         Err(e) => assert!(
-            e.message
+            e.to_string()
                 .ends_with("deep.json: nesting deeper than 100 levels at line 2, column 166"),
             "{}",
-            e.message
+            e.to_string()
         ),
         Ok(file) => {
             let (_runtime, address) = serve_over_loopback(file);

@@ -111,10 +111,13 @@ fn a_known_house_in_detail() {
     assert!(scene.carried_by(fridge).contains(&apple));
     // Houses are not scene files: a clear hint.
     let e = SceneFile::load(&dir.join("houses.jsonl")).unwrap_err();
-    assert!(e.message.contains("unknown scene format '.jsonl'"), "{e}");
+    assert!(
+        e.to_string().contains("unknown scene format '.jsonl'"),
+        "{e}"
+    );
     let e = SceneFile::load_house(&dir.join("houses.jsonl"), 30, &assets).unwrap_err();
     assert!(
-        e.message
+        e.to_string()
             .contains("holds 30 houses; house 30 is out of range"),
         "{e}"
     );

@@ -356,7 +356,7 @@ fn scene_json(inner: &Inner) -> Result<Value, ApiError> {
         .session
         .file
         .to_bytes(Format::SceneJson)
-        .map_err(|e| cannot(e.message))?;
+        .map_err(|e| cannot(e.to_string()))?;
     let mut value: Value = serde_json::from_slice(&bytes).map_err(|e| cannot(e.to_string()))?;
     let supports: Vec<Value> = inner
         .session
@@ -710,7 +710,7 @@ async fn export(
         .session
         .file
         .to_bytes(format)
-        .map_err(|e| OpError::new(ErrorKind::Export, e.message))?;
+        .map_err(|e| OpError::new(ErrorKind::Export, e.to_string()))?;
     let filename = format!(
         "{}.{extension}",
         inner

@@ -2,7 +2,7 @@
 //! fixed table of blades, constants and functions, and every step is counted.
 
 use super::ast::{BinaryOp, Expr, ExprKind, UnaryOp};
-use super::error::ExprError;
+use super::error::{ExprError, ExprErrorKind};
 use super::{Bindings, Limits};
 use cga::{CgaError, Multivector};
 use glam::DVec3;
@@ -167,15 +167,17 @@ impl<'a> Evaluator<'a> {
     }
 
     fn error(&self, message: impl Into<String>, expr: &Expr) -> ExprError {
-        ExprError::at(message, &expr.span, self.source)
+        ExprError::at(ExprErrorKind::Meaning, message, &expr.span, self.source)
     }
 
     fn value(&mut self, expr: &Expr) -> Result<Value, ExprError> {
         self.steps += 1;
         if self.steps > self.limits.max_steps {
-            return Err(self.error(
+            return Err(ExprError::at(
+                ExprErrorKind::Limit,
                 format!("evaluation takes more than {} steps", self.limits.max_steps),
-                expr,
+                &expr.span,
+                self.source,
             ));
         }
         match &expr.kind {

@@ -1,6 +1,6 @@
 //! Tokens of the expression language.
 
-use super::error::{ExprError, Span};
+use super::error::{ExprError, ExprErrorKind, Span};
 
 /// One token and where it is.
 #[derive(Clone, Debug, PartialEq)]
@@ -153,6 +153,7 @@ pub fn tokenize(source: &str) -> Result<Vec<Token>, ExprError> {
                     _ => "",
                 };
                 return Err(ExprError::at(
+                    ExprErrorKind::Syntax,
                     format!("unexpected character '{ch}'{hint}"),
                     &(start..start + ch.len_utf8()),
                     source,
@@ -190,6 +191,7 @@ fn number(source: &str, start: usize) -> Result<(f64, usize), ExprError> {
         let exp_end = digits(exp);
         if exp_end == exp {
             return Err(ExprError::at(
+                ExprErrorKind::Syntax,
                 "malformed number: the exponent needs digits",
                 &(start..exp_end),
                 source,
@@ -198,11 +200,17 @@ fn number(source: &str, start: usize) -> Result<(f64, usize), ExprError> {
         end = exp_end;
     }
     let text = &source[start..end];
-    let value: f64 = text
-        .parse()
-        .map_err(|_| ExprError::at(format!("malformed number '{text}'"), &(start..end), source))?;
+    let value: f64 = text.parse().map_err(|_| {
+        ExprError::at(
+            ExprErrorKind::Syntax,
+            format!("malformed number '{text}'"),
+            &(start..end),
+            source,
+        )
+    })?;
     if !value.is_finite() {
         return Err(ExprError::at(
+            ExprErrorKind::Syntax,
             format!("number '{text}' is too large"),
             &(start..end),
             source,
@@ -210,6 +218,7 @@ fn number(source: &str, start: usize) -> Result<(f64, usize), ExprError> {
     }
     if end < bytes.len() && (bytes[end].is_ascii_alphabetic() || bytes[end] == b'_') {
         return Err(ExprError::at(
+            ExprErrorKind::Syntax,
             format!(
                 "a number runs into a name: write '{text} * {}' with an explicit *",
                 &source[end..]

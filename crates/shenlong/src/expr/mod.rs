@@ -15,7 +15,7 @@ mod parser;
 pub mod reply;
 
 pub use ast::{BinaryOp, Expr, ExprKind, UnaryOp};
-pub use error::{ExprError, Span};
+pub use error::{ExprError, ExprErrorKind, Span};
 pub use eval::Dialect;
 
 use cga::{Multivector, Similarity};
@@ -187,6 +187,7 @@ pub fn compose<S: AsRef<str>>(
 ) -> Result<Transformation, ExprError> {
     if sources.is_empty() {
         return Err(ExprError::whole(
+            ExprErrorKind::Reply,
             "the list of expressions is empty: give at least one transformation",
         ));
     }
@@ -194,10 +195,7 @@ pub fn compose<S: AsRef<str>>(
     for (i, source) in sources.iter().enumerate() {
         let item = evaluate_transformation(source.as_ref(), bindings).map_err(|e| {
             if sources.len() > 1 {
-                ExprError {
-                    message: format!("item {} of the list: {}", i + 1, e.message),
-                    column: e.column,
-                }
+                e.within(&format!("item {} of the list", i + 1))
             } else {
                 e
             }
@@ -213,16 +211,18 @@ pub fn to_transformation(m: &Multivector) -> Result<Transformation, ExprError> {
     let grades = m.grades_present(tolerance);
     if grades == 0b10 {
         return Err(ExprError::whole(
+            ExprErrorKind::NotATransformation,
             "result is a vector, not a transformation: wrap a translation vector in T(...)",
         ));
     }
     if grades == 0 {
         return Err(ExprError::whole(
+            ExprErrorKind::NotATransformation,
             "result is zero, not a transformation: a transformation such as T(1 * e1) is never zero",
         ));
     }
     let similarity = Similarity::from_versor(m).map_err(|e| {
-        ExprError::whole(match e {
+        ExprError::whole(ExprErrorKind::NotATransformation, match e {
             cga::CgaError::NotSimilarity(why) => format!(
                 "result is not a transformation of the form T·R·D (translation, rotation, uniform scale): {why}"
             ),
@@ -231,7 +231,7 @@ pub fn to_transformation(m: &Multivector) -> Result<Transformation, ExprError> {
     })?;
     let versor = similarity
         .to_versor()
-        .map_err(|e| ExprError::whole(e.to_string()))?;
+        .map_err(|e| ExprError::whole(ExprErrorKind::NotATransformation, e.to_string()))?;
     Ok(Transformation { versor, similarity })
 }
 

@@ -4,21 +4,25 @@
 //! `-(x**2)`).
 
 use super::ast::{BinaryOp, Expr, ExprKind, UnaryOp};
-use super::error::ExprError;
+use super::error::{ExprError, ExprErrorKind};
 use super::lexer::{tokenize, Token, TokenKind};
 use super::Limits;
 
 /// Parses one expression.
 pub fn parse(source: &str, limits: &Limits) -> Result<Expr, ExprError> {
     if source.len() > limits.max_length {
-        return Err(ExprError::whole(format!(
-            "the expression is {} characters long; the limit is {}",
-            source.len(),
-            limits.max_length
-        )));
+        return Err(ExprError::whole(
+            ExprErrorKind::Limit,
+            format!(
+                "the expression is {} characters long; the limit is {}",
+                source.len(),
+                limits.max_length
+            ),
+        ));
     }
     if source.trim().is_empty() {
         return Err(ExprError::whole(
+            ExprErrorKind::Syntax,
             "the expression is empty: write a transformation such as T(1 * e1)",
         ));
     }
@@ -85,13 +89,19 @@ impl Parser<'_> {
     }
 
     fn error_at_current(&self, message: String) -> ExprError {
-        ExprError::at(message, &self.peek().span, self.source)
+        ExprError::at(
+            ExprErrorKind::Syntax,
+            message,
+            &self.peek().span,
+            self.source,
+        )
     }
 
     fn node(&mut self, kind: ExprKind, span: std::ops::Range<usize>) -> Result<Expr, ExprError> {
         self.nodes += 1;
         if self.nodes > self.limits.max_nodes {
             return Err(ExprError::at(
+                ExprErrorKind::Limit,
                 format!(
                     "the expression is too large (more than {} parts); write a shorter one",
                     self.limits.max_nodes
@@ -164,6 +174,7 @@ impl Parser<'_> {
                     let close = self.peek().clone();
                     if close.kind != TokenKind::RBracket {
                         return Err(ExprError::at(
+                            ExprErrorKind::Syntax,
                             format!("expected ']' but found {}", close.kind.describe()),
                             &close.span,
                             self.source,
@@ -179,6 +190,7 @@ impl Parser<'_> {
                     let name_token = self.advance();
                     let TokenKind::Name(name) = name_token.kind else {
                         return Err(ExprError::at(
+                            ExprErrorKind::Syntax,
                             format!(
                                 "expected a name after '.', found {}",
                                 name_token.kind.describe()
@@ -220,6 +232,7 @@ impl Parser<'_> {
             return Ok(token.span.end);
         }
         Err(ExprError::at(
+            ExprErrorKind::Syntax,
             format!("expected ')' but found {}", token.kind.describe()),
             &token.span,
             self.source,
@@ -243,6 +256,7 @@ impl Parser<'_> {
                 })
             }
             other => Err(ExprError::at(
+                ExprErrorKind::Syntax,
                 format!("expected a value but found {}", other.describe()),
                 &token.span,
                 self.source,

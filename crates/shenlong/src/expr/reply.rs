@@ -5,7 +5,7 @@
 //! [`parse_relaxed_objects`] reads every object in the text leniently;
 //! [`extract_cga_reply`] takes the last one that names variables (`X1`, `X2`, …).
 
-use super::error::ExprError;
+use super::error::{ExprError, ExprErrorKind};
 use serde_json::{Map, Value};
 
 /// Longest reply that is searched, in bytes; the rest is ignored.
@@ -54,7 +54,7 @@ pub fn parse_relaxed_objects(text: &str) -> Vec<(usize, Map<String, Value>)> {
 pub fn extract_cga_reply(text: &str) -> Result<Vec<ReplyEntry>, ExprError> {
     let objects = parse_relaxed_objects(text);
     if objects.is_empty() {
-        return Err(ExprError::whole(
+        return Err(ExprError::whole(ExprErrorKind::Reply,
             "no JSON object found in the reply: answer with one JSON object that maps each variable to an expression, such as {\"X1\": \"T(1 * e1)\"}",
         ));
     }
@@ -63,7 +63,7 @@ pub fn extract_cga_reply(text: &str) -> Result<Vec<ReplyEntry>, ExprError> {
         .rev()
         .find(|(_, map)| map.keys().any(|k| variable_name(k).is_some()));
     let Some((_, map)) = chosen else {
-        return Err(ExprError::whole(
+        return Err(ExprError::whole(ExprErrorKind::Reply,
             "the JSON object in the reply names no variables: its keys must be the variables X1, X2, … such as {\"X1\": \"T(1 * e1)\"}",
         ));
     };
@@ -78,21 +78,22 @@ pub fn extract_cga_reply(text: &str) -> Result<Vec<ReplyEntry>, ExprError> {
                 .iter()
                 .map(|item| match item {
                     Value::String(s) => Ok(s.clone()),
-                    other => Err(ExprError::whole(format!(
+                    other => Err(ExprError::whole(ExprErrorKind::Reply, format!(
                         "the list for {variable} must hold expression strings, found {other}"
                     ))),
                 })
                 .collect::<Result<_, _>>()?,
             other => {
-                return Err(ExprError::whole(format!(
+                return Err(ExprError::whole(ExprErrorKind::Reply, format!(
                     "the value for {variable} must be an expression string or a list of them, found {other}"
                 )))
             }
         };
         if entries.iter().any(|e: &ReplyEntry| e.variable == variable) {
-            return Err(ExprError::whole(format!(
-                "the reply names {variable} twice: give one entry per variable"
-            )));
+            return Err(ExprError::whole(
+                ExprErrorKind::Reply,
+                format!("the reply names {variable} twice: give one entry per variable"),
+            ));
         }
         entries.push(ReplyEntry {
             variable,

@@ -520,3 +520,30 @@ fn front_is_the_world_direction_an_object_faces() {
     let turned = t.similarity.rotation * glam::DVec3::Z;
     assert!((turned - glam::DVec3::NEG_X).length() < 1e-12, "{turned}");
 }
+
+#[test]
+fn errors_say_their_kind() {
+    let kind = |source: &str| {
+        evaluate_transformation(source, &two_objects())
+            .err()
+            .map(|e| e.kind)
+    };
+    assert_eq!(kind("T(1 * e1"), Some(ExprErrorKind::Syntax));
+    assert_eq!(kind("T(1 $ e1)"), Some(ExprErrorKind::Syntax));
+    assert_eq!(kind("T(1 * e9)"), Some(ExprErrorKind::Meaning));
+    assert_eq!(kind("T(1 / 0 * e1)"), Some(ExprErrorKind::Meaning));
+    assert_eq!(kind("e1"), Some(ExprErrorKind::NotATransformation));
+    assert_eq!(
+        kind("0 * T(1 * e1)"),
+        Some(ExprErrorKind::NotATransformation)
+    );
+    let long = format!("T({} e1)", "1 + ".repeat(100_000));
+    assert_eq!(kind(&long), Some(ExprErrorKind::Limit));
+    let reply = reply::extract_cga_reply("I would move it left.").unwrap_err();
+    assert_eq!(reply.kind, ExprErrorKind::Reply);
+    // The context a list or a reply adds keeps the kind and the column.
+    let e = evaluate_transformation("T(1 * e9)", &two_objects()).unwrap_err();
+    let within = e.clone().within("X1");
+    assert_eq!((within.kind, within.column), (e.kind, e.column));
+    assert!(within.message.starts_with("X1: "), "{}", within.message);
+}

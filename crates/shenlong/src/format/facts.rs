@@ -62,6 +62,18 @@ impl Units {
         }
     }
 
+    /// The name in words (`millimetres`).
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Units::Millimetres => "millimetres",
+            Units::Centimetres => "centimetres",
+            Units::Metres => "metres",
+            Units::Inches => "inches",
+            Units::Feet => "feet",
+        }
+    }
+
     /// The short name (`mm`).
     #[must_use]
     pub fn short(self) -> &'static str {
@@ -442,7 +454,7 @@ pub(crate) fn derive(
             cga::Similarity::IDENTITY,
             Pivot::BottomCenter,
         )
-        .map_err(|e| FormatError::new(format!("{}: {e}", node.fallback)))?;
+        .map_err(|e| FormatError::invalid(format!("{}: {e}", node.fallback)))?;
         o.labels = node.labels.clone();
         o.front = front;
         scene.objects.push(o);
@@ -1060,18 +1072,7 @@ fn check_units(scene: &Scene) -> Result<(), FormatError> {
         .into_iter()
         .min_by(|a, b| off(a).total_cmp(&off(b)))
         .unwrap_or(Units::Millimetres);
-    Err(FormatError::new(format!(
-        "its objects are {median:.0} m across (median): it looks modelled in {} rather than metres; read it with units {} (`--units {}`), or `--units m` to keep metres",
-        match guess {
-            Units::Millimetres => "millimetres",
-            Units::Centimetres => "centimetres",
-            Units::Inches => "inches",
-            Units::Feet => "feet",
-            Units::Metres => "metres",
-        },
-        guess.short(),
-        guess.short()
-    )))
+    Err(FormatError::Units { median, guess })
 }
 
 #[cfg(test)]
@@ -1195,7 +1196,17 @@ mod tests {
         let e = derive(&tree, "t", DVec3::Z, &ReadOptions::default())
             .err()
             .unwrap();
-        assert!(e.message.contains("--units mm"), "{}", e.message);
+        assert!(
+            matches!(
+                e,
+                FormatError::Units {
+                    guess: Units::Millimetres,
+                    ..
+                }
+            ),
+            "{e:?}"
+        );
+        assert!(e.to_string().contains("--units mm"), "{e}");
         let told = ReadOptions {
             units: Some(Units::Metres),
             ..ReadOptions::default()

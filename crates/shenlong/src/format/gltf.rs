@@ -120,7 +120,7 @@ pub fn read(
     options: &super::facts::ReadOptions,
 ) -> Result<(Scene, GltfDocument), FormatError> {
     let bytes = crate::io::read_limited(path, crate::io::MAX_READ_BYTES)
-        .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
+        .map_err(|e| FormatError::read(path, e))?;
     let base_dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
     read_bytes_with(bytes, &base_dir, stem, options)
@@ -149,28 +149,23 @@ pub fn read_bytes_with(
         if let Some(length) = bytes.get(8..12) {
             let length = u32::from_le_bytes(length.try_into().expect("four bytes"));
             if length < 12 {
-                return Err(FormatError::new(format!(
+                return Err(FormatError::invalid(format!(
                     "invalid GLB container: the header declares {length} bytes, less than the 12-byte header itself"
                 )));
             }
         }
         let glb = ::gltf::Glb::from_slice(&bytes)
-            .map_err(|e| FormatError::new(format!("invalid GLB container: {e}")))?;
+            .map_err(|e| FormatError::invalid(format!("invalid GLB container: {e}")))?;
         (glb.json.into_owned(), glb.bin.map(|b| b.into_owned()))
     } else {
         (bytes.clone(), None)
     };
     super::check_json_depth(&json_bytes)?;
-    let json: Value = serde_json::from_slice(&json_bytes).map_err(|e| {
-        FormatError::new(format!(
-            "invalid glTF JSON at line {}, column {}: {e}",
-            e.line(),
-            e.column()
-        ))
-    })?;
+    let json: Value = serde_json::from_slice(&json_bytes)
+        .map_err(|e| FormatError::json_syntax("glTF JSON", &e))?;
     check_indices(&json)?;
     let gltf = ::gltf::Gltf::from_slice_without_validation(&bytes)
-        .map_err(|e| FormatError::new(format!("invalid glTF: {e}")))?;
+        .map_err(|e| FormatError::invalid(format!("invalid glTF: {e}")))?;
     check_accessors(&json)?;
     let document = &gltf.document;
     let buffers = load_buffers(document, bin.as_deref(), base_dir)?;
@@ -241,7 +236,7 @@ fn hierarchy(
             let c = child.index();
             match nodes[c].parent {
                 Some(p) if p != node.index() => {
-                    return Err(FormatError::new(format!(
+                    return Err(FormatError::invalid(format!(
                         "nodes[{c}] is a child of both nodes[{p}] and nodes[{}]; a glTF node has one parent at most",
                         node.index()
                     )))
@@ -258,7 +253,7 @@ fn hierarchy(
             let roots: Vec<usize> = scene.nodes().map(|n| n.index()).collect();
             for (k, &r) in roots.iter().enumerate() {
                 if let Some(p) = nodes[r].parent {
-                    return Err(FormatError::new(format!(
+                    return Err(FormatError::invalid(format!(
                         "scenes[{}].nodes[{k}] is nodes[{r}], a child of nodes[{p}]; a scene lists root nodes only",
                         scene.index()
                     )));
@@ -369,7 +364,7 @@ fn mesh_points(
         .any(|p| p.get(&::gltf::Semantic::Positions).is_some());
     let label = node.name().map(|n| format!(" ('{n}')")).unwrap_or_default();
     if points.iter().any(|p| !p.is_finite()) || (points.is_empty() && has_positions) {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::invalid(format!(
             "nodes[{index}]{label}: its mesh's vertex positions cannot be read (a missing or short buffer, or numbers that are not finite)"
         )));
     }
@@ -380,7 +375,7 @@ fn mesh_points(
         .map(|p| p.abs().max_element())
         .find(|&d| d > MAX_COORDINATE)
     {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::invalid(format!(
             "nodes[{index}]{label}: its mesh lies {far:.3e} m from the origin, beyond the ±{MAX_COORDINATE:.0e} m Shenlong keeps exact (check the node's transform and its parents')"
         )));
     }
@@ -457,7 +452,7 @@ fn load_buffers(
         let mut data = match buffer.source() {
             ::gltf::buffer::Source::Bin => blob
                 .ok_or_else(|| {
-                    FormatError::new(format!(
+                    FormatError::invalid(format!(
                         "buffers[{}] refers to a GLB binary chunk that is missing",
                         buffer.index()
                     ))
@@ -466,7 +461,7 @@ fn load_buffers(
             ::gltf::buffer::Source::Uri(uri) => {
                 if let Some(rest) = uri.strip_prefix("data:") {
                     let encoded = rest.split_once(";base64,").map(|(_, d)| d).ok_or_else(|| {
-                        FormatError::new(format!(
+                        FormatError::invalid(format!(
                             "buffers[{}]: only base64 data URIs are supported",
                             buffer.index()
                         ))
@@ -474,17 +469,17 @@ fn load_buffers(
                     base64::engine::general_purpose::STANDARD
                         .decode(encoded)
                         .map_err(|e| {
-                            FormatError::new(format!(
+                            FormatError::invalid(format!(
                                 "buffers[{}]: invalid base64 data: {e}",
                                 buffer.index()
                             ))
                         })?
                 } else {
                     let file = resolve_uri(base_dir, uri).map_err(|e| {
-                        FormatError::new(format!("buffers[{}]: {e}", buffer.index()))
+                        FormatError::invalid(format!("buffers[{}]: {e}", buffer.index()))
                     })?;
                     std::fs::read(&file).map_err(|e| {
-                        FormatError::new(format!(
+                        FormatError::invalid(format!(
                             "buffers[{}]: cannot read {}: {e}",
                             buffer.index(),
                             file.display()
@@ -494,7 +489,7 @@ fn load_buffers(
             }
         };
         if data.len() < buffer.length() {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "buffers[{}] has {} bytes; the file says {}",
                 buffer.index(),
                 data.len(),
@@ -518,7 +513,7 @@ fn check_indices(json: &Value) -> Result<(), FormatError> {
         let n = count(key);
         match v.as_u64() {
             Some(i) if (i as usize) < n => Ok(()),
-            _ => Err(FormatError::new(format!(
+            _ => Err(FormatError::invalid(format!(
                 "{at} is {v}, but the file has {n} {key}"
             ))),
         }
@@ -652,7 +647,7 @@ fn check_accessors(json: &Value) -> Result<(), FormatError> {
     positions.dedup();
     // `count` elements of `size` bytes from `offset` in bufferViews[view], for `what`.
     let check_view = |what: &str, view: u64, offset: u64, count: u64, size: u64| {
-        let fail = |why: String| Err(FormatError::new(format!("{what}: {why}")));
+        let fail = |why: String| Err(FormatError::invalid(format!("{what}: {why}")));
         let Some(v) = views.and_then(|v| v.get(view as usize)) else {
             return fail(format!("bufferViews[{view}] does not exist"));
         };
@@ -703,7 +698,7 @@ fn check_accessors(json: &Value) -> Result<(), FormatError> {
         let Some(a) = accessors.and_then(|a| a.get(index as usize)) else {
             continue; // check_indices has refused it
         };
-        let fail = |why: &str| Err(FormatError::new(format!("{what}: {why}")));
+        let fail = |why: &str| Err(FormatError::invalid(format!("{what}: {why}")));
         if a.get("type").and_then(Value::as_str) != Some("VEC3")
             || number(a, "componentType") != Some(5126)
         {
@@ -858,7 +853,7 @@ pub(crate) fn write_relocated(
     uris: &std::collections::HashMap<String, String>,
 ) -> Result<Vec<u8>, FormatError> {
     if document.container == Container::Glb {
-        return Err(FormatError::new(
+        return Err(FormatError::invalid(
             "a binary glTF keeps its resources: it is written as it is",
         ));
     }
@@ -885,7 +880,7 @@ pub(crate) fn write_relocated(
 /// moved.
 fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, FormatError> {
     if scene.objects.len() != document.object_nodes.len() {
-        return Err(FormatError::new(
+        return Err(FormatError::invalid(
             "the scene's objects no longer match the glTF nodes",
         ));
     }
@@ -927,7 +922,7 @@ fn edited_json(scene: &Scene, document: &GltfDocument) -> Result<Option<Value>, 
             .get_mut("nodes")
             .and_then(|n| n.get_mut(node))
             .and_then(Value::as_object_mut)
-            .ok_or_else(|| FormatError::new(format!("nodes[{node}] is missing")))?;
+            .ok_or_else(|| FormatError::invalid(format!("nodes[{node}] is missing")))?;
         write_local(target, node, &local, document.animated.contains(&node))?;
     }
     Ok(Some(json))
@@ -945,7 +940,7 @@ fn write_local(
     let trs = super::transform::as_trs(local);
     let Some((scale, rotation, translation)) = trs.filter(|_| !node.contains_key("matrix")) else {
         if animated {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "nodes[{index}] is animated, so its transform must stay TRS, but the edit gives it a shear"
             )));
         }
@@ -969,14 +964,14 @@ fn json_number(x: f64) -> Value {
 /// A GLB container: header, JSON chunk padded with spaces, binary chunk as it was.
 pub(crate) fn glb_bytes(json: &Value, bin: Option<&[u8]>) -> Result<Vec<u8>, FormatError> {
     let mut json_chunk = serde_json::to_vec(json)
-        .map_err(|e| FormatError::new(format!("cannot write the glTF JSON: {e}")))?;
+        .map_err(|e| FormatError::invalid(format!("the glTF JSON cannot be written: {e}")))?;
     while json_chunk.len() % 4 != 0 {
         json_chunk.push(b' ');
     }
     let bin_len = bin.map_or(0, |b| 8 + b.len().next_multiple_of(4));
     let total = 12 + 8 + json_chunk.len() + bin_len;
     if u32::try_from(total).is_err() {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::too_large(format!(
             "the edited GLB would be {total} bytes, more than the 4 GiB the format can hold"
         )));
     }
@@ -1031,14 +1026,14 @@ mod uri_tests {
             std::fs::write(&path, gltf_with_buffer(uri)).unwrap();
             let e = read(&path, &crate::format::ReadOptions::default()).unwrap_err();
             assert!(
-                e.message.contains("outside the glTF file's folder"),
+                e.to_string().contains("outside the glTF file's folder"),
                 "{uri}: {}",
-                e.message
+                e
             );
             assert!(
-                !e.message.contains("36"),
+                !e.to_string().contains("36"),
                 "{uri}: the message reveals nothing of the file: {}",
-                e.message
+                e
             );
         }
         // A device is not a regular file (and is never read whole).
@@ -1049,9 +1044,9 @@ mod uri_tests {
             std::fs::write(&path, gltf_with_buffer("zero.bin")).unwrap();
             let e = read(&path, &crate::format::ReadOptions::default()).unwrap_err();
             assert!(
-                e.message.contains("outside") || e.message.contains("not a regular file"),
+                e.to_string().contains("outside") || e.to_string().contains("not a regular file"),
                 "{}",
-                e.message
+                e.to_string()
             );
         }
         // A buffer beside the file is read.
@@ -1083,17 +1078,17 @@ mod index_tests {
             "nodes": [{"name": "ghost", "mesh": 3}], "meshes": []}"#;
         let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("nodes[0].mesh is 3, but the file has 0 meshes"),
             "{}",
-            e.message
+            e.to_string()
         );
         let text = r#"{"asset": {"version": "2.0"}, "scenes": [{"nodes": [5]}], "nodes": []}"#;
         let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message.contains("scenes[0].nodes[0] is 5"),
+            e.to_string().contains("scenes[0].nodes[0] is 5"),
             "{}",
-            e.message
+            e.to_string()
         );
     }
 
@@ -1105,7 +1100,11 @@ mod index_tests {
         bytes.extend_from_slice(&0u32.to_le_bytes());
         bytes.extend_from_slice(b"\x00\x03E\x00JSON{}");
         let e = read_bytes(bytes, Path::new("."), "t").unwrap_err();
-        assert!(e.message.contains("declares 0 bytes"), "{}", e.message);
+        assert!(
+            e.to_string().contains("declares 0 bytes"),
+            "{}",
+            e.to_string()
+        );
     }
 
     #[test]
@@ -1119,11 +1118,11 @@ mod index_tests {
             "buffers": [{"byteLength": 12, "uri": "data:application/octet-stream;base64,AAAAAAAAAAAAAAAA"}]}"#;
         let e = read_bytes(text.as_bytes().to_vec(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message.contains(
+            e.to_string().contains(
                 "accessors[0] (vertex positions): 3 elements of 12 bytes every 12 from byte 0 do not fit in bufferViews[0]'s 12 bytes"
             ),
             "{}",
-            e.message
+            e.to_string()
         );
         // Vertices that are not finite: the node is named.
         let nan =
@@ -1132,7 +1131,11 @@ mod index_tests {
             .replace(r#""byteLength": 12"#, r#""byteLength": 36"#)
             .replace("AAAAAAAAAAAAAAAA", &nan);
         let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
-        assert!(e.message.contains("nodes[0] ('tri')"), "{}", e.message);
+        assert!(
+            e.to_string().contains("nodes[0] ('tri')"),
+            "{}",
+            e.to_string()
+        );
     }
 
     /// A triangle mesh under `nodes`, as glTF text with an embedded buffer.
@@ -1194,8 +1197,8 @@ mod index_tests {
             edit(&mut json);
             let bytes = serde_json::to_vec(&json).unwrap();
             let e = read_bytes(bytes, Path::new("."), "t").unwrap_err();
-            assert!(e.message.contains(message), "{case}: {}", e.message);
-            assert_eq!(e.message.lines().count(), 1, "{case}: {}", e.message);
+            assert!(e.to_string().contains(message), "{case}: {}", e);
+            assert_eq!(e.to_string().lines().count(), 1, "{case}: {}", e);
         }
         // What is valid is still read: a stride of 12 or 0, a sparse accessor in bounds.
         for stride in [0, 12] {
@@ -1233,10 +1236,10 @@ mod index_tests {
         );
         let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("nodes[1] is a child of both nodes[0] and nodes[2]"),
             "{}",
-            e.message
+            e.to_string()
         );
         // A pure cycle with no root, in a file without scenes: no node is a root, nothing
         // is walked, and the read ends at once.
@@ -1259,15 +1262,23 @@ mod index_tests {
         // Its own translation is too far.
         let e =
             read_text(r#"[{"name": "tri", "mesh": 0, "translation": [2e9, 0, 0]}]"#).unwrap_err();
-        assert!(e.message.contains("nodes[0] ('tri')"), "{}", e.message);
-        assert!(e.message.contains("beyond"), "{}", e.message);
+        assert!(
+            e.to_string().contains("nodes[0] ('tri')"),
+            "{}",
+            e.to_string()
+        );
+        assert!(e.to_string().contains("beyond"), "{}", e.to_string());
         // A parent's scale takes the child's vertices too far.
         let e = read_text(
             r#"[{"name": "root", "children": [1], "scale": [1e7, 1e7, 1e7]},
                 {"name": "tri", "mesh": 0, "translation": [0.5, 0, 0]}]"#,
         )
         .unwrap_err();
-        assert!(e.message.contains("nodes[1] ('tri')"), "{}", e.message);
+        assert!(
+            e.to_string().contains("nodes[1] ('tri')"),
+            "{}",
+            e.to_string()
+        );
     }
 }
 
@@ -1364,10 +1375,10 @@ mod depth_tests {
         );
         let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("nodes[2] is a child of both nodes[0] and nodes[1]"),
             "{}",
-            e.message
+            e.to_string()
         );
         // A cycle: 1 → 2 → 1, below the root 0.
         let text = index_tests_triangle(
@@ -1376,7 +1387,11 @@ mod depth_tests {
             "[0]",
         );
         let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
-        assert!(e.message.contains("a child of both"), "{}", e.message);
+        assert!(
+            e.to_string().contains("a child of both"),
+            "{}",
+            e.to_string()
+        );
         // A cycle on its own, reached from a scene: the root has a parent.
         let text = index_tests_triangle(
             r#"[{"name": "a", "children": [1]}, {"name": "tri", "mesh": 0, "children": [0]}]"#,
@@ -1384,10 +1399,10 @@ mod depth_tests {
         );
         let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("scenes[0].nodes[0] is nodes[0], a child of nodes[1]"),
             "{}",
-            e.message
+            e.to_string()
         );
         // A cycle no scene reaches is not drawn and does no harm.
         let text = index_tests_triangle(
@@ -1426,10 +1441,10 @@ mod depth_tests {
         );
         let e = read_bytes(text.into_bytes(), Path::new("."), "t").unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .starts_with("nesting deeper than 100 levels at line 1, column "),
             "{}",
-            e.message
+            e.to_string()
         );
     }
 

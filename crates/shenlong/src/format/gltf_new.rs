@@ -165,7 +165,7 @@ impl Builder {
 /// The scene has no object.
 pub fn write_new(scene: &Scene, binary: bool) -> Result<Vec<u8>, FormatError> {
     if scene.objects.is_empty() {
-        return Err(FormatError::new("the scene has no object to write"));
+        return Err(FormatError::invalid("the scene has no object to write"));
     }
     let mut builder = Builder::new(scene.objects.len());
     for object in &scene.objects {

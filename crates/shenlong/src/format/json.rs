@@ -8,7 +8,7 @@
 //! the objects that moved, so it costs what changed, and a file under version control
 //! shows only the edit in its diff.
 
-use super::{tidy_json, FormatError};
+use super::{strip_position, tidy_json, FormatError};
 use crate::geometry::Aabb;
 use crate::scene::{Labels, Object, Scene, MAX_COORDINATE, MAX_SCALE, MIN_SCALE};
 use cga::Similarity;
@@ -167,10 +167,12 @@ fn json_error(text: &str, slice: &str, e: &serde_json::Error) -> FormatError {
     } else {
         (line0 + e.line() - 1, e.column())
     };
-    FormatError::new(format!(
-        "invalid JSON at line {line}, column {column}: {}",
-        strip_position(&e.to_string())
-    ))
+    FormatError::Syntax {
+        what: "JSON",
+        line,
+        column,
+        message: strip_position(&e.to_string()),
+    }
 }
 
 /// A field's value as a tree, for the checks that name what is wrong.
@@ -186,20 +188,13 @@ fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), Fo
     let root: Result<RawRoot<'_>, _> = serde_json::from_str(text);
     let root = match root {
         Err(e) if e.classify() == serde_json::error::Category::Data && !starts_with(text, '{') => {
-            return Err(FormatError::new(
+            return Err(FormatError::invalid(
                 "the scene must be a JSON object with an \"objects\" list",
             ))
         }
-        Err(e) => {
-            return Err(FormatError::new(format!(
-                "invalid JSON at line {}, column {}: {}",
-                e.line(),
-                e.column(),
-                strip_position(&e.to_string())
-            )))
-        }
+        Err(e) => return Err(FormatError::json_syntax("JSON", &e)),
         Ok(_) if !starts_with(text, '{') => {
-            return Err(FormatError::new(
+            return Err(FormatError::invalid(
                 "the scene must be a JSON object with an \"objects\" list",
             ))
         }
@@ -208,19 +203,19 @@ fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), Fo
     let name = match root.name.map(|raw| value_of(text, raw)).transpose()? {
         None | Some(Value::Null) => fallback_name.to_string(),
         Some(Value::String(s)) => s,
-        Some(_) => return Err(FormatError::new("name must be a string")),
+        Some(_) => return Err(FormatError::invalid("name must be a string")),
     };
     let mut scene = Scene::new(name);
     if let Some(bounds) = root.bounds.map(|raw| value_of(text, raw)).transpose()? {
         if !bounds.is_null() {
             let b = bounds.as_object().ok_or_else(|| {
-                FormatError::new("bounds must be an object with \"min\" and \"max\"")
+                FormatError::invalid("bounds must be an object with \"min\" and \"max\"")
             })?;
             let min = vec3(b.get("min"), "bounds.min")?;
             let max = vec3(b.get("max"), "bounds.max")?;
             for axis in 0..3 {
                 if min[axis] >= max[axis] {
-                    return Err(FormatError::new(format!(
+                    return Err(FormatError::invalid(format!(
                         "bounds.min[{axis}] must be less than bounds.max[{axis}]"
                     )));
                 }
@@ -228,13 +223,13 @@ fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), Fo
             scene.bounds = Some(Aabb::new(min, max));
         }
     }
-    let objects = root
-        .objects
-        .ok_or_else(|| FormatError::new("missing \"objects\": the list of the scene's objects"))?;
+    let objects = root.objects.ok_or_else(|| {
+        FormatError::invalid("missing \"objects\": the list of the scene's objects")
+    })?;
     let objects: Vec<&RawValue> = if starts_with(objects.get(), '[') {
         serde_json::from_str(objects.get()).map_err(|e| json_error(text, objects.get(), &e))?
     } else {
-        return Err(FormatError::new("objects must be a list"));
+        return Err(FormatError::invalid("objects must be a list"));
     };
     // Names compared case-insensitively, through an index: a scan per object would make
     // reading quadratic in the number of objects.
@@ -247,7 +242,7 @@ fn parse(text: &str, fallback_name: &str) -> Result<(Scene, Vec<PoseFields>), Fo
         let (object, pose, on) = object_from_raw(text, raw, i)?;
         let key = object.name.trim().to_lowercase();
         if let Some(&j) = by_name.get(&key) {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "objects[{i}].name '{}' duplicates objects[{j}].name '{}' (names are compared case-insensitively)",
                 object.name, scene.objects[j].name
             )));
@@ -283,7 +278,7 @@ fn resolve_on_fields(
             continue;
         }
         let name = on.as_str().ok_or_else(|| {
-            FormatError::new(format!(
+            FormatError::invalid(format!(
                 "objects[{i}].on must be the name of another object"
             ))
         })?;
@@ -291,12 +286,12 @@ fn resolve_on_fields(
             .get(&name.trim().to_lowercase())
             .copied()
             .ok_or_else(|| {
-                FormatError::new(format!(
+                FormatError::invalid(format!(
                     "objects[{i}].on '{name}' names no object of the scene"
                 ))
             })?;
         if j == i {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "objects[{i}].on names the object itself"
             )));
         }
@@ -314,7 +309,7 @@ fn resolve_on_fields(
             match state[c] {
                 2 => break,
                 1 => {
-                    return Err(FormatError::new(format!(
+                    return Err(FormatError::invalid(format!(
                         "objects[{c}].on: the objects rest on each other in a circle"
                     )))
                 }
@@ -363,29 +358,35 @@ fn object_from_raw<'a>(
     i: usize,
 ) -> Result<(Object, PoseFields, Option<&'a RawValue>), FormatError> {
     if !starts_with(raw.get(), '{') {
-        return Err(FormatError::new(format!("objects[{i}] must be an object")));
+        return Err(FormatError::invalid(format!(
+            "objects[{i}] must be an object"
+        )));
     }
     let o: RawObject<'a> = serde_json::from_str(raw.get()).map_err(|e| {
         if e.classify() == serde_json::error::Category::Data {
-            FormatError::new(format!("objects[{i}]: {}", strip_position(&e.to_string())))
+            FormatError::invalid(format!("objects[{i}]: {}", strip_position(&e.to_string())))
         } else {
             json_error(text, raw.get(), &e)
         }
     })?;
     let field = |name: &str| format!("objects[{i}].{name}");
     let name = match o.name {
-        None => return Err(FormatError::new(format!("objects[{i}]: missing \"name\""))),
+        None => {
+            return Err(FormatError::invalid(format!(
+                "objects[{i}]: missing \"name\""
+            )))
+        }
         Some(raw) => match serde_json::from_str::<String>(raw.get()) {
             Ok(s) if !s.trim().is_empty() => s,
             Ok(_) => {
-                return Err(FormatError::new(format!(
+                return Err(FormatError::invalid(format!(
                     "{} must not be empty",
                     field("name")
                 )))
             }
             Err(_) => {
                 value_of(text, raw)?;
-                return Err(FormatError::new(format!(
+                return Err(FormatError::invalid(format!(
                     "{} must be a string",
                     field("name")
                 )));
@@ -393,26 +394,26 @@ fn object_from_raw<'a>(
         },
     };
     let size = vec3_field(text, o.size, &|| field("size"))?.ok_or_else(|| {
-        FormatError::new(format!(
+        FormatError::invalid(format!(
             "objects[{i}] ('{name}'): missing \"size\" [w, h, d]"
         ))
     })?;
     for axis in 0..3 {
         if size[axis] <= 0.0 {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{}[{axis}] must be > 0",
                 field("size")
             )));
         }
         if size[axis] > MAX_COORDINATE {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{}[{axis}] must be at most {MAX_COORDINATE:.0e} m",
                 field("size")
             )));
         }
     }
     let missing_position = || {
-        FormatError::new(format!(
+        FormatError::invalid(format!(
             "objects[{i}] ('{name}'): missing \"position\" [x, y, z]"
         ))
     };
@@ -421,7 +422,7 @@ fn object_from_raw<'a>(
         .ok_or_else(missing_position)?;
     for axis in 0..3 {
         if position[axis].abs() > MAX_COORDINATE {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{}[{axis}] must be within ±{MAX_COORDINATE:.0e} m",
                 field("position")
             )));
@@ -439,11 +440,11 @@ fn object_from_raw<'a>(
         Some(raw) => scale_of(text, raw, &field("scale"))?,
     };
     let mut object = Object::new_box(name, size, position, rotation, scale)
-        .map_err(|e| FormatError::new(format!("objects[{i}]: {e}")))?;
+        .map_err(|e| FormatError::invalid(format!("objects[{i}]: {e}")))?;
     object.labels = labels(text, &o, i)?;
     if let Some(f) = vec3_field(text, o.front, &|| field("front"))? {
         if f.length() < 1e-9 {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{} must be a non-zero direction [x, y, z]",
                 field("front")
             )));
@@ -479,49 +480,44 @@ fn scale_of(text: &str, raw: &RawValue, field: &str) -> Result<f64, FormatError>
         }
     };
     if !(MIN_SCALE..=MAX_SCALE).contains(&s) {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::invalid(format!(
             "{field} must be in [{MIN_SCALE:.0e}, {MAX_SCALE:.0e}]"
         )));
     }
     Ok(s)
 }
 
-fn strip_position(message: &str) -> String {
-    match message.rfind(" at line ") {
-        Some(i) => message[..i].to_string(),
-        None => message.to_string(),
-    }
-}
-
 /// The optional words for an object (a documented extension of SPEC §2): `category` (a
 /// string; else a ProcTHOR `objectType` in plain words), `aliases` (strings), and the
 /// attributes `color` / `colour` / `material` (a string or a list of strings).
 fn labels(text: &str, o: &RawObject<'_>, i: usize) -> Result<Labels, FormatError> {
-    let strings =
-        |raw: Option<&RawValue>, field: &str, list_ok: bool| -> Result<Vec<String>, FormatError> {
-            let Some(raw) = raw else {
-                return Ok(Vec::new());
-            };
-            match value_of(text, raw)? {
-                Value::Null => Ok(Vec::new()),
-                Value::String(s) => Ok(vec![s.trim().to_string()]),
-                Value::Array(items) if list_ok => items
-                    .iter()
-                    .enumerate()
-                    .map(|(k, v)| {
-                        v.as_str().map(|s| s.trim().to_string()).ok_or_else(|| {
-                            FormatError::new(format!("objects[{i}].{field}[{k}] must be a string"))
-                        })
-                    })
-                    .collect(),
-                _ if list_ok => Err(FormatError::new(format!(
-                    "objects[{i}].{field} must be a string or a list of strings"
-                ))),
-                _ => Err(FormatError::new(format!(
-                    "objects[{i}].{field} must be a string"
-                ))),
-            }
+    let strings = |raw: Option<&RawValue>,
+                   field: &str,
+                   list_ok: bool|
+     -> Result<Vec<String>, FormatError> {
+        let Some(raw) = raw else {
+            return Ok(Vec::new());
         };
+        match value_of(text, raw)? {
+            Value::Null => Ok(Vec::new()),
+            Value::String(s) => Ok(vec![s.trim().to_string()]),
+            Value::Array(items) if list_ok => items
+                .iter()
+                .enumerate()
+                .map(|(k, v)| {
+                    v.as_str().map(|s| s.trim().to_string()).ok_or_else(|| {
+                        FormatError::invalid(format!("objects[{i}].{field}[{k}] must be a string"))
+                    })
+                })
+                .collect(),
+            _ if list_ok => Err(FormatError::invalid(format!(
+                "objects[{i}].{field} must be a string or a list of strings"
+            ))),
+            _ => Err(FormatError::invalid(format!(
+                "objects[{i}].{field} must be a string"
+            ))),
+        }
+    };
     let mut category = strings(o.category, "category", false)?.pop();
     if category.is_none() {
         if let Some(raw) = o.object_type {
@@ -551,7 +547,7 @@ fn quaternion(q: [f64; 4], at: &dyn Fn() -> String) -> Result<DQuat, FormatError
     let q = DQuat::from_array(q);
     let length = q.length();
     if length.is_nan() || length <= 1e-9 {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::invalid(format!(
             "{} must be a non-zero quaternion [x, y, z, w]",
             at()
         )));
@@ -566,7 +562,7 @@ fn rotation(value: Option<&Value>, at: &str) -> Result<DQuat, FormatError> {
     let list = value
         .as_array()
         .filter(|a| a.len() == 4)
-        .ok_or_else(|| FormatError::new(format!("{at} must be a quaternion [x, y, z, w]")))?;
+        .ok_or_else(|| FormatError::invalid(format!("{at} must be a quaternion [x, y, z, w]")))?;
     let mut q = [0.0; 4];
     for (k, v) in list.iter().enumerate() {
         q[k] = number(v, &format!("{at}[{k}]"))?;
@@ -579,7 +575,7 @@ fn vec3(value: Option<&Value>, at: &str) -> Result<DVec3, FormatError> {
         .and_then(Value::as_array)
         .filter(|a| a.len() == 3)
         .ok_or_else(|| {
-            FormatError::new(format!("{at} must be a list of three numbers [x, y, z]"))
+            FormatError::invalid(format!("{at} must be a list of three numbers [x, y, z]"))
         })?;
     let mut v = [0.0; 3];
     for (k, item) in list.iter().enumerate() {
@@ -591,7 +587,7 @@ fn vec3(value: Option<&Value>, at: &str) -> Result<DVec3, FormatError> {
 fn number(value: &Value, at: &str) -> Result<f64, FormatError> {
     match value.as_f64() {
         Some(x) if x.is_finite() => Ok(x),
-        _ => Err(FormatError::new(format!(
+        _ => Err(FormatError::invalid(format!(
             "{at} must be a finite number, found {value}"
         ))),
     }
@@ -969,6 +965,16 @@ mod tests {
             "{}",
             err(bad)
         );
+        // The kind and the place are data.
+        match read(bad, "t").map(|_| ()).unwrap_err() {
+            FormatError::Syntax { what, line, .. } => assert_eq!((what, line), ("JSON", 2)),
+            other => panic!("{other:?}"),
+        }
+        let missing = read("{\"objects\": [{\"name\": \"a\"}]}", "t").map(|_| ());
+        assert!(
+            matches!(missing, Err(FormatError::Invalid(ref m)) if m.contains("size")),
+            "{missing:?}"
+        );
     }
 }
 
@@ -981,10 +987,10 @@ mod bom_tests {
         assert_eq!(scene.objects[0].front, glam::DVec3::NEG_Z);
         let e = super::read("{\"objects\": [{\"name\": \"a\", \"size\": [1, 1, 1], \"position\": [0, 0, 0], \"front\": [0, 0, 0]}]}", "t").unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("objects[0].front must be a non-zero direction"),
             "{}",
-            e.message
+            e.to_string()
         );
     }
 }
@@ -1008,7 +1014,7 @@ mod depth_tests {
         serde_json::from_str::<serde_json::Value>(loaded.document.text()).unwrap();
         let e = super::read(&nested(200), "t").unwrap_err();
         assert_eq!(
-            e.message,
+            e.to_string(),
             "nesting deeper than 100 levels at line 2, column 164"
         );
         // Brackets inside strings are text.

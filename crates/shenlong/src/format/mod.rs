@@ -25,7 +25,6 @@ pub mod usd;
 pub use facts::{Axis, ReadOptions, Units};
 
 use crate::scene::Scene;
-use std::fmt;
 use std::path::{Path, PathBuf};
 
 pub use crate::number::{tidy, tidy_json};
@@ -115,39 +114,152 @@ fn too_deep(text: &[u8], i: usize) -> FormatError {
         .map_or(0, |p| p + 1);
     // Columns count bytes from 1, as serde_json's do.
     let column = i - line_start + 1;
-    FormatError::new(format!(
+    FormatError::too_large(format!(
         "nesting deeper than {MAX_JSON_DEPTH} levels at line {line}, column {column}"
     ))
 }
 
-/// A problem with a scene file: what is wrong and, in the message, where.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct FormatError {
-    /// What is wrong, naming the field (`objects[3].size[1] must be > 0`).
-    pub message: String,
+/// A problem with a scene file: what is wrong and where.
+///
+/// The kind is data; the message names the field or the line (`objects[3].size[1] must
+/// be > 0`), so the one line printed is enough to find and fix it. Errors from the file
+/// system keep theirs as the [source](std::error::Error::source).
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum FormatError {
+    /// A file cannot be read.
+    #[error("cannot read {}: {source}", path.display())]
+    Read {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: std::io::Error,
+    },
+    /// A file cannot be written (nothing was written).
+    #[error("cannot write {}: {source}", path.display())]
+    Write {
+        /// The file.
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: std::io::Error,
+    },
+    /// The text is not well-formed.
+    #[error("invalid {what} at line {line}, column {column}: {message}")]
+    Syntax {
+        /// What it should have been (`JSON`, `glTF JSON`).
+        what: &'static str,
+        /// 1-based line.
+        line: usize,
+        /// 1-based column, in bytes.
+        column: usize,
+        /// What is wrong there.
+        message: String,
+    },
+    /// The content breaks the format's rules (a field missing, out of range, or pointing
+    /// at nothing); the message names the field.
+    #[error("{0}")]
+    Invalid(String),
+    /// Past one of the limits that keep reading bounded: size, nesting, count or time.
+    #[error("{0}")]
+    TooLarge(String),
+    /// Not a format, or a use of one, that Shenlong reads or writes here.
+    #[error("{0}")]
+    Unsupported(String),
+    /// The objects are far too large for metres: the file looks modelled in `guess`.
+    #[error(
+        "its objects are {median:.0} m across (median): it looks modelled in {} rather than metres; read it with units {} (`--units {}`), or `--units m` to keep metres",
+        guess.name(),
+        guess.short(),
+        guess.short()
+    )]
+    Units {
+        /// The median of the objects' largest extents, read as metres.
+        median: f64,
+        /// The units that bring them nearest furniture sizes.
+        guess: Units,
+    },
+    /// An error in the named file.
+    #[error("{}: {source}", path.display())]
+    InFile {
+        /// The file.
+        path: PathBuf,
+        /// The error.
+        #[source]
+        source: Box<FormatError>,
+    },
 }
 
 impl FormatError {
-    /// An error with this message.
-    pub fn new(message: impl Into<String>) -> Self {
-        Self {
-            message: message.into(),
+    /// The same error, naming the file it is about (unless it already does).
+    #[must_use]
+    pub fn in_file(self, path: &Path) -> Self {
+        match self {
+            Self::Read { .. } | Self::Write { .. } | Self::InFile { .. } => self,
+            other => Self::InFile {
+                path: path.to_path_buf(),
+                source: Box::new(other),
+            },
         }
     }
 
-    /// The same error, prefixed with the file it is about.
-    pub fn in_file(self, path: &Path) -> Self {
-        Self::new(format!("{}: {}", path.display(), self.message))
+    /// `path` cannot be read, for `source`.
+    #[must_use]
+    pub fn read(path: &Path, source: std::io::Error) -> Self {
+        Self::Read {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+
+    /// `path` cannot be written, for `source`.
+    #[must_use]
+    pub fn write(path: &Path, source: std::io::Error) -> Self {
+        Self::Write {
+            path: path.to_path_buf(),
+            source,
+        }
+    }
+
+    /// The content breaks the format's rules, as `message` says.
+    #[must_use]
+    pub fn invalid(message: impl Into<String>) -> Self {
+        Self::Invalid(message.into())
+    }
+
+    /// Past a limit, as `message` says.
+    #[must_use]
+    pub fn too_large(message: impl Into<String>) -> Self {
+        Self::TooLarge(message.into())
+    }
+
+    /// Not supported, as `message` says.
+    #[must_use]
+    pub fn unsupported(message: impl Into<String>) -> Self {
+        Self::Unsupported(message.into())
+    }
+
+    /// Text that is not `what` (`JSON`, `glTF JSON`), as `serde_json` found it.
+    #[must_use]
+    pub fn json_syntax(what: &'static str, e: &serde_json::Error) -> Self {
+        Self::Syntax {
+            what,
+            line: e.line(),
+            column: e.column(),
+            message: strip_position(&e.to_string()),
+        }
+    }
+
+    /// The error under any [`FormatError::InFile`] wrapping.
+    #[must_use]
+    pub fn innermost(&self) -> &Self {
+        match self {
+            Self::InFile { source, .. } => source.innermost(),
+            other => other,
+        }
     }
 }
-
-impl fmt::Display for FormatError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for FormatError {}
 
 /// Why a file a scene points to is not read ([`file_inside`]).
 #[derive(Debug)]
@@ -180,6 +292,14 @@ pub(crate) fn file_inside(path: &Path, real_base: &Path) -> Result<(), NotInside
         return Err(NotInside::TooLarge);
     }
     Ok(())
+}
+
+/// A `serde_json` message without its trailing "at line L column C" (said apart).
+pub(crate) fn strip_position(message: &str) -> String {
+    match message.rfind(" at line ") {
+        Some(i) => message[..i].to_string(),
+        None => message.to_string(),
+    }
 }
 
 /// The formats Shenlong reads and writes.
@@ -218,7 +338,7 @@ impl Format {
         match ext.as_str() {
             "json" if name_ends_with(path, ".tdw.json") => Ok(Format::TdwCommands),
             "json" => Ok(Format::SceneJson),
-            "jsonl" => Err(FormatError::new(format!(
+            "jsonl" => Err(FormatError::unsupported(format!(
                 "{}: unknown scene format '.jsonl': a file of ProcTHOR/Holodeck houses is imported as houses, with their asset database",
                 path.display()
             ))),
@@ -227,7 +347,7 @@ impl Format {
             "usda" => Ok(Format::Usda),
             "usdc" | "usd" => Ok(Format::Usdc),
             "usdz" => Ok(Format::Usdz),
-            other => Err(FormatError::new(format!(
+            other => Err(FormatError::unsupported(format!(
                 "{}: unknown scene format '.{other}': use .json, .gltf, .glb, .usda, .usdc or .usdz",
                 path.display()
             ))),
@@ -279,7 +399,7 @@ impl SceneFile {
             Format::Gltf | Format::Glb | Format::Usda | Format::Usdc | Format::Usdz
         );
         if !node_based && (options.units.is_some() || options.front.is_some()) {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::unsupported(format!(
                 "{}: units and a front axis are given for glTF and USD files only (scene JSON is in metres and names its fronts)",
                 path.display()
             )));
@@ -287,10 +407,8 @@ impl SceneFile {
         let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("scene");
         match format {
             Format::SceneJson => {
-                let text =
-                    crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES).map_err(|e| {
-                        FormatError::new(format!("cannot read {}: {e}", path.display()))
-                    })?;
+                let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
+                    .map_err(|e| FormatError::read(path, e))?;
                 let loaded = json::read_string(text, stem).map_err(|e| {
                     // (Read again on this error path only: the text went into the document.)
                     let house = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
@@ -298,7 +416,7 @@ impl SceneFile {
                         .and_then(|t| serde_json::from_str::<serde_json::Value>(&t).ok())
                         .is_some_and(|v| procthor::looks_like_house(&v));
                     if house {
-                        FormatError::new(format!(
+                        FormatError::unsupported(format!(
                             "{}: this is a ProcTHOR/Holodeck house, not a scene file: import it as a house, with its asset database",
                             path.display()
                         ))
@@ -312,7 +430,7 @@ impl SceneFile {
                     path: Some(path.to_path_buf()),
                 })
             }
-            Format::TdwCommands => Err(FormatError::new(format!(
+            Format::TdwCommands => Err(FormatError::unsupported(format!(
                 "{}: ThreeDWorld commands are an output format; read the scene they came from",
                 path.display()
             ))),
@@ -334,7 +452,7 @@ impl SceneFile {
                 })
             }
             #[cfg(not(feature = "usd"))]
-            Format::Usda | Format::Usdc | Format::Usdz => Err(FormatError::new(format!(
+            Format::Usda | Format::Usdc | Format::Usdz => Err(FormatError::unsupported(format!(
                 "{}: this build of Shenlong reads no USD (built without the `usd` feature)",
                 path.display()
             ))),
@@ -403,7 +521,7 @@ impl SceneFile {
                 };
                 let source_is_glb = *document.container() == gltf::Container::Glb;
                 if source_is_glb != (format == Format::Glb) {
-                    return Err(FormatError::new(format!(
+                    return Err(FormatError::invalid(format!(
                         "the source is {}; write the edit to a {} file",
                         if source_is_glb {
                             "binary glTF"
@@ -426,7 +544,7 @@ impl SceneFile {
             // A scene from elsewhere: a new stage of boxes.
             return match format {
                 Format::Usda => Ok(usd::write_new(&self.scene)),
-                _ => Err(FormatError::new(
+                _ => Err(FormatError::invalid(
                     "a scene read from no USD stage is written as a new .usda",
                 )),
             };
@@ -441,7 +559,7 @@ impl SceneFile {
 
     #[cfg(not(feature = "usd"))]
     fn usd_bytes(&self, _format: Format, _target: Option<&Path>) -> Result<Vec<u8>, FormatError> {
-        Err(FormatError::new(
+        Err(FormatError::unsupported(
             "this build of Shenlong writes no USD (built without the `usd` feature)",
         ))
     }
@@ -456,20 +574,19 @@ impl SceneFile {
     #[cfg(feature = "usd")]
     pub fn save_usd_layer(&self, path: &Path) -> Result<(), FormatError> {
         let Document::Usd(document) = &self.document else {
-            return Err(FormatError::new(
+            return Err(FormatError::invalid(
                 "a USD layer is written over a USD stage: the scene was not read from one",
             ));
         };
         if Format::from_path(path)? != Format::Usda {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{}: a layer is written as .usda",
                 path.display()
             )));
         }
         let sublayer = usd::sublayer_path(&document.source, path)?;
         let bytes = usd::write_layer(&self.scene, document, &sublayer)?;
-        crate::io::write_atomic(path, &bytes)
-            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
+        crate::io::write_atomic(path, &bytes).map_err(|e| FormatError::write(path, e))
     }
 
     /// Writes the scene to `path` (format by extension) atomically: on any error the
@@ -479,10 +596,10 @@ impl SceneFile {
     pub fn save(&self, path: &Path) -> Result<(), FormatError> {
         let format = Format::from_path(path)?;
         if path.is_dir() {
-            return Err(FormatError::new(format!(
-                "cannot write {}: it is a folder",
-                path.display()
-            )));
+            return Err(FormatError::write(
+                path,
+                std::io::Error::other("it is a folder"),
+            ));
         }
         if let (Format::Gltf, Document::Gltf(document)) = (format, &self.document) {
             if let Some(copies) = resources::plan(document, path)? {
@@ -495,14 +612,15 @@ impl SceneFile {
             _ => Path::new("."),
         };
         if !folder.is_dir() {
-            return Err(FormatError::new(format!(
-                "cannot write {}: the folder {} does not exist",
-                path.display(),
-                folder.display()
-            )));
+            return Err(FormatError::write(
+                path,
+                std::io::Error::new(
+                    std::io::ErrorKind::NotFound,
+                    format!("the folder {} does not exist", folder.display()),
+                ),
+            ));
         }
         let bytes = self.bytes_for(format, Some(folder))?;
-        crate::io::write_atomic(path, &bytes)
-            .map_err(|e| FormatError::new(format!("cannot write {}: {e}", path.display())))
+        crate::io::write_atomic(path, &bytes).map_err(|e| FormatError::write(path, e))
     }
 }

@@ -27,22 +27,17 @@ impl AssetDatabase {
     /// Reads the database file.
     pub fn load(path: &Path) -> Result<Self, FormatError> {
         let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
-            .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
+            .map_err(|e| FormatError::read(path, e))?;
         Self::from_json(&text).map_err(|e| e.in_file(path))
     }
 
     /// Parses the database.
     pub fn from_json(text: &str) -> Result<Self, FormatError> {
         super::check_json_depth(text.as_bytes())?;
-        let value: Value = serde_json::from_str(text).map_err(|e| {
-            FormatError::new(format!(
-                "invalid JSON at line {}, column {}: {e}",
-                e.line(),
-                e.column()
-            ))
-        })?;
+        let value: Value =
+            serde_json::from_str(text).map_err(|e| FormatError::json_syntax("JSON", &e))?;
         let types = value.as_object().ok_or_else(|| {
-            FormatError::new("the asset database must map object types to lists of assets")
+            FormatError::invalid("the asset database must map object types to lists of assets")
         })?;
         let mut assets = HashMap::new();
         for (object_type, list) in types {
@@ -51,9 +46,9 @@ impl AssetDatabase {
                 let id = asset
                     .get("assetId")
                     .and_then(Value::as_str)
-                    .ok_or_else(|| FormatError::new(format!("{at}: missing \"assetId\"")))?;
+                    .ok_or_else(|| FormatError::invalid(format!("{at}: missing \"assetId\"")))?;
                 let b = asset.get("boundingBox").ok_or_else(|| {
-                    FormatError::new(format!("{at} ('{id}'): missing \"boundingBox\""))
+                    FormatError::invalid(format!("{at} ('{id}'): missing \"boundingBox\""))
                 })?;
                 let mut size = [0.0; 3];
                 for (k, axis) in ["x", "y", "z"].iter().enumerate() {
@@ -62,7 +57,7 @@ impl AssetDatabase {
                         .and_then(Value::as_f64)
                         .filter(|v| v.is_finite() && *v > 0.0)
                         .ok_or_else(|| {
-                            FormatError::new(format!(
+                            FormatError::invalid(format!(
                                 "{at} ('{id}'): boundingBox.{axis} must be a number > 0"
                             ))
                         })?;
@@ -103,7 +98,7 @@ pub fn looks_like_house(document: &Value) -> bool {
 /// line (`.jsonl`), and converts it to a scene-JSON document.
 pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Value, FormatError> {
     let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
-        .map_err(|e| FormatError::new(format!("cannot read {}: {e}", path.display())))?;
+        .map_err(|e| FormatError::read(path, e))?;
     super::check_json_depth(text.as_bytes()).map_err(|e| e.in_file(path))?;
     let stem = path.file_stem().and_then(|s| s.to_str()).unwrap_or("house");
     let lines: Vec<&str> = text.lines().filter(|l| !l.trim().is_empty()).collect();
@@ -112,7 +107,7 @@ pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Va
         && serde_json::from_str::<Value>(lines[0]).is_ok()
     {
         let text = lines.get(index).ok_or_else(|| {
-            FormatError::new(format!(
+            FormatError::invalid(format!(
                 "{} holds {} houses; house {index} is out of range (they are counted from 0)",
                 path.display(),
                 lines.len()
@@ -121,7 +116,7 @@ pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Va
         (*text, Some(index + 1))
     } else {
         if index > 0 {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{} holds one house; house {index} is out of range (it is house 0)",
                 path.display()
             )));
@@ -129,12 +124,25 @@ pub fn read_file(path: &Path, index: usize, assets: &AssetDatabase) -> Result<Va
         (text.as_str(), None)
     };
     let house: Value = serde_json::from_str(house_text).map_err(|e| {
-        let place = line.map_or(String::new(), |l| format!("house on line {l}: "));
-        FormatError::new(format!(
-            "{}: {place}invalid JSON at column {}: {e}",
-            path.display(),
-            e.column()
-        ))
+        let syntax = FormatError::json_syntax("JSON", &e);
+        match (line, syntax) {
+            (
+                Some(l),
+                FormatError::Syntax {
+                    what,
+                    column,
+                    message,
+                    ..
+                },
+            ) => FormatError::Syntax {
+                what,
+                line: l,
+                column,
+                message,
+            },
+            (_, syntax) => syntax,
+        }
+        .in_file(path)
     })?;
     let name = match line {
         Some(_) => format!("{stem} {index}"),
@@ -148,7 +156,7 @@ pub fn convert(house: &Value, assets: &AssetDatabase, name: &str) -> Result<Valu
     let objects = house
         .get("objects")
         .and_then(Value::as_array)
-        .ok_or_else(|| FormatError::new("the house has no \"objects\" list"))?;
+        .ok_or_else(|| FormatError::invalid("the house has no \"objects\" list"))?;
     let mut out = Vec::new();
     let mut counts: HashMap<String, usize> = HashMap::new();
     // Depth first, each object before its children (names are numbered in this order),
@@ -198,16 +206,16 @@ fn convert_object(
     let asset_id = object
         .get("assetId")
         .and_then(Value::as_str)
-        .ok_or_else(|| FormatError::new(format!("{at}: missing \"assetId\"")))?;
+        .ok_or_else(|| FormatError::invalid(format!("{at}: missing \"assetId\"")))?;
     let (object_type, size) = assets.get(asset_id).ok_or_else(|| {
-        FormatError::new(format!(
+        FormatError::invalid(format!(
             "{at}: asset '{asset_id}' is not in the asset database"
         ))
     })?;
     let xyz = |key: &str| -> Result<[f64; 3], FormatError> {
-        let v = object
-            .get(key)
-            .ok_or_else(|| FormatError::new(format!("{at} ('{asset_id}'): missing \"{key}\"")))?;
+        let v = object.get(key).ok_or_else(|| {
+            FormatError::invalid(format!("{at} ('{asset_id}'): missing \"{key}\""))
+        })?;
         let mut out = [0.0; 3];
         for (k, axis) in ["x", "y", "z"].iter().enumerate() {
             out[k] = v
@@ -215,7 +223,7 @@ fn convert_object(
                 .and_then(Value::as_f64)
                 .filter(|x| x.is_finite())
                 .ok_or_else(|| {
-                    FormatError::new(format!(
+                    FormatError::invalid(format!(
                         "{at} ('{asset_id}'): {key}.{axis} must be a finite number"
                     ))
                 })?;
@@ -418,10 +426,10 @@ mod tests {
         std::fs::write(&path, house(5000)).unwrap();
         let e = read_file(&path, 0, &db).unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("nesting deeper than 100 levels at line 1, column "),
             "{}",
-            e.message
+            e.to_string()
         );
     }
 
@@ -451,7 +459,7 @@ mod tests {
         let unknown = house.to_string().replace("Sofa_1", "Sofa_9");
         let e = convert(&serde_json::from_str(&unknown).unwrap(), &db, "h").unwrap_err();
         assert_eq!(
-            e.message,
+            e.to_string(),
             "objects[0]: asset 'Sofa_9' is not in the asset database"
         );
     }

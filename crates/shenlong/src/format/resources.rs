@@ -70,7 +70,8 @@ pub(crate) fn plan(document: &GltfDocument, output: &Path) -> Result<Option<Copi
         if copies.uris.contains_key(&uri) {
             continue;
         }
-        let source = gltf::resolve_uri(base, &uri).map_err(|e| FormatError::new(e.to_string()))?;
+        let source =
+            gltf::resolve_uri(base, &uri).map_err(|e| FormatError::invalid(e.to_string()))?;
         let key = source.canonicalize().unwrap_or_else(|_| source.clone());
         let new_uri = match by_source.get(&key) {
             Some(u) => u.clone(),
@@ -104,7 +105,7 @@ pub(crate) fn write_all(copies: &Copies, output: &Path, bytes: &[u8]) -> Result<
     let mut staged: Vec<Staged> = Vec::with_capacity(copies.files.len());
     for (source, target) in &copies.files {
         let file = crate::io::stage(target, |file| copy_into(source, file)).map_err(|e| {
-            FormatError::new(format!(
+            FormatError::invalid(format!(
                 "cannot copy {} to {}: {e}",
                 source.display(),
                 target.display()
@@ -113,7 +114,7 @@ pub(crate) fn write_all(copies: &Copies, output: &Path, bytes: &[u8]) -> Result<
         staged.push(file);
     }
     let main = crate::io::stage(output, |file| file.write_all(bytes))
-        .map_err(|e| FormatError::new(format!("cannot write {}: {e}", output.display())))?;
+        .map_err(|e| FormatError::write(output, e))?;
     // Everything is on disk; now into place, the glTF last.
     let mut made: Vec<PathBuf> = Vec::new();
     let undo = |made: &[PathBuf]| {
@@ -125,10 +126,7 @@ pub(crate) fn write_all(copies: &Copies, output: &Path, bytes: &[u8]) -> Result<
         let target = file.target().to_path_buf();
         if let Err(e) = file.commit() {
             undo(&made);
-            return Err(FormatError::new(format!(
-                "cannot write {}: {e}",
-                target.display()
-            )));
+            return Err(FormatError::write(&target, e));
         }
         if !existed {
             made.push(target);
@@ -136,7 +134,7 @@ pub(crate) fn write_all(copies: &Copies, output: &Path, bytes: &[u8]) -> Result<
     }
     main.commit().map_err(|e| {
         undo(&made);
-        FormatError::new(format!("cannot write {}: {e}", output.display()))
+        FormatError::write(output, e)
     })
 }
 
@@ -145,18 +143,15 @@ pub(crate) fn write_all(copies: &Copies, output: &Path, bytes: &[u8]) -> Result<
 fn check_destination(target: &Path) -> Result<bool, FormatError> {
     match std::fs::symlink_metadata(target) {
         Err(e) if e.kind() == std::io::ErrorKind::NotFound => Ok(false),
-        Err(e) => Err(FormatError::new(format!(
-            "cannot write {}: {e}",
-            target.display()
-        ))),
-        Ok(m) if m.file_type().is_symlink() => Err(FormatError::new(format!(
-            "cannot write {}: it is a link, and Shenlong does not write through links",
-            target.display()
-        ))),
-        Ok(m) if !m.is_file() => Err(FormatError::new(format!(
-            "cannot write {}: it is not a regular file",
-            target.display()
-        ))),
+        Err(e) => Err(FormatError::write(target, e)),
+        Ok(m) if m.file_type().is_symlink() => Err(FormatError::write(
+            target,
+            std::io::Error::other("it is a link, and Shenlong does not write through links"),
+        )),
+        Ok(m) if !m.is_file() => Err(FormatError::write(
+            target,
+            std::io::Error::other("it is not a regular file"),
+        )),
         Ok(_) => Ok(true),
     }
 }
@@ -457,8 +452,8 @@ mod tests {
 
         let file = SceneFile::load(&scene).unwrap();
         let e = file.save(&home.join("edited.gltf")).unwrap_err();
-        assert!(e.message.contains("edited_0.bin"), "{}", e.message);
-        assert!(e.message.contains("link"), "{}", e.message);
+        assert!(e.to_string().contains("edited_0.bin"), "{}", e.to_string());
+        assert!(e.to_string().contains("link"), "{}", e.to_string());
         assert_eq!(std::fs::read(&victim).unwrap(), b"precious");
         assert_eq!(
             listing(&home),
@@ -474,12 +469,12 @@ mod tests {
         std::fs::remove_file(home.join("edited_0.bin")).unwrap();
         std::os::unix::fs::symlink(root.path().join("planted"), home.join("edited_1.bin")).unwrap();
         let e = file.save(&home.join("edited.gltf")).unwrap_err();
-        assert!(e.message.contains("edited_1.bin"), "{}", e.message);
+        assert!(e.to_string().contains("edited_1.bin"), "{}", e.to_string());
         assert!(!root.path().join("planted").exists());
         std::fs::remove_file(home.join("edited_1.bin")).unwrap();
         std::fs::create_dir(home.join("edited_2.bin")).unwrap();
         let e = file.save(&home.join("edited.gltf")).unwrap_err();
-        assert!(e.message.contains("edited_2.bin"), "{}", e.message);
+        assert!(e.to_string().contains("edited_2.bin"), "{}", e.to_string());
         assert_eq!(listing(&home), set(&["edited_2.bin"]));
     }
 
@@ -502,7 +497,7 @@ mod tests {
             // (Images are not read to find the objects.)
             let file = SceneFile::load(&scene).unwrap();
             let e = file.save(&home.join("edited.gltf")).unwrap_err();
-            assert!(e.message.contains("outside"), "{image}: {}", e.message);
+            assert!(e.to_string().contains("outside"), "{image}: {}", e);
             assert!(listing(&home).is_empty(), "{image}: {:?}", listing(&home));
         }
         assert_eq!(

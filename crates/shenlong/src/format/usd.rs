@@ -216,7 +216,7 @@ impl Resolver for FolderResolver {
 }
 
 fn err(message: impl Into<String>) -> FormatError {
-    FormatError::new(message)
+    FormatError::invalid(message)
 }
 
 /// The container a path's extension names.
@@ -252,7 +252,7 @@ struct Opened {
 fn check_file(path: &Path) -> Result<u64, FormatError> {
     crate::io::open_limited(path, MAX_USD_BYTES)
         .map(|(_, len)| len)
-        .map_err(|e| err(format!("cannot read it: {e}")))
+        .map_err(|e| FormatError::read(path, e))
 }
 
 /// Whether a `.usdz` package is as USD makes them: a zip whose files are stored, not
@@ -260,7 +260,7 @@ fn check_file(path: &Path) -> Result<u64, FormatError> {
 /// only its end record and central directory, not the files.
 fn check_package(path: &Path) -> Result<(), FormatError> {
     use std::io::{Read, Seek, SeekFrom};
-    let cannot = |e: std::io::Error| err(format!("cannot read it: {e}"));
+    let cannot = |e: std::io::Error| FormatError::read(path, e);
     let bad = |what: &str| err(format!("not a USD package: {what}"));
     let (mut file, total) = crate::io::open_limited(path, MAX_USD_BYTES).map_err(cannot)?;
     // The end of central directory record: its signature within the last 64 KiB + 22.
@@ -329,16 +329,15 @@ fn check_package(path: &Path) -> Result<(), FormatError> {
 fn open_stage(path: &Path) -> Result<Opened, FormatError> {
     if container_of(path)? == UsdContainer::Usda {
         let text = crate::io::read_text_limited(path, MAX_USD_BYTES)
-            .map_err(|e| err(format!("cannot read it: {e}")))?;
+            .map_err(|e| FormatError::read(path, e))?;
         check_nesting(&text)?;
     }
     let folder = path.parent().unwrap_or(Path::new("."));
-    let resolver =
-        FolderResolver::new(folder).map_err(|e| err(format!("cannot read its folder: {e}")))?;
+    let resolver = FolderResolver::new(folder).map_err(|e| FormatError::read(folder, e))?;
     let refused = resolver.refusals();
     let real = path
         .canonicalize()
-        .map_err(|e| err(format!("cannot read it: {e}")))?;
+        .map_err(|e| FormatError::read(path, e))?;
     let stage = Stage::builder()
         .resolver(resolver)
         .open(&real.to_string_lossy())
@@ -536,7 +535,7 @@ fn own_walk(
         return Ok(None);
     }
     let text = crate::io::read_text_limited(path, MAX_USD_BYTES)
-        .map_err(|e| err(format!("cannot read it: {e}")))?;
+        .map_err(|e| FormatError::read(path, e))?;
     let parsed = layer::read(&text, MAX_PRIMS)?;
     drop(text);
     match parsed {
@@ -838,11 +837,10 @@ pub fn write(
     };
     let same_folder = target.is_none_or(|t| same_dir(t, source_folder));
     if locals.iter().all(Option::is_none) && container == document.container && same_folder {
-        return std::fs::read(&document.source)
-            .map_err(|e| err(format!("cannot read the source again: {e}")));
+        return std::fs::read(&document.source).map_err(|e| FormatError::read(&document.source, e));
     }
     if container != UsdContainer::Usda {
-        return Err(err(
+        return Err(FormatError::unsupported(
             "Shenlong writes USD edits as .usda text: write the edit to a .usda file (or as a layer over the stage with --usd-layer)",
         ));
     }
@@ -860,7 +858,7 @@ pub fn write(
         return write_layer(scene, document, &source_name(&real, folder.as_deref()));
     }
     let text = std::fs::read_to_string(&document.source)
-        .map_err(|e| err(format!("cannot read the source again: {e}")))?;
+        .map_err(|e| FormatError::read(&document.source, e))?;
     let edits: Vec<(String, patch::Ops)> = document
         .objects
         .iter()

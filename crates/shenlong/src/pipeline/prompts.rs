@@ -3,7 +3,7 @@
 //! transformation per variable. The prompts live in `prompts/*.md`, each with a version
 //! string that goes into cache keys and reports.
 
-use crate::expr::{self, reply, Dialect, ExprError, Transformation};
+use crate::expr::{self, reply, Dialect, ExprError, ExprErrorKind, Transformation};
 use crate::llm::Message;
 use crate::scene::{Scene, Shape};
 use crate::translate::Templated;
@@ -128,14 +128,17 @@ impl System {
                     let bound: Vec<String> = (0..templated.objects.len())
                         .map(Templated::variable)
                         .collect();
-                    ExprError::whole(format!(
-                        "the reply names {variable}, but the instruction only has {}",
-                        if bound.is_empty() {
-                            "no variables".to_string()
-                        } else {
-                            bound.join(", ")
-                        }
-                    ))
+                    ExprError::whole(
+                        ExprErrorKind::Reply,
+                        format!(
+                            "the reply names {variable}, but the instruction only has {}",
+                            if bound.is_empty() {
+                                "no variables".to_string()
+                            } else {
+                                bound.join(", ")
+                            }
+                        ),
+                    )
                 })
         };
         let mut answers = Vec::new();
@@ -158,10 +161,7 @@ impl System {
                                 } else {
                                     String::new()
                                 };
-                                ExprError {
-                                    message: format!("{}{which}: {}", entry.variable, e.message),
-                                    column: e.column,
-                                }
+                                e.within(&format!("{}{which}", entry.variable))
                             })?;
                         m = item.versor * m;
                     }
@@ -182,7 +182,7 @@ impl System {
                     .rev()
                     .find(|(_, m)| m.keys().any(|k| k.trim().starts_with(['X', 'x'])))
                 else {
-                    return Err(ExprError::whole(
+                    return Err(ExprError::whole(ExprErrorKind::Reply,
                         "no JSON object naming the variables found in the reply: answer with one JSON object such as {\"X1\": {\"position\": [0, 0.5, 0], \"rotation\": [0, 0, 0]}}",
                     ));
                 };
@@ -193,7 +193,7 @@ impl System {
                     }
                     let object = object_of(&variable)?;
                     let transformation = omniverse_transformation(scene, object, value)
-                        .map_err(|m| ExprError::whole(format!("{variable}: {}", m.message)))?;
+                        .map_err(|m| m.within(&variable))?;
                     answers.push(Answer {
                         near: None,
                         variable,
@@ -206,6 +206,7 @@ impl System {
         }
         if answers.is_empty() {
             return Err(ExprError::whole(
+                ExprErrorKind::Reply,
                 "the reply changes no object: give a transformation for at least one variable",
             ));
         }
@@ -266,12 +267,18 @@ fn omniverse_transformation(
             None | Some(Value::Null) => Ok(None),
             Some(v) => {
                 let list = v.as_array().filter(|a| a.len() == 3).ok_or_else(|| {
-                    ExprError::whole(format!("\"{key}\" must be a list of three numbers"))
+                    ExprError::whole(
+                        ExprErrorKind::Reply,
+                        format!("\"{key}\" must be a list of three numbers"),
+                    )
                 })?;
                 let mut out = [0.0; 3];
                 for (k, item) in list.iter().enumerate() {
                     out[k] = item.as_f64().filter(|x| x.is_finite()).ok_or_else(|| {
-                        ExprError::whole(format!("\"{key}\"[{k}] must be a number"))
+                        ExprError::whole(
+                            ExprErrorKind::Reply,
+                            format!("\"{key}\"[{k}] must be a number"),
+                        )
                     })?;
                 }
                 Ok(Some(out))
@@ -280,6 +287,7 @@ fn omniverse_transformation(
     };
     if !value.is_object() {
         return Err(ExprError::whole(
+            ExprErrorKind::Reply,
             "give an object with \"position\" and \"rotation\"",
         ));
     }
@@ -297,7 +305,7 @@ fn omniverse_transformation(
         scale: 1.0,
     }
     .to_versor()
-    .map_err(|e| ExprError::whole(e.to_string()))?;
+    .map_err(|e| ExprError::whole(ExprErrorKind::NotATransformation, e.to_string()))?;
     expr::to_transformation(&m)
 }
 

@@ -125,7 +125,7 @@ impl LlmTranslator {
         scene: &Scene,
     ) -> Result<Vec<crate::translate::Answer>, crate::expr::ExprError> {
         if text.len() > MAX_REPLY_BYTES {
-            return Err(crate::expr::ExprError::whole(format!(
+            return Err(crate::expr::ExprError::whole(crate::expr::ExprErrorKind::Limit, format!(
                 "the reply is too large ({} KiB; at most {} KiB): answer with one short JSON object",
                 text.len() / 1024,
                 MAX_REPLY_BYTES / 1024

@@ -224,7 +224,7 @@ fn huge_poses_are_refused_not_panicked_on() {
         crate::format::json::read(&text, "t")
             .map(|_| ())
             .unwrap_err()
-            .message
+            .to_string()
     };
     assert!(big("\"position\"", "[3e8, 0, 0]").contains("within ±1e6"));
     assert!(big("\"scale\"", "1e12").contains("must be in [1e-6, 1e6]"));

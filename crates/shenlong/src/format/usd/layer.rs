@@ -332,13 +332,13 @@ impl Parser<'_> {
                 return Ok(step);
             }
             if open.len() > MAX_DEPTH {
-                return Err(FormatError::new(format!(
+                return Err(FormatError::too_large(format!(
                     "nesting deeper than {MAX_DEPTH} levels at line {}",
                     line_of(self.lexer.text, self.lexer.pos)
                 )));
             }
             if self.layer.prims.len() > self.max_prims {
-                return Err(FormatError::new(format!(
+                return Err(FormatError::too_large(format!(
                     "more than {} prims",
                     self.max_prims
                 )));

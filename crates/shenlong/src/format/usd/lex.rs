@@ -143,5 +143,5 @@ pub(super) fn line_of(t: &[u8], at: usize) -> usize {
 }
 
 pub(super) fn unclosed(t: &[u8], at: usize, what: &str) -> FormatError {
-    FormatError::new(format!("an unclosed {what} at line {}", line_of(t, at)))
+    FormatError::invalid(format!("an unclosed {what} at line {}", line_of(t, at)))
 }

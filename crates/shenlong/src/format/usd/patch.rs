@@ -94,7 +94,7 @@ impl Scanner<'_> {
             self.others += 1;
         }
         if self.stack.len() > super::super::MAX_JSON_DEPTH * 4 {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::too_large(format!(
                 "nesting too deep at line {}",
                 line_of(self.text, at)
             )));
@@ -109,7 +109,7 @@ impl Scanner<'_> {
             _ => b'[',
         };
         let Some((block, _)) = self.stack.pop().filter(|(_, open)| *open == opener) else {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "an unmatched '{}' at line {}",
                 c as char,
                 line_of(self.text, at)
@@ -207,7 +207,7 @@ pub(super) fn check_depth(text: &str, max: usize) -> Result<(), FormatError> {
             Token::Open(_) => {
                 depth += 1;
                 if depth > max {
-                    return Err(FormatError::new(format!(
+                    return Err(FormatError::too_large(format!(
                         "nesting deeper than {max} levels at line {}",
                         line_of(t, at)
                     )));
@@ -261,7 +261,7 @@ impl Outline {
             }
         }
         if let Some((_, open)) = scanner.stack.last() {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "an unclosed '{}' at the end of the layer",
                 *open as char
             )));
@@ -373,6 +373,9 @@ pub(super) struct Move {
     pub to: PathBuf,
 }
 
+/// A replacement in the layer's text: bytes `.0..1` become `.2`.
+type Change = (usize, usize, String);
+
 /// The layer's text with each prim's new ops (`edits`, by path), and its relative asset
 /// paths rewritten when it `moves` to another folder.
 ///
@@ -392,40 +395,52 @@ pub(super) fn patch(
         }
     }
     let outline = Outline::scan_for(text, Some(&keep))?;
-    // Replacements: (start, end, new text), applied back to front.
-    let mut changes: Vec<(usize, usize, String)> = Vec::new();
+    let mut changes: Vec<Change> = Vec::new();
     let mut appended: Vec<(String, Ops)> = Vec::new();
     for (path, ops) in edits {
-        let Some(spec) = outline.prim(path) else {
-            appended.push((path.clone(), ops.clone()));
-            continue;
-        };
-        let lines = op_lines(ops, &spec.indent);
-        let mut inserted = false;
-        for (name, start, end) in &spec.properties {
-            if !replaced(name) {
-                continue;
-            }
-            let new = if inserted {
-                String::new()
-            } else {
-                lines.clone()
-            };
-            inserted = true;
-            changes.push((*start, *end, new));
-        }
-        if !inserted {
-            let at = line_after(text.as_bytes(), spec.open);
-            if text[spec.open..at].trim().is_empty() {
-                changes.push((at, at, lines));
-            } else {
-                // Something follows the `{` on its line: the ops go right after it.
-                changes.push((spec.open, spec.open, format!("\n{lines}")));
-            }
+        match outline.prim(path) {
+            Some(spec) => changes.extend(ops_in_spec(text, &spec, ops)),
+            None => appended.push((path.clone(), ops.clone())),
         }
     }
-    // Prims with no spec here: an `over` inside the nearest ancestor's spec.
-    let mut overs: HashMap<Option<String>, Vec<(String, Ops)>> = HashMap::new();
+    changes.extend(overs(text, &outline, appended));
+    if let Some(m) = moves {
+        changes.extend(moved_assets(text, &outline, m));
+    }
+    Ok(apply(text, changes))
+}
+
+/// The change that writes `ops` into a prim's own spec: over its first transform
+/// property (the others removed), or, with none, at the top of its body.
+fn ops_in_spec(text: &str, spec: &PrimSpec, ops: &Ops) -> Vec<Change> {
+    let lines = op_lines(ops, &spec.indent);
+    let mut changes = Vec::new();
+    for (name, start, end) in &spec.properties {
+        if replaced(name) {
+            let new = if changes.is_empty() {
+                lines.clone()
+            } else {
+                String::new()
+            };
+            changes.push((*start, *end, new));
+        }
+    }
+    if changes.is_empty() {
+        let at = line_after(text.as_bytes(), spec.open);
+        if text[spec.open..at].trim().is_empty() {
+            changes.push((at, at, lines));
+        } else {
+            // Something follows the `{` on its line: the ops go right after it.
+            changes.push((spec.open, spec.open, format!("\n{lines}")));
+        }
+    }
+    changes
+}
+
+/// For prims with no spec in this layer: `over`s inside the nearest ancestor's spec, or
+/// at the end of the layer.
+fn overs(text: &str, outline: &Outline, appended: Vec<(String, Ops)>) -> Vec<Change> {
+    let mut by_ancestor: HashMap<Option<String>, Vec<(String, Ops)>> = HashMap::new();
     for (path, ops) in appended {
         let mut ancestor = None;
         let mut p = path.as_str();
@@ -439,9 +454,10 @@ pub(super) fn patch(
             }
             p = parent;
         }
-        overs.entry(ancestor).or_default().push((path, ops));
+        by_ancestor.entry(ancestor).or_default().push((path, ops));
     }
-    for (ancestor, list) in overs {
+    let mut changes = Vec::new();
+    for (ancestor, list) in by_ancestor {
         let (at, indent, base) = match &ancestor {
             Some(a) => {
                 let spec = outline.prim(a).unwrap_or_else(|| PrimSpec {
@@ -473,19 +489,29 @@ pub(super) fn patch(
         tree.write(&mut block, &indent);
         changes.push((at, at, block));
     }
-    if let Some(m) = moves {
-        for &(a, b) in &outline.assets {
-            let inner = &text[a..b];
-            let (open, path) = if inner.starts_with("@@@") {
-                ("@@@", &inner[3..inner.len().saturating_sub(3)])
-            } else {
-                ("@", &inner[1..inner.len().saturating_sub(1)])
-            };
-            if let Some(new) = relocated(path, &m.from, &m.to) {
-                changes.push((a, b, format!("{open}{new}{open}")));
-            }
+    changes
+}
+
+/// The layer's relative asset paths, rewritten for its new folder.
+fn moved_assets(text: &str, outline: &Outline, m: &Move) -> Vec<Change> {
+    let mut changes = Vec::new();
+    for &(a, b) in &outline.assets {
+        let inner = &text[a..b];
+        let (open, path) = if inner.starts_with("@@@") {
+            ("@@@", &inner[3..inner.len().saturating_sub(3)])
+        } else {
+            ("@", &inner[1..inner.len().saturating_sub(1)])
+        };
+        if let Some(new) = relocated(path, &m.from, &m.to) {
+            changes.push((a, b, format!("{open}{new}{open}")));
         }
     }
+    changes
+}
+
+/// `text` with `changes` made, front to back; a change overlapping an earlier one is
+/// dropped.
+fn apply(text: &str, mut changes: Vec<Change>) -> String {
     changes.sort_by_key(|c| (c.0, c.1));
     let mut out = String::with_capacity(text.len() + 256);
     let mut cursor = 0;
@@ -498,7 +524,7 @@ pub(super) fn patch(
         cursor = end;
     }
     out.push_str(&text[cursor..]);
-    Ok(out)
+    out
 }
 
 /// The byte after the line that holds `at` (where a body's first statement goes).
@@ -741,10 +767,10 @@ def Xform "World"
         );
         let e = check_depth(&deep, 100).unwrap_err();
         assert!(
-            e.message
+            e.to_string()
                 .contains("nesting deeper than 100 levels at line 5"),
             "{}",
-            e.message
+            e.to_string()
         );
         assert!(check_depth("#usda 1.0\n(\n)\n", 100).is_ok());
         assert!(Outline::scan("#usda 1.0\ndef \"A\" (\n}\n").is_err());
@@ -753,9 +779,9 @@ def Xform "World"
     #[test]
     fn unbalanced_text_is_refused_with_where() {
         let e = Outline::scan("#usda 1.0\ndef \"A\" {\n").unwrap_err();
-        assert!(e.message.contains("unclosed '{'"), "{}", e.message);
+        assert!(e.to_string().contains("unclosed '{'"), "{}", e.to_string());
         let e = Outline::scan("#usda 1.0\ndef \"A\" {}\n}\n").unwrap_err();
-        assert!(e.message.contains("line 3"), "{}", e.message);
+        assert!(e.to_string().contains("line 3"), "{}", e.to_string());
     }
 
     #[test]

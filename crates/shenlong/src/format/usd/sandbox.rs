@@ -122,7 +122,7 @@ pub(super) fn run(
         let result = std::panic::catch_unwind(std::panic::AssertUnwindSafe(work));
         let message = match result {
             Ok(Ok(bytes)) => frame(0, &bytes),
-            Ok(Err(e)) => frame(1, e.message.as_bytes()),
+            Ok(Err(e)) => frame(1, e.to_string().as_bytes()),
             Err(_) => frame(2, b"the USD reader failed on this stage (a panic)"),
         };
         write_all(write_fd, &message);
@@ -138,7 +138,7 @@ pub(super) fn run(
     unsafe { libc::close(read_fd) };
     let (status, timed_out) = reap(pid, deadline, received.is_none());
     if timed_out {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::too_large(format!(
             "reading the stage took more than {} s (its composition grows without bound, or it is too large; SHENLONG_USD_SECONDS allows more); refused",
             budget.seconds
         )));
@@ -150,7 +150,9 @@ pub(super) fn run(
             data.drain(..9);
             Ok(data)
         }
-        Some((_, body)) => Err(FormatError::new(String::from_utf8_lossy(body).into_owned())),
+        Some((_, body)) => Err(FormatError::invalid(
+            String::from_utf8_lossy(body).into_owned(),
+        )),
         None => Err(died(status, budget)),
     }
 }
@@ -204,7 +206,7 @@ fn died(status: i32, budget: Budget) -> FormatError {
     } else {
         "it ended without an answer".to_string()
     };
-    FormatError::new(format!("not a USD stage Shenlong can read: reading {why}"))
+    FormatError::invalid(format!("not a USD stage Shenlong can read: reading {why}"))
 }
 
 /// A message: its kind, its length and its body.
@@ -295,7 +297,7 @@ fn address_space() -> u64 {
 /// The read in this process, a panic turned into an error.
 fn in_process(work: impl FnOnce() -> Result<Vec<u8>, FormatError>) -> Result<Vec<u8>, FormatError> {
     std::panic::catch_unwind(std::panic::AssertUnwindSafe(work)).unwrap_or_else(|_| {
-        Err(FormatError::new(
+        Err(FormatError::invalid(
             "the USD reader failed on this stage (a panic)",
         ))
     })
@@ -324,10 +326,10 @@ mod tests {
     #[test]
     fn answers_errors_crashes_hogs_and_hangs_come_back_as_one_line() {
         assert_eq!(run(small(), || Ok(vec![1, 2, 3])).unwrap(), [1, 2, 3]);
-        let e = run(small(), || Err(FormatError::new("no"))).unwrap_err();
-        assert_eq!(e.message, "no");
+        let e = run(small(), || Err(FormatError::invalid("no"))).unwrap_err();
+        assert_eq!(e.to_string(), "no");
         let e = run(small(), || panic!("boom")).unwrap_err();
-        assert!(e.message.contains("panic"), "{}", e.message);
+        assert!(e.to_string().contains("panic"), "{}", e.to_string());
         // Unbounded recursion: the child's stack overflows, this process goes on.
         #[allow(unconditional_recursion)]
         fn deep(n: u64) -> u64 {
@@ -336,14 +338,14 @@ mod tests {
             deep(n + 1) + pad[3]
         }
         let e = run(small(), || Ok(vec![deep(0) as u8])).unwrap_err();
-        assert!(e.message.contains("crashed"), "{}", e.message);
+        assert!(e.to_string().contains("crashed"), "{}", e.to_string());
         // A petabyte asked for: refused by the limit.
         let e = run(small(), || {
             let v: Vec<u8> = Vec::with_capacity(1 << 50);
             Ok(v)
         })
         .unwrap_err();
-        assert!(e.message.contains("crashed"), "{}", e.message);
+        assert!(e.to_string().contains("crashed"), "{}", e.to_string());
         let e = run(
             Budget {
                 seconds: 1,
@@ -354,6 +356,6 @@ mod tests {
             },
         )
         .unwrap_err();
-        assert!(e.message.contains("more than 1 s"), "{}", e.message);
+        assert!(e.to_string().contains("more than 1 s"), "{}", e.to_string());
     }
 }

@@ -78,7 +78,7 @@ impl Walk {
                 continue;
             }
             if tree.nodes.len() >= self.max_prims {
-                return Err(FormatError::new(format!(
+                return Err(FormatError::too_large(format!(
                     "more than {} prims",
                     self.max_prims
                 )));

@@ -56,7 +56,7 @@ impl Out {
 struct In<'a>(&'a [u8]);
 
 fn malformed() -> FormatError {
-    FormatError::new("the USD reader's answer is malformed")
+    FormatError::invalid("the USD reader's answer is malformed")
 }
 
 impl In<'_> {

@@ -122,13 +122,13 @@ fn op_matrix(attrs: Attrs<'_>, path: &str, op: &str) -> Result<DMat4, FormatErro
         _ => DMat4::IDENTITY,
     };
     if !m.is_finite() {
-        return Err(FormatError::new(format!(
+        return Err(FormatError::invalid(format!(
             "{path}: the transform op {name} is not finite"
         )));
     }
     if inverted {
         if m.determinant().abs() < 1e-300 {
-            return Err(FormatError::new(format!(
+            return Err(FormatError::invalid(format!(
                 "{path}: the inverted op {name} cannot be inverted"
             )));
         }
