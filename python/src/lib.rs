@@ -301,7 +301,7 @@ impl PyScene {
             let pending = session
                 .working()
                 .edit(&request, translator.as_ref(), &options);
-            outcome_json(pending.map(|p| session.land(p)))
+            outcome_json(session.conclude(pending))
         })
     }
 
@@ -325,7 +325,7 @@ impl PyScene {
                 expression: &expr,
             };
             let pending = session.working().apply(&request, &options);
-            outcome_json(pending.map(|p| session.land(p)))
+            outcome_json(session.conclude(pending))
         })
     }
 

@@ -20,6 +20,7 @@ struct Cli {
 #[derive(Subcommand)]
 enum Command {
     Edit(commands::edit::Args),
+    Chat(commands::chat::Args),
     Eval(commands::eval::Args),
     Apply(commands::apply::Args),
     Bench(commands::bench::Args),
@@ -64,6 +65,7 @@ fn main() -> ExitCode {
     };
     let result = match cli.command {
         Command::Edit(args) => commands::edit::run(args),
+        Command::Chat(args) => commands::chat::run(args),
         Command::Eval(args) => commands::eval::run(args),
         Command::Apply(args) => commands::apply::run(args),
         Command::Bench(args) => commands::bench::run_bench(args),

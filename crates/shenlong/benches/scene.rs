@@ -239,11 +239,7 @@ fn grid_text(count: usize) -> (String, String) {
 fn big_scenes(c: &mut Criterion) {
     use shenlong::pipeline::{edit_with, EditOptions};
     let translator = shenlong::offline::OfflineTranslator::new();
-    let options = EditOptions {
-        carry: true,
-        collisions: Some(shenlong::collide::ResolveOptions::default()),
-        selection: Vec::new(),
-    };
+    let options = EditOptions::new(true, Some(shenlong::collide::ResolveOptions::default()));
     let mut group = c.benchmark_group("big scenes");
     group.sample_size(10);
     for count in [1_000, 10_000, 100_000, 1_000_000] {

@@ -11,7 +11,9 @@
 //! answers reads while a language model thinks, and nobody ever sees half an edit. Both
 //! give the same outcome and the same undo (`session/ops.rs`).
 
+mod conversation;
 pub mod error;
+pub mod follow_up;
 mod ops;
 pub mod outcome;
 
@@ -126,6 +128,8 @@ pub struct Session {
     /// top of the undo stack), `Some(true)` for an undo (on top of the redo stack); `None`
     /// before any.
     latest_undone: Option<bool>,
+    /// What the conversation remembers of the turn before.
+    context: conversation::Context,
 }
 
 impl Session {
@@ -142,6 +146,7 @@ impl Session {
             history_budget: MAX_HISTORY_BYTES,
             grounder: OnceLock::new(),
             latest_undone: None,
+            context: conversation::Context::default(),
         }
     }
 
@@ -323,7 +328,7 @@ impl Session {
         self.step_outcome(false)
     }
 
-    fn step_outcome(&mut self, undo: bool) -> Result<Outcome, OpError> {
+    pub(crate) fn step_outcome(&mut self, undo: bool) -> Result<Outcome, OpError> {
         let (operation, kind, verb) = if undo {
             (Operation::Undo, ErrorKind::NothingToUndo, "undo")
         } else {
@@ -332,10 +337,17 @@ impl Session {
         let change = self
             .step(undo)
             .map_err(|StepError::Nothing| OpError::new(kind, format!("nothing to {verb}")))?;
-        let moved = self
+        let changed: Vec<(usize, Object, Object)> = self
             .latest_changes()
             .into_iter()
             .flatten()
+            .map(|(i, from, to)| (i, from.clone(), to.clone()))
+            .collect();
+        if let Some(id) = change.id {
+            self.context.stepped(id, undo, &changed, &self.file.scene);
+        }
+        let moved = changed
+            .iter()
             .filter(|(_, from, to)| from.pose_differs(to))
             .map(|(_, from, to)| Moved {
                 object: to.name.clone(),

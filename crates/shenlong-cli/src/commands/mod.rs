@@ -2,6 +2,7 @@
 
 pub mod apply;
 pub mod bench;
+pub mod chat;
 pub mod convert;
 pub mod edit;
 pub mod eval;

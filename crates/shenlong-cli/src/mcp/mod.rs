@@ -294,7 +294,7 @@ impl ShenlongMcp {
         })
         .await
         .map_err(|e| format!("the edit stopped: {e}"))?;
-        let result = pending.map(|p| self.session().land(p));
+        let result = self.session().conclude(pending);
         self.answer(result, &peer).await
     }
 
@@ -324,7 +324,7 @@ impl ShenlongMcp {
         })
         .await
         .map_err(|e| format!("the edit stopped: {e}"))?;
-        let result = pending.map(|p| self.session().land(p));
+        let result = self.session().conclude(pending);
         self.answer(result, &peer).await
     }
 

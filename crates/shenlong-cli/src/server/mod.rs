@@ -585,14 +585,16 @@ async fn edit_scene(
             selected: &request.selected,
             report: true,
         };
-        working
-            .edit(&edit, translator.as_ref(), &options)
-            .map(|pending| (pending, request.report))
+        (
+            working.edit(&edit, translator.as_ref(), &options),
+            request.report,
+        )
     })
     .await
     .map_err(|e| ApiError::internal(format!("the edit stopped: {e}")))?;
-    let (pending, with_report) = pending?;
-    let mut outcome = app.lock().session.land(pending);
+    let (pending, with_report) = pending;
+    // A refusal is heard too: a correction ("the left one") leans on it.
+    let mut outcome = app.lock().session.conclude(pending)?;
     let kept = Arc::new(answer(&outcome)?);
     *app.last_edit.lock().unwrap_or_else(|e| e.into_inner()) = Some(Arc::clone(&kept));
     if !with_report {
@@ -635,8 +637,8 @@ async fn apply(
         )
     })
     .await
-    .map_err(|e| ApiError::internal(format!("the edit stopped: {e}")))??;
-    let outcome = app.lock().session.land(pending);
+    .map_err(|e| ApiError::internal(format!("the edit stopped: {e}")))?;
+    let outcome = app.lock().session.conclude(pending)?;
     Ok(Json(answer(&outcome)?))
 }
 

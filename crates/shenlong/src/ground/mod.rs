@@ -382,6 +382,22 @@ impl Grounder {
         scene: &Scene,
         selection: &[usize],
     ) -> Result<Grounding, GroundError> {
+        self.ground_with_focus(instruction, scene, selection, false)
+    }
+
+    /// [`Grounder::ground_with_selection`] where the objects "it" means are either the
+    /// selection or (`last_edit`) what the conversation's last edit moved, as the reasons
+    /// say.
+    ///
+    /// # Errors
+    /// As [`Grounder::ground`].
+    pub fn ground_with_focus(
+        &self,
+        instruction: &str,
+        scene: &Scene,
+        selection: &[usize],
+        last_edit: bool,
+    ) -> Result<Grounding, GroundError> {
         let quoted = self.quote_bracketed(instruction.trim());
         let marked = words::imperial_marks(&quoted);
         let lined = words::line_of_objects(&marked);
@@ -406,7 +422,7 @@ impl Grounder {
             Err(GroundError::NoObject { .. }) if !selection.is_empty() => Vec::new(),
             Err(e) => return Err(e),
         };
-        if let Some(phrase) = selection_phrase(text, scene, selection, &phrases) {
+        if let Some(phrase) = selection_phrase(text, scene, selection, &phrases, last_edit) {
             phrases.insert(0, phrase);
         }
         if phrases.is_empty() {
@@ -546,6 +562,7 @@ fn selection_phrase(
     scene: &Scene,
     selection: &[usize],
     phrases: &[Phrase],
+    last_edit: bool,
 ) -> Option<Phrase> {
     if selection.is_empty() {
         return None;
@@ -560,6 +577,19 @@ fn selection_phrase(
         let w = word(k);
         let range = match w.as_str() {
             "it" | "them" => k..k + 1,
+            // "move that left": a pronoun, not a determiner, before a preposition, a
+            // number or nothing.
+            "that" | "this" | "those" | "these"
+                if tokens.get(k + 1).is_none_or(|t| match &t.kind {
+                    Kind::Word(next) => {
+                        words::is_preposition(&next.to_lowercase())
+                            || words::side_word(&next.to_lowercase()).is_some()
+                    }
+                    _ => true,
+                }) =>
+            {
+                k..k + 1
+            }
             "selection" if word(k.wrapping_sub(1)) == "the" => k - 1..k + 1,
             "selection" => k..k + 1,
             "selected" => {
@@ -588,8 +618,13 @@ fn selection_phrase(
             reasons: vec![Reason {
                 kind: ReasonKind::Selection,
                 detail: format!(
-                    "\"{}\" is the selection: {}",
+                    "\"{}\" is {}: {}",
                     &text[tokens[range.start].span.start..tokens[range.end - 1].span.end],
+                    if last_edit {
+                        "what the last edit moved"
+                    } else {
+                        "the selection"
+                    },
                     error::list(&names)
                 ),
             }],

@@ -2,7 +2,7 @@
 //! with a report of everything that happened. The scene is changed only when every stage
 //! succeeded.
 
-use super::template::{template_selected, Templated};
+use super::template::Templated;
 use super::translate::{Exchange, Translator};
 use crate::collide::{self, ResolveOptions};
 use crate::ground::{GroundError, Grounder, Reason};
@@ -21,6 +21,9 @@ pub struct EditOptions {
     /// The objects the user has selected (indices), which "it", "them" or "the
     /// selection" mean when nothing is named before them; empty for none.
     pub selection: Vec<usize>,
+    /// The `selection` is what a conversation's last edit moved, not what the user
+    /// selected (the reasons say which).
+    pub selection_is_last_edit: bool,
 }
 
 impl EditOptions {
@@ -32,6 +35,7 @@ impl EditOptions {
             carry,
             collisions,
             selection: Vec::new(),
+            selection_is_last_edit: false,
         }
     }
 }
@@ -41,6 +45,7 @@ impl Default for EditOptions {
         Self {
             carry: true,
             selection: Vec::new(),
+            selection_is_last_edit: false,
             collisions: Some(ResolveOptions::default()),
         }
     }
@@ -367,16 +372,22 @@ pub fn edit_with(
     let started = Instant::now();
     let mut timings = Timings::default();
     let t0 = Instant::now();
-    let templated: Templated = template_selected(grounder, instruction, scene, &options.selection)
-        .map_err(|e| EditError {
-            message: e.to_string(),
-            kind: match e {
-                GroundError::Empty | GroundError::TooLong { .. } => EditErrorKind::BadInput,
-                _ => EditErrorKind::Instruction,
-            },
-            replies: ReplyCounts::default(),
-            ambiguity: e.ambiguity(),
-        })?;
+    let templated: Templated = super::template::template_focused(
+        grounder,
+        instruction,
+        scene,
+        &options.selection,
+        options.selection_is_last_edit,
+    )
+    .map_err(|e| EditError {
+        message: e.to_string(),
+        kind: match e {
+            GroundError::Empty | GroundError::TooLong { .. } => EditErrorKind::BadInput,
+            _ => EditErrorKind::Instruction,
+        },
+        replies: ReplyCounts::default(),
+        ambiguity: e.ambiguity(),
+    })?;
     timings.template = ms(t0);
 
     let t0 = Instant::now();
@@ -915,7 +926,7 @@ mod place_tests {
                 radius: 0.5,
                 ..ResolveOptions::default()
             }),
-            selection: Vec::new(),
+            ..EditOptions::default()
         }
     }
 

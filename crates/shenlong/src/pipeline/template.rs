@@ -46,7 +46,22 @@ pub fn template_selected(
     scene: &Scene,
     selection: &[usize],
 ) -> Result<Templated, GroundError> {
-    let mut grounding = grounder.ground_with_selection(instruction, scene, selection)?;
+    template_focused(grounder, instruction, scene, selection, false)
+}
+
+/// [`template_selected`] where the selection may be what a conversation's last edit
+/// moved (`last_edit`), as the reasons then say.
+///
+/// # Errors
+/// As [`template`].
+pub fn template_focused(
+    grounder: &Grounder,
+    instruction: &str,
+    scene: &Scene,
+    selection: &[usize],
+    last_edit: bool,
+) -> Result<Templated, GroundError> {
+    let mut grounding = grounder.ground_with_focus(instruction, scene, selection, last_edit)?;
     check_phrases(&mut grounding, scene)?;
     let text = grounding.instruction.as_str();
     // What is held is cut from the query (a cut that would take a bound phrase with it is

@@ -77,6 +77,10 @@ pub struct OpError {
     /// translator (a language model) may read.
     #[serde(skip_serializing_if = "std::ops::Not::not")]
     pub unread: bool,
+    /// The instruction an edit refused, as it ran: what a correction ("the left one")
+    /// leans on once the session hears of the refusal ([`crate::session::Session::conclude`]).
+    #[serde(skip)]
+    pub(crate) refused: Option<String>,
 }
 
 impl OpError {
@@ -88,6 +92,7 @@ impl OpError {
             message: message.into(),
             ambiguity: None,
             unread: false,
+            refused: None,
         }
     }
 
@@ -113,6 +118,7 @@ impl OpError {
             unread: error.kind == EditErrorKind::Unread,
             message: error.message,
             ambiguity,
+            refused: None,
         }
     }
 }

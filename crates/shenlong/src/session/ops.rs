@@ -7,6 +7,7 @@
 //!   [`Working::apply`] away from any lock, then [`Session::land`]): what a server does so
 //!   that reads go on while a language model thinks.
 
+use super::conversation::{self, Context, Edited, Plan};
 use super::error::{ErrorKind, OpError};
 use super::outcome::{self, How, Moved, Operation, Outcome, Pose, Understood};
 use super::{diff, Session};
@@ -39,16 +40,30 @@ pub struct ApplyRequest<'a> {
 }
 
 /// A copy of the session's scene to run one operation on, away from the session (and any
-/// lock around it); [`Session::land`] swaps its result in.
+/// lock around it); [`Session::conclude`] swaps its result in.
 pub struct Working {
     scene: Scene,
     grounder: Arc<Grounder>,
+    context: Context,
+    /// The objects the latest change changed, as they were before it: what a correction
+    /// ("no, the other one") takes back first.
+    previous: Option<Vec<(usize, Object)>>,
 }
 
 /// A finished operation on a working copy, not yet in the session.
-pub struct Pending {
-    scene: Scene,
-    done: Done,
+pub struct Pending(Then);
+
+/// What landing a finished operation does.
+enum Then {
+    /// Make this scene the session's (after taking the latest change back, with
+    /// `undo_first`).
+    Land {
+        scene: Scene,
+        done: Done,
+        undo_first: bool,
+    },
+    /// Take the latest change back.
+    Undo,
 }
 
 /// What an operation did, besides the scene it left.
@@ -61,18 +76,16 @@ struct Done {
     understood: Understood,
     notes: Vec<String>,
     report: Option<Box<EditReport>>,
+    /// What the next turn may lean on: the instruction as run and its phrases.
+    turn: Edited,
+    /// A repeat of the last motions: the instruction they came from stays the one to
+    /// lean on.
+    repeats: bool,
 }
 
-/// Runs an instruction on `scene` (on an error, it is as it was); what it did and the
-/// motions it applied.
-fn edit(
-    scene: &mut Scene,
-    grounder: &Grounder,
-    request: &EditRequest<'_>,
-    translator: &dyn Translator,
-    options: &EditOptions,
-) -> Result<(Done, Vec<AppliedMotion>), OpError> {
-    let selection = request
+/// The objects `selected` names, by index.
+fn selection(scene: &Scene, request: &EditRequest<'_>) -> Result<Vec<usize>, OpError> {
+    request
         .selected
         .iter()
         .map(|name| {
@@ -80,14 +93,78 @@ fn edit(
                 .resolve(name)
                 .map_err(|e| OpError::new(ErrorKind::BadInput, format!("selected: {e}")))
         })
-        .collect::<Result<Vec<_>, _>>()?;
+        .collect()
+}
+
+/// Runs a plan other than an undo on `scene` (on an error, it is as it was); what it did
+/// and the motions it applied.
+fn run(
+    scene: &mut Scene,
+    grounder: &Grounder,
+    plan: Plan,
+    request: &EditRequest<'_>,
+    translator: &dyn Translator,
+    options: &EditOptions,
+) -> Result<(Done, Vec<AppliedMotion>), OpError> {
+    match plan {
+        Plan::Edit {
+            instruction,
+            focus,
+            from_last,
+            ..
+        } => {
+            let options = EditOptions {
+                selection_is_last_edit: from_last,
+                ..options.clone()
+            };
+            edit(
+                scene,
+                grounder,
+                &instruction,
+                focus,
+                request,
+                translator,
+                &options,
+            )
+        }
+        Plan::Motions(moves) => motions(scene, &moves, request.instruction, options),
+        Plan::Restore { states, named } => restore(scene, states, named, request.instruction),
+        Plan::Undo => Err(OpError::new(
+            ErrorKind::Internal,
+            "an undo is not run as an edit",
+        )),
+    }
+}
+
+/// Runs an instruction on `scene` (on an error, it is as it was) with `focus` as what
+/// "it" means; what it did and the motions it applied.
+fn edit(
+    scene: &mut Scene,
+    grounder: &Grounder,
+    instruction: &str,
+    focus: Vec<usize>,
+    request: &EditRequest<'_>,
+    translator: &dyn Translator,
+    options: &EditOptions,
+) -> Result<(Done, Vec<AppliedMotion>), OpError> {
+    if focus.is_empty()
+        && conversation::has_pronoun(instruction)
+        && matches!(
+            grounder.ground(instruction, scene),
+            Err(crate::ground::GroundError::NoObject { .. })
+        )
+    {
+        return Err(conversation::nothing_before(instruction));
+    }
     let options = EditOptions {
-        selection,
+        selection: focus,
         ..options.clone()
     };
-    let made =
-        crate::pipeline::edit_with(scene, grounder, request.instruction, translator, &options)
-            .map_err(|e| OpError::from_edit(e, request.instruction))?;
+    let made = crate::pipeline::edit_with(scene, grounder, instruction, translator, &options)
+        .map_err(|e| OpError {
+            refused: Some(instruction.trim().to_string()),
+            ..OpError::from_edit(e, instruction)
+        })?;
     let r = &made.report;
     let done = Done {
         operation: Operation::Edit,
@@ -99,9 +176,128 @@ fn edit(
             bindings: r.bindings.clone(),
         },
         notes: outcome::notes(&r.collisions_resolved, &r.overlaps_remaining, &r.held),
+        turn: Edited {
+            instruction: Some(r.instruction.trim().to_string()),
+            phrases: r
+                .grounding
+                .iter()
+                .map(|g| {
+                    let objects = g.objects.iter().filter_map(|n| scene.find(n)).collect();
+                    (g.span[0]..g.span[1], objects)
+                })
+                .collect(),
+            ..Edited::default()
+        },
+        repeats: false,
         report: request.report.then(|| Box::new(made.report)),
     };
     Ok((done, made.motions))
+}
+
+/// The variables X1, X2 … for `objects`.
+fn bindings_of(scene: &Scene, objects: &[usize]) -> Vec<Binding> {
+    objects
+        .iter()
+        .enumerate()
+        .map(|(k, &i)| Binding {
+            variable: crate::translate::Templated::variable(k),
+            object: scene.objects[i].name.clone(),
+        })
+        .collect()
+}
+
+/// Applies motions (a repeat of the last ones) to `scene` through placement.
+fn motions(
+    scene: &mut Scene,
+    moves: &[(usize, cga::Similarity)],
+    text: &str,
+    options: &EditOptions,
+) -> Result<(Done, Vec<AppliedMotion>), OpError> {
+    let placed =
+        crate::pipeline::place(scene, moves, options).map_err(|e| OpError::from_edit(e, text))?;
+    let acted: Vec<usize> = moves.iter().map(|m| m.0).collect();
+    let done = Done {
+        operation: Operation::Edit,
+        text: text.to_string(),
+        moved: placed.moved,
+        carried: placed.carried,
+        understood: Understood {
+            query: text.trim().to_string(),
+            bindings: bindings_of(scene, &acted),
+        },
+        notes: outcome::notes(&placed.collisions_resolved, &placed.overlaps_remaining, &[]),
+        report: None,
+        turn: Edited::default(),
+        repeats: true,
+    };
+    Ok((done, placed.motions))
+}
+
+/// Puts objects back in earlier states; refused when one would now overlap another.
+fn restore(
+    scene: &mut Scene,
+    states: Vec<(usize, Object)>,
+    named: usize,
+    text: &str,
+) -> Result<(Done, Vec<AppliedMotion>), OpError> {
+    let boxes_before = scene.world_aabbs();
+    let supports: Vec<Option<usize>> = states
+        .iter()
+        .map(|(i, _)| scene.objects[*i].support)
+        .collect();
+    let mut applied = Vec::new();
+    for (i, state) in &states {
+        let world = state
+            .similarity()
+            .compose(&scene.objects[*i].similarity().inverse());
+        applied.push(scene.apply_world(&[*i], &world));
+        scene.objects[*i].support = state.support;
+    }
+    let group: Vec<usize> = states.iter().map(|s| s.0).collect();
+    let found = crate::collide::find_collisions(
+        &boxes_before,
+        &scene.world_aabbs(),
+        std::slice::from_ref(&group),
+        scene.floor(),
+        scene.bounds.as_ref(),
+    );
+    if let Some(o) = found
+        .iter()
+        .find(|o| matches!(o.with, crate::collide::Obstacle::Object(_)))
+    {
+        let crate::collide::Obstacle::Object(j) = o.with else {
+            unreachable!()
+        };
+        let message = format!(
+            "'{}' cannot go back where it was: '{}' stands there now",
+            scene.objects[o.object].name, scene.objects[j].name
+        );
+        for m in applied.iter().rev() {
+            scene.undo(m);
+        }
+        for ((i, _), support) in states.iter().zip(supports) {
+            scene.objects[*i].support = support;
+        }
+        return Err(OpError::new(ErrorKind::NoFreePlace, message));
+    }
+    let done = Done {
+        operation: Operation::Edit,
+        text: text.to_string(),
+        moved: group[..named].to_vec(),
+        carried: group[named..]
+            .iter()
+            .map(|&i| scene.objects[i].name.clone())
+            .collect(),
+        understood: Understood {
+            query: text.trim().to_string(),
+            bindings: bindings_of(scene, &group[..named]),
+        },
+        notes: Vec::new(),
+        report: None,
+        turn: Edited::default(),
+        repeats: false,
+    };
+    Ok((done, applied))
 }
 
 /// Applies an expression to `scene` (on an error, it is as it was); what it did and the
@@ -137,6 +333,8 @@ fn apply(
         },
         notes: outcome::notes(&placed.collisions_resolved, &placed.overlaps_remaining, &[]),
         report: None,
+        turn: Edited::default(),
+        repeats: false,
     };
     Ok((done, placed.motions))
 }
@@ -148,27 +346,46 @@ impl Working {
         &self.scene
     }
 
-    /// Runs an instruction.
+    /// Runs an instruction: a new one, or a follow-up of the turn before
+    /// ([docs/conversation.md](../../docs/conversation.md)).
     ///
     /// # Errors
-    /// An unknown selected object; whatever the edit refuses ([`OpError::from_edit`]).
+    /// An unknown selected object; a follow-up with nothing to lean on; whatever the edit
+    /// refuses ([`OpError::from_edit`]).
     pub fn edit(
         mut self,
         request: &EditRequest<'_>,
         translator: &dyn Translator,
         options: &EditOptions,
     ) -> Result<Pending, OpError> {
-        let (done, _) = edit(
+        let selected = selection(&self.scene, request)?;
+        let plan =
+            self.context
+                .plan(request.instruction, &selected, &self.scene, &self.grounder)?;
+        let undo_first = match plan {
+            Plan::Undo => return Ok(Pending(Then::Undo)),
+            Plan::Edit { undo_first, .. } => undo_first,
+            _ => false,
+        };
+        if undo_first {
+            let previous = self.previous.take().ok_or_else(nothing_to_correct)?;
+            for (i, state) in previous {
+                self.scene.objects[i] = state;
+            }
+        }
+        let (done, _) = run(
             &mut self.scene,
             &self.grounder,
+            plan,
             request,
             translator,
             options,
         )?;
-        Ok(Pending {
+        Ok(Pending(Then::Land {
             scene: self.scene,
             done,
-        })
+            undo_first,
+        }))
     }
 
     /// Applies an expression.
@@ -182,11 +399,42 @@ impl Working {
         options: &EditOptions,
     ) -> Result<Pending, OpError> {
         let (done, _) = apply(&mut self.scene, request, options)?;
-        Ok(Pending {
+        Ok(Pending(Then::Land {
             scene: self.scene,
             done,
-        })
+            undo_first: false,
+        }))
     }
+}
+
+/// A correction's outcome with what taking the corrected change back moved, first (an
+/// object the correction moves again is listed once, from where the change left it).
+fn with_taken_back(mut outcome: Outcome, taken_back: Option<Outcome>) -> Outcome {
+    let Some(undo) = taken_back else {
+        return outcome;
+    };
+    let mut moved: Vec<Moved> = Vec::new();
+    for back in undo.moved {
+        match outcome.moved.iter().position(|m| m.object == back.object) {
+            Some(k) => {
+                let mut again = outcome.moved.remove(k);
+                again.before = back.before;
+                moved.push(again);
+            }
+            None => moved.push(back),
+        }
+    }
+    moved.append(&mut outcome.moved);
+    outcome.moved = moved;
+    outcome
+}
+
+/// The refusal of a correction with no change before it to correct.
+fn nothing_to_correct() -> OpError {
+    OpError::new(
+        ErrorKind::NotUnderstood,
+        "there is no change before this to correct: say the whole instruction",
+    )
 }
 
 impl Session {
@@ -198,17 +446,29 @@ impl Session {
         )
     }
 
-    /// A copy of the scene to run an operation on ([`Working::edit`], [`Working::apply`]);
-    /// [`Session::land`] its result.
+    /// A copy of the scene to run an operation on ([`Working::edit`], [`Working::apply`]),
+    /// with what the conversation remembers; [`Session::conclude`] its result.
     #[must_use]
     pub fn working(&self) -> Working {
+        let previous = (self.latest_undone == Some(false))
+            .then(|| self.undo.last())
+            .flatten()
+            .map(|step| {
+                step.changes
+                    .iter()
+                    .map(|(i, a, _)| (*i, a.clone()))
+                    .collect()
+            });
         Working {
             scene: self.file.scene.clone(),
             grounder: self.grounder(),
+            context: self.context.clone(),
+            previous,
         }
     }
 
-    /// Runs an instruction on the scene, in place, and records it.
+    /// Runs an instruction on the scene, in place, and records it: a new one, or a
+    /// follow-up of the turn before.
     ///
     /// # Errors
     /// As [`Working::edit`]; the scene is then as it was.
@@ -219,16 +479,48 @@ impl Session {
         options: &EditOptions,
     ) -> Result<Outcome, OpError> {
         let grounder = self.grounder();
+        let selected = selection(&self.file.scene, request)?;
+        let plan =
+            self.context
+                .plan(request.instruction, &selected, &self.file.scene, &grounder)?;
+        let undo_first = match plan {
+            Plan::Undo => return self.undo(),
+            Plan::Edit { undo_first, .. } => undo_first,
+            _ => false,
+        };
+        let context = self.context.clone();
+        let taken_back = if undo_first {
+            if self.latest_undone != Some(false) {
+                return Err(nothing_to_correct());
+            }
+            Some(self.step_outcome(true).map_err(|_| nothing_to_correct())?)
+        } else {
+            None
+        };
         let supports = supports(&self.file.scene);
-        let (done, motions) = edit(
+        match run(
             &mut self.file.scene,
             &grounder,
+            plan,
             request,
             translator,
             options,
-        )?;
-        let changes = changes_since(&self.file.scene, &motions, &supports);
-        Ok(self.finish(changes, done))
+        ) {
+            Ok((done, motions)) => {
+                let changes = changes_since(&self.file.scene, &motions, &supports);
+                Ok(with_taken_back(self.finish(changes, done), taken_back))
+            }
+            Err(e) => {
+                if taken_back.is_some() {
+                    // The correction failed: the change it took back comes back, and
+                    // the conversation is as it was.
+                    let _ = self.step_outcome(false);
+                    self.context = context;
+                }
+                self.hear(&e);
+                Err(e)
+            }
+        }
     }
 
     /// Applies a CGA expression to one object, in place, and records it.
@@ -246,11 +538,39 @@ impl Session {
         Ok(self.finish(changes, done))
     }
 
-    /// Makes a finished operation's scene the session's, recording what it changed.
-    pub fn land(&mut self, pending: Pending) -> Outcome {
-        let changes = diff(&self.file.scene, &pending.scene);
-        self.file.scene = pending.scene;
-        self.finish(changes, pending.done)
+    /// Concludes an operation run on a working copy: makes its scene the session's,
+    /// recording what it changed, or hears its refusal (what a correction leans on).
+    ///
+    /// # Errors
+    /// The operation's refusal, as it was; nothing to undo for an "undo that".
+    pub fn conclude(&mut self, result: Result<Pending, OpError>) -> Result<Outcome, OpError> {
+        match result {
+            Err(e) => {
+                self.hear(&e);
+                Err(e)
+            }
+            Ok(Pending(Then::Undo)) => self.undo(),
+            Ok(Pending(Then::Land {
+                scene,
+                done,
+                undo_first,
+            })) => {
+                // Take the corrected change back, so that it can be redone.
+                let taken_back = (undo_first && self.latest_undone == Some(false))
+                    .then(|| self.step_outcome(true).ok())
+                    .flatten();
+                let changes = diff(&self.file.scene, &scene);
+                self.file.scene = scene;
+                Ok(with_taken_back(self.finish(changes, done), taken_back))
+            }
+        }
+    }
+
+    /// Remembers a refused instruction, for a correction to lean on.
+    fn hear(&mut self, e: &OpError) {
+        if let Some(instruction) = &e.refused {
+            self.context.refused(instruction, e.ambiguity.clone());
+        }
     }
 
     /// Records the changes of an operation already made and says what it did.
@@ -275,7 +595,22 @@ impl Session {
             Operation::Apply => "apply",
             _ => "edit",
         };
+        let mut turn = done.turn;
+        turn.motions = conversation::motions_of(&changes, &done.moved);
+        turn.acted = done.moved;
+        if done.repeats {
+            // A repeat keeps the instruction it repeats, for "and the mug too".
+            turn.instruction = self.context.last_instruction().map(|(i, p)| {
+                turn.phrases = p;
+                i
+            });
+        }
+        let kept = changes.clone();
         let change = self.record(changes, kind, &done.text);
+        if !kept.is_empty() {
+            self.context
+                .edited(turn, change.id, &kept, &self.file.scene);
+        }
         Outcome {
             operation: done.operation,
             history_id: change.id,
@@ -430,7 +765,7 @@ mod tests {
             let b = copied
                 .working()
                 .edit(&request, &OfflineTranslator::new(), options)
-                .map(|p| copied.land(p))
+                .and_then(|p| copied.conclude(Ok(p)))
                 .unwrap();
             assert_eq!(shape(&a), shape(&b), "{instruction}");
             assert!(!a.moved.is_empty(), "{instruction}");
@@ -451,7 +786,7 @@ mod tests {
         let b = copied
             .working()
             .apply(&expression, &EditOptions::default())
-            .map(|p| copied.land(p))
+            .and_then(|p| copied.conclude(Ok(p)))
             .unwrap();
         assert_eq!(shape(&a), shape(&b));
         assert_eq!(direct.history().len(), 5);

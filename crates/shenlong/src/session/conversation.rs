@@ -1,0 +1,632 @@
+//! A session's conversation: what it remembers of the turn before, and how a follow-up
+//! ([`super::follow_up`]) becomes an operation — an instruction to run with what "it"
+//! means, motions to repeat, poses to go back to, or an undo.
+//!
+//! Nothing here guesses: a follow-up with nothing before it to lean on is refused in one
+//! line that says why.
+
+use super::error::{Choices, ErrorKind, OpError};
+use super::follow_up::{self, Amount, FollowUp};
+use crate::ground::Grounder;
+use crate::scene::{Object, Scene};
+use cga::Similarity;
+use glam::DQuat;
+#[cfg(test)]
+use glam::DVec3;
+use std::ops::Range;
+use std::sync::Arc;
+
+/// How many earlier edits "put it back" can reach.
+const MAX_RETURNS: usize = 64;
+
+/// What the conversation remembers; cheap to copy into a working copy.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Context {
+    /// The last operation that moved objects.
+    edit: Option<Arc<Edited>>,
+    /// An instruction refused since then.
+    refusal: Option<Arc<Refusal>>,
+    returns: Arc<Vec<ReturnPoint>>,
+}
+
+/// An instruction refused, with the phrase that could mean several objects, if that was
+/// why.
+#[derive(Clone, Debug)]
+struct Refusal {
+    instruction: String,
+    ambiguity: Option<Box<Choices>>,
+}
+
+/// What an operation that moved objects leaves for the next turn.
+#[derive(Clone, Debug, Default)]
+pub(crate) struct Edited {
+    /// The instruction as run (trimmed); `None` for a repeat, an apply, an undo.
+    pub instruction: Option<String>,
+    /// The objects it moved itself: what "it" means next.
+    pub acted: Vec<usize>,
+    /// The phrases of the instruction that named objects: their bytes and objects.
+    pub phrases: Vec<(Range<usize>, Vec<usize>)>,
+    /// Each acted object's motion about its pivot, for "again" and "a bit more".
+    pub motions: Vec<(usize, Similarity)>,
+}
+
+/// The objects one change moved, as they were before it, for "put it back".
+#[derive(Clone, Debug)]
+struct ReturnPoint {
+    id: u64,
+    /// Each object, the acted object it went with (itself, or what carried it), its state
+    /// before, and its pose after.
+    objects: Vec<(usize, usize, Object, Similarity)>,
+}
+
+/// What a turn asks the session to do.
+#[derive(Debug)]
+pub(crate) enum Plan {
+    /// Run an instruction; `focus`: what "it" means (with `from_last`: the last edit's
+    /// objects, not a selection); `undo_first`: take the last change back before.
+    Edit {
+        instruction: String,
+        focus: Vec<usize>,
+        from_last: bool,
+        undo_first: bool,
+    },
+    /// Apply these motions (about each object's pivot).
+    Motions(Vec<(usize, Similarity)>),
+    /// Put these objects back in these states: the ones named first (`named` of them),
+    /// then what they carried.
+    Restore {
+        states: Vec<(usize, Object)>,
+        named: usize,
+    },
+    /// Take the last change back.
+    Undo,
+}
+
+/// A refusal of a follow-up.
+fn refuse(message: impl Into<String>) -> OpError {
+    OpError::new(ErrorKind::NotUnderstood, message)
+}
+
+impl Context {
+    /// The objects "it" means now: what the last edit moved.
+    pub fn focus(&self) -> &[usize] {
+        self.edit.as_deref().map_or(&[], |e| &e.acted)
+    }
+
+    /// The last edit's instruction and its phrases, if it had one.
+    pub fn last_instruction(&self) -> Option<(String, Vec<(Range<usize>, Vec<usize>)>)> {
+        let e = self.edit.as_deref()?;
+        e.instruction.clone().map(|i| (i, e.phrases.clone()))
+    }
+
+    /// Remembers a refused instruction.
+    pub fn refused(&mut self, instruction: &str, ambiguity: Option<Box<Choices>>) {
+        self.refusal = Some(Arc::new(Refusal {
+            instruction: instruction.trim().to_string(),
+            ambiguity,
+        }));
+    }
+
+    /// Remembers a change made: the turn, and (`id`) the objects it moved as they were.
+    pub fn edited(
+        &mut self,
+        turn: Edited,
+        id: Option<u64>,
+        changes: &[(usize, Object, Object)],
+        scene: &Scene,
+    ) {
+        if let Some(id) = id {
+            let objects = changes
+                .iter()
+                .filter(|(_, a, b)| a.pose_differs(b))
+                .map(|(i, a, b)| {
+                    (
+                        *i,
+                        group_of(scene, *i, &turn.acted),
+                        a.clone(),
+                        b.similarity(),
+                    )
+                })
+                .collect();
+            let returns = Arc::make_mut(&mut self.returns);
+            returns.push(ReturnPoint { id, objects });
+            if returns.len() > MAX_RETURNS {
+                returns.remove(0);
+            }
+        }
+        self.edit = Some(Arc::new(turn));
+        self.refusal = None;
+    }
+
+    /// Hears an undo (`undo`) or a redo of change `id`, which changed `changes`: an undone
+    /// change is no longer one to put things back from; a redone one is again. "It" is
+    /// then what the step moved.
+    pub fn stepped(
+        &mut self,
+        id: u64,
+        undo: bool,
+        changes: &[(usize, Object, Object)],
+        scene: &Scene,
+    ) {
+        let moved: Vec<usize> = changes
+            .iter()
+            .filter(|(_, a, b)| a.pose_differs(b))
+            .map(|(i, _, _)| *i)
+            .collect();
+        let turn = Edited {
+            acted: moved,
+            ..Edited::default()
+        };
+        if undo {
+            Arc::make_mut(&mut self.returns).retain(|r| r.id != id);
+            self.edit = Some(Arc::new(turn));
+            self.refusal = None;
+        } else {
+            self.edited(turn, Some(id), changes, scene);
+        }
+    }
+
+    /// What `instruction` asks for, given the turn before and the `selected` objects.
+    ///
+    /// # Errors
+    /// A follow-up with nothing to lean on, or that cannot be carried out as said.
+    pub fn plan(
+        &self,
+        instruction: &str,
+        selected: &[usize],
+        scene: &Scene,
+        grounder: &Grounder,
+    ) -> Result<Plan, OpError> {
+        let after_refusal = self.refusal.as_ref().is_some_and(|r| r.ambiguity.is_some());
+        let plain = |text: String| {
+            let (focus, from_last) = if selected.is_empty() {
+                (self.focus().to_vec(), true)
+            } else {
+                (selected.to_vec(), false)
+            };
+            Plan::Edit {
+                instruction: text,
+                focus,
+                from_last,
+                undo_first: false,
+            }
+        };
+        let Some(follow) = follow_up::read(instruction, after_refusal) else {
+            return Ok(plain(instruction.to_string()));
+        };
+        match follow {
+            FollowUp::Repeat(amount) => Ok(Plan::Motions(self.repeat(amount)?)),
+            FollowUp::Toward(text) => {
+                if self.focus().is_empty() && selected.is_empty() {
+                    return Err(nothing_before(instruction));
+                }
+                Ok(plain(text))
+            }
+            FollowUp::Undo => Ok(Plan::Undo),
+            FollowUp::Back(object) => self.back(object.as_deref(), selected, scene, grounder),
+            FollowUp::Also(np) => {
+                let (text, _) = self.replace_acted(&np)?;
+                Ok(Plan::Edit {
+                    instruction: text,
+                    focus: Vec::new(),
+                    from_last: true,
+                    undo_first: false,
+                })
+            }
+            FollowUp::Instead(np) => self.instead(&np, scene, grounder),
+            FollowUp::InsteadPlace(pp) => self.instead_place(&pp),
+        }
+    }
+
+    /// The last edit, or a refusal saying there is none.
+    fn last_edit(&self, what: &str) -> Result<&Edited, OpError> {
+        match self.edit.as_deref() {
+            Some(e) if !e.acted.is_empty() => Ok(e),
+            _ => Err(refuse(format!(
+                "\"{what}\" follows an edit, and there is none before it in this session: say the whole instruction"
+            ))),
+        }
+    }
+
+    /// The last edit's motions again, scaled.
+    fn repeat(&self, amount: Amount) -> Result<Vec<(usize, Similarity)>, OpError> {
+        let last = self.last_edit("again")?;
+        if last.motions.is_empty() {
+            return Err(refuse(
+                "the last change was not a motion to repeat: say the whole instruction",
+            ));
+        }
+        let k = match amount {
+            Amount::Times(k) => k,
+            Amount::Bit(sign) => {
+                let (_, m) = last.motions[0];
+                let angle = m.rotation.to_axis_angle().1.abs();
+                let small = if m.translation.length() > 1e-9 {
+                    crate::offline::amounts::BIT_METRES / m.translation.length()
+                } else if angle > 1e-9 {
+                    crate::offline::amounts::BIT_DEGREES.to_radians() / angle
+                } else {
+                    0.5
+                };
+                sign * small.min(if sign < 0.0 { 0.5 } else { 1.0 })
+            }
+        };
+        Ok(last
+            .motions
+            .iter()
+            .map(|&(i, m)| (i, scaled(&m, k)))
+            .collect())
+    }
+
+    /// Where to put objects back: the state each had before the last change that moved it.
+    fn back(
+        &self,
+        object: Option<&str>,
+        selected: &[usize],
+        scene: &Scene,
+        grounder: &Grounder,
+    ) -> Result<Plan, OpError> {
+        let targets: Vec<usize> = match object {
+            Some(words) => ground_phrase(words, scene, grounder)?,
+            None if !selected.is_empty() => selected.to_vec(),
+            None => self.last_edit("put it back")?.acted.clone(),
+        };
+        let mut named: Vec<(usize, Object)> = Vec::new();
+        let mut carried: Vec<(usize, Object)> = Vec::new();
+        for t in targets {
+            let point = self
+                .returns
+                .iter()
+                .rev()
+                .find(|r| r.objects.iter().any(|o| o.0 == t))
+                .ok_or_else(|| refuse(format!(
+                    "'{}' has not been moved in this session: there is no earlier place to put it back to",
+                    scene.objects[t].name
+                )))?;
+            for (i, with, before, after) in &point.objects {
+                if *i == t {
+                    named.push((*i, before.clone()));
+                } else if *with == t && scene.objects[*i].similarity() == *after {
+                    // What went with it, and has not moved since.
+                    carried.push((*i, before.clone()));
+                }
+            }
+        }
+        carried.retain(|(i, _)| !named.iter().any(|n| n.0 == *i));
+        carried.dedup_by_key(|c| c.0);
+        let count = named.len();
+        named.extend(carried);
+        Ok(Plan::Restore {
+            states: named,
+            named: count,
+        })
+    }
+
+    /// The last instruction with the phrase naming what it moved replaced by `np`; the
+    /// phrase's head noun, for "one".
+    fn replace_acted(&self, np: &str) -> Result<(String, String), OpError> {
+        let last = self.last_edit(np)?;
+        let instruction = last.instruction.as_deref().ok_or_else(|| {
+            refuse("the last change was not an instruction to say again for another object: say the whole instruction")
+        })?;
+        let (span, _) = last
+            .phrases
+            .iter()
+            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
+            .ok_or_else(|| refuse("could not tell which words of the last instruction named what it moved: say the whole instruction"))?;
+        let head = head_noun(instruction.get(span.clone()).unwrap_or_default());
+        let np = with_head(np, &head);
+        Ok((splice(instruction, span.start, span.end, &np)?, head))
+    }
+
+    /// "no, the left one": after a refusal, the refused instruction with the phrase it
+    /// could not choose for replaced; after an edit, the edit undone and made again on the
+    /// object named now.
+    fn instead(&self, np: &str, scene: &Scene, grounder: &Grounder) -> Result<Plan, OpError> {
+        if let Some(Refusal {
+            instruction,
+            ambiguity: Some(choices),
+        }) = self.refusal.as_deref()
+        {
+            if mentions_other(np) {
+                return Err(refuse(format!(
+                    "\"{np}\" has nothing to be other than: nothing was chosen; name one of {}",
+                    choices
+                        .objects
+                        .iter()
+                        .map(|o| format!("'{o}'"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )));
+            }
+            let [start, end] = choices.span;
+            let np = with_head(np, &head_noun(&choices.phrase));
+            let text = splice(instruction, start, end, &np)?;
+            return Ok(Plan::Edit {
+                instruction: text,
+                focus: Vec::new(),
+                from_last: false,
+                undo_first: false,
+            });
+        }
+        let (text, head) = self.replace_acted(np)?;
+        let text = if mentions_other(np) {
+            self.other(&head, scene, grounder)?
+        } else {
+            text
+        };
+        Ok(Plan::Edit {
+            instruction: text,
+            focus: Vec::new(),
+            from_last: false,
+            undo_first: true,
+        })
+    }
+
+    /// "no, the other one": the last instruction on the one other object its phrase's
+    /// head noun names.
+    fn other(&self, head: &str, scene: &Scene, grounder: &Grounder) -> Result<String, OpError> {
+        let last = self.last_edit("the other one")?;
+        let named = ground_all(head, scene, grounder);
+        let others: Vec<usize> = named
+            .into_iter()
+            .filter(|o| !last.acted.contains(o))
+            .collect();
+        match others.as_slice() {
+            [one] => {
+                let name = &scene.objects[*one].name;
+                let quoted = if name.contains('"') {
+                    format!("'{name}'")
+                } else {
+                    format!("\"{name}\"")
+                };
+                Ok(self.replace_acted(&quoted)?.0)
+            }
+            [] => Err(refuse(format!(
+                "there is no other {head} than the one just moved"
+            ))),
+            many => Err(refuse(format!(
+                "\"the other one\" could be any of {} {head}s: {}; name it",
+                many.len(),
+                many.iter()
+                    .take(8)
+                    .map(|&i| format!("'{}'", scene.objects[i].name))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ))),
+        }
+    }
+
+    /// "no, on the shelf": the last edit undone and made again with this destination.
+    fn instead_place(&self, pp: &str) -> Result<Plan, OpError> {
+        let last = self.last_edit(pp)?;
+        let instruction = last.instruction.as_deref().ok_or_else(|| {
+            refuse("the last change was not an instruction whose destination can be changed: say the whole instruction")
+        })?;
+        let acted_end = last
+            .phrases
+            .iter()
+            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
+            .map_or(0, |(s, _)| s.end);
+        let start = preposition_after(instruction, acted_end).ok_or_else(|| {
+            refuse(format!(
+                "\"{instruction}\" says no place to change: say the whole instruction"
+            ))
+        })?;
+        let end = last
+            .phrases
+            .iter()
+            .filter(|(s, _)| s.start >= start)
+            .map(|(s, _)| s.end)
+            .max()
+            .unwrap_or(instruction.len());
+        let text = splice(instruction, start, end, pp)?;
+        Ok(Plan::Edit {
+            instruction: text,
+            focus: Vec::new(),
+            from_last: false,
+            undo_first: true,
+        })
+    }
+}
+
+/// Whether a phrase says "other" ("the other one").
+fn mentions_other(np: &str) -> bool {
+    np.split_whitespace()
+        .any(|w| w.eq_ignore_ascii_case("other"))
+}
+
+/// `text` with bytes `start..end` replaced by `with`.
+fn splice(text: &str, start: usize, end: usize, with: &str) -> Result<String, OpError> {
+    match (text.get(..start), text.get(end..)) {
+        (Some(before), Some(after)) if start <= end => Ok(format!("{before}{with}{after}")),
+        _ => Err(refuse("could not tell which words of the last instruction to change: say the whole instruction")),
+    }
+}
+
+/// The refusal of an instruction that points ("it", "that") at nothing.
+pub(crate) fn nothing_before(instruction: &str) -> OpError {
+    refuse(format!(
+        "\"{}\" points at nothing yet: nothing was edited or selected before it in this session; name the object",
+        instruction.trim()
+    ))
+}
+
+/// Whether the instruction speaks of "it", "them" or "that" (a pronoun, not a determiner).
+pub(crate) fn has_pronoun(instruction: &str) -> bool {
+    let words: Vec<String> = instruction
+        .split(|c: char| !c.is_alphanumeric() && c != '\'')
+        .filter(|w| !w.is_empty())
+        .map(str::to_lowercase)
+        .collect();
+    words.iter().enumerate().any(|(k, w)| match w.as_str() {
+        "it" | "them" => true,
+        "that" | "this" | "those" | "these" => words.get(k + 1).is_none_or(|next| {
+            crate::ground::words::is_preposition(next) || next.parse::<f64>().is_ok()
+        }),
+        _ => false,
+    })
+}
+
+/// The acted object that `i` went with in a change: itself, or the acted object its
+/// supports lead to.
+fn group_of(scene: &Scene, i: usize, acted: &[usize]) -> usize {
+    let mut at = i;
+    for _ in 0..32 {
+        if acted.contains(&at) {
+            return at;
+        }
+        match scene.objects[at].support {
+            Some(s) => at = s,
+            None => break,
+        }
+    }
+    i
+}
+
+/// `m` scaled along itself: `k` times its translation, angle and log-scale.
+fn scaled(m: &Similarity, k: f64) -> Similarity {
+    let (axis, angle) = m.rotation.to_axis_angle();
+    let rotation = if angle.abs() < 1e-12 || !axis.is_finite() {
+        DQuat::IDENTITY
+    } else {
+        DQuat::from_axis_angle(axis, angle * k)
+    };
+    Similarity {
+        translation: m.translation * k,
+        rotation,
+        scale: m.scale.powf(k),
+    }
+}
+
+/// Each acted object's motion about its pivot, from its states before and after.
+pub(crate) fn motions_of(
+    changes: &[(usize, Object, Object)],
+    acted: &[usize],
+) -> Vec<(usize, Similarity)> {
+    changes
+        .iter()
+        .filter(|(i, a, b)| acted.contains(i) && a.pose_differs(b))
+        .map(|(i, a, b)| {
+            let world = b.similarity().compose(&a.similarity().inverse());
+            (*i, world.about(-a.pivot_point()))
+        })
+        .collect()
+}
+
+/// The noun a phrase is built around: its last word before any preposition, without an
+/// instance number or quotes ("the chair by the window" → `chair`).
+fn head_noun(phrase: &str) -> String {
+    let words: Vec<&str> = phrase
+        .split(|c: char| c.is_whitespace() || matches!(c, '\'' | '"' | '‘' | '’' | '“' | '”' | '`'))
+        .filter(|w| !w.is_empty())
+        .collect();
+    let end = words
+        .iter()
+        .skip(1)
+        .position(|w| crate::ground::words::is_preposition(&w.to_lowercase()))
+        .map_or(words.len(), |k| k + 1);
+    words[..end]
+        .iter()
+        .rev()
+        .find(|w| w.chars().any(char::is_alphabetic) && !w.eq_ignore_ascii_case("one"))
+        .map_or_else(String::new, |w| w.to_lowercase())
+}
+
+/// `np` with "one" / "ones" said as `head` ("the left one" → "the left chair").
+fn with_head(np: &str, head: &str) -> String {
+    if head.is_empty() {
+        return np.to_string();
+    }
+    np.split(' ')
+        .map(|w| match w.to_lowercase().as_str() {
+            "one" => head.to_string(),
+            "ones" => format!("{head}s"),
+            _ => w.to_string(),
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// The byte where the first preposition after byte `from` starts.
+fn preposition_after(text: &str, from: usize) -> Option<usize> {
+    let mut at = 0;
+    for w in text.split(' ') {
+        let start = at;
+        at += w.len() + 1;
+        if start >= from
+            && (crate::ground::words::is_preposition(&w.to_lowercase())
+                || matches!(w, "next" | "beside" | "behind"))
+        {
+            return Some(start);
+        }
+    }
+    None
+}
+
+/// The objects a noun phrase names, one or more, or a refusal naming the candidates.
+fn ground_phrase(words: &str, scene: &Scene, grounder: &Grounder) -> Result<Vec<usize>, OpError> {
+    let grounding = grounder
+        .ground(&format!("move {words}"), scene)
+        .map_err(|e| {
+            let choices = e
+                .ambiguity()
+                .map(|a| Box::new(Choices::new(&format!("move {words}"), &a)));
+            OpError {
+                kind: if choices.is_some() {
+                    ErrorKind::Ambiguous
+                } else {
+                    ErrorKind::NotUnderstood
+                },
+                ambiguity: choices,
+                ..refuse(e.to_string())
+            }
+        })?;
+    let objects: Vec<usize> = grounding
+        .phrases
+        .iter()
+        .flat_map(|p| p.objects.clone())
+        .collect();
+    if objects.is_empty() {
+        return Err(refuse(format!("\"{words}\" names no object of the scene")));
+    }
+    Ok(objects)
+}
+
+/// Every object the noun `head` names (all the chairs).
+fn ground_all(head: &str, scene: &Scene, grounder: &Grounder) -> Vec<usize> {
+    match grounder.ground(&format!("move the {head}"), scene) {
+        Ok(g) => g.phrases.iter().flat_map(|p| p.objects.clone()).collect(),
+        Err(e) => e
+            .ambiguity()
+            .map(|a| a.objects.iter().filter_map(|n| scene.find(n)).collect())
+            .unwrap_or_default(),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_motion_scales_along_itself() {
+        let m = Similarity {
+            translation: DVec3::new(-1.0, 0.0, 0.0),
+            rotation: DQuat::from_rotation_y(0.5),
+            scale: 4.0,
+        };
+        let half = scaled(&m, 0.5);
+        assert!((half.translation.x + 0.5).abs() < 1e-12);
+        assert!((half.rotation.to_axis_angle().1 - 0.25).abs() < 1e-12);
+        assert!((half.scale - 2.0).abs() < 1e-12);
+        let back = scaled(&m, -1.0);
+        assert!((back.translation.x - 1.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn one_is_said_as_the_head_noun() {
+        assert_eq!(head_noun("the chair by the window"), "chair");
+        assert_eq!(head_noun("'Chair 2'"), "chair");
+        assert_eq!(with_head("the left one", "chair"), "the left chair");
+    }
+}

@@ -1,0 +1,471 @@
+//! The follow-ups of a conversation, read from their words: what a turn that leans on the
+//! turn before asks for ("a bit more", "put it back", "and the mug too", "no, the other
+//! one", "no, on the shelf"). A small grammar over the instruction's core — the words left
+//! once greetings, thanks and request frames are set aside ([`crate::discourse::core`]) —
+//! never a list of sentences: an instruction that fits none of its forms is an instruction
+//! of its own, read as any other.
+
+use std::ops::Range;
+
+/// How much of the last motion a repeat makes.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Amount {
+    /// This many times the last motion, again (negative: back along it).
+    Times(f64),
+    /// A small amount along the last motion ("a bit more": +1; "a bit less": −1), at most
+    /// the last motion itself (or half of it, going back).
+    Bit(f64),
+}
+
+/// A follow-up, and the words it carries.
+#[derive(Clone, Debug, PartialEq)]
+pub enum FollowUp {
+    /// The last motion again, or scaled along its own direction.
+    Repeat(Amount),
+    /// A move of what the last edit moved, in words (`move it a bit to the left`).
+    Toward(String),
+    /// The last change taken back.
+    Undo,
+    /// Objects put back where they were before the edit that last moved them; `None`:
+    /// what the last edit moved ("put it back").
+    Back(Option<String>),
+    /// The last instruction for other objects too (the phrase naming them).
+    Also(String),
+    /// The last instruction on another object (the phrase naming it), the last edit undone
+    /// first.
+    Instead(String),
+    /// The last instruction with another destination (the prepositional phrase), the last
+    /// edit undone first.
+    InsteadPlace(String),
+}
+
+/// A word of the instruction: its lower-case text and its bytes.
+#[derive(Clone, Debug)]
+struct Word {
+    text: String,
+    span: Range<usize>,
+}
+
+/// The instruction's words (letters, digits, apostrophes and quotes kept in words; other
+/// punctuation separates them).
+fn words(text: &str) -> Vec<Word> {
+    let mut out = Vec::new();
+    let mut start = None;
+    for (i, c) in text
+        .char_indices()
+        .chain(std::iter::once((text.len(), ' ')))
+    {
+        let part = c.is_alphanumeric() || matches!(c, '\'' | '’' | '-' | '.' | '_');
+        match (part, start) {
+            (true, None) => start = Some(i),
+            (false, Some(s)) => {
+                let raw = text[s..i].trim_end_matches('.');
+                if !raw.is_empty() {
+                    out.push(Word {
+                        text: raw.to_lowercase(),
+                        span: s..s + raw.len(),
+                    });
+                }
+                start = None;
+            }
+            _ => {}
+        }
+    }
+    out
+}
+
+/// Words that only say a follow-up is one ("no", "ok then", "I meant").
+const CORRECTING: [&[&str]; 9] = [
+    &["no", "i", "meant"],
+    &["no", "i", "mean"],
+    &["i", "meant"],
+    &["i", "mean"],
+    &["not", "that", "one"],
+    &["wrong", "one"],
+    &["no", "sorry"],
+    &["nope"],
+    &["no"],
+];
+
+/// Small amounts ("a bit", "slightly").
+const BIT: [&[&str]; 8] = [
+    &["a", "little", "bit"],
+    &["a", "tiny", "bit"],
+    &["a", "bit"],
+    &["a", "little"],
+    &["a", "tad"],
+    &["a", "touch"],
+    &["slightly"],
+    &["bit"],
+];
+
+/// The length of the longest of `options` that `w` starts with.
+fn starts(w: &[&str], options: &[&[&str]]) -> Option<usize> {
+    options
+        .iter()
+        .filter(|o| w.len() >= o.len() && w[..o.len()] == ***o)
+        .map(|o| o.len())
+        .max()
+}
+
+/// What `instruction` asks of the turn before, if it is a follow-up; `after_refusal`: the
+/// turn before was refused for an ambiguous phrase, so a bare noun phrase picks for it.
+#[must_use]
+pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
+    let all = words(instruction);
+    let lower: Vec<&str> = all.iter().map(|w| w.text.as_str()).collect();
+    let core = crate::discourse::core(&lower);
+    // The discourse set aside takes words a follow-up is made of: they come back.
+    let kept = |w: &str| matches!(w, "and" | "also" | "again" | "too" | "no" | "nope" | "more");
+    let (mut start, mut end) = (core.start, core.end.max(core.start));
+    while start > 0 && kept(lower[start - 1]) {
+        start -= 1;
+    }
+    while end < lower.len() && kept(lower[end]) {
+        end += 1;
+    }
+    let words = &all[start..end];
+    let w: Vec<&str> = lower[start..end].to_vec();
+    if w.is_empty() {
+        return None;
+    }
+    let text = |from: usize| -> String {
+        words
+            .get(from)
+            .map(|first| {
+                let end = words.last().map_or(first.span.end, |l| l.span.end);
+                instruction[first.span.start..end].to_string()
+            })
+            .unwrap_or_default()
+    };
+    if let Some(n) = starts(&w, &CORRECTING) {
+        return correction(&w[n..], text(n));
+    }
+    undo(&w)
+        .or_else(|| back(&w, &text))
+        .or_else(|| repeat(&w, &text))
+        .or_else(|| also(&w, &text))
+        .or_else(|| (after_refusal && !starts_with_verb(&w)).then(|| FollowUp::Instead(text(0))))
+}
+
+/// "no, on the shelf" (a destination) or "no, the other one" (an object).
+fn correction(w: &[&str], rest: String) -> Option<FollowUp> {
+    let first = *w.first()?;
+    if starts_with_verb(w) {
+        return None;
+    }
+    if crate::ground::words::is_preposition(first) || matches!(first, "next" | "beside" | "behind")
+    {
+        Some(FollowUp::InsteadPlace(rest))
+    } else {
+        Some(FollowUp::Instead(rest))
+    }
+}
+
+fn starts_with_verb(w: &[&str]) -> bool {
+    w.first().is_some_and(|f| crate::ground::words::is_verb(f))
+}
+
+/// "undo", "undo that", "take that back".
+fn undo(w: &[&str]) -> Option<FollowUp> {
+    let pronoun = |x: &str| {
+        matches!(
+            x,
+            "that" | "it" | "this" | "the" | "last" | "change" | "edit" | "one"
+        )
+    };
+    match w {
+        ["undo", rest @ ..] if rest.iter().all(|x| pronoun(x)) => Some(FollowUp::Undo),
+        ["take", "that" | "it", "back"] | ["revert", ..]
+            if w.iter().skip(1).all(|x| pronoun(x)) =>
+        {
+            Some(FollowUp::Undo)
+        }
+        _ => None,
+    }
+}
+
+/// "put it back", "put the chair back where it was", "back where it was", "return the
+/// lamp to where it was".
+fn back(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
+    let where_it_was = |rest: &[&str]| -> bool {
+        let rest = match rest {
+            ["to", r @ ..] => r,
+            r => r,
+        };
+        matches!(
+            rest,
+            [] | ["again"]
+                | [
+                    "where",
+                    "it" | "they" | "he" | "she",
+                    "was" | "were" | "used",
+                    ..
+                ]
+                | [
+                    "its" | "their",
+                    "place" | "spot" | "position" | "old" | "original" | "first",
+                    ..
+                ]
+                | ["how", "it" | "they", "was" | "were"]
+                | ["where", "it" | "they", "started" | "came", ..]
+        )
+    };
+    let verb = |x: &str| {
+        matches!(
+            x,
+            "put" | "bring" | "set" | "place" | "return" | "restore" | "get"
+        )
+    };
+    if let [first, ..] = w {
+        if verb(first) {
+            let at = w.iter().position(|&x| x == "back");
+            // "put X back [where it was]"; "return X [to where it was]".
+            let (object_end, rest) = match at {
+                Some(k) => (k, &w[k + 1..]),
+                None if matches!(*first, "return" | "restore") => {
+                    let k = w.iter().position(|&x| x == "to").unwrap_or(w.len());
+                    (k, &w[k..])
+                }
+                None => return None,
+            };
+            if object_end < 1 || !where_it_was(rest) {
+                return None;
+            }
+            let object = &w[1..object_end];
+            return Some(FollowUp::Back(match object {
+                [] | ["it" | "them" | "that" | "those" | "this" | "these"] => None,
+                _ => Some(object_text(text, 1, object.len())),
+            }));
+        }
+    }
+    // "back where it was", "where it was".
+    let rest = match w {
+        ["back", r @ ..] => r,
+        r => r,
+    };
+    (matches!(rest.first(), Some(&"where")) && where_it_was(rest)).then_some(FollowUp::Back(None))
+}
+
+/// The text of `len` words from word `from`.
+fn object_text(text: &dyn Fn(usize) -> String, from: usize, len: usize) -> String {
+    let all = text(from);
+    all.split_whitespace()
+        .scan(0, |n, part| {
+            *n += 1;
+            (*n <= len).then_some(part)
+        })
+        .collect::<Vec<_>>()
+        .join(" ")
+}
+
+/// "again", "a bit more", "twice as far", "not so far", "more to the left".
+fn repeat(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
+    let whole = |options: &[&[&str]]| options.iter().any(|o| w == *o);
+    if whole(&[
+        &["again"],
+        &["once", "more"],
+        &["one", "more", "time"],
+        &["do", "it", "again"],
+        &["do", "that", "again"],
+        &["same", "again"],
+        &["repeat"],
+        &["repeat", "that"],
+        &["keep", "going"],
+    ]) {
+        return Some(FollowUp::Repeat(Amount::Times(1.0)));
+    }
+    if let Some(amount) = times_as_far(w) {
+        return Some(FollowUp::Repeat(amount));
+    }
+    if whole(&[
+        &["not", "so", "far"],
+        &["not", "as", "far"],
+        &["not", "that", "far"],
+        &["not", "so", "much"],
+        &["not", "as", "much"],
+        &["too", "far"],
+        &["too", "much"],
+        &["less"],
+    ]) {
+        return Some(FollowUp::Repeat(Amount::Times(-0.5)));
+    }
+    // [a bit] more|further|less [direction …]
+    let bit = starts(w, &BIT);
+    let at = bit.unwrap_or(0) + usize::from(w.get(bit.unwrap_or(0)) == Some(&"even"));
+    let head = *w.get(at)?;
+    let rest = &w[at + 1..];
+    let sign = match head {
+        "more" | "further" | "farther" => 1.0,
+        "less" => -1.0,
+        _ => return None,
+    };
+    if rest.is_empty() || rest == ["please"] {
+        return Some(FollowUp::Repeat(match bit {
+            Some(_) => Amount::Bit(sign),
+            None => Amount::Times(sign.max(-0.5)),
+        }));
+    }
+    // "more to the left", "a bit further left": a move of its own, a small one.
+    let first = rest[0];
+    let direction = crate::ground::words::is_preposition(first)
+        || matches!(
+            first,
+            "left"
+                | "right"
+                | "up"
+                | "down"
+                | "forward"
+                | "forwards"
+                | "back"
+                | "backward"
+                | "backwards"
+                | "away"
+                | "toward"
+                | "towards"
+                | "over"
+                | "north"
+                | "south"
+                | "east"
+                | "west"
+                | "clockwise"
+                | "counterclockwise"
+                | "anticlockwise"
+        );
+    (sign > 0.0 && direction).then(|| FollowUp::Toward(format!("move it a bit {}", text(at + 1))))
+}
+
+/// "twice as far", "three times as much", "half as far".
+fn times_as_far(w: &[&str]) -> Option<Amount> {
+    let (factor, rest) = match w {
+        ["twice", rest @ ..] => (2.0, rest),
+        ["half", rest @ ..] => (0.5, rest),
+        ["three", "times", rest @ ..] => (3.0, rest),
+        ["two", "times", rest @ ..] => (2.0, rest),
+        _ => return None,
+    };
+    matches!(rest, ["as", "far" | "much", ..]).then_some(Amount::Times(factor - 1.0))
+}
+
+/// "and the mug too", "the bowl as well", "same for the chairs", "do the same with the
+/// coffee table", "also the lamp".
+fn also(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
+    let same = starts(
+        w,
+        &[
+            &["do", "the", "same", "for"],
+            &["do", "the", "same", "with"],
+            &["do", "the", "same", "to"],
+            &["do", "that", "to"],
+            &["do", "that", "with"],
+            &["do", "that", "for"],
+            &["the", "same", "for"],
+            &["the", "same", "with"],
+            &["same", "for"],
+            &["same", "with"],
+            &["same", "to"],
+            &["and", "also"],
+            &["also"],
+            &["and"],
+        ],
+    )
+    .unwrap_or(0);
+    let mut end = w.len();
+    for tail in [&["as", "well"][..], &["too"], &["also"]] {
+        if w[..end].ends_with(tail) {
+            end -= tail.len();
+        }
+    }
+    // "and …" alone could be the start of any instruction: it needs "too" or "as well".
+    let bare_and = matches!(w, ["and", ..]) && same == 1 && end == w.len();
+    let nothing_adds = same == 0 && end == w.len();
+    if end <= same || bare_and || nothing_adds || starts_with_verb(&w[same..]) {
+        return None;
+    }
+    Some(FollowUp::Also(object_text(text, same, end - same)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn each_kind_is_read_from_its_form() {
+        let r = |t: &str| read(t, false);
+        assert_eq!(r("again"), Some(FollowUp::Repeat(Amount::Times(1.0))));
+        assert_eq!(
+            r("ok, do it again please"),
+            Some(FollowUp::Repeat(Amount::Times(1.0)))
+        );
+        assert_eq!(r("a bit more"), Some(FollowUp::Repeat(Amount::Bit(1.0))));
+        assert_eq!(
+            r("a little less"),
+            Some(FollowUp::Repeat(Amount::Bit(-1.0)))
+        );
+        assert_eq!(r("further"), Some(FollowUp::Repeat(Amount::Times(1.0))));
+        assert_eq!(
+            r("twice as far"),
+            Some(FollowUp::Repeat(Amount::Times(1.0)))
+        );
+        assert_eq!(
+            r("half as far"),
+            Some(FollowUp::Repeat(Amount::Times(-0.5)))
+        );
+        assert_eq!(r("not so far"), Some(FollowUp::Repeat(Amount::Times(-0.5))));
+        assert_eq!(
+            r("more to the left"),
+            Some(FollowUp::Toward("move it a bit to the left".into()))
+        );
+        assert_eq!(r("undo that"), Some(FollowUp::Undo));
+        assert_eq!(r("put it back"), Some(FollowUp::Back(None)));
+        assert_eq!(r("back where it was"), Some(FollowUp::Back(None)));
+        assert_eq!(
+            r("put the armchair back where it was"),
+            Some(FollowUp::Back(Some("the armchair".into())))
+        );
+        assert_eq!(r("and the mug too"), Some(FollowUp::Also("the mug".into())));
+        assert_eq!(
+            r("do the same with the coffee table"),
+            Some(FollowUp::Also("the coffee table".into()))
+        );
+        assert_eq!(
+            r("same for the chairs"),
+            Some(FollowUp::Also("the chairs".into()))
+        );
+        assert_eq!(
+            r("the bowl as well"),
+            Some(FollowUp::Also("the bowl".into()))
+        );
+        assert_eq!(r("ok, again"), Some(FollowUp::Repeat(Amount::Times(1.0))));
+        assert_eq!(
+            r("no, the other one"),
+            Some(FollowUp::Instead("the other one".into()))
+        );
+        assert_eq!(
+            r("no, on the shelf"),
+            Some(FollowUp::InsteadPlace("on the shelf".into()))
+        );
+        assert_eq!(
+            read("the left one", true),
+            Some(FollowUp::Instead("the left one".into()))
+        );
+    }
+
+    #[test]
+    fn whole_instructions_are_not_follow_ups() {
+        for t in [
+            "move the chair back",
+            "move the chair back 50 cm",
+            "put the mug on the shelf",
+            "move it 10 cm to the right",
+            "and move the lamp left",
+            "the left one",
+            "move the lamp a bit more to the left",
+            "no, move the lamp left",
+            "turn the chair around",
+        ] {
+            assert_eq!(read(t, false), None, "{t}");
+        }
+        assert_eq!(read("move the lamp left", true), None);
+    }
+}

@@ -1,0 +1,224 @@
+//! A session's conversation, as a user has it: each kind of follow-up, in place (the CLI's
+//! `chat`) and on a working copy (the servers and Python), with the same outcome. Asserts
+//! where things end up.
+
+use glam::DVec3;
+use shenlong::format::SceneFile;
+use shenlong::offline::OfflineTranslator;
+use shenlong::pipeline::EditOptions;
+use shenlong::session::{EditRequest, ErrorKind, OpError, Outcome, Session};
+use std::path::Path;
+
+fn living_room() -> Session {
+    let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/living_room.json");
+    Session::new(SceneFile::load(&path).unwrap(), None)
+}
+
+/// How a front end runs an edit.
+#[derive(Clone, Copy, Debug)]
+enum Path_ {
+    InPlace,
+    Working,
+}
+
+fn say(session: &mut Session, how: Path_, text: &str) -> Result<Outcome, OpError> {
+    let request = EditRequest {
+        instruction: text,
+        selected: &[],
+        report: false,
+    };
+    let translator = OfflineTranslator::new();
+    let options = EditOptions::default();
+    match how {
+        Path_::InPlace => session.edit(&request, &translator, &options),
+        Path_::Working => {
+            let pending = session.working().edit(&request, &translator, &options);
+            session.conclude(pending)
+        }
+    }
+}
+
+fn at(session: &Session, name: &str) -> DVec3 {
+    let scene = &session.file.scene;
+    scene.objects[scene.find(name).unwrap()]
+        .similarity()
+        .translation
+}
+
+fn close(a: DVec3, b: DVec3) -> bool {
+    (a - b).length() < 1e-6
+}
+
+const BOTH: [Path_; 2] = [Path_::InPlace, Path_::Working];
+
+#[test]
+fn it_means_what_the_last_edit_moved_and_nothing_at_the_start() {
+    for how in BOTH {
+        let mut s = living_room();
+        let e = say(&mut s, how, "move it 10 cm to the right").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::NotUnderstood, "{how:?}");
+        assert!(e.message.contains("points at nothing"), "{}", e.message);
+        let start = at(&s, "armchair");
+        say(&mut s, how, "move the armchair 50 cm to the right").unwrap();
+        let out = say(&mut s, how, "move it 10 cm to the left").unwrap();
+        assert_eq!(out.moved[0].object, "armchair", "{how:?}");
+        assert!(close(at(&s, "armchair"), start + DVec3::X * 0.4), "{how:?}");
+        let out = say(&mut s, how, "turn that 90 degrees").unwrap();
+        assert_eq!(out.moved[0].object, "armchair", "{how:?}");
+    }
+}
+
+#[test]
+fn repeats_and_adjustments_go_along_the_last_motion() {
+    for how in BOTH {
+        let mut s = living_room();
+        let start = at(&s, "armchair");
+        say(&mut s, how, "move the armchair 50 cm to the right").unwrap();
+        say(&mut s, how, "again").unwrap();
+        assert!(close(at(&s, "armchair"), start + DVec3::X), "again {how:?}");
+        say(&mut s, how, "not so far").unwrap();
+        assert!(
+            close(at(&s, "armchair"), start + DVec3::X * 0.75),
+            "not so far {how:?}"
+        );
+        let mut s = living_room();
+        say(&mut s, how, "move the armchair 50 cm to the right").unwrap();
+        say(&mut s, how, "a bit more").unwrap();
+        assert!(
+            close(at(&s, "armchair"), start + DVec3::X * 0.6),
+            "a bit more {how:?}"
+        );
+        say(&mut s, how, "twice as far").unwrap();
+        assert!(
+            close(at(&s, "armchair"), start + DVec3::X * 0.7),
+            "twice as far {how:?}"
+        );
+        say(&mut s, how, "more to the left").unwrap();
+        assert!(
+            close(at(&s, "armchair"), start + DVec3::X * 0.6),
+            "more to the left {how:?}"
+        );
+    }
+}
+
+#[test]
+fn corrections_take_the_last_edit_back_and_choose_again() {
+    for how in BOTH {
+        let mut s = living_room();
+        let (left, right) = (at(&s, "speaker"), at(&s, "speaker 2"));
+        // After an edit: the other one.
+        say(&mut s, how, "move the left speaker 10 cm to the left").unwrap();
+        let out = say(&mut s, how, "no, the other one").unwrap();
+        assert!(close(at(&s, "speaker"), left), "{how:?}");
+        assert!(
+            close(at(&s, "speaker 2"), right - DVec3::X * 0.1),
+            "{how:?}"
+        );
+        assert!(out.moved.iter().any(|m| m.object == "speaker"), "{out:?}");
+        // After a refusal: the phrase it could not choose for.
+        let mut s = living_room();
+        let e = say(&mut s, how, "move the speaker 10 cm to the left").unwrap_err();
+        assert_eq!(e.kind, ErrorKind::Ambiguous);
+        say(&mut s, how, "the left one").unwrap();
+        assert!(close(at(&s, "speaker"), left - DVec3::X * 0.1), "{how:?}");
+        assert!(close(at(&s, "speaker 2"), right), "{how:?}");
+    }
+}
+
+#[test]
+fn a_correction_of_the_place_puts_it_there_instead() {
+    for how in BOTH {
+        let mut s = living_room();
+        let vase = at(&s, "vase");
+        say(&mut s, how, "put the vase on the bookshelf").unwrap();
+        say(&mut s, how, "no, on the coffee table").unwrap();
+        let scene = &s.file.scene;
+        let (v, t) = (
+            scene.find("vase").unwrap(),
+            scene.find("coffee table").unwrap(),
+        );
+        assert_eq!(scene.objects[v].support, Some(t), "{how:?}");
+        assert!(!close(at(&s, "vase"), vase));
+        // One change in the history: the corrected one was taken back.
+        assert_eq!(s.history().iter().filter(|h| !h.undone).count(), 1);
+    }
+}
+
+#[test]
+fn the_same_for_another_object() {
+    for how in BOTH {
+        let mut s = living_room();
+        let (ottoman, armchair, lamp) =
+            (at(&s, "ottoman"), at(&s, "armchair"), at(&s, "floor lamp"));
+        say(&mut s, how, "move the ottoman 30 cm to the right").unwrap();
+        say(&mut s, how, "and the armchair too").unwrap();
+        say(&mut s, how, "do the same with the floor lamp").unwrap();
+        assert!(
+            close(at(&s, "ottoman"), ottoman + DVec3::X * 0.3),
+            "{how:?}"
+        );
+        assert!(
+            close(at(&s, "armchair"), armchair + DVec3::X * 0.3),
+            "{how:?}"
+        );
+        assert!(
+            close(at(&s, "floor lamp"), lamp + DVec3::X * 0.3),
+            "{how:?}"
+        );
+    }
+}
+
+#[test]
+fn put_back_returns_it_and_what_it_carried() {
+    for how in BOTH {
+        let mut s = living_room();
+        let e = say(&mut s, how, "put the ottoman back").unwrap_err();
+        assert!(e.message.contains("has not been moved"), "{}", e.message);
+        let (ottoman, magazine, armchair) =
+            (at(&s, "ottoman"), at(&s, "magazine"), at(&s, "armchair"));
+        say(&mut s, how, "move the ottoman 30 cm to the right").unwrap();
+        assert!(!close(at(&s, "magazine"), magazine), "carried");
+        say(&mut s, how, "move the armchair 20 cm to the left").unwrap();
+        let out = say(&mut s, how, "put the ottoman back where it was").unwrap();
+        assert!(close(at(&s, "ottoman"), ottoman), "{how:?}");
+        assert!(close(at(&s, "magazine"), magazine), "{how:?}");
+        assert!(!close(at(&s, "armchair"), armchair), "the armchair stays");
+        assert_eq!(out.moved.len(), 2, "{out:?}");
+        let how_moved: Vec<_> = out
+            .moved
+            .iter()
+            .map(|m| (m.object.as_str(), m.how))
+            .collect();
+        assert_eq!(
+            how_moved,
+            [
+                ("ottoman", shenlong::session::How::Moved),
+                ("magazine", shenlong::session::How::Carried)
+            ]
+        );
+        say(&mut s, how, "undo that").unwrap();
+        assert!(!close(at(&s, "ottoman"), ottoman), "undone {how:?}");
+    }
+}
+
+#[test]
+fn both_paths_give_the_same_conversation() {
+    let turns = [
+        "move the armchair 50 cm to the right",
+        "a bit more",
+        "move the speaker 10 cm to the left",
+        "the right one",
+        "no, the other one",
+        "and the ottoman too",
+        "put it back",
+        "undo that",
+        "put the vase on the bookshelf",
+        "no, on the coffee table",
+    ];
+    let (mut a, mut b) = (living_room(), living_room());
+    for turn in turns {
+        let x = say(&mut a, Path_::InPlace, turn).map(|o| serde_json::to_value(o).unwrap());
+        let y = say(&mut b, Path_::Working, turn).map(|o| serde_json::to_value(o).unwrap());
+        assert_eq!(x, y, "{turn}");
+    }
+}
