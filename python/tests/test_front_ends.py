@@ -180,3 +180,103 @@ def test_every_front_end_answers_the_same_outcome(tmp_path):
         strip = lambda a: {k: v for k, v in a.items() if k != "history_id"}  # noqa: E731
         assert strip(c) == strip(p), f"the CLI's {step} differs from Python's"
     assert len(cli) == 3
+
+
+# -- a conversation through each front end -------------------------------------------
+
+TURNS = [
+    "move the desk 30 cm to the left",
+    "a bit more",
+    "move the chair 20 cm forward",  # refused: which chair?
+    "the left one",
+    "and the bookcase too",
+    "put it back",
+    "undo that",
+    "move it 10 cm to the right",
+]
+
+
+def python_turns(scene_path) -> list:
+    scene = shenlong.Scene.load(scene_path)
+    answers = []
+    for turn in TURNS:
+        try:
+            answers.append(scene.edit(turn).to_dict())
+        except shenlong.EditError as e:
+            answers.append(e.data)
+    return answers
+
+
+def chat_turns(scene_path) -> list:
+    done = subprocess.run(
+        [binary(), "chat", str(scene_path), "--json"], input="\n".join(TURNS) + "\n",
+        capture_output=True, text=True, check=False,
+    )
+    assert done.returncode == 1, "a turn was refused: " + done.stderr
+    return [json.loads(line) for line in done.stdout.splitlines()]
+
+
+def http_turns(scene_path) -> list:
+    proc = subprocess.Popen(
+        [binary(), "serve", str(scene_path), "--addr", "127.0.0.1:0"],
+        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
+    )
+    try:
+        match = re.search(r"http://(127\.0\.0\.1:\d+)/", proc.stderr.readline())
+        assert match
+        answers = []
+        for turn in TURNS:
+            request = urllib.request.Request(
+                f"http://{match.group(1)}/api/edit", data=json.dumps({"instruction": turn}).encode(),
+                method="POST", headers={"Content-Type": "application/json"},
+            )
+            try:
+                with urllib.request.urlopen(request, timeout=30) as response:
+                    answers.append(json.loads(response.read()))
+            except urllib.error.HTTPError as e:
+                answers.append(json.loads(e.read()))
+        return answers
+    finally:
+        proc.terminate()
+        proc.wait(timeout=10)
+
+
+def mcp_turns(scene_path) -> list:
+    mcp = pytest.importorskip("mcp")
+    from mcp.client.stdio import StdioServerParameters, stdio_client
+
+    async def session_answers():
+        params = StdioServerParameters(command=binary(), args=["mcp", str(scene_path)])
+        async with stdio_client(params) as (read, write):
+            async with mcp.ClientSession(read, write) as session:
+                await session.initialize()
+                answers = []
+                for turn in TURNS:
+                    result = await session.call_tool("edit", {"instruction": turn})
+                    answers.append(result.structured_content)
+                return answers
+
+    return asyncio.run(session_answers())
+
+
+def test_every_front_end_holds_the_same_conversation(tmp_path):
+    original = tmp_path / "studio.json"
+    original.write_text(json.dumps(SCENE))
+    answers = {}
+    for name, run in [("python", python_turns), ("chat", chat_turns), ("http", http_turns), ("mcp", mcp_turns)]:
+        copy = tmp_path / f"{name}.json"
+        shutil.copy(original, copy)
+        answers[name] = [comparable(a) for a in run(copy)]
+
+    desk, more, refused, left, bookcase, back, undo, it = answers["python"]
+    assert desk["moved"][0]["after"]["position"] == pytest.approx([-0.3, 0, 0])
+    assert more["moved"][0]["after"]["position"] == pytest.approx([-0.4, 0, 0]), "10 cm more"
+    assert refused["kind"] == "ambiguous"
+    assert [(m["object"], m["after"]["position"]) for m in left["moved"]] == [("chair 1", pytest.approx([-1.5, 0, 1.4]))]
+    assert bookcase["moved"][0]["object"] == "bookcase"
+    assert bookcase["moved"][0]["after"]["position"] == pytest.approx([-2.5, 0, -1.3])
+    assert back["moved"][0]["after"]["position"] == pytest.approx([-2.5, 0, -1.5]), "the bookcase is back"
+    assert undo["operation"] == "undo"
+    assert it["moved"][0]["object"] == "bookcase"
+    for name in ("chat", "http", "mcp"):
+        assert answers[name] == answers["python"], f"{name}'s conversation differs from Python's"

@@ -198,8 +198,7 @@ function quote(name) {
   return name;
 }
 
-// Inserts an object's quoted name at the cursor (after a space, unless one is there),
-// and selects it.
+// Inserts an object's quoted name at the cursor (after a space, unless one is there).
 function insertName(name) {
   const box = $('instruction');
   const at = box.selectionStart ?? box.value.length;
@@ -207,8 +206,39 @@ function insertName(name) {
   box.value = box.value.slice(0, at) + text + box.value.slice(box.selectionEnd ?? at);
   box.focus();
   box.selectionStart = box.selectionEnd = at + text.length;
-  selected.add(name);
-  restyle([name]);
+}
+
+// A click selects an object — what "it" and "them" mean in the next instruction — in
+// place of the selection, or (with Shift, Ctrl or Cmd) added to it or taken out; a click
+// on the only selected object clears the selection.
+function select(name, additive) {
+  const before = [...selected];
+  if (additive) {
+    if (selected.has(name)) selected.delete(name); else selected.add(name);
+  } else if (selected.size === 1 && selected.has(name)) {
+    selected.clear();
+  } else {
+    selected.clear();
+    selected.add(name);
+  }
+  showSelection();
+  restyle([...before, name]);
+}
+
+// What "it" means now: the selection, or what the last edit moved.
+function showSelection() {
+  const names = [...selected];
+  $('selection').textContent = names.length
+    ? `Selected: ${names.join(', ')} — “it” means ${names.length === 1 ? 'this' : 'these'}`
+    : (lastMoved.length ? `“it” means what the last edit moved: ${lastMoved.join(', ')}` : '');
+}
+
+// The conversation: each instruction and what came of it.
+let lastMoved = [];
+function addTurn(instruction, result, refused) {
+  const item = h('li', { class: refused ? 'refused' : '' }, h('code', {}, instruction), ` — ${result}`);
+  $('conversation').append(item);
+  item.scrollIntoView({ block: 'nearest' });
 }
 
 // The outliner: one row per object, in scene order.
@@ -218,12 +248,13 @@ function buildList() {
   for (const entry of objects.values()) {
     const name = entry.data.name;
     const swatch = h('span', { class: 'swatch' });
-    const button = h('button', { type: 'button', title: `Insert '${name}' into the instruction` }, swatch, h('span', { class: 'name' }, name));
+    const button = h('button', { type: 'button', title: `Select '${name}' (Shift: add to the selection); double-click to insert its name` }, swatch, h('span', { class: 'name' }, name));
     button.addEventListener('mouseenter', () => setHover([name]));
     button.addEventListener('mouseleave', () => setHover([]));
     button.addEventListener('focus', () => setHover([name]));
     button.addEventListener('blur', () => setHover([]));
-    button.addEventListener('click', () => insertName(name));
+    button.addEventListener('click', (event) => select(name, event.shiftKey || event.ctrlKey || event.metaKey));
+    button.addEventListener('dblclick', () => insertName(name));
     const item = h('li', {}, button);
     entry.row = { item, button, swatch, key: name.toLowerCase() };
     list.append(item);
@@ -428,8 +459,8 @@ function tick(now) {
 }
 renderer.setAnimationLoop(tick);
 
-// Hover: names and highlight in both the view and the list. Click (not a drag): insert
-// the quoted name into the instruction.
+// Hover: names and highlight in both the view and the list. Click (not a drag): select;
+// double-click: insert the quoted name into the instruction.
 const raycaster = new THREE.Raycaster();
 const pointer = new THREE.Vector2();
 function pick(event) {
@@ -450,6 +481,10 @@ renderer.domElement.addEventListener('pointerdown', (event) => { pressedAt = [ev
 renderer.domElement.addEventListener('click', (event) => {
   // A drag that turned the view is not a click on what it ended over.
   if (pressedAt && Math.hypot(event.clientX - pressedAt[0], event.clientY - pressedAt[1]) > 5) return;
+  const name = pick(event);
+  if (name) select(name, event.shiftKey || event.ctrlKey || event.metaKey);
+});
+renderer.domElement.addEventListener('dblclick', (event) => {
   const name = pick(event);
   if (name) insertName(name);
 });
@@ -514,7 +549,13 @@ function showEdit(outcome, current) {
   } else {
     clearGhosts();
   }
-  if (outcome.report) showReport(outcome.report, current ? null : 'Undone or followed by other changes.');
+  if (outcome.report) {
+    showReport(outcome.report, current ? null : 'Undone or followed by other changes.');
+  } else {
+    // A follow-up ("a bit more", "put it back") moves without a translation to report.
+    $('understood').hidden = true;
+    $('report').textContent = (outcome.moved || []).map((m) => `${m.object} ${m.how}`).join(', ') || 'Nothing moved.';
+  }
   window.shenlong.lastReport = outcome.report;
   restyle();
 }
@@ -598,15 +639,24 @@ async function run(instruction) {
   clearChoice();
   say('Editing…', 'busy');
   try {
-    const outcome = await api('/api/edit', { instruction, llm: $('llm').value.trim() || undefined, system: $('system').value, report: true });
+    const outcome = await api('/api/edit', {
+      instruction, llm: $('llm').value.trim() || undefined, system: $('system').value, report: true,
+      selected: selected.size ? [...selected] : undefined,
+    });
     selected.clear();
+    lastMoved = outcome.moved.filter((m) => m.how === 'moved').map((m) => m.object);
+    addTurn(instruction, outcome.moved.length
+      ? outcome.moved.map((m) => m.how === 'moved' ? m.object : `${m.object} (${m.how})`).join(', ')
+      : 'nothing moved', false);
+    showSelection();
     await load(true);
     showEdit(outcome, true);
     await refreshHistory();
     if (outcome.warnings.length) say(`Done, but ${outcome.warnings.join('; ')}`, 'error');
-    else say(`Done: ${outcome.report.objects.map((o) => o.object).join(', ')}`);
+    else say(`Done: ${outcome.moved.map((m) => m.object).join(', ') || 'nothing moved'}`);
   } catch (error) {
     say(error.message, 'error');
+    addTurn(instruction, error.message, true);
     if (error.data && error.data.ambiguity) showChoice(error.data.ambiguity);
   } finally {
     running = false;
@@ -652,7 +702,10 @@ document.addEventListener('keydown', (event) => {
     || (target instanceof HTMLInputElement && target.type !== 'button' && target.type !== 'checkbox');
   if (event.key === 'Escape') {
     if (target === $('filter') && $('filter').value) return;
+    const before = [...selected];
     selected.clear();
+    showSelection();
+    restyle(before);
     clearChoice();
     return;
   }

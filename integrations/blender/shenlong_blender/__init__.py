@@ -97,12 +97,16 @@ class SHENLONG_OT_edit(bpy.types.Operator):
                 system=settings.system,
                 base_url=settings.base_url.strip() or None,
                 selection=selection,
+                matrices=core.matrices_of(chosen),
             )
         except core.ShenlongError as e:
             settings.last_error = str(e)
             self.report({"ERROR"}, str(e))
             return {"CANCELLED"}
         core.apply_motions({o.name: o for o in chosen}, result.motions)
+        context.view_layer.update()
+        # The conversation goes on while the objects stay where this edit left them.
+        core.CONVERSATION.left_as(core.matrices_of(chosen))
         settings.last_error = ""
         settings.last_report = json.dumps(
             {

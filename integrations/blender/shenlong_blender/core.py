@@ -187,6 +187,41 @@ def box_corners(lo, hi):
     return [Vector((x, y, z)) for x in (lo.x, hi.x) for y in (lo.y, hi.y) for z in (lo.z, hi.z)]
 
 
+class Conversation:
+    """The `shenlong.Scene` kept from one edit to the next, so that a follow-up ("a bit
+    more", "put it back", "and the lamp too") leans on the turn before. It holds while the
+    objects stand exactly where the last edit left them; once anything is moved, added or
+    undone in Blender, the next edit starts a new conversation from the scene as it is."""
+
+    def __init__(self):
+        self.scene = None
+        self.entries: dict = {}
+        self.left: dict | None = None
+
+    def scene_for(self, objects: list[SceneObject], matrices: dict):
+        """The conversation's scene when `matrices` (each object's world matrix, by name)
+        are those the last edit left; otherwise a new one of `objects`."""
+        if self.scene is not None and self.left == matrices:
+            return self.scene
+        described = scene_json(objects)
+        self.scene = package().Scene.from_dict(described)
+        self.entries = {o["name"]: o for o in described["objects"]}
+        self.left = matrices
+        return self.scene
+
+    def left_as(self, matrices: dict) -> None:
+        """Remembers where the edit left the objects."""
+        self.left = matrices
+
+
+CONVERSATION = Conversation()
+
+
+def matrices_of(objects) -> dict:
+    """Each object's world matrix, by name, as plain numbers."""
+    return {o.name: tuple(tuple(row) for row in o.matrix_world) for o in objects}
+
+
 def run_edit(
     objects: list[SceneObject],
     instruction: str,
@@ -195,9 +230,11 @@ def run_edit(
     system: str = "cga",
     base_url: str | None = None,
     selection: tuple[str, ...] = (),
+    matrices: dict | None = None,
 ) -> EditResult:
     """Edits the objects with the `shenlong` package, in this process, and returns each
-    moved object's motion.
+    moved object's motion. With `matrices` (the objects' world matrices, by name) the edit
+    continues the conversation when nothing moved since the last one.
 
     Raises ShenlongError with Shenlong's one-line message on a refusal or failure; the
     Blender scene is never touched here.
@@ -209,9 +246,11 @@ def run_edit(
     if not objects:
         raise ShenlongError("there are no visible mesh objects to edit")
     shenlong = package()
-    scene = scene_json(objects)
+    if matrices is None:
+        CONVERSATION.__init__()
+    scene = CONVERSATION.scene_for(objects, matrices if matrices is not None else {})
     try:
-        outcome = shenlong.Scene.from_dict(scene).edit(
+        outcome = scene.edit(
             instruction,
             llm=llm,
             system=system,
@@ -221,39 +260,46 @@ def run_edit(
         )
     except shenlong.EditError as e:
         raise ShenlongError(str(e).splitlines()[0] if str(e) else type(e).__name__) from None
-    by_name = {o["name"]: o for o in scene["objects"]}
     motions = []
     for moved in outcome.moved:
-        motion = motion_of(by_name[moved.object], moved.object, moved.after)
+        motion = motion_of(CONVERSATION.entries[moved.object], moved.object, moved.after, moved.before)
         if motion is not None:
             motions.append(motion)
     return EditResult(motions, outcome.report or {}, summarise(outcome.report or {}))
 
 
-def motion_of(before: dict, name: str, after):
-    """The world motion (Blender frame) that takes an object from its entry `before` in the
-    scene Shenlong was given to its pose `after` (a `shenlong.Pose`), or None when it did
-    not move.
+def pose_matrix(entry: dict, pose) -> Matrix:
+    """The world matrix (Blender frame) that takes the box of `entry` — as Shenlong was
+    first given it, unrotated and unscaled at `p0` — to the pose `pose` (a `shenlong.Pose`):
+    `x ↦ s·q(x − p0) + t`, in Blender's frame `C⁻¹ · that · C`."""
+    p0 = Vector(entry["position"])
+    t = Vector(pose.position)
+    x, y, z, w = pose.rotation
+    q = Quaternion((w, x, y, z)).normalized()
+    linear = TO_BLENDER @ (q.to_matrix() * float(pose.scale)) @ TO_SHENLONG
+    return Matrix.Translation(to_blender(t)) @ linear.to_4x4() @ Matrix.Translation(-to_blender(p0))
 
-    Shenlong's pose maps the box's local frame (pivot at the bottom centre) into the world:
-    `x ↦ s·q(x) + t`. The object started unrotated and unscaled at `p0`, so its world
-    motion is `x ↦ s·q(x − p0) + t`; in Blender's frame that is `C⁻¹ · that · C`.
-    """
-    p0 = Vector(before["position"])
+
+def motion_of(entry: dict, name: str, after, before=None):
+    """The world motion (Blender frame) that takes an object from its pose `before` to its
+    pose `after` (`shenlong.Pose`s; `before` defaults to where the scene Shenlong was given
+    has it, its entry `entry`), or None when it did not move."""
     t = Vector(after.position)
     x, y, z, w = after.rotation
     q = Quaternion((w, x, y, z)).normalized()
     s = float(after.scale)
-    if (t - p0).length < 1e-12 and abs(q.angle) < 1e-12 and abs(s - 1.0) < 1e-12:
+    moving = pose_matrix(entry, after)
+    if before is not None:
+        moving = moving @ pose_matrix(entry, before).inverted()
+    identity = Matrix.Identity(4)
+    if all(abs(moving[i][j] - identity[i][j]) < 1e-12 for i in range(4) for j in range(4)):
         return None
-    linear = TO_BLENDER @ (q.to_matrix() * s) @ TO_SHENLONG
-    matrix = Matrix.Translation(to_blender(t)) @ linear.to_4x4() @ Matrix.Translation(-to_blender(p0))
     # Shenlong's box afterwards: its rotated, scaled box, in Blender's frame.
-    size = Vector(before["size"])
+    size = Vector(entry["size"])
     half = Vector((size.x / 2.0, 0.0, size.z / 2.0))
     local = box_corners(-half, Vector((half.x, size.y, half.z)))
     lo, hi = bounds(to_blender(q @ (c * s) + t) for c in local)
-    return Motion(name, matrix, lo, hi)
+    return Motion(name, moving, lo, hi)
 
 
 def apply_motions(objects_by_name: dict, motions: list[Motion]) -> None:

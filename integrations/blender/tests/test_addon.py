@@ -120,6 +120,28 @@ class AddonTests(unittest.TestCase):
         self.assertEqual(edit("move the Chair up by 20 cm"), {"FINISHED"})
         self.assertVectorAlmostEqual(box(chair)[0], before + Vector((1.0, -0.5, 0.2)))
 
+    def test_follow_ups_lean_on_the_last_edit_while_nothing_else_moved(self):
+        chair = cube("Chair", (0.0, 0.0, 0.0), scale=(0.3, 0.3, 0.5))
+        cube("Desk", (3.0, 2.0, 0.0), scale=(0.6, 0.4, 0.4))
+        # Nothing selected: "it" is what the last edit moved (a selection would win).
+        bpy.ops.object.select_all(action="DESELECT")
+        before = box(chair)[0].copy()
+        self.assertEqual(edit("move the Chair 1 m to the right"), {"FINISHED"})
+        self.assertEqual(edit("a bit more"), {"FINISHED"})
+        self.assertVectorAlmostEqual(box(chair)[0], before + Vector((1.1, 0.0, 0.0)))
+        self.assertMatchesShenlong(chair)
+        self.assertEqual(edit("put it back"), {"FINISHED"}, bpy.context.scene.shenlong.last_error)
+        self.assertVectorAlmostEqual(box(chair)[0], before + Vector((1.0, 0.0, 0.0)))
+        # A refusal keeps the conversation: "it" is still the chair.
+        self.assertEqual(edit("put the sofa on the Desk"), {"CANCELLED"})
+        self.assertEqual(edit("move it 20 cm to the left"), {"FINISHED"})
+        self.assertVectorAlmostEqual(box(chair)[0], before + Vector((0.8, 0.0, 0.0)))
+        # Moved by hand in Blender: a new conversation, with nothing to lean on.
+        chair.location.x += 1.0
+        bpy.context.view_layer.update()
+        self.assertEqual(edit("again"), {"CANCELLED"})
+        self.assertIn("follows an edit", bpy.context.scene.shenlong.last_error)
+
     def test_a_quarter_turn_is_plus_90_degrees_about_z(self):
         bench = cube("Bench", (0.0, 0.0, 0.0), scale=(1.0, 0.25, 0.3))
         self.assertEqual(edit("rotate the Bench 90 degrees counterclockwise"), {"FINISHED"})

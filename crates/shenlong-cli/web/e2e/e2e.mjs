@@ -182,12 +182,17 @@ async function kitchen() {
   check(same(await page.locator('#labels .label.hover').allTextContents(), ['chair 4']), 'and labels it in the view');
   await page.fill('#instruction', 'put ');
   await page.mouse.click(chair4.x, chair4.y);
-  await row('fridge').click();
-  check(await page.inputValue('#instruction') === "put 'chair 4' 'fridge'", `clicks in the view and the list insert names: ${await page.inputValue('#instruction')}`);
+  check(await page.inputValue('#instruction') === 'put ', `a click selects, it does not type: ${await page.inputValue('#instruction')}`);
+  check(await row('chair 4').evaluate((b) => b.classList.contains('selected')), 'a click in the view selects the object');
+  await row('fridge').click({ modifiers: ['Shift'] });
+  check((await page.locator('#selection').textContent()).includes('chair 4, fridge'), `Shift+click adds to the selection: ${await page.locator('#selection').textContent()}`);
   check(same((await shenlong('labels')).sort(), ['chair 4', 'fridge', 'fruit bowl']), `selected objects are labelled: ${await shenlong('labels')}`);
+  await row('fridge').dblclick();
+  check((await page.inputValue('#instruction')).includes("'fridge'"), `a double-click inserts the name: ${await page.inputValue('#instruction')}`);
   await page.mouse.move(5, 5);
   await page.keyboard.press('Escape');
   check(same(await shenlong('labels'), ['fruit bowl']), `Esc clears the selection: ${await shenlong('labels')}`);
+  check((await page.locator('#selection').textContent()) === '', 'and says so');
 
   // 2. Ambiguity as a choice, run by Enter.
   const refused = await request(at, 'api/edit', { instruction: 'move the chair 50 cm to the left' });
@@ -244,11 +249,29 @@ async function kitchen() {
   await waitStatus(() => document.querySelector('#status').textContent === 'Redone', 10000);
   check(near(await position('chair 3'), [-0.95, 0, 0.75]), 'Ctrl+Shift+Z redoes');
 
+  // The conversation: the selection is "it"; a follow-up leans on the last edit.
+  const chair2 = await position('chair 2');
+  await row('chair 2').click();
+  await page.fill('#instruction', 'move it 20 cm to the left');
+  await page.keyboard.press('Enter');
+  await waitStatus(() => document.querySelector('#status').textContent.startsWith('Done'));
+  check(near(await position('chair 2'), [chair2[0] - 0.2, chair2[1], chair2[2]]), `"it" is the selected chair 2: ${await position('chair 2')}`);
+  await page.fill('#instruction', 'a bit more');
+  await page.keyboard.press('Enter');
+  await waitStatus(() => document.querySelector('#status').textContent.startsWith('Done'));
+  check(near(await position('chair 2'), [chair2[0] - 0.3, chair2[1], chair2[2]]), `"a bit more" moves it 10 cm further: ${await position('chair 2')}`);
+  await page.fill('#instruction', 'put it back');
+  await page.keyboard.press('Enter');
+  await waitStatus(() => document.querySelector('#status').textContent.startsWith('Done'));
+  check(near(await position('chair 2'), [chair2[0] - 0.2, chair2[1], chair2[2]]), `"put it back" undoes the last move of it: ${await position('chair 2')}`);
+  const turns = await page.locator('#conversation li').allTextContents();
+  check(turns.length >= 3 && turns[turns.length - 1].startsWith('put it back'), `the panel shows the conversation: ${turns.join(' | ')}`);
+
   // A hostile name: inserted, edited, reported and labelled as text.
   await page.fill('#instruction', 'move ');
-  await row(HOSTILE).click();
+  await row(HOSTILE).dblclick();
   await page.keyboard.type(' 30 cm to the left');
-  check(await page.inputValue('#instruction') === `move '${HOSTILE}' 30 cm to the left`, 'a click inserts the hostile name quoted');
+  check(await page.inputValue('#instruction') === `move '${HOSTILE}' 30 cm to the left`, 'a double-click inserts the hostile name quoted');
   await page.keyboard.press('Enter');
   await waitStatus(() => document.querySelector('#status').textContent.startsWith('Done'));
   check((await page.locator('#understood').textContent()) === `Understood: move '${HOSTILE}'X1 30 cm to the left`, 'the hostile name is shown as text in the report');
