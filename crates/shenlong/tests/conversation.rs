@@ -222,3 +222,53 @@ fn both_paths_give_the_same_conversation() {
         assert_eq!(x, y, "{turn}");
     }
 }
+
+#[test]
+fn follow_ups_said_other_ways() {
+    for how in BOTH {
+        let mut s = living_room();
+        let start = at(&s, "armchair");
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "another 10 cm").unwrap();
+        assert!(close(at(&s, "armchair"), start + DVec3::X * 0.4), "{how:?}");
+        say(&mut s, how, "push it a bit further").unwrap();
+        assert!(close(at(&s, "armchair"), start + DVec3::X * 0.5), "{how:?}");
+        // The other speaker too.
+        let (left, right) = (at(&s, "speaker"), at(&s, "speaker 2"));
+        say(&mut s, how, "move the left speaker 10 cm to the left").unwrap();
+        say(&mut s, how, "the other one too").unwrap();
+        assert!(close(at(&s, "speaker"), left - DVec3::X * 0.1), "{how:?}");
+        assert!(close(at(&s, "speaker 2"), right - DVec3::X * 0.1), "{how:?}");
+        // A destination alone, after an edit: there instead.
+        let mut s = living_room();
+        say(&mut s, how, "put the vase on the bookshelf").unwrap();
+        say(&mut s, how, "actually, onto the coffee table").unwrap();
+        let scene = &s.file.scene;
+        let (v, t) = (scene.find("vase").unwrap(), scene.find("coffee table").unwrap());
+        assert_eq!(scene.objects[v].support, Some(t), "{how:?}");
+    }
+}
+
+#[test]
+fn a_bare_phrase_correcting_an_edit_with_a_destination_is_read_by_kind_and_size() {
+    for how in BOTH {
+        let mut s = living_room();
+        let vase = at(&s, "vase");
+        say(&mut s, how, "put the vase on the bookshelf").unwrap();
+        let moved = at(&s, "vase");
+        // "the side table": neither a vase nor a bookshelf, and furniture as the
+        // bookshelf is: the place.
+        say(&mut s, how, "no, the coffee table").unwrap();
+        let scene = &s.file.scene;
+        let (v, t) = (scene.find("vase").unwrap(), scene.find("coffee table").unwrap());
+        assert_eq!(scene.objects[v].support, Some(t), "{how:?}");
+        // "the book": the size of the vase, not of the table: what moves.
+        let mut s = living_room();
+        let book = at(&s, "book");
+        say(&mut s, how, "put the vase on the coffee table").unwrap();
+        say(&mut s, how, "no, the book").unwrap();
+        assert!(close(at(&s, "vase"), vase), "the vase went back {how:?}");
+        assert!(!close(at(&s, "book"), book), "the book moved {how:?}");
+        assert!(!close(moved, vase));
+    }
+}

@@ -44,7 +44,7 @@ mod shift;
 #[cfg(test)]
 mod testing;
 mod view;
-mod words;
+pub(crate) mod words;
 
 pub use relations::GAP;
 

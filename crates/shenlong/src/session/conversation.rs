@@ -205,7 +205,13 @@ impl Context {
             FollowUp::Undo => Ok(Plan::Undo),
             FollowUp::Back(object) => self.back(object.as_deref(), selected, scene, grounder),
             FollowUp::Also(np) => {
-                let (text, _) = self.replace_acted(&np)?;
+                let (text, head) = self.replace_acted(&np)?;
+                // "the other one too": the one other object the noun names.
+                let text = if mentions_other(&np) {
+                    self.other(&head, scene, grounder)?
+                } else {
+                    text
+                };
                 Ok(Plan::Edit {
                     instruction: text,
                     focus: Vec::new(),
@@ -249,6 +255,24 @@ impl Context {
                     0.5
                 };
                 sign * small.min(if sign < 0.0 { 0.5 } else { 1.0 })
+            }
+            Amount::Metres(metres) => {
+                let length = last.motions[0].1.translation.length();
+                if length < 1e-9 {
+                    return Err(refuse(
+                        "the last change was not a move: say which way to move it",
+                    ));
+                }
+                metres / length
+            }
+            Amount::Degrees(degrees) => {
+                let angle = last.motions[0].1.rotation.to_axis_angle().1.abs();
+                if angle < 1e-9 {
+                    return Err(refuse(
+                        "the last change was not a turn: say which way to turn it",
+                    ));
+                }
+                degrees.to_radians() / angle
             }
         };
         Ok(last
@@ -339,8 +363,28 @@ impl Context {
                         .join(", ")
                 )));
             }
+            let head = head_noun(&choices.phrase);
+            let bare = np.trim_matches(|c: char| !c.is_alphanumeric());
+            let picks = np
+                .split_whitespace()
+                .any(|w| matches!(w.to_lowercase().as_str(), "one" | "ones"))
+                || head_noun(np) == head
+                || choices.objects.iter().any(|o| o.eq_ignore_ascii_case(bare));
+            if !picks {
+                return Err(refuse(format!(
+                    "\"{np}\" is not one of the {} \"{}\" could mean: {}",
+                    choices.total,
+                    choices.phrase,
+                    choices
+                        .objects
+                        .iter()
+                        .map(|o| format!("'{o}'"))
+                        .collect::<Vec<_>>()
+                        .join(", ")
+                )));
+            }
             let [start, end] = choices.span;
-            let np = with_head(np, &head_noun(&choices.phrase));
+            let np = with_head(np, &head);
             let text = splice(instruction, start, end, &np)?;
             return Ok(Plan::Edit {
                 instruction: text,
@@ -352,6 +396,8 @@ impl Context {
         let (text, head) = self.replace_acted(np)?;
         let text = if mentions_other(np) {
             self.other(&head, scene, grounder)?
+        } else if let Some(text) = self.destination_named(np, &head, scene, grounder)? {
+            text
         } else {
             text
         };
@@ -361,6 +407,75 @@ impl Context {
             from_last: false,
             undo_first: true,
         })
+    }
+
+    /// For "no, the table" after "put the mug on the shelf": the last instruction with
+    /// its destination replaced when the phrase means the destination; `None` when it
+    /// means what moved (or says "one"), or there is no destination; refused when it could
+    /// be either. What it means: the same noun as one of them, else the objects it names
+    /// are among those the noun of one names, else they are the size of one and not the
+    /// other (twice as near on a log scale).
+    fn destination_named(
+        &self,
+        np: &str,
+        acted_head: &str,
+        scene: &Scene,
+        grounder: &Grounder,
+    ) -> Result<Option<String>, OpError> {
+        let last = self.last_edit(np)?;
+        let instruction = last.instruction.as_deref().unwrap_or_default();
+        let said = head_noun(np);
+        let says_one = np
+            .split_whitespace()
+            .any(|w| matches!(w.to_lowercase().as_str(), "one" | "ones"));
+        if says_one || said == acted_head {
+            return Ok(None);
+        }
+        let Some((acted_span, acted)) = last
+            .phrases
+            .iter()
+            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
+        else {
+            return Ok(None);
+        };
+        let Some((span, target)) = last.phrases.iter().find(|(s, _)| s.start >= acted_span.end)
+        else {
+            return Ok(None);
+        };
+        let destination = head_noun(instruction.get(span.clone()).unwrap_or_default());
+        let as_destination = || splice(instruction, span.start, span.end, np).map(Some);
+        if said == destination {
+            return as_destination();
+        }
+        let named = ground_phrase(np, scene, grounder)?;
+        let among = |head: &str| {
+            let kind = ground_all(head, scene, grounder);
+            named.iter().any(|o| kind.contains(o))
+        };
+        match (among(acted_head), among(&destination)) {
+            (true, false) => return Ok(None),
+            (false, true) => return as_destination(),
+            _ => {}
+        }
+        let size = |objects: &[usize]| {
+            objects
+                .iter()
+                .map(|&i| scene.objects[i].world_aabb().size().max_element())
+                .fold(0.0_f64, f64::max)
+                .max(1e-6)
+                .ln()
+        };
+        let (n, a, d) = (size(&named), size(acted), size(target));
+        let twice = std::f64::consts::LN_2;
+        if (n - a).abs() + twice < (n - d).abs() {
+            return Ok(None);
+        }
+        if (n - d).abs() + twice < (n - a).abs() {
+            return as_destination();
+        }
+        Err(refuse(format!(
+            "\"{np}\" instead of what: the {acted_head} moved, or the {destination} it went to? say \"no, move {np}\" or \"no, on {np}\""
+        )))
     }
 
     /// "no, the other one": the last instruction on the one other object its phrase's

@@ -15,6 +15,10 @@ pub enum Amount {
     /// A small amount along the last motion ("a bit more": +1; "a bit less": −1), at most
     /// the last motion itself (or half of it, going back).
     Bit(f64),
+    /// This many metres more along the last motion ("another 10 cm").
+    Metres(f64),
+    /// This many degrees more along the last turn ("15 more degrees").
+    Degrees(f64),
 }
 
 /// A follow-up, and the words it carries.
@@ -75,14 +79,23 @@ fn words(text: &str) -> Vec<Word> {
 }
 
 /// Words that only say a follow-up is one ("no", "ok then", "I meant").
-const CORRECTING: [&[&str]; 9] = [
+const CORRECTING: [&[&str]; 18] = [
     &["no", "i", "meant"],
     &["no", "i", "mean"],
     &["i", "meant"],
     &["i", "mean"],
+    &["i", "said"],
     &["not", "that", "one"],
     &["wrong", "one"],
+    &["make", "that"],
+    &["no", "wait"],
     &["no", "sorry"],
+    &["sorry"],
+    &["oops"],
+    &["wait"],
+    &["actually"],
+    &["rather"],
+    &["instead"],
     &["nope"],
     &["no"],
 ];
@@ -116,7 +129,24 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
     let lower: Vec<&str> = all.iter().map(|w| w.text.as_str()).collect();
     let core = crate::discourse::core(&lower);
     // The discourse set aside takes words a follow-up is made of: they come back.
-    let kept = |w: &str| matches!(w, "and" | "also" | "again" | "too" | "no" | "nope" | "more");
+    let kept = |w: &str| {
+        matches!(
+            w,
+            "and"
+                | "also"
+                | "again"
+                | "too"
+                | "no"
+                | "nope"
+                | "more"
+                | "actually"
+                | "instead"
+                | "rather"
+                | "wait"
+                | "sorry"
+                | "oops"
+        )
+    };
     let (mut start, mut end) = (core.start, core.end.max(core.start));
     while start > 0 && kept(lower[start - 1]) {
         start -= 1;
@@ -129,23 +159,60 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
     if w.is_empty() {
         return None;
     }
-    let text = |from: usize| -> String {
-        words
-            .get(from)
-            .map(|first| {
-                let end = words.last().map_or(first.span.end, |l| l.span.end);
-                instruction[first.span.start..end].to_string()
-            })
-            .unwrap_or_default()
+    let text = |from: usize, to: usize| -> String {
+        match (
+            words.get(from),
+            to.checked_sub(1).and_then(|t| words.get(t)),
+        ) {
+            (Some(first), Some(last)) if from < to => {
+                instruction[first.span.start..last.span.end].to_string()
+            }
+            _ => String::new(),
+        }
     };
     if let Some(n) = starts(&w, &CORRECTING) {
-        return correction(&w[n..], text(n));
+        return correction(&w[n..], text(n, w.len()));
+    }
+    // "… instead", "… rather".
+    if let Some(last) = w.last().filter(|l| matches!(**l, "instead" | "rather")) {
+        let _ = last;
+        return correction(&w[..w.len() - 1], text(0, w.len() - 1));
     }
     undo(&w)
         .or_else(|| back(&w, &text))
         .or_else(|| repeat(&w, &text))
         .or_else(|| also(&w, &text))
-        .or_else(|| (after_refusal && !starts_with_verb(&w)).then(|| FollowUp::Instead(text(0))))
+        .or_else(|| destination_alone(&w, &text))
+        .or_else(|| {
+            (after_refusal && !starts_with_verb(&w)).then(|| FollowUp::Instead(text(0, w.len())))
+        })
+}
+
+/// A destination said alone ("onto the chair", "next to the sofa"): where the last
+/// edit's objects should have gone instead.
+fn destination_alone(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    let first = *w.first()?;
+    let determiner = |x: Option<&&str>| {
+        x.is_some_and(|x| matches!(*x, "the" | "a" | "an" | "my" | "that" | "this" | "those"))
+    };
+    let place = matches!(
+        first,
+        "on" | "onto"
+            | "into"
+            | "under"
+            | "underneath"
+            | "beneath"
+            | "beside"
+            | "behind"
+            | "next"
+            | "near"
+            | "against"
+            | "inside"
+            | "atop"
+            | "between"
+            | "in"
+    ) || (first == "by" && determiner(w.get(1)));
+    (place && w.len() > 1).then(|| FollowUp::InsteadPlace(text(0, w.len())))
 }
 
 /// "no, on the shelf" (a destination) or "no, the other one" (an object).
@@ -187,7 +254,7 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
 
 /// "put it back", "put the chair back where it was", "back where it was", "return the
 /// lamp to where it was".
-fn back(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
+fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     let where_it_was = |rest: &[&str]| -> bool {
         let rest = match rest {
             ["to", r @ ..] => r,
@@ -235,7 +302,7 @@ fn back(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
             let object = &w[1..object_end];
             return Some(FollowUp::Back(match object {
                 [] | ["it" | "them" | "that" | "those" | "this" | "these"] => None,
-                _ => Some(object_text(text, 1, object.len())),
+                _ => Some(text(1, object_end)),
             }));
         }
     }
@@ -247,20 +314,83 @@ fn back(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
     (matches!(rest.first(), Some(&"where")) && where_it_was(rest)).then_some(FollowUp::Back(None))
 }
 
-/// The text of `len` words from word `from`.
-fn object_text(text: &dyn Fn(usize) -> String, from: usize, len: usize) -> String {
-    let all = text(from);
-    all.split_whitespace()
-        .scan(0, |n, part| {
-            *n += 1;
-            (*n <= len).then_some(part)
-        })
-        .collect::<Vec<_>>()
-        .join(" ")
+/// "again", "a bit more", "twice as far", "not so far", "more to the left", "another 10
+/// cm"; also after a motion verb and what it moved ("move it a bit more", "push them
+/// further", "turn it again").
+fn repeat(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    let skip = match w {
+        [verb, "it" | "them" | "that" | "this" | "those" | "these", ..]
+            if crate::ground::words::is_verb(verb) =>
+        {
+            2
+        }
+        ["go" | "push" | "move" | "turn" | "rotate" | "slide" | "spin", ..] => 1,
+        _ => 0,
+    };
+    if skip > 0 {
+        let said = |from: usize, to: usize| text(from + skip, to + skip);
+        return repeat_of(&w[skip..], &said);
+    }
+    repeat_of(w, text)
 }
 
-/// "again", "a bit more", "twice as far", "not so far", "more to the left".
-fn repeat(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
+/// The length or angle of "10 cm", "15 degrees", "another 2 inches", "10cm".
+fn amount(w: &[&str]) -> Option<(Amount, usize)> {
+    let (number, unit, used) = match w {
+        [n, unit, ..] if number(n).is_some() => (number(n)?, *unit, 2),
+        [glued, ..] => {
+            let cut = glued.find(|c: char| !(c.is_ascii_digit() || c == '.'))?;
+            (glued[..cut].parse::<f64>().ok()?, &glued[cut..], 1)
+        }
+        [] => return None,
+    };
+    if let Some(per) = crate::offline::words::length_unit(unit) {
+        return Some((Amount::Metres(number * per), used));
+    }
+    let per = crate::offline::words::angle_unit(unit)?;
+    Some((Amount::Degrees(number * per), used))
+}
+
+/// A number in digits or words.
+fn number(w: &str) -> Option<f64> {
+    w.parse::<f64>()
+        .ok()
+        .filter(|n| n.is_finite() && *n > 0.0)
+        .or_else(|| crate::lex::number_word(w))
+}
+
+/// "another 10 cm", "10 cm more", "5 more degrees", "a further 20 cm".
+fn explicit(w: &[&str]) -> Option<Amount> {
+    let (rest, opener) = match w {
+        ["another" | "additional", rest @ ..] | ["a", "further" | "another", rest @ ..] => {
+            (rest, true)
+        }
+        rest => (rest, false),
+    };
+    if let Some((a, used)) = amount(rest) {
+        let tail = &rest[used..];
+        let ok = if opener {
+            tail.is_empty()
+        } else {
+            matches!(
+                tail,
+                ["more" | "further" | "farther"] | ["more" | "further" | "farther", "please"]
+            )
+        };
+        return ok.then_some(a);
+    }
+    // "5 more degrees"
+    if let [n, "more", unit] = rest {
+        return amount(&[n, unit]).map(|(a, _)| a);
+    }
+    None
+}
+
+/// [`repeat`] once any motion verb is set aside.
+fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    if let Some(a) = explicit(w) {
+        return Some(FollowUp::Repeat(a));
+    }
     let whole = |options: &[&[&str]]| options.iter().any(|o| w == *o);
     if whole(&[
         &["again"],
@@ -272,6 +402,8 @@ fn repeat(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
         &["repeat"],
         &["repeat", "that"],
         &["keep", "going"],
+        &["another", "bit"],
+        &["go", "on"],
     ]) {
         return Some(FollowUp::Repeat(Amount::Times(1.0)));
     }
@@ -332,7 +464,8 @@ fn repeat(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
                 | "counterclockwise"
                 | "anticlockwise"
         );
-    (sign > 0.0 && direction).then(|| FollowUp::Toward(format!("move it a bit {}", text(at + 1))))
+    (sign > 0.0 && direction)
+        .then(|| FollowUp::Toward(format!("move it a bit {}", text(at + 1, w.len()))))
 }
 
 /// "twice as far", "three times as much", "half as far".
@@ -349,7 +482,7 @@ fn times_as_far(w: &[&str]) -> Option<Amount> {
 
 /// "and the mug too", "the bowl as well", "same for the chairs", "do the same with the
 /// coffee table", "also the lamp".
-fn also(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
+fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     let same = starts(
         w,
         &[
@@ -376,13 +509,17 @@ fn also(w: &[&str], text: &dyn Fn(usize) -> String) -> Option<FollowUp> {
             end -= tail.len();
         }
     }
-    // "and …" alone could be the start of any instruction: it needs "too" or "as well".
-    let bare_and = matches!(w, ["and", ..]) && same == 1 && end == w.len();
     let nothing_adds = same == 0 && end == w.len();
-    if end <= same || bare_and || nothing_adds || starts_with_verb(&w[same..]) {
+    // "and the lamp": a phrase, not an instruction ("and move the lamp left").
+    let said = &w[same..end.max(same)];
+    let phrase = !said.iter().any(|x| crate::ground::words::is_verb(x))
+        && !said
+            .last()
+            .is_some_and(|x| crate::ground::words::side_word(x).is_some());
+    if end <= same || nothing_adds || !phrase {
         return None;
     }
-    Some(FollowUp::Also(object_text(text, same, end - same)))
+    Some(FollowUp::Also(text(same, end)))
 }
 
 #[cfg(test)]
@@ -459,6 +596,10 @@ mod tests {
             "put the mug on the shelf",
             "move it 10 cm to the right",
             "and move the lamp left",
+            "move the lamp 10 cm more to the left",
+            "turn it around",
+            "by 20 cm",
+            "and the lamp left",
             "the left one",
             "move the lamp a bit more to the left",
             "no, move the lamp left",
