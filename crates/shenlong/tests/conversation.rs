@@ -238,13 +238,19 @@ fn follow_ups_said_other_ways() {
         say(&mut s, how, "move the left speaker 10 cm to the left").unwrap();
         say(&mut s, how, "the other one too").unwrap();
         assert!(close(at(&s, "speaker"), left - DVec3::X * 0.1), "{how:?}");
-        assert!(close(at(&s, "speaker 2"), right - DVec3::X * 0.1), "{how:?}");
+        assert!(
+            close(at(&s, "speaker 2"), right - DVec3::X * 0.1),
+            "{how:?}"
+        );
         // A destination alone, after an edit: there instead.
         let mut s = living_room();
         say(&mut s, how, "put the vase on the bookshelf").unwrap();
         say(&mut s, how, "actually, onto the coffee table").unwrap();
         let scene = &s.file.scene;
-        let (v, t) = (scene.find("vase").unwrap(), scene.find("coffee table").unwrap());
+        let (v, t) = (
+            scene.find("vase").unwrap(),
+            scene.find("coffee table").unwrap(),
+        );
         assert_eq!(scene.objects[v].support, Some(t), "{how:?}");
     }
 }
@@ -260,7 +266,10 @@ fn a_bare_phrase_correcting_an_edit_with_a_destination_is_read_by_kind_and_size(
         // bookshelf is: the place.
         say(&mut s, how, "no, the coffee table").unwrap();
         let scene = &s.file.scene;
-        let (v, t) = (scene.find("vase").unwrap(), scene.find("coffee table").unwrap());
+        let (v, t) = (
+            scene.find("vase").unwrap(),
+            scene.find("coffee table").unwrap(),
+        );
         assert_eq!(scene.objects[v].support, Some(t), "{how:?}");
         // "the book": the size of the vase, not of the table: what moves.
         let mut s = living_room();

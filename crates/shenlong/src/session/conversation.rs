@@ -19,6 +19,9 @@ use std::sync::Arc;
 /// How many earlier edits "put it back" can reach.
 const MAX_RETURNS: usize = 64;
 
+/// The phrases of an instruction that named objects: their bytes and objects.
+pub(crate) type Phrases = Vec<(Range<usize>, Vec<usize>)>;
+
 /// What the conversation remembers; cheap to copy into a working copy.
 #[derive(Clone, Debug, Default)]
 pub(crate) struct Context {
@@ -45,7 +48,7 @@ pub(crate) struct Edited {
     /// The objects it moved itself: what "it" means next.
     pub acted: Vec<usize>,
     /// The phrases of the instruction that named objects: their bytes and objects.
-    pub phrases: Vec<(Range<usize>, Vec<usize>)>,
+    pub phrases: Phrases,
     /// Each acted object's motion about its pivot, for "again" and "a bit more".
     pub motions: Vec<(usize, Similarity)>,
 }
@@ -94,7 +97,7 @@ impl Context {
     }
 
     /// The last edit's instruction and its phrases, if it had one.
-    pub fn last_instruction(&self) -> Option<(String, Vec<(Range<usize>, Vec<usize>)>)> {
+    pub fn last_instruction(&self) -> Option<(String, Phrases)> {
         let e = self.edit.as_deref()?;
         e.instruction.clone().map(|i| (i, e.phrases.clone()))
     }

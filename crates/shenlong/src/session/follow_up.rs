@@ -391,7 +391,7 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
     if let Some(a) = explicit(w) {
         return Some(FollowUp::Repeat(a));
     }
-    let whole = |options: &[&[&str]]| options.iter().any(|o| w == *o);
+    let whole = |options: &[&[&str]]| options.contains(&w);
     if whole(&[
         &["again"],
         &["once", "more"],
@@ -512,10 +512,10 @@ fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     let nothing_adds = same == 0 && end == w.len();
     // "and the lamp": a phrase, not an instruction ("and move the lamp left").
     let said = &w[same..end.max(same)];
-    let phrase = !said.iter().any(|x| crate::ground::words::is_verb(x))
-        && !said
-            .last()
-            .is_some_and(|x| crate::ground::words::side_word(x).is_some());
+    let ends_on_a_side = said
+        .last()
+        .is_some_and(|x| crate::ground::words::side_word(x).is_some());
+    let phrase = !(said.iter().any(|x| crate::ground::words::is_verb(x)) || ends_on_a_side);
     if end <= same || nothing_adds || !phrase {
         return None;
     }

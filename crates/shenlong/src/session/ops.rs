@@ -59,7 +59,7 @@ enum Then {
     /// `undo_first`).
     Land {
         scene: Scene,
-        done: Done,
+        done: Box<Done>,
         undo_first: bool,
     },
     /// Take the latest change back.
@@ -383,7 +383,7 @@ impl Working {
         )?;
         Ok(Pending(Then::Land {
             scene: self.scene,
-            done,
+            done: Box::new(done),
             undo_first,
         }))
     }
@@ -401,7 +401,7 @@ impl Working {
         let (done, _) = apply(&mut self.scene, request, options)?;
         Ok(Pending(Then::Land {
             scene: self.scene,
-            done,
+            done: Box::new(done),
             undo_first: false,
         }))
     }
@@ -561,7 +561,7 @@ impl Session {
                     .flatten();
                 let changes = diff(&self.file.scene, &scene);
                 self.file.scene = scene;
-                Ok(with_taken_back(self.finish(changes, done), taken_back))
+                Ok(with_taken_back(self.finish(changes, *done), taken_back))
             }
         }
     }
