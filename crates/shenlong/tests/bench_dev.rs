@@ -199,7 +199,7 @@ fn an_interrupted_run_resumes_where_it_stopped() {
 #[test]
 fn bad_suites_fail_before_anything_runs() {
     let dir = Path::new(env!("CARGO_MANIFEST_DIR"));
-    let err = |text: &str| Suite::parse(text, dir).unwrap_err().message;
+    let err = |text: &str| Suite::parse(text, dir).unwrap_err().to_string();
     let base = r#"{"name": "t", "scenes": ["s.json"], "queries": [{"id": "q", "category": "simple", "text": "move the '{A}' left", "expect": [{"check": "moved", "object": "A", "delta": [-1, 0, 0]}]}]}"#;
     assert!(Suite::parse(base, dir).is_ok());
     assert!(err(&base.replace("\"simple\"", "\"easy\"")).contains("unknown category 'easy'"));
@@ -245,7 +245,7 @@ fn a_query_runs_on_the_scenes_it_names_by_name_or_file_and_no_other_name_passes(
         assert_eq!(instances(&s, &scenes).len(), 1, "{named}");
     }
     let s = suite(r#""hall""#);
-    let e = s.load_scenes().unwrap_err().message;
+    let e = s.load_scenes().unwrap_err().to_string();
     assert!(
         e.contains("scenes names 'hall'") && e.contains("exam hall"),
         "{e}"

@@ -98,7 +98,11 @@ impl Suite {
             let scene = match source {
                 SceneSource::File(path) => {
                     SceneFile::load(path)
-                        .map_err(|e| err(format!("suite scene {}: {e}", path.display())))?
+                        .map_err(|source| SuiteError::Scene {
+                            what: "scene".into(),
+                            path: path.clone(),
+                            source,
+                        })?
                         .scene
                 }
                 SceneSource::House {
@@ -107,8 +111,12 @@ impl Suite {
                     assets,
                 } => {
                     if !databases.iter().any(|(p, _)| p == assets) {
-                        let db = AssetDatabase::load(assets)
-                            .map_err(|e| err(format!("suite assets {}: {e}", assets.display())))?;
+                        let db =
+                            AssetDatabase::load(assets).map_err(|source| SuiteError::Scene {
+                                what: "assets".into(),
+                                path: assets.clone(),
+                                source,
+                            })?;
                         databases.push((assets.clone(), db));
                     }
                     let db = &databases
@@ -117,7 +125,11 @@ impl Suite {
                         .expect("loaded")
                         .1;
                     SceneFile::load_house(houses, *house, db)
-                        .map_err(|e| err(format!("suite house {}#{house}: {e}", houses.display())))?
+                        .map_err(|source| SuiteError::Scene {
+                            what: format!("house #{house} of"),
+                            path: houses.clone(),
+                            source,
+                        })?
                         .scene
                 }
             };
@@ -230,34 +242,62 @@ struct RawQuery {
     expect: Vec<Value>,
 }
 
-/// Why a suite cannot run.
-#[derive(Clone, Debug, PartialEq, Eq)]
-pub struct SuiteError {
-    /// One line naming the problem and where.
-    pub message: String,
+/// Why a suite cannot run: the kind as data, the message naming the field or file.
+#[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
+pub enum SuiteError {
+    /// The suite file cannot be read.
+    #[error("cannot read {}: {source}", path.display())]
+    Read {
+        /// The suite file.
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: std::io::Error,
+    },
+    /// A scene (or a house, or its asset database) the suite names cannot be read.
+    #[error("suite {what} {}: {source}", path.display())]
+    Scene {
+        /// `scene`, `house #N of` or `assets`.
+        what: String,
+        /// Its file.
+        path: PathBuf,
+        /// Why.
+        #[source]
+        source: crate::format::FormatError,
+    },
+    /// The suite breaks the format's rules; the message names the field
+    /// (`instances[3].expect[0]: …`).
+    #[error("{0}")]
+    Invalid(String),
+    /// An error in the named suite file.
+    #[error("{}: {source}", path.display())]
+    InFile {
+        /// The suite file.
+        path: PathBuf,
+        /// The error.
+        #[source]
+        source: Box<SuiteError>,
+    },
 }
-
-impl std::fmt::Display for SuiteError {
-    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        f.write_str(&self.message)
-    }
-}
-
-impl std::error::Error for SuiteError {}
 
 fn err(message: impl Into<String>) -> SuiteError {
-    SuiteError {
-        message: message.into(),
-    }
+    SuiteError::Invalid(message.into())
 }
 
 impl Suite {
     /// Reads and validates a suite file.
     pub fn load(path: &Path) -> Result<Self, SuiteError> {
         let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
-            .map_err(|e| err(format!("cannot read {}: {e}", path.display())))?;
+            .map_err(|source| SuiteError::Read {
+                path: path.to_path_buf(),
+                source,
+            })?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
-        Self::parse(&text, &dir).map_err(|e| err(format!("{}: {}", path.display(), e.message)))
+        Self::parse(&text, &dir).map_err(|e| SuiteError::InFile {
+            path: path.to_path_buf(),
+            source: Box::new(e),
+        })
     }
 
     /// Parses a suite; scene paths are resolved against `dir`.
