@@ -242,6 +242,18 @@ fn follow_ups_said_other_ways() {
             close(at(&s, "speaker 2"), right - DVec3::X * 0.1),
             "{how:?}"
         );
+        // The other way, and the wrong one of two.
+        let mut s = living_room();
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "no, left").unwrap();
+        assert!(close(at(&s, "armchair"), start - DVec3::X * 0.3), "{how:?}");
+        say(&mut s, how, "move the left speaker 10 cm to the left").unwrap();
+        say(&mut s, how, "wrong speaker").unwrap();
+        assert!(close(at(&s, "speaker"), left), "{how:?}");
+        assert!(
+            close(at(&s, "speaker 2"), right - DVec3::X * 0.1),
+            "{how:?}"
+        );
         // A destination alone, after an edit: there instead.
         let mut s = living_room();
         say(&mut s, how, "put the vase on the bookshelf").unwrap();
@@ -279,5 +291,82 @@ fn a_bare_phrase_correcting_an_edit_with_a_destination_is_read_by_kind_and_size(
         assert!(close(at(&s, "vase"), vase), "the vase went back {how:?}");
         assert!(!close(at(&s, "book"), book), "the book moved {how:?}");
         assert!(!close(moved, vase));
+    }
+}
+
+mod any_turns {
+    use super::*;
+    use proptest::prelude::*;
+
+    const PIECES: [&str; 24] = [
+        "move",
+        "the",
+        "armchair",
+        "it",
+        "no,",
+        "a bit",
+        "more",
+        "again",
+        "put",
+        "back",
+        "and",
+        "too",
+        "the other one",
+        "on",
+        "coffee table",
+        "left",
+        "undo",
+        "that",
+        "instead",
+        "where it was",
+        "20 cm",
+        "speaker",
+        "twice as far",
+        "é\u{130}",
+    ];
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+        /// Any turns, in any order: an outcome or a refusal, never a panic; a refusal
+        /// leaves the scene as it was.
+        #[test]
+        fn any_conversation_answers_or_refuses(turns in prop::collection::vec(prop::collection::vec(0..PIECES.len(), 1..6), 1..6)) {
+            let mut s = living_room();
+            for turn in turns {
+                let text: Vec<&str> = turn.iter().map(|&k| PIECES[k]).collect();
+                let text = text.join(" ");
+                let before: Vec<_> = s.file.scene.objects.iter().map(|o| o.similarity()).collect();
+                let how = if text.len() % 2 == 0 { Path_::InPlace } else { Path_::Working };
+                if say(&mut s, how, &text).is_err() {
+                    let after: Vec<_> = s.file.scene.objects.iter().map(|o| o.similarity()).collect();
+                    prop_assert_eq!(before, after, "{}", text);
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn any_text_reads_as_a_follow_up_or_not_without_panicking() {
+        for text in [
+            "",
+            ",",
+            "no",
+            "no,",
+            "back",
+            "put back",
+            "\u{130}\u{130} back where",
+            "and too",
+            "instead",
+            "not on",
+            "another",
+            "another 1e999 cm",
+            "another -5 cm",
+            "5 more",
+            "wrong",
+            "the other",
+        ] {
+            let _ = shenlong::session::follow_up::read(text, true);
+            let _ = shenlong::session::follow_up::read(text, false);
+        }
     }
 }

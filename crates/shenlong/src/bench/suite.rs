@@ -288,10 +288,12 @@ fn err(message: impl Into<String>) -> SuiteError {
 impl Suite {
     /// Reads and validates a suite file.
     pub fn load(path: &Path) -> Result<Self, SuiteError> {
-        let text = crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES)
-            .map_err(|source| SuiteError::Read {
-                path: path.to_path_buf(),
-                source,
+        let text =
+            crate::io::read_text_limited(path, crate::io::MAX_READ_BYTES).map_err(|source| {
+                SuiteError::Read {
+                    path: path.to_path_buf(),
+                    source,
+                }
             })?;
         let dir = path.parent().map(Path::to_path_buf).unwrap_or_default();
         Self::parse(&text, &dir).map_err(|e| SuiteError::InFile {

@@ -224,6 +224,7 @@ impl Context {
             }
             FollowUp::Instead(np) => self.instead(&np, scene, grounder),
             FollowUp::InsteadPlace(pp) => self.instead_place(&pp),
+            FollowUp::InsteadWay(way) => self.instead_way(&way),
         }
     }
 
@@ -513,6 +514,45 @@ impl Context {
                     .join(", ")
             ))),
         }
+    }
+
+    /// "no, left": the last edit undone and made again the other way — its first word of
+    /// direction after what it moved, replaced.
+    fn instead_way(&self, way: &str) -> Result<Plan, OpError> {
+        let last = self.last_edit(way)?;
+        let instruction = last.instruction.as_deref().ok_or_else(|| {
+            refuse("the last change was not an instruction whose direction can be changed: say the whole instruction")
+        })?;
+        let acted_end = last
+            .phrases
+            .iter()
+            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
+            .map_or(0, |(s, _)| s.end);
+        let mut at = 0;
+        let mut found = None;
+        for word in instruction.split(' ') {
+            let start = at;
+            at += word.len() + 1;
+            let bare = word
+                .trim_matches(|c: char| !c.is_alphanumeric())
+                .to_lowercase();
+            if start >= acted_end && follow_up::is_direction(&bare) {
+                let offset = word.find(|c: char| c.is_alphanumeric()).unwrap_or(0);
+                found = Some((start + offset, start + offset + bare.len()));
+                break;
+            }
+        }
+        let (start, end) = found.ok_or_else(|| {
+            refuse(format!(
+                "\"{instruction}\" says no way to change: say the whole instruction"
+            ))
+        })?;
+        Ok(Plan::Edit {
+            instruction: splice(instruction, start, end, way)?,
+            focus: Vec::new(),
+            from_last: false,
+            undo_first: true,
+        })
     }
 
     /// "no, on the shelf": the last edit undone and made again with this destination.

@@ -41,6 +41,35 @@ pub enum FollowUp {
     /// The last instruction with another destination (the prepositional phrase), the last
     /// edit undone first.
     InsteadPlace(String),
+    /// The last instruction the other way ("no, left"), the last edit undone first.
+    InsteadWay(String),
+}
+
+/// The words that say a way to move or turn.
+pub(crate) fn is_direction(w: &str) -> bool {
+    matches!(
+        w,
+        "left"
+            | "right"
+            | "forward"
+            | "forwards"
+            | "backward"
+            | "backwards"
+            | "back"
+            | "up"
+            | "down"
+            | "upward"
+            | "upwards"
+            | "downward"
+            | "downwards"
+            | "clockwise"
+            | "counterclockwise"
+            | "anticlockwise"
+            | "north"
+            | "south"
+            | "east"
+            | "west"
+    )
 }
 
 /// A word of the instruction: its lower-case text and its bytes.
@@ -101,14 +130,22 @@ const CORRECTING: [&[&str]; 18] = [
 ];
 
 /// Small amounts ("a bit", "slightly").
-const BIT: [&[&str]; 8] = [
+const BIT: [&[&str]; 16] = [
+    &["just", "a", "little", "bit"],
+    &["just", "a", "bit"],
     &["a", "little", "bit"],
     &["a", "tiny", "bit"],
+    &["a", "wee", "bit"],
     &["a", "bit"],
     &["a", "little"],
     &["a", "tad"],
     &["a", "touch"],
+    &["a", "smidge"],
+    &["a", "hair"],
+    &["tiny", "bit"],
     &["slightly"],
+    &["little"],
+    &["some"],
     &["bit"],
 ];
 
@@ -171,12 +208,22 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         }
     };
     if let Some(n) = starts(&w, &CORRECTING) {
-        return correction(&w[n..], text(n, w.len()));
+        let said = |from: usize, to: usize| text(from + n, to + n);
+        return correction(&w[n..], &said);
     }
     // "… instead", "… rather".
-    if let Some(last) = w.last().filter(|l| matches!(**l, "instead" | "rather")) {
-        let _ = last;
-        return correction(&w[..w.len() - 1], text(0, w.len() - 1));
+    if w.len() > 1 && matches!(w[w.len() - 1], "instead" | "rather") {
+        return correction(&w[..w.len() - 1], &text);
+    }
+    // "the other one", "wrong chair", "not that chair": another of the same.
+    match w.as_slice() {
+        ["the", "other", ..] | ["other", ..] if !starts_with_verb(&w) && !w.contains(&"too") => {
+            return Some(FollowUp::Instead(text(0, w.len())));
+        }
+        ["wrong", noun] | ["not", "that" | "this", noun] if *noun != "one" => {
+            return Some(FollowUp::Instead(format!("the other {noun}")));
+        }
+        _ => {}
     }
     undo(&w)
         .or_else(|| back(&w, &text))
@@ -212,21 +259,64 @@ fn destination_alone(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Optio
             | "between"
             | "in"
     ) || (first == "by" && determiner(w.get(1)));
-    (place && w.len() > 1).then(|| FollowUp::InsteadPlace(text(0, w.len())))
+    let verb = w[1..].iter().any(|x| crate::ground::words::is_verb(x));
+    (place && w.len() > 1 && !verb).then(|| FollowUp::InsteadPlace(text(0, w.len())))
 }
 
 /// "no, on the shelf" (a destination) or "no, the other one" (an object).
-fn correction(w: &[&str], rest: String) -> Option<FollowUp> {
+fn correction(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    // "put it on the table instead", "move it left instead": the verb and what it moved
+    // set aside.
+    let skip = match w {
+        [verb, "it" | "them" | "that" | "this", ..] if crate::ground::words::is_verb(verb) => 2,
+        [verb, ..] if crate::ground::words::is_verb(verb) => {
+            // "move the lamp instead": another object, said with a verb.
+            let rest = &w[1..];
+            let plain = !rest.is_empty()
+                && !rest.iter().any(|x| {
+                    crate::ground::words::is_preposition(x)
+                        || is_direction(x)
+                        || x.parse::<f64>().is_ok()
+                });
+            return plain.then(|| FollowUp::Instead(text(1, w.len())));
+        }
+        _ => 0,
+    };
+    let w = &w[skip..];
     let first = *w.first()?;
-    if starts_with_verb(w) {
-        return None;
-    }
-    if crate::ground::words::is_preposition(first) || matches!(first, "next" | "beside" | "behind")
+    let said = |from: usize| text(from + skip, w.len() + skip);
+    if w.iter()
+        .all(|x| is_direction(x) || matches!(*x, "to" | "the" | "a" | "bit"))
+        && w.iter().any(|x| is_direction(x))
     {
-        Some(FollowUp::InsteadPlace(rest))
-    } else {
-        Some(FollowUp::Instead(rest))
+        let way = w.iter().rev().find(|x| is_direction(x))?;
+        return Some(FollowUp::InsteadWay((*way).to_string()));
     }
+    // "not on the shelf, on the table": the second place.
+    if first == "not" {
+        let second = w
+            .iter()
+            .enumerate()
+            .skip(2)
+            .find(|(_, x)| place_word(x))
+            .map(|(k, _)| k)?;
+        return Some(FollowUp::InsteadPlace(said(second)));
+    }
+    if w.iter().skip(1).any(|x| crate::ground::words::is_verb(x)) {
+        None
+    } else if place_word(first) {
+        Some(FollowUp::InsteadPlace(said(0)))
+    } else if skip == 0 {
+        Some(FollowUp::Instead(said(0)))
+    } else {
+        None
+    }
+}
+
+/// A word that starts a place ("on", "next", "beside").
+fn place_word(w: &str) -> bool {
+    crate::ground::words::is_preposition(w) && !matches!(w, "of" | "with" | "by" | "for" | "from")
+        || matches!(w, "next" | "beside" | "behind")
 }
 
 fn starts_with_verb(w: &[&str]) -> bool {
@@ -238,16 +328,26 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
     let pronoun = |x: &str| {
         matches!(
             x,
-            "that" | "it" | "this" | "the" | "last" | "change" | "edit" | "one"
+            "that"
+                | "it"
+                | "this"
+                | "the"
+                | "last"
+                | "change"
+                | "edit"
+                | "one"
+                | "move"
+                | "step"
+                | "please"
         )
     };
     match w {
-        ["undo", rest @ ..] if rest.iter().all(|x| pronoun(x)) => Some(FollowUp::Undo),
-        ["take", "that" | "it", "back"] | ["revert", ..]
-            if w.iter().skip(1).all(|x| pronoun(x)) =>
+        ["undo" | "revert" | "cancel" | "scratch", rest @ ..]
+            if rest.iter().all(|x| pronoun(x)) && (w[0] == "undo" || !rest.is_empty()) =>
         {
             Some(FollowUp::Undo)
         }
+        ["take", "that" | "it", "back"] | ["never", "mind"] => Some(FollowUp::Undo),
         _ => None,
     }
 }
@@ -290,7 +390,7 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             // "put X back [where it was]"; "return X [to where it was]".
             let (object_end, rest) = match at {
                 Some(k) => (k, &w[k + 1..]),
-                None if matches!(*first, "return" | "restore") => {
+                None if matches!(*first, "return" | "restore" | "reset") => {
                     let k = w.iter().position(|&x| x == "to").unwrap_or(w.len());
                     (k, &w[k..])
                 }
@@ -306,9 +406,9 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             }));
         }
     }
-    // "back where it was", "where it was".
+    // "back where it was", "back to where it was", "where it was".
     let rest = match w {
-        ["back", r @ ..] => r,
+        ["back", "to", r @ ..] | ["back", r @ ..] => r,
         r => r,
     };
     (matches!(rest.first(), Some(&"where")) && where_it_was(rest)).then_some(FollowUp::Back(None))
@@ -404,6 +504,9 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         &["keep", "going"],
         &["another", "bit"],
         &["go", "on"],
+        &["and", "again"],
+        &["double", "it"],
+        &["double", "that"],
     ]) {
         return Some(FollowUp::Repeat(Amount::Times(1.0)));
     }
@@ -419,6 +522,15 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         &["too", "far"],
         &["too", "much"],
         &["less"],
+        &["halfway", "back"],
+        &["half", "that"],
+        &["halve", "it"],
+        &["halve", "that"],
+        &["that's", "too", "far"],
+        &["thats", "too", "far"],
+        &["it's", "too", "far"],
+        &["that's", "too", "much"],
+        &["way", "too", "far"],
     ]) {
         return Some(FollowUp::Repeat(Amount::Times(-0.5)));
     }
@@ -494,6 +606,23 @@ fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             &["do", "that", "for"],
             &["the", "same", "for"],
             &["the", "same", "with"],
+            &["the", "same", "to"],
+            &["same", "thing", "for"],
+            &["same", "thing", "with"],
+            &["same", "goes", "for"],
+            &["repeat", "that", "for"],
+            &["repeat", "that", "with"],
+            &["repeat", "for"],
+            &["repeat", "with"],
+            &["do", "it", "to"],
+            &["do", "it", "for"],
+            &["do", "it", "with"],
+            &["ditto", "for"],
+            &["likewise", "for"],
+            &["likewise"],
+            &["ditto"],
+            &["now"],
+            &["do"],
             &["same", "for"],
             &["same", "with"],
             &["same", "to"],
@@ -600,6 +729,9 @@ mod tests {
             "turn it around",
             "by 20 cm",
             "and the lamp left",
+            "move the lamp back to the wall",
+            "cancel",
+            "next to the sofa, put the lamp",
             "the left one",
             "move the lamp a bit more to the left",
             "no, move the lamp left",
