@@ -139,6 +139,9 @@ pub enum Near {
     Between(usize, usize),
     /// Still resting on this one ("…, keep it on the table").
     On(usize),
+    /// Under this one: its footprint over the object's centre, its underside above the
+    /// object's top.
+    Under(usize),
 }
 
 impl Near {
@@ -149,6 +152,7 @@ impl Near {
             Self::Beside(t) => Self::Beside(f(t)),
             Self::Between(a, b) => Self::Between(f(a), f(b)),
             Self::On(t) => Self::On(f(t)),
+            Self::Under(t) => Self::Under(f(t)),
         }
     }
 }

@@ -283,3 +283,49 @@ fn a_cup_beside_a_machine_on_a_bench_stays_on_the_bench_or_is_refused() {
     assert!(refused.is_err(), "the cup was put over the bench's edge");
     assert_eq!(aabb(&s, "Cup"), aabb(&scene(SIDE_TABLES), "Cup"));
 }
+
+/// Under a table that is a box down to the floor there is no room: refused, the scene as
+/// it was — never put beside it (issue 44's silent wrong edit). A flat rug slides under a
+/// bed, and under a shelf hung above the floor a short box fits, a tall one is refused.
+#[test]
+fn under_is_under_or_refused_never_beside() {
+    let text = r#"{"objects": [
+        {"name": "work table", "size": [1.6, 0.9, 0.8], "position": [0, 0, 0]},
+        {"name": "stool", "size": [0.4, 0.6, 0.4], "position": [0, 0, 1.5]},
+        {"name": "bed", "size": [1.6, 0.5, 2.0], "position": [3, 0, 0]},
+        {"name": "rug", "size": [1.2, 0.01, 0.8], "position": [3, 0, 2]},
+        {"name": "wall shelf", "size": [1.0, 0.3, 0.3], "position": [-3, 0.8, 0]},
+        {"name": "crate", "size": [0.4, 0.3, 0.3], "position": [-3, 0, 1.5]},
+        {"name": "tall crate", "size": [0.4, 1.0, 0.3], "position": [-2, 0, 1.5]}
+    ]}"#;
+    let translator = OfflineTranslator::new();
+    let mut s = scene(text);
+    let before: Vec<_> = s.objects.iter().map(|o| o.similarity()).collect();
+    let e = edit(
+        &mut s,
+        "put the stool under the work table",
+        &translator,
+        &EditOptions::default(),
+    )
+    .err()
+    .expect("refused");
+    assert!(e.message.contains("cannot go under"), "{}", e.message);
+    let after: Vec<_> = s.objects.iter().map(|o| o.similarity()).collect();
+    assert_eq!(before, after, "nothing moved");
+    run(&mut s, "slide the rug under the bed");
+    let (rug, bed) = (aabb(&s, "rug"), aabb(&s, "bed"));
+    let c = rug.center();
+    assert!(c.x > bed.min.x && c.x < bed.max.x && c.z > bed.min.z && c.z < bed.max.z);
+    run(&mut s, "put the crate under the wall shelf");
+    let (crate_, shelf) = (aabb(&s, "crate"), aabb(&s, "wall shelf"));
+    assert!(crate_.max.y <= shelf.min.y + 1e-6 && (crate_.min.y).abs() < LEVEL);
+    let e = edit(
+        &mut s,
+        "put the tall crate under the wall shelf",
+        &translator,
+        &EditOptions::default(),
+    )
+    .err()
+    .expect("refused");
+    assert!(e.message.contains("tall"), "{}", e.message);
+}

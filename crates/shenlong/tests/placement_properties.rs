@@ -14,6 +14,8 @@
 //! 4. **pre-existing overlaps**: the placed object overlaps nothing it did not overlap
 //!    before.
 //! 5. **on Y next to Z**, **on Y between Z and W**: one destination.
+//! 6. **under Y**: on the floor, its centre within Y's footprint, its top no higher than
+//!    Y's underside (or flat: a rug), nothing new overlapped — or refused, never beside Y.
 //!
 //! The counts per scene and property are printed (`cargo test --test placement_properties
 //! -- --nocapture`) and quoted in docs/collisions.md.
@@ -48,6 +50,7 @@ enum Property {
     NoLift,
     OnNextTo,
     OnBetween,
+    Under,
 }
 
 #[derive(Default, Debug)]
@@ -397,6 +400,57 @@ fn check_on_between(
     })
 }
 
+/// Under Y: on the level Y stands on (the floor under what hangs), centred within Y's
+/// footprint, below Y's underside (or flat), nothing new overlapped.
+fn check_under(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Verdict {
+    let (a, b) = (&after[x], &after[y]);
+    if !centre_over(a, b) {
+        return Some(format!("not under: {a:?} beside {b:?}"));
+    }
+    let level = if scene.hangs(y) { f.floor } else { b.min.y };
+    if (a.min.y - level).abs() > LEVEL {
+        return Some(format!("not on {level:.3}: {:.3}", a.min.y));
+    }
+    if a.max.y > b.min.y + LEVEL && a.size().y > 0.05 {
+        return Some(format!(
+            "top {:.3} above the underside {:.3}",
+            a.max.y, b.min.y
+        ));
+    }
+    // A flat thing slides under what stands where it lies: it overlaps nothing new that
+    // reaches below its bottom.
+    if a.size().y <= 0.05 {
+        let clash = (0..after.len()).find(|&j| {
+            j != x
+                && after[j].min.y < a.min.y - LEVEL
+                && overlaps(a, &after[j])
+                && !overlaps(&f.boxes[x], &f.boxes[j])
+        });
+        return clash.map(|j| {
+            format!(
+                "'{}' now overlaps '{}'",
+                scene.objects[x].name, scene.objects[j].name
+            )
+        });
+    }
+    nothing_new_overlapped(scene, &f.boxes, after)
+}
+
+/// "put X under Y" for pairs of a portable or floor-bound X and any other Y.
+fn under_pairs(scene: &Scene, f: &Facts) -> Vec<(usize, usize)> {
+    let n = scene.objects.len();
+    (0..n)
+        .filter(|&x| f.nameable[x] && (f.portable(scene, x) || f.bound[x]))
+        .flat_map(|x| (0..n).map(move |y| (x, y)))
+        .filter(|&(x, y)| {
+            x != y
+                && f.nameable[y]
+                && !scene.carried_by(x).contains(&y)
+                && !scene.carried_by(y).contains(&x)
+        })
+        .collect()
+}
+
 #[test]
 fn placements_keep_their_guarantees_on_every_scene() {
     let mut counts: BTreeMap<(String, Property), Count> = BTreeMap::new();
@@ -458,6 +512,12 @@ fn placements_keep_their_guarantees_on_every_scene() {
             let out = run(&scene, &grounder, &text)
                 .map(|(_, after)| check_no_lift(&scene, &f, x, &after));
             record(&name, Property::NoLift, &text, out);
+        }
+        for (x, y) in spread(&under_pairs(&scene, &f), PER_SCENE) {
+            let text = format!("put the '{}' under the '{}'", q(x), q(y));
+            let out = run(&scene, &grounder, &text)
+                .map(|(_, after)| check_under(&scene, &f, x, y, &after));
+            record(&name, Property::Under, &text, out);
         }
         // On Y next to Z, on Y between Z and W: Z and W stand on Y.
         let on_y = |y: usize| -> Vec<usize> {

@@ -438,6 +438,13 @@ impl Known<'_> {
         })
     }
 
+    /// Whether `t`'s object hangs (on a wall, above the floor, resting on nothing).
+    pub(crate) fn hangs(&self, t: usize) -> bool {
+        self.scene
+            .and_then(|(scene, objects)| objects.get(t).map(|&b| scene.hangs(b)))
+            .unwrap_or(false)
+    }
+
     /// Whether "next to", a side of, "to" or "between" target `t` puts subject `s` on the
     /// floor rather than on `t`'s level: `s` stays on the floor and `t` stands above it (a
     /// laptop on a desk), or `t` hangs (a whiteboard on the wall) and `s` does not.

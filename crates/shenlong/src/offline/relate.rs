@@ -617,6 +617,7 @@ impl Reader<'_> {
                 &[t, ..],
             ) => Some(Near::Beside(t)),
             (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
+            (Relation::Under, &[t, ..]) => Some(Near::Under(t)),
             _ => None,
         };
         // "table 4 and its chairs towards the door": a table with what stands drawn up
@@ -727,6 +728,11 @@ impl Reader<'_> {
             r if self.on_floor => {
                 level = Level::Floor;
                 r
+            }
+            // Under what hangs on a wall: on the floor below it.
+            Relation::Under if as_is && known.hangs(t) => {
+                level = Level::Floor;
+                relation
             }
             Relation::NextTo if as_is => match known.side_on_support(s, t)? {
                 Some(side) => {

@@ -178,11 +178,10 @@ pub(crate) fn vector(
             centre(0),
             centre(2),
         ]),
-        Relation::Under => sum([
-            scaled_axis(sub(dot(b("min"), axis(1)), dot(a("min"), axis(1))), 1),
-            centre(0),
-            centre(2),
-        ]),
+        // On the level the target stands on (the floor under a table, a table top under a
+        // bowl), or the floor under what hangs on a wall; whether it fits is checked once
+        // placed (`Near::Under`).
+        Relation::Under => sum([level.clone(), centre(0), centre(2)]),
         Relation::Side(e, sign) => side(s, t, steps, e, sign, level, GAP),
         Relation::OnEnd(e, sign) => {
             // On the top, centred across, its face GAP inside the target's face at that end

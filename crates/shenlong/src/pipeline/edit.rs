@@ -545,6 +545,10 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
     for &(object, near) in near {
         let other = match near {
             Near::Beside(other) => other,
+            Near::Under(above) => {
+                check_under(scene, object, above).map_err(refuse)?;
+                continue;
+            }
             Near::On(support) => {
                 if scene.objects[object].support != Some(support) {
                     return Err(refuse(format!(
@@ -591,6 +595,37 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
         }
     }
     Ok(())
+}
+
+/// Whether `object` ended under `above`: its centre within `above`'s footprint and its
+/// top no higher than `above`'s underside (what rests on the floor under a table top).
+/// Every object is a box from its bottom up here, so under furniture that stands on the
+/// floor there is no room: the nearest free place is beside it, and that is refused
+/// rather than done.
+fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), String> {
+    let a = scene.objects[object].world_aabb();
+    let b = scene.objects[above].world_aabb();
+    let c = a.center();
+    let over = c.x >= b.min.x && c.x <= b.max.x && c.z >= b.min.z && c.z <= b.max.z;
+    if over && a.max.y <= b.min.y + 1e-6 {
+        return Ok(());
+    }
+    // A flat thing (a rug, a mat) slides under what stands on it.
+    if over && a.size().y <= crate::scene::FLOOR_LEVEL {
+        return Ok(());
+    }
+    let (name, target) = (&scene.objects[object].name, &scene.objects[above].name);
+    let room = b.min.y - scene.floor();
+    Err(if room > crate::scene::FLOOR_LEVEL {
+        format!(
+            "'{name}' cannot go under '{target}': there is {room:.2} m under it, and '{name}' is {:.2} m tall",
+            a.size().y
+        )
+    } else {
+        format!(
+            "'{name}' cannot go under '{target}': Shenlong sees '{target}' as a solid box down to the floor, so there is no room under it yet; put it beside or on it"
+        )
+    })
 }
 
 /// Refuses a placement that moved a held object or left one in the air (its support

@@ -207,9 +207,26 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
             _ => String::new(),
         }
     };
-    if let Some(n) = starts(&w, &CORRECTING) {
+    // "no, no, …", "no wait, I meant …": every opener set aside.
+    let mut n = 0;
+    while let Some(k) = starts(&w[n..], &CORRECTING) {
+        n += k;
+    }
+    // "…, not the table": what is not meant, set aside.
+    let not_at = w
+        .iter()
+        .enumerate()
+        .skip(n + 1)
+        .find(|(_, x)| **x == "not")
+        .map_or(w.len(), |(k, _)| k);
+    // "move the lamp, not the sofa" is an instruction of its own; "put it on the shelf,
+    // not the table" corrects the turn before.
+    let whole_instruction = n == 0
+        && starts_with_verb(&w)
+        && !matches!(w.get(1), Some(&("it" | "them" | "that" | "this")));
+    if n > 0 || (not_at < w.len() && !whole_instruction) {
         let said = |from: usize, to: usize| text(from + n, to + n);
-        return correction(&w[n..], &said);
+        return correction(&w[n..not_at], &said);
     }
     // "… instead", "… rather".
     if w.len() > 1 && matches!(w[w.len() - 1], "instead" | "rather") {
@@ -292,15 +309,23 @@ fn correction(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follo
         let way = w.iter().rev().find(|x| is_direction(x))?;
         return Some(FollowUp::InsteadWay((*way).to_string()));
     }
-    // "not on the shelf, on the table": the second place.
+    // "not on the shelf, on the table": the second place; "not the sofa, the armchair":
+    // the second object.
     if first == "not" {
-        let second = w
-            .iter()
-            .enumerate()
-            .skip(2)
-            .find(|(_, x)| place_word(x))
-            .map(|(k, _)| k)?;
-        return Some(FollowUp::InsteadPlace(said(second)));
+        let determiner = |x: &str| matches!(x, "the" | "a" | "an" | "my" | "that" | "this");
+        let second = w.iter().enumerate().skip(2).find(|(_, x)| {
+            if place_word(w[1]) {
+                place_word(x)
+            } else {
+                determiner(x)
+            }
+        });
+        let (k, _) = second?;
+        return Some(if place_word(w[k]) {
+            FollowUp::InsteadPlace(said(k))
+        } else {
+            FollowUp::Instead(said(k))
+        });
     }
     if w.iter().skip(1).any(|x| crate::ground::words::is_verb(x)) {
         None
@@ -342,8 +367,12 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
         )
     };
     match w {
-        ["undo" | "revert" | "cancel" | "scratch", rest @ ..]
-            if rest.iter().all(|x| pronoun(x)) && (w[0] == "undo" || !rest.is_empty()) =>
+        // "undo", "undo what you just did", "undo the last thing": the last change.
+        ["undo", rest @ ..] if !rest.iter().any(|x| crate::ground::words::is_verb(x)) => {
+            Some(FollowUp::Undo)
+        }
+        ["revert" | "cancel" | "scratch", rest @ ..]
+            if rest.iter().all(|x| pronoun(x)) && !rest.is_empty() =>
         {
             Some(FollowUp::Undo)
         }
@@ -508,6 +537,37 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         &["double", "it"],
         &["double", "that"],
     ]) {
+        return Some(FollowUp::Repeat(Amount::Times(1.0)));
+    }
+    // "do the same again", "once again please", "repeat the last move": "again" or
+    // "repeat" with nothing but words that point at the last motion.
+    let filler = |x: &str| {
+        matches!(
+            x,
+            "do" | "it"
+                | "that"
+                | "this"
+                | "the"
+                | "same"
+                | "once"
+                | "one"
+                | "more"
+                | "time"
+                | "please"
+                | "just"
+                | "thing"
+                | "motion"
+                | "move"
+                | "step"
+                | "last"
+                | "edit"
+                | "again"
+                | "repeat"
+                | "and"
+                | "so"
+        )
+    };
+    if w.iter().any(|x| matches!(*x, "again" | "repeat")) && w.iter().all(|x| filler(x)) {
         return Some(FollowUp::Repeat(Amount::Times(1.0)));
     }
     if let Some(amount) = times_as_far(w) {
@@ -732,6 +792,8 @@ mod tests {
             "move the lamp back to the wall",
             "cancel",
             "next to the sofa, put the lamp",
+            "undo moving the lamp",
+            "move the lamp, not the sofa",
             "the left one",
             "move the lamp a bit more to the left",
             "no, move the lamp left",
