@@ -307,8 +307,7 @@ fn under_is_under_or_refused_never_beside() {
         &translator,
         &EditOptions::default(),
     )
-    .err()
-    .expect("refused");
+    .expect_err("refused");
     assert!(e.message.contains("cannot go under"), "{}", e.message);
     let after: Vec<_> = s.objects.iter().map(|o| o.similarity()).collect();
     assert_eq!(before, after, "nothing moved");
@@ -325,7 +324,6 @@ fn under_is_under_or_refused_never_beside() {
         &translator,
         &EditOptions::default(),
     )
-    .err()
-    .expect("refused");
+    .expect_err("refused");
     assert!(e.message.contains("tall"), "{}", e.message);
 }
