@@ -189,10 +189,13 @@ TURNS = [
     "a bit more",
     "move the chair 20 cm forward",  # refused: which chair?
     "the left one",
+    "no, the other one",
     "and the bookcase too",
     "put it back",
     "undo that",
     "move it 10 cm to the right",
+    "put the lamp on the bookcase",
+    "no, on the desk",
 ]
 
 
@@ -268,15 +271,22 @@ def test_every_front_end_holds_the_same_conversation(tmp_path):
         shutil.copy(original, copy)
         answers[name] = [comparable(a) for a in run(copy)]
 
-    desk, more, refused, left, bookcase, back, undo, it = answers["python"]
+    desk, more, refused, left, other, bookcase, back, undo, it, lamp, instead = answers["python"]
     assert desk["moved"][0]["after"]["position"] == pytest.approx([-0.3, 0, 0])
     assert more["moved"][0]["after"]["position"] == pytest.approx([-0.4, 0, 0]), "10 cm more"
     assert refused["kind"] == "ambiguous"
     assert [(m["object"], m["after"]["position"]) for m in left["moved"]] == [("chair 1", pytest.approx([-1.5, 0, 1.4]))]
+    assert [(m["object"], m["after"]["position"]) for m in other["moved"]] == [
+        ("chair 1", pytest.approx([-1.5, 0, 1.2])),
+        ("chair 2", pytest.approx([1.5, 0, 1.4])),
+    ], "the other chair instead"
     assert bookcase["moved"][0]["object"] == "bookcase"
     assert bookcase["moved"][0]["after"]["position"] == pytest.approx([-2.5, 0, -1.3])
     assert back["moved"][0]["after"]["position"] == pytest.approx([-2.5, 0, -1.5]), "the bookcase is back"
     assert undo["operation"] == "undo"
     assert it["moved"][0]["object"] == "bookcase"
+    assert lamp["moved"][0]["after"]["position"][1] == pytest.approx(1.8), "on the bookcase"
+    assert instead["moved"][0]["object"] == "lamp"
+    assert instead["moved"][0]["after"]["position"][1] == pytest.approx(0.75), "on the desk instead"
     for name in ("chat", "http", "mcp"):
         assert answers[name] == answers["python"], f"{name}'s conversation differs from Python's"
