@@ -500,7 +500,20 @@ pub fn place_holding(
     let mut motions = Vec::new();
     let result = place_into(scene, moves, options, held, &mut motions)
         .and_then(|placed| check_held(scene, held, &supports, &motions).map(|()| placed))
-        .and_then(|placed| check_near(scene, near).map(|()| placed));
+        .and_then(|placed| {
+            // Under something: checked only where collisions are resolved; without (or
+            // with collisions allowed) an overlapping place under it is what was asked.
+            let resolved = options
+                .collisions
+                .as_ref()
+                .is_some_and(|c| !c.allow_collisions);
+            let near: Vec<(usize, Near)> = near
+                .iter()
+                .copied()
+                .filter(|(_, n)| resolved || !matches!(n, Near::Under(_)))
+                .collect();
+            check_near(scene, &near).map(|()| placed)
+        });
     if result.is_err() {
         for m in motions.iter().rev() {
             scene.undo(m);
