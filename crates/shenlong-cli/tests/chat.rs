@@ -71,6 +71,44 @@ fn a_piped_conversation_is_read_a_turn_a_line_and_saved_on_leaving() {
 }
 
 #[test]
+fn a_selection_is_what_it_means_for_the_next_edit() {
+    let scene = examples_dir().join("living_room.json");
+    let start = read_json(&scene);
+    let (ok, out, err) = piped(
+        &[scene.to_str().unwrap(), "--json"],
+        "move the armchair 20 cm to the right\n/select ottoman\nmove it 10 cm to the left\nmove it 10 cm to the left\n/select nothing here\n",
+    );
+    assert!(ok, "{err}");
+    let answers: Vec<serde_json::Value> = out
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
+    let moved = |k: usize| {
+        answers[k]["moved"][0]["object"]
+            .as_str()
+            .unwrap()
+            .to_string()
+    };
+    assert_eq!(moved(0), "armchair");
+    assert_eq!(moved(1), "ottoman", "the selection wins over the last edit");
+    assert_eq!(
+        moved(2),
+        "ottoman",
+        "then \"it\" is what the last edit moved: {out}"
+    );
+    let x = |v: &serde_json::Value, name: &str| position(v, name)[0];
+    assert!(
+        (answers[2]["moved"][0]["after"]["position"][0]
+            .as_f64()
+            .unwrap()
+            - (x(&start, "ottoman") - 0.2))
+            .abs()
+            < 1e-6
+    );
+    assert!(err.contains("/select:"), "an unknown name is said: {err}");
+}
+
+#[test]
 fn piped_refusals_are_one_line_each_and_the_status_says_so() {
     let scene = examples_dir().join("living_room.json");
     let (ok, out, err) = piped(

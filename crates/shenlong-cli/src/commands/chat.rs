@@ -16,7 +16,8 @@ use std::path::PathBuf;
 /// Each line is an instruction ("move the armchair 50 cm to the left") or a follow-up of
 /// the one before ("a bit more", "no, the other one", "put it back", "and the ottoman
 /// too"); what moved is said after each. Commands start with `/`: /undo, /redo,
-/// /history, /save, /help, /quit. The scene is written to the --save file (atomically)
+/// /history, /save, /select NAME (what "it" means in the next instruction), /help,
+/// /quit. The scene is written to the --save file (atomically)
 /// on /save and on leaving; without --save nothing is written.
 #[derive(clap::Args)]
 #[command(after_help = "Examples:
@@ -51,6 +52,8 @@ pub struct Args {
 /// What the chat needs for every turn.
 struct Chat {
     session: Session,
+    /// The objects `/select` chose: what "it" means, over what the last edit moved.
+    selected: Vec<String>,
     translator: Box<dyn Translator>,
     options: EditOptions,
     json: bool,
@@ -68,6 +71,8 @@ enum Line<'a> {
     History,
     Save,
     Quit,
+    /// `/select NAME, NAME …` (none: clear the selection).
+    Select(&'a str),
     Unknown(&'a str),
     Instruction(&'a str),
 }
@@ -82,6 +87,9 @@ fn parse(line: &str) -> Line<'_> {
         "/history" => Line::History,
         "/save" => Line::Save,
         "/quit" | "/exit" | "/q" | "quit" | "exit" => Line::Quit,
+        other if other == "/select" || other.starts_with("/select ") => {
+            Line::Select(line["/select".len()..].trim())
+        }
         other if other.starts_with('/') => Line::Unknown(line),
         _ => Line::Instruction(line),
     }
@@ -94,7 +102,8 @@ const HELP: &str =
   no, the other one · no, on the shelf · the left one (after a refusal)
   and the mug too · do the same with the lamp
   put it back · back where it was · undo that
-Commands: /undo  /redo  /history  /save  /help  /quit";
+  /select armchair, ottoman   what \"it\" means in the next edit (/select alone clears)
+Commands: /undo  /redo  /history  /save  /select  /help  /quit";
 
 pub fn run(args: Args) -> Result<()> {
     let settings = args.translator.settings(args.system)?;
@@ -103,6 +112,7 @@ pub fn run(args: Args) -> Result<()> {
     let options = EditOptions::new(!args.no_carry, args.collisions.resolve_options()?);
     let mut chat = Chat {
         session: Session::saving_on_request(file, args.save.clone()),
+        selected: Vec::new(),
         translator,
         options,
         json: args.json,
@@ -190,6 +200,10 @@ impl Chat {
                 self.save()?;
                 return Ok(true);
             }
+            Line::Select(names) => {
+                self.select(names);
+                return Ok(true);
+            }
             Line::Unknown(command) => {
                 say(&format!("unknown command {command}: /help lists them"));
                 return Ok(true);
@@ -199,15 +213,47 @@ impl Chat {
             Line::Instruction(text) => {
                 let request = EditRequest {
                     instruction: text,
-                    selected: &[],
+                    selected: &self.selected,
                     report: false,
                 };
-                self.session
-                    .edit(&request, self.translator.as_ref(), &self.options)
+                let answer = self
+                    .session
+                    .edit(&request, self.translator.as_ref(), &self.options);
+                // A selection holds for one edit, as a click in the editor does.
+                if answer.is_ok() {
+                    self.selected.clear();
+                }
+                answer
             }
         };
         self.answer(answer)?;
         Ok(true)
+    }
+
+    /// Selects the objects named (comma-separated), each as the scene names it.
+    fn select(&mut self, names: &str) {
+        let scene = &self.session.file.scene;
+        let mut chosen = Vec::new();
+        for name in names.split(',').map(str::trim).filter(|n| !n.is_empty()) {
+            match scene.resolve(name) {
+                Ok(i) => chosen.push(scene.objects[i].name.clone()),
+                Err(e) => {
+                    say(&format!("/select: {e}"));
+                    return;
+                }
+            }
+        }
+        self.selected = chosen;
+        if !self.json {
+            match self.selected.as_slice() {
+                [] => println!("  nothing selected"),
+                names => println!(
+                    "  selected: {} — \"it\" means {}",
+                    shenlong_cli::terminal::safe(&names.join(", ")),
+                    if names.len() == 1 { "it" } else { "them" }
+                ),
+            }
+        }
     }
 
     /// Says what a turn did, or why it was refused.
