@@ -284,14 +284,18 @@ fn a_cup_beside_a_machine_on_a_bench_stays_on_the_bench_or_is_refused() {
     assert_eq!(aabb(&s, "Cup"), aabb(&scene(SIDE_TABLES), "Cup"));
 }
 
-/// Under a table that is a box down to the floor there is no room: refused, the scene as
-/// it was — never put beside it (issue 44's silent wrong edit). A flat rug slides under a
-/// bed, and under a shelf hung above the floor a short box fits, a tall one is refused.
+/// Under a table there is room below its top, off its legs: a stool slides under, a
+/// tall one is refused; under a cabinet (solid to the floor) there is no room: refused,
+/// the scene as it was — never put beside it (issue 44's silent wrong edit). A flat rug
+/// slides under a bed; under a shelf hung above the floor a short crate fits, a tall one
+/// is refused.
 #[test]
 fn under_is_under_or_refused_never_beside() {
     let text = r#"{"objects": [
         {"name": "work table", "size": [1.6, 0.9, 0.8], "position": [0, 0, 0]},
         {"name": "stool", "size": [0.4, 0.6, 0.4], "position": [0, 0, 1.5]},
+        {"name": "bar stool", "size": [0.4, 1.0, 0.4], "position": [1, 0, 1.5]},
+        {"name": "cabinet", "size": [1.0, 0.9, 0.5], "position": [0, 0, -2]},
         {"name": "bed", "size": [1.6, 0.5, 2.0], "position": [3, 0, 0]},
         {"name": "rug", "size": [1.2, 0.01, 0.8], "position": [3, 0, 2]},
         {"name": "wall shelf", "size": [1.0, 0.3, 0.3], "position": [-3, 0.8, 0]},
@@ -299,13 +303,28 @@ fn under_is_under_or_refused_never_beside() {
         {"name": "tall crate", "size": [0.4, 1.0, 0.3], "position": [-2, 0, 1.5]}
     ]}"#;
     let translator = OfflineTranslator::new();
+    let options = EditOptions::default();
     let mut s = scene(text);
+    run(&mut s, "push the stool under the work table");
+    let (stool, table) = (aabb(&s, "stool"), aabb(&s, "work table"));
+    let c = stool.center();
+    assert!(c.x > table.min.x && c.x < table.max.x && c.z > table.min.z && c.z < table.max.z);
+    assert!(stool.max.y < table.max.y && stool.min.y.abs() < LEVEL);
+    overlaps_nothing_but(&s, "stool", "work table");
     let before: Vec<_> = s.objects.iter().map(|o| o.similarity()).collect();
     let e = edit(
         &mut s,
-        "put the stool under the work table",
+        "put the bar stool under the work table",
         &translator,
-        &EditOptions::default(),
+        &options,
+    )
+    .expect_err("refused");
+    assert!(e.message.contains("tall"), "{}", e.message);
+    let e = edit(
+        &mut s,
+        "put the crate under the cabinet",
+        &translator,
+        &options,
     )
     .expect_err("refused");
     assert!(e.message.contains("cannot go under"), "{}", e.message);
@@ -322,8 +341,54 @@ fn under_is_under_or_refused_never_beside() {
         &mut s,
         "put the tall crate under the wall shelf",
         &translator,
-        &EditOptions::default(),
+        &options,
     )
     .expect_err("refused");
     assert!(e.message.contains("tall"), "{}", e.message);
+}
+
+/// `name` overlaps no object but `allowed` (and what it stood in before).
+fn overlaps_nothing_but(scene: &Scene, name: &str, allowed: &str) {
+    let a = aabb(scene, name);
+    for o in &scene.objects {
+        if o.name == name || o.name == allowed {
+            continue;
+        }
+        let b = o.world_aabb();
+        let overlap = a.overlap(&b);
+        assert!(
+            !(overlap.x > OVERLAP && overlap.y > OVERLAP && overlap.z > OVERLAP),
+            "{name} overlaps {}",
+            o.name
+        );
+    }
+}
+
+/// A scene file says an object's form: a cabinet on legs has room below; a table said
+/// solid has none. A form it does not know is refused, naming the field.
+#[test]
+fn a_scene_file_says_what_is_on_legs() {
+    let text = r#"{"objects": [
+        {"name": "cabinet", "size": [1.0, 0.9, 0.6], "position": [0, 0, 0], "form": "on_legs"},
+        {"name": "table", "size": [1.0, 0.9, 0.6], "position": [3, 0, 0], "form": "solid"},
+        {"name": "box", "size": [0.3, 0.3, 0.3], "position": [0, 0, 2]},
+        {"name": "crate", "size": [0.3, 0.3, 0.3], "position": [3, 0, 2]}
+    ]}"#;
+    let mut s = scene(text);
+    run(&mut s, "put the box under the cabinet");
+    assert!(aabb(&s, "box").max.y < aabb(&s, "cabinet").max.y);
+    let e = edit(
+        &mut s,
+        "put the crate under the table",
+        &OfflineTranslator::new(),
+        &EditOptions::default(),
+    )
+    .expect_err("refused");
+    assert!(e.message.contains("cannot go under"), "{}", e.message);
+    let bad = text.replace("\"solid\"", "\"hollow\"");
+    let e = json::read(&bad, "case")
+        .map(|_| ())
+        .unwrap_err()
+        .to_string();
+    assert!(e.contains("objects[1].form"), "{e}");
 }

@@ -14,8 +14,9 @@
 //! 4. **pre-existing overlaps**: the placed object overlaps nothing it did not overlap
 //!    before.
 //! 5. **on Y next to Z**, **on Y between Z and W**: one destination.
-//! 6. **under Y**: on the floor, its centre within Y's footprint, its top no higher than
-//!    Y's underside (or flat: a rug), nothing new overlapped — or refused, never beside Y.
+//! 6. **under Y**: on the level Y stands on, its centre within Y's footprint, its top no
+//!    higher than Y's underside — under the top of a table on legs, off its legs — or flat
+//!    (a rug), nothing new overlapped — or refused, never beside Y.
 //!
 //! The counts per scene and property are printed (`cargo test --test placement_properties
 //! -- --nocapture`) and quoted in docs/collisions.md.
@@ -410,6 +411,15 @@ fn check_under(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> 
     let level = if scene.hangs(y) { f.floor } else { b.min.y };
     if (a.min.y - level).abs() > LEVEL {
         return Some(format!("not on {level:.3}: {:.3}", a.min.y));
+    }
+    // Under a top on legs: in the room below it, off its legs; it may meet Y there.
+    let on_legs = shenlong::ground::kind::form_of(scene, y) == shenlong::scene::Form::OnLegs;
+    if on_legs && shenlong::scene::form::clear_under(a, b) {
+        let away = Aabb::new(b.min - 1e3, b.min - 1e3);
+        let (mut before, mut after) = (f.boxes.clone(), after.to_vec());
+        before[y] = away;
+        after[y] = away;
+        return nothing_new_overlapped(scene, &before, &after);
     }
     if a.max.y > b.min.y + LEVEL && a.size().y > 0.05 {
         return Some(format!(

@@ -2,6 +2,7 @@
 
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
+use crate::scene::form::clear_under;
 use glam::DVec3;
 
 /// What an object collides with.
@@ -141,14 +142,25 @@ pub(crate) fn room_violations(b: &Aabb, floor: f64, room: Option<&Aabb>) -> Vec<
 /// The collisions of the objects in `groups` (each a set of object indices that moved
 /// together) in the scene whose boxes are `after`, against every other object and the
 /// room; `before` are the boxes before the edit, for pre-existing overlaps.
+/// `under(i, j)`: whether object `i` may stand in the room under object `j`, a top on legs
+/// (`scene::form`).
 pub fn find_collisions(
     before: &[Aabb],
     after: &[Aabb],
     groups: &[Vec<usize>],
     floor: f64,
     room: Option<&Aabb>,
+    under: &dyn Fn(usize, usize) -> bool,
 ) -> Vec<Overlap> {
-    find_collisions_in(&FloorGrid::new(after), before, after, groups, floor, room)
+    find_collisions_in(
+        &FloorGrid::new(after),
+        before,
+        after,
+        groups,
+        floor,
+        room,
+        under,
+    )
 }
 
 /// [`find_collisions`] with a grid over `after` already built.
@@ -159,6 +171,7 @@ pub fn find_collisions_in(
     groups: &[Vec<usize>],
     floor: f64,
     room: Option<&Aabb>,
+    under: &dyn Fn(usize, usize) -> bool,
 ) -> Vec<Overlap> {
     let mut group_of = vec![usize::MAX; after.len()];
     for (g, members) in groups.iter().enumerate() {
@@ -175,9 +188,13 @@ pub fn find_collisions_in(
                 if group_of[j] == group_of[i] || (group_of[j] != usize::MAX && j < i) {
                     continue;
                 }
-                if collides(a, &after[j], overlap_volume(&before[i], &before[j]))
-                    && !stands_on_covering(a, &after[j], floor)
-                {
+                // Standing on a rug, or in the room under a table it was put under.
+                let apart = || {
+                    stands_on_covering(a, &after[j], floor)
+                        || (under(i, j) && clear_under(a, &after[j]))
+                        || (under(j, i) && clear_under(&after[j], a))
+                };
+                if collides(a, &after[j], overlap_volume(&before[i], &before[j])) && !apart() {
                     out.push(Overlap {
                         object: i,
                         with: Obstacle::Object(j),
@@ -216,11 +233,13 @@ mod tests {
     fn touching_is_not_colliding_and_overlapping_is() {
         let before = [cube(0.0, 0.0, 0.0, 1.0), cube(3.0, 0.0, 0.0, 1.0)];
         let touching = [cube(2.0, 0.0, 0.0, 1.0), before[1]];
-        assert!(find_collisions(&before, &touching, &[vec![0]], 0.0, None).is_empty());
+        assert!(
+            find_collisions(&before, &touching, &[vec![0]], 0.0, None, &|_, _| false).is_empty()
+        );
         let on_top = [cube(3.0, 1.0, 0.0, 1.0), before[1]];
-        assert!(find_collisions(&before, &on_top, &[vec![0]], 0.0, None).is_empty());
+        assert!(find_collisions(&before, &on_top, &[vec![0]], 0.0, None, &|_, _| false).is_empty());
         let into = [cube(2.5, 0.0, 0.0, 1.0), before[1]];
-        let found = find_collisions(&before, &into, &[vec![0]], 0.0, None);
+        let found = find_collisions(&before, &into, &[vec![0]], 0.0, None, &|_, _| false);
         assert_eq!(found.len(), 1);
         assert_eq!(found[0].with, Obstacle::Object(1));
         assert!((found[0].depth.x - 0.5).abs() < 1e-12);
@@ -233,10 +252,10 @@ mod tests {
         let cushion = cube(0.5, 0.4, 0.2, 0.4);
         let before = [cushion, sofa];
         let slid = [cushion.translated(DVec3::new(0.3, 0.0, 0.0)), sofa];
-        assert!(find_collisions(&before, &slid, &[vec![0]], 0.0, None).is_empty());
+        assert!(find_collisions(&before, &slid, &[vec![0]], 0.0, None, &|_, _| false).is_empty());
         let pushed_in = [cushion.translated(DVec3::new(0.0, -0.3, 0.0)), sofa];
         assert!(
-            find_collisions(&before, &pushed_in, &[vec![0]], 0.0, None).is_empty(),
+            find_collisions(&before, &pushed_in, &[vec![0]], 0.0, None, &|_, _| false).is_empty(),
             "same volume inside"
         );
         let bigger = [
@@ -244,7 +263,7 @@ mod tests {
             sofa,
         ];
         assert_eq!(
-            find_collisions(&before, &bigger, &[vec![0]], 0.0, None).len(),
+            find_collisions(&before, &bigger, &[vec![0]], 0.0, None, &|_, _| false).len(),
             1
         );
     }
@@ -272,14 +291,23 @@ mod tests {
             (cube(0.0, 2.0, 0.0, 1.0), Obstacle::Ceiling),
         ];
         for (after, expected) in cases {
-            let found = find_collisions(&before, &[after], &[vec![0]], 0.0, Some(&room));
+            let found =
+                find_collisions(&before, &[after], &[vec![0]], 0.0, Some(&room), &|_, _| {
+                    false
+                });
             assert_eq!(found.len(), 1, "{expected:?}");
             assert_eq!(found[0].with, expected);
         }
         // Without bounds there are no walls, only the floor.
-        assert!(
-            find_collisions(&before, &[cube(5.0, 0.0, 0.0, 1.0)], &[vec![0]], 0.0, None).is_empty()
-        );
+        assert!(find_collisions(
+            &before,
+            &[cube(5.0, 0.0, 0.0, 1.0)],
+            &[vec![0]],
+            0.0,
+            None,
+            &|_, _| false
+        )
+        .is_empty());
     }
 
     #[test]
@@ -291,14 +319,23 @@ mod tests {
         // Table and cup move together; the cup on the table is no collision.
         let shift = DVec3::new(0.5, 0.0, 0.0);
         let after = [table.translated(shift), cup.translated(shift), chair];
-        assert!(find_collisions(&before, &after, &[vec![0, 1]], 0.0, None).is_empty());
+        assert!(
+            find_collisions(&before, &after, &[vec![0, 1]], 0.0, None, &|_, _| false).is_empty()
+        );
         // Two groups moved into each other: one collision, reported once.
         let after = [
             table.translated(DVec3::new(2.5, 0.0, 0.0)),
             cup.translated(DVec3::new(2.5, 0.0, 0.0)),
             chair.translated(DVec3::new(-0.2, 0.0, 0.0)),
         ];
-        let found = find_collisions(&before, &after, &[vec![0, 1], vec![2]], 0.0, None);
+        let found = find_collisions(
+            &before,
+            &after,
+            &[vec![0, 1], vec![2]],
+            0.0,
+            None,
+            &|_, _| false,
+        );
         assert_eq!(found.len(), 1, "{found:?}");
     }
 }

@@ -18,8 +18,8 @@ mod resolve;
 
 pub use detect::{find_collisions, find_collisions_in, Obstacle, Overlap};
 pub use resolve::{
-    resolve, resolve_with, Adjustment, Boxes, FloorBound, Resolution, ResolveError, ResolveOptions,
-    SearchEnd,
+    resolve, resolve_with, Adjustment, Boxes, FloorBound, Kinds, Resolution, ResolveError,
+    ResolveOptions, SearchEnd,
 };
 
 /// How far two boxes must overlap on every axis to collide, in metres.

@@ -6,6 +6,7 @@ use super::detect::{
 };
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
+use crate::scene::form::clear_under;
 use crate::scene::{AppliedMotion, Scene};
 use glam::{DVec2, DVec3};
 use std::cmp::Ordering;
@@ -125,10 +126,31 @@ impl std::fmt::Display for SearchEnd {
     }
 }
 
-/// Whether an object is floor furniture, which resolution never lifts onto anything
-/// (lifting is for small things): what the caller knows of the objects' kinds
-/// (`ground::kind::is_floor_bound` reads them from the lexicon).
-pub type FloorBound<'a> = &'a dyn Fn(&Scene, usize) -> bool;
+/// What the caller knows of the objects' kinds, which resolution reads
+/// (`ground::kind::Lexical` reads them from the lexicon).
+pub trait Kinds {
+    /// Whether object `i` is floor furniture, which resolution never lifts onto anything
+    /// (lifting is for small things).
+    fn floor_bound(&self, scene: &Scene, i: usize) -> bool;
+    /// Whether object `i` may stand in the room under object `j`: `j` is a top on legs
+    /// (`scene::form`) that `i` was put under.
+    fn under(&self, scene: &Scene, i: usize, j: usize) -> bool;
+}
+
+/// A floor-furniture test alone is the kinds of a caller that puts nothing under
+/// anything.
+impl<F: Fn(&Scene, usize) -> bool> Kinds for F {
+    fn floor_bound(&self, scene: &Scene, i: usize) -> bool {
+        self(scene, i)
+    }
+
+    fn under(&self, _: &Scene, _: usize, _: usize) -> bool {
+        false
+    }
+}
+
+/// The kinds of the objects, as the caller knows them.
+pub type FloorBound<'a> = &'a dyn Kinds;
 
 /// Finds collisions the edit created among `moved` objects (the edited ones; what rests on
 /// them moves with them) and moves each colliding group to the nearest free placement.
@@ -261,7 +283,8 @@ fn search(
     let groups = rigid(groups(scene, moved), before, after);
     let floor = scene.floor();
     let room = scene.bounds;
-    let collisions = find_collisions_in(grid, before, after, &groups, floor, room.as_ref());
+    let under = |i: usize, j: usize| floor_bound.under(scene, i, j);
+    let collisions = find_collisions_in(grid, before, after, &groups, floor, room.as_ref(), &under);
     if collisions.is_empty() {
         resolution.setup_ms = ms(setup);
         return Ok(());
@@ -394,6 +417,7 @@ impl Search<'_> {
                 Ok(())
             }
             None if self.options.allow_collisions => {
+                let (kinds, scene) = (self.floor_bound, &*self.scene);
                 let left = find_collisions_in(
                     self.grid,
                     self.before,
@@ -401,6 +425,7 @@ impl Search<'_> {
                     std::slice::from_ref(&group.objects.to_vec()),
                     self.floor,
                     self.room.as_ref(),
+                    &|i, j| kinds.under(scene, i, j),
                 );
                 self.resolution.remaining.extend(left);
                 Ok(())
@@ -453,15 +478,16 @@ impl Search<'_> {
         // Put on a top face, it stays on that face: never stacked on what stands there
         // (a stack is asked for by the instruction, which puts it on that object's top).
         // Floor furniture is never lifted onto anything: lifting is for small things.
-        let raised: Vec<f64> = if surface.is_some() || (self.floor_bound)(self.scene, root) {
-            Vec::new()
-        } else {
-            lifts
-                .iter()
-                .copied()
-                .filter(|dy| !level.contains(dy))
-                .collect()
-        };
+        let raised: Vec<f64> =
+            if surface.is_some() || self.floor_bound.floor_bound(self.scene, root) {
+                Vec::new()
+            } else {
+                lifts
+                    .iter()
+                    .copied()
+                    .filter(|dy| !level.contains(dy))
+                    .collect()
+            };
         // On a top face, a free spot may be narrower than the grid: after the grid, the
         // face is searched again, [`SURFACE_REFINE`] times finer.
         // (Made only when the grid found nothing.)
@@ -481,6 +507,13 @@ impl Search<'_> {
             .chain(ordered_candidates(&self.horizontal, &raised))
             .chain(refined)
             .filter(|&offset| on_surface(offset));
+        // Which of the group may stand under which obstacle (put under a table).
+        let under: Vec<(usize, usize)> = group
+            .objects
+            .iter()
+            .flat_map(|&i| group.obstacles.iter().map(move |&j| (i, j)))
+            .filter(|&(i, j)| self.floor_bound.under(self.scene, i, j))
+            .collect();
         let check = Placement {
             group: group.objects,
             obstacles: &group.obstacles,
@@ -488,6 +521,7 @@ impl Search<'_> {
             after,
             floor,
             room: self.room.as_ref(),
+            under: &under,
         };
         let order = |a: &DVec3, b: &DVec3| {
             let (da, db) = (
@@ -723,6 +757,9 @@ struct Placement<'a> {
     after: &'a [Aabb],
     floor: f64,
     room: Option<&'a Aabb>,
+    /// The pairs (a member of the group, an obstacle) where the member may stand in the
+    /// room under the obstacle.
+    under: &'a [(usize, usize)],
 }
 
 impl Placement<'_> {
@@ -736,7 +773,9 @@ impl Placement<'_> {
             let padded = Aabb::new(moved.min - pad, moved.max + pad);
             for &j in self.obstacles {
                 let volume_before = overlap_volume(&self.before[i], &self.before[j]);
-                let blocked = if stands_on_covering(&moved, &self.after[j], self.floor) {
+                let blocked = if stands_on_covering(&moved, &self.after[j], self.floor)
+                    || (self.under.contains(&(i, j)) && clear_under(&moved, &self.after[j]))
+                {
                     false
                 } else if volume_before > 0.0 {
                     collides(&moved, &self.after[j], volume_before)

@@ -115,6 +115,8 @@ struct RawObject<'a> {
     colour: Option<&'a RawValue>,
     #[serde(borrow, default, deserialize_with = "present")]
     material: Option<&'a RawValue>,
+    #[serde(borrow, default, deserialize_with = "present")]
+    form: Option<&'a RawValue>,
 }
 
 /// Parses and validates scene JSON. `fallback_name` names a scene without a `"name"`.
@@ -442,6 +444,17 @@ fn object_from_raw<'a>(
     let mut object = Object::new_box(name, size, position, rotation, scale)
         .map_err(|e| FormatError::invalid(format!("objects[{i}]: {e}")))?;
     object.labels = labels(text, &o, i)?;
+    if let Some(raw) = o.form {
+        let form = serde_json::from_str::<String>(raw.get())
+            .ok()
+            .and_then(|name| crate::scene::Form::from_name(&name))
+            .ok_or_else(|| {
+                FormatError::invalid(format!(
+                    "objects[{i}].form must be \"solid\" or \"on_legs\" (a top on legs, with room below)"
+                ))
+            })?;
+        object.form = Some(form);
+    }
     if let Some(f) = vec3_field(text, o.front, &|| field("front"))? {
         if f.length() < 1e-9 {
             return Err(FormatError::invalid(format!(

@@ -16,7 +16,7 @@
 use super::ident;
 use super::lexicon::Lexicon;
 use super::words::normalize;
-use crate::scene::Scene;
+use crate::scene::{Form, Scene};
 
 /// Height from which furniture, an appliance or an object of unknown kind stands on the
 /// floor, in metres.
@@ -36,6 +36,36 @@ pub fn is_floor_bound(scene: &Scene, i: usize) -> bool {
     let size = o.world_aabb().size();
     let furniture = furniture_kind(Lexicon::builtin(), o.labels.category.as_deref(), &o.name);
     stands_on_floor(furniture, size.y, size.x * size.z)
+}
+
+/// What of object `i`'s box is solid: as its scene file says (`form`), else a top on legs
+/// for a table, a desk or a counter (by the lexicon: its category, else its name's head
+/// noun — a table lamp is a lamp) at least [`Form`]'s knee height tall and turned about
+/// the vertical by quarter turns only (its legs at its box's corners); else solid.
+#[must_use]
+pub fn form_of(scene: &Scene, i: usize) -> Form {
+    let o = &scene.objects[i];
+    if let Some(form) = o.form {
+        return form;
+    }
+    let q = o.similarity().rotation;
+    let x = q * glam::DVec3::X;
+    let square = (q * glam::DVec3::Y - glam::DVec3::Y).length() < 1e-6
+        && (x.x.abs() < 1e-6 || x.z.abs() < 1e-6);
+    let tall = o.world_aabb().size().y >= crate::scene::form::KNEE_HEIGHT;
+    let table = || {
+        filed_under(
+            Lexicon::builtin(),
+            o.labels.category.as_deref(),
+            &o.name,
+            &["table", "desk", "counter"],
+        ) == Some(true)
+    };
+    if square && tall && table() {
+        Form::OnLegs
+    } else {
+        Form::Solid
+    }
 }
 
 /// Whether an object of this kind (`Some(true)` furniture or appliance, `Some(false)`

@@ -498,7 +498,22 @@ pub fn place_holding(
         .map(|o| (o.support, o.support_from_file))
         .collect();
     let mut motions = Vec::new();
-    let result = place_into(scene, moves, options, held, &mut motions)
+    // What the edit puts under a table, with what rests on it, may stand in the room
+    // under its top.
+    let under: Vec<(usize, usize)> = near
+        .iter()
+        .filter_map(|&(o, n)| match n {
+            Near::Under(t) => Some((o, t)),
+            _ => None,
+        })
+        .flat_map(|(o, t)| {
+            std::iter::once(o)
+                .chain(scene.carried_by(o))
+                .map(move |i| (i, t))
+                .collect::<Vec<_>>()
+        })
+        .collect();
+    let result = place_into(scene, moves, options, held, &under, &mut motions)
         .and_then(|placed| check_held(scene, held, &supports, &motions).map(|()| placed))
         .and_then(|placed| {
             // Under something: checked only where collisions are resolved; without (or
@@ -610,6 +625,24 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
     Ok(())
 }
 
+/// The objects' kinds as the lexicon says them, for collision resolution: floor furniture
+/// and tops on legs (`ground::kind`).
+/// `under`: (object, table) pairs where the edit put the object under the table.
+struct Lexical<'a> {
+    under: &'a [(usize, usize)],
+}
+
+impl collide::Kinds for Lexical<'_> {
+    fn floor_bound(&self, scene: &Scene, i: usize) -> bool {
+        crate::ground::kind::is_floor_bound(scene, i)
+    }
+
+    fn under(&self, scene: &Scene, i: usize, j: usize) -> bool {
+        self.under.contains(&(i, j))
+            && crate::ground::kind::form_of(scene, j) == crate::scene::Form::OnLegs
+    }
+}
+
 /// Whether `object` ended under `above`: its centre within `above`'s footprint and its
 /// top no higher than `above`'s underside (what rests on the floor under a table top).
 /// Every object is a box from its bottom up here, so under furniture that stands on the
@@ -620,23 +653,41 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), String>
     let b = scene.objects[above].world_aabb();
     let c = a.center();
     let over = c.x >= b.min.x && c.x <= b.max.x && c.z >= b.min.z && c.z <= b.max.z;
-    if over && a.max.y <= b.min.y + 1e-6 {
-        return Ok(());
-    }
-    // A flat thing (a rug, a mat) slides under what stands on it.
-    if over && a.size().y <= crate::scene::FLOOR_LEVEL {
+    let on_legs = crate::ground::kind::form_of(scene, above) == crate::scene::Form::OnLegs;
+    // Below its bottom, in the room under its top, or flat (a rug under a bed).
+    let under = a.max.y <= b.min.y + 1e-6
+        || (on_legs && crate::scene::form::clear_under(&a, &b))
+        || a.size().y <= crate::scene::FLOOR_LEVEL;
+    if over && under {
         return Ok(());
     }
     let (name, target) = (&scene.objects[object].name, &scene.objects[above].name);
-    let room = b.min.y - scene.floor();
-    Err(if room > crate::scene::FLOOR_LEVEL {
+    let room = if on_legs {
+        crate::scene::form::knee_room(&b)
+    } else {
+        b.min.y - scene.floor()
+    };
+    Err(if on_legs && a.size().y > room {
+        format!(
+            "'{name}' cannot go under '{target}': there is {room:.2} m under its top, and '{name}' is {:.2} m tall",
+            a.size().y
+        )
+    } else if on_legs {
+        format!(
+            "'{name}' cannot go under '{target}': it does not fit between its legs ({:.2} × {:.2} m, and '{name}' is {:.2} × {:.2} m)",
+            b.size().x,
+            b.size().z,
+            a.size().x,
+            a.size().z
+        )
+    } else if room > crate::scene::FLOOR_LEVEL {
         format!(
             "'{name}' cannot go under '{target}': there is {room:.2} m under it, and '{name}' is {:.2} m tall",
             a.size().y
         )
     } else {
         format!(
-            "'{name}' cannot go under '{target}': Shenlong sees '{target}' as a solid box down to the floor, so there is no room under it yet; put it beside or on it"
+            "'{name}' cannot go under '{target}': Shenlong sees '{target}' as a solid box down to the floor, so there is no room under it; put it beside or on it"
         )
     })
 }
@@ -674,6 +725,7 @@ fn place_into(
     moves: &[(usize, cga::Similarity)],
     options: &EditOptions,
     held: &[usize],
+    under: &[(usize, usize)],
     motions: &mut Vec<AppliedMotion>,
 ) -> Result<Placed, EditError> {
     let t0 = Instant::now();
@@ -689,7 +741,8 @@ fn place_into(
     let t0 = Instant::now();
     let resolved = match &options.collisions {
         Some(resolve_options) => {
-            resolve_collisions(scene, &moved, resolve_options, &mut boxes, motions)?
+            let kinds = Lexical { under };
+            resolve_collisions(scene, &moved, resolve_options, &kinds, &mut boxes, motions)?
         }
         None => Resolved::default(),
     };
@@ -829,6 +882,7 @@ fn resolve_collisions(
     scene: &mut Scene,
     moved: &[usize],
     resolve_options: &ResolveOptions,
+    kinds: &Lexical<'_>,
     boxes: &mut EditBoxes,
     motions: &mut Vec<AppliedMotion>,
 ) -> Result<Resolved, EditError> {
@@ -846,7 +900,7 @@ fn resolve_collisions(
             grid: &mut boxes.grid,
         },
         moved,
-        &crate::ground::kind::is_floor_bound,
+        kinds,
         resolve_options,
     )
     .map_err(|e| placement(e.to_string()))?;

@@ -9,6 +9,7 @@
 //! along with the same world motion. Every applied motion records the poses it replaced,
 //! so undoing it is exact to the bit.
 
+pub mod form;
 pub mod listing;
 mod support;
 
@@ -16,6 +17,7 @@ use crate::geometry::Aabb;
 use cga::{CgaError, Multivector, Similarity};
 use glam::{DQuat, DVec3};
 
+pub use form::Form;
 pub use support::{FLOOR_LEVEL, SUPPORT_GAP};
 
 /// The largest coordinate (and box extent) Shenlong keeps exact, in metres: positions and
@@ -131,6 +133,9 @@ pub struct Object {
     /// The local direction the object faces (a unit vector; +Z, glTF's convention, unless
     /// its source says otherwise).
     pub front: DVec3,
+    /// What of its box is solid, as its source file says (scene JSON's `form`); `None`:
+    /// read from its kind (`ground::kind::form_of`).
+    pub form: Option<Form>,
     pose: Similarity,
 }
 
@@ -179,6 +184,7 @@ impl Object {
             support_from_file: false,
             labels: Labels::default(),
             front: DVec3::Z,
+            form: None,
             pose: Similarity { rotation, ..pose },
         })
     }

@@ -260,6 +260,8 @@ fn restore(
         std::slice::from_ref(&group),
         scene.floor(),
         scene.bounds.as_ref(),
+        // Back where it stood: under a table too, if it stood there.
+        &|_, j| crate::ground::kind::form_of(scene, j) == crate::scene::Form::OnLegs,
     );
     if let Some(o) = found
         .iter()

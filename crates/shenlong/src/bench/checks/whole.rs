@@ -46,7 +46,18 @@ pub(super) fn no_collision(c: &Ctx<'_>) -> Result<(), Failure> {
         })
         .collect();
     let groups: Vec<Vec<usize>> = moved.iter().map(|&i| vec![i]).collect();
-    let found = find_collisions(&bb, &ab, &groups, c.after.floor(), c.after.bounds.as_ref());
+    // Anything may stand in the room under a table: the judge does not know what was put
+    // under what.
+    let under =
+        |_: usize, j: usize| crate::ground::kind::form_of(c.after, j) == crate::scene::Form::OnLegs;
+    let found = find_collisions(
+        &bb,
+        &ab,
+        &groups,
+        c.after.floor(),
+        c.after.bounds.as_ref(),
+        &under,
+    );
     match found.first() {
         None => Ok(()),
         Some(hit) => Err(Failure(format!(

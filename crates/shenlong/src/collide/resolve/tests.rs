@@ -71,7 +71,8 @@ fn pushed_into_another_object_it_stops_beside_it_with_the_buffer() {
         &s.world_aabbs(),
         &[vec![a]],
         0.0,
-        s.bounds.as_ref()
+        s.bounds.as_ref(),
+        &|_, _| false
     )
     .is_empty());
 }
