@@ -142,6 +142,8 @@ pub enum Near {
     /// Under this one: its footprint over the object's centre, its underside above the
     /// object's top.
     Under(usize),
+    /// In this open container: within its walls, on its bottom or on what is in it.
+    Inside(usize),
 }
 
 impl Near {
@@ -153,6 +155,7 @@ impl Near {
             Self::Between(a, b) => Self::Between(f(a), f(b)),
             Self::On(t) => Self::On(f(t)),
             Self::Under(t) => Self::Under(f(t)),
+            Self::Inside(t) => Self::Inside(f(t)),
         }
     }
 }

@@ -17,6 +17,8 @@
 //! 6. **under Y**: on the level Y stands on, its centre within Y's footprint, its top no
 //!    higher than Y's underside — under the top of a table on legs, off its legs — or flat
 //!    (a rug), nothing new overlapped — or refused, never beside Y.
+//! 7. **in Y**: within the walls of an open container Y, above its bottom, below its rim,
+//!    nothing new overlapped — or refused (a solid Y, or no room), never beside Y.
 //!
 //! The counts per scene and property are printed (`cargo test --test placement_properties
 //! -- --nocapture`) and quoted in docs/collisions.md.
@@ -52,6 +54,7 @@ enum Property {
     OnNextTo,
     OnBetween,
     Under,
+    In,
 }
 
 #[derive(Default, Debug)]
@@ -446,6 +449,25 @@ fn check_under(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> 
     nothing_new_overlapped(scene, &f.boxes, after)
 }
 
+/// In Y: within Y's room (an open container), nothing new overlapped but Y.
+fn check_in(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Verdict {
+    let (a, b) = (&after[x], &after[y]);
+    if shenlong::ground::kind::form_of(scene, y) != shenlong::scene::Form::Open {
+        return Some(format!(
+            "put in '{}', which is no container",
+            scene.objects[y].name
+        ));
+    }
+    if !shenlong::scene::form::clear_inside(a, b) {
+        return Some(format!("not inside: {a:?} in {b:?}"));
+    }
+    let away = Aabb::new(b.min - 1e3, b.min - 1e3);
+    let (mut before, mut after) = (f.boxes.clone(), after.to_vec());
+    before[y] = away;
+    after[y] = away;
+    nothing_new_overlapped(scene, &before, &after)
+}
+
 /// "put X under Y" for pairs of a portable or floor-bound X and any other Y.
 fn under_pairs(scene: &Scene, f: &Facts) -> Vec<(usize, usize)> {
     let n = scene.objects.len();
@@ -522,6 +544,12 @@ fn placements_keep_their_guarantees_on_every_scene() {
             let out = run(&scene, &grounder, &text)
                 .map(|(_, after)| check_no_lift(&scene, &f, x, &after));
             record(&name, Property::NoLift, &text, out);
+        }
+        for (x, y) in spread(&under_pairs(&scene, &f), PER_SCENE) {
+            let text = format!("put the '{}' in the '{}'", q(x), q(y));
+            let out =
+                run(&scene, &grounder, &text).map(|(_, after)| check_in(&scene, &f, x, y, &after));
+            record(&name, Property::In, &text, out);
         }
         for (x, y) in spread(&under_pairs(&scene, &f), PER_SCENE) {
             let text = format!("put the '{}' under the '{}'", q(x), q(y));

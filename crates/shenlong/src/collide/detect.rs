@@ -2,7 +2,8 @@
 
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
-use crate::scene::form::clear_under;
+use crate::scene::form::clear_in;
+use crate::scene::Form;
 use glam::DVec3;
 
 /// What an object collides with.
@@ -142,15 +143,15 @@ pub(crate) fn room_violations(b: &Aabb, floor: f64, room: Option<&Aabb>) -> Vec<
 /// The collisions of the objects in `groups` (each a set of object indices that moved
 /// together) in the scene whose boxes are `after`, against every other object and the
 /// room; `before` are the boxes before the edit, for pre-existing overlaps.
-/// `under(i, j)`: whether object `i` may stand in the room under object `j`, a top on legs
-/// (`scene::form`).
+/// `under(i, j)`: the form of object `j` when object `i` may stand in its room — under a
+/// top on legs, inside an open container (`scene::form`).
 pub fn find_collisions(
     before: &[Aabb],
     after: &[Aabb],
     groups: &[Vec<usize>],
     floor: f64,
     room: Option<&Aabb>,
-    under: &dyn Fn(usize, usize) -> bool,
+    under: &dyn Fn(usize, usize) -> Option<Form>,
 ) -> Vec<Overlap> {
     find_collisions_in(
         &FloorGrid::new(after),
@@ -171,7 +172,7 @@ pub fn find_collisions_in(
     groups: &[Vec<usize>],
     floor: f64,
     room: Option<&Aabb>,
-    under: &dyn Fn(usize, usize) -> bool,
+    under: &dyn Fn(usize, usize) -> Option<Form>,
 ) -> Vec<Overlap> {
     let mut group_of = vec![usize::MAX; after.len()];
     for (g, members) in groups.iter().enumerate() {
@@ -188,11 +189,11 @@ pub fn find_collisions_in(
                 if group_of[j] == group_of[i] || (group_of[j] != usize::MAX && j < i) {
                     continue;
                 }
-                // Standing on a rug, or in the room under a table it was put under.
+                // Standing on a rug, or in the room of what it was put under or in.
                 let apart = || {
                     stands_on_covering(a, &after[j], floor)
-                        || (under(i, j) && clear_under(a, &after[j]))
-                        || (under(j, i) && clear_under(&after[j], a))
+                        || under(i, j).is_some_and(|f| clear_in(a, &after[j], f))
+                        || under(j, i).is_some_and(|f| clear_in(&after[j], a, f))
                 };
                 if collides(a, &after[j], overlap_volume(&before[i], &before[j])) && !apart() {
                     out.push(Overlap {
@@ -234,12 +235,12 @@ mod tests {
         let before = [cube(0.0, 0.0, 0.0, 1.0), cube(3.0, 0.0, 0.0, 1.0)];
         let touching = [cube(2.0, 0.0, 0.0, 1.0), before[1]];
         assert!(
-            find_collisions(&before, &touching, &[vec![0]], 0.0, None, &|_, _| false).is_empty()
+            find_collisions(&before, &touching, &[vec![0]], 0.0, None, &|_, _| None).is_empty()
         );
         let on_top = [cube(3.0, 1.0, 0.0, 1.0), before[1]];
-        assert!(find_collisions(&before, &on_top, &[vec![0]], 0.0, None, &|_, _| false).is_empty());
+        assert!(find_collisions(&before, &on_top, &[vec![0]], 0.0, None, &|_, _| None).is_empty());
         let into = [cube(2.5, 0.0, 0.0, 1.0), before[1]];
-        let found = find_collisions(&before, &into, &[vec![0]], 0.0, None, &|_, _| false);
+        let found = find_collisions(&before, &into, &[vec![0]], 0.0, None, &|_, _| None);
         assert_eq!(found.len(), 1);
         assert_eq!(found[0].with, Obstacle::Object(1));
         assert!((found[0].depth.x - 0.5).abs() < 1e-12);
@@ -252,10 +253,10 @@ mod tests {
         let cushion = cube(0.5, 0.4, 0.2, 0.4);
         let before = [cushion, sofa];
         let slid = [cushion.translated(DVec3::new(0.3, 0.0, 0.0)), sofa];
-        assert!(find_collisions(&before, &slid, &[vec![0]], 0.0, None, &|_, _| false).is_empty());
+        assert!(find_collisions(&before, &slid, &[vec![0]], 0.0, None, &|_, _| None).is_empty());
         let pushed_in = [cushion.translated(DVec3::new(0.0, -0.3, 0.0)), sofa];
         assert!(
-            find_collisions(&before, &pushed_in, &[vec![0]], 0.0, None, &|_, _| false).is_empty(),
+            find_collisions(&before, &pushed_in, &[vec![0]], 0.0, None, &|_, _| None).is_empty(),
             "same volume inside"
         );
         let bigger = [
@@ -263,7 +264,7 @@ mod tests {
             sofa,
         ];
         assert_eq!(
-            find_collisions(&before, &bigger, &[vec![0]], 0.0, None, &|_, _| false).len(),
+            find_collisions(&before, &bigger, &[vec![0]], 0.0, None, &|_, _| None).len(),
             1
         );
     }
@@ -305,7 +306,7 @@ mod tests {
             &[vec![0]],
             0.0,
             None,
-            &|_, _| false
+            &|_, _| None
         )
         .is_empty());
     }
@@ -320,7 +321,7 @@ mod tests {
         let shift = DVec3::new(0.5, 0.0, 0.0);
         let after = [table.translated(shift), cup.translated(shift), chair];
         assert!(
-            find_collisions(&before, &after, &[vec![0, 1]], 0.0, None, &|_, _| false).is_empty()
+            find_collisions(&before, &after, &[vec![0, 1]], 0.0, None, &|_, _| None).is_empty()
         );
         // Two groups moved into each other: one collision, reported once.
         let after = [
@@ -334,7 +335,7 @@ mod tests {
             &[vec![0, 1], vec![2]],
             0.0,
             None,
-            &|_, _| false,
+            &|_, _| None,
         );
         assert_eq!(found.len(), 1, "{found:?}");
     }

@@ -6,8 +6,8 @@ use super::detect::{
 };
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
-use crate::scene::form::clear_under;
-use crate::scene::{AppliedMotion, Scene};
+use crate::scene::form::clear_in;
+use crate::scene::{AppliedMotion, Form, Scene};
 use glam::{DVec2, DVec3};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -132,9 +132,9 @@ pub trait Kinds {
     /// Whether object `i` is floor furniture, which resolution never lifts onto anything
     /// (lifting is for small things).
     fn floor_bound(&self, scene: &Scene, i: usize) -> bool;
-    /// Whether object `i` may stand in the room under object `j`: `j` is a top on legs
-    /// (`scene::form`) that `i` was put under.
-    fn under(&self, scene: &Scene, i: usize, j: usize) -> bool;
+    /// The form of object `j` when object `i` may stand in its room: `j` is a top on legs
+    /// that `i` was put under, or an open container `i` was put in (`scene::form`).
+    fn room(&self, scene: &Scene, i: usize, j: usize) -> Option<Form>;
 }
 
 /// A floor-furniture test alone is the kinds of a caller that puts nothing under
@@ -144,8 +144,8 @@ impl<F: Fn(&Scene, usize) -> bool> Kinds for F {
         self(scene, i)
     }
 
-    fn under(&self, _: &Scene, _: usize, _: usize) -> bool {
-        false
+    fn room(&self, _: &Scene, _: usize, _: usize) -> Option<Form> {
+        None
     }
 }
 
@@ -283,7 +283,7 @@ fn search(
     let groups = rigid(groups(scene, moved), before, after);
     let floor = scene.floor();
     let room = scene.bounds;
-    let under = |i: usize, j: usize| floor_bound.under(scene, i, j);
+    let under = |i: usize, j: usize| floor_bound.room(scene, i, j);
     let collisions = find_collisions_in(grid, before, after, &groups, floor, room.as_ref(), &under);
     if collisions.is_empty() {
         resolution.setup_ms = ms(setup);
@@ -425,7 +425,7 @@ impl Search<'_> {
                     std::slice::from_ref(&group.objects.to_vec()),
                     self.floor,
                     self.room.as_ref(),
-                    &|i, j| kinds.under(scene, i, j),
+                    &|i, j| kinds.room(scene, i, j),
                 );
                 self.resolution.remaining.extend(left);
                 Ok(())
@@ -507,12 +507,13 @@ impl Search<'_> {
             .chain(ordered_candidates(&self.horizontal, &raised))
             .chain(refined)
             .filter(|&offset| on_surface(offset));
-        // Which of the group may stand under which obstacle (put under a table).
-        let under: Vec<(usize, usize)> = group
+        // Which of the group may stand in the room of which obstacle (put under a table,
+        // in a box).
+        let under: Vec<(usize, usize, Form)> = group
             .objects
             .iter()
             .flat_map(|&i| group.obstacles.iter().map(move |&j| (i, j)))
-            .filter(|&(i, j)| self.floor_bound.under(self.scene, i, j))
+            .filter_map(|(i, j)| self.floor_bound.room(self.scene, i, j).map(|f| (i, j, f)))
             .collect();
         let check = Placement {
             group: group.objects,
@@ -757,9 +758,9 @@ struct Placement<'a> {
     after: &'a [Aabb],
     floor: f64,
     room: Option<&'a Aabb>,
-    /// The pairs (a member of the group, an obstacle) where the member may stand in the
-    /// room under the obstacle.
-    under: &'a [(usize, usize)],
+    /// (a member of the group, an obstacle, its form) where the member may stand in the
+    /// obstacle's room.
+    under: &'a [(usize, usize, Form)],
 }
 
 impl Placement<'_> {
@@ -774,7 +775,10 @@ impl Placement<'_> {
             for &j in self.obstacles {
                 let volume_before = overlap_volume(&self.before[i], &self.before[j]);
                 let blocked = if stands_on_covering(&moved, &self.after[j], self.floor)
-                    || (self.under.contains(&(i, j)) && clear_under(&moved, &self.after[j]))
+                    || self
+                        .under
+                        .iter()
+                        .any(|&(m, o, f)| (m, o) == (i, j) && clear_in(&moved, &self.after[j], f))
                 {
                     false
                 } else if volume_before > 0.0 {

@@ -450,7 +450,7 @@ fn object_from_raw<'a>(
             .and_then(|name| crate::scene::Form::from_name(&name))
             .ok_or_else(|| {
                 FormatError::invalid(format!(
-                    "objects[{i}].form must be \"solid\" or \"on_legs\" (a top on legs, with room below)"
+                    "objects[{i}].form must be \"solid\", \"on_legs\" (a top on legs, with room below) or \"open\" (an open container)"
                 ))
             })?;
         object.form = Some(form);

@@ -40,8 +40,10 @@ pub fn is_floor_bound(scene: &Scene, i: usize) -> bool {
 
 /// What of object `i`'s box is solid: as its scene file says (`form`), else a top on legs
 /// for a table, a desk or a counter (by the lexicon: its category, else its name's head
-/// noun — a table lamp is a lamp) at least [`Form`]'s knee height tall and turned about
-/// the vertical by quarter turns only (its legs at its box's corners); else solid.
+/// noun — a table lamp is a lamp) at least [`Form`]'s knee height tall, an open container
+/// for a box, a basket, a bin, a toolbox, a drawer, a bag, a crate or a bucket — each
+/// turned about the vertical by quarter turns only (its legs and walls along its box's
+/// sides); else solid.
 #[must_use]
 pub fn form_of(scene: &Scene, i: usize) -> Form {
     let o = &scene.objects[i];
@@ -61,8 +63,28 @@ pub fn form_of(scene: &Scene, i: usize) -> Form {
             &["table", "desk", "counter"],
         ) == Some(true)
     };
+    let container = || {
+        filed_under(
+            Lexicon::builtin(),
+            o.labels.category.as_deref(),
+            &o.name,
+            &[
+                "box",
+                "basket",
+                "bin",
+                "toolbox",
+                "drawer",
+                "bag",
+                "crate",
+                "bucket",
+                "container",
+            ],
+        ) == Some(true)
+    };
     if square && tall && table() {
         Form::OnLegs
+    } else if square && container() {
+        Form::Open
     } else {
         Form::Solid
     }

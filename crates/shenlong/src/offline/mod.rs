@@ -438,6 +438,17 @@ impl Known<'_> {
         })
     }
 
+    /// Whether `t`'s object is an open container (a box, a basket: `scene::form`).
+    pub(crate) fn open(&self, t: usize) -> bool {
+        self.scene
+            .and_then(|(scene, objects)| {
+                objects
+                    .get(t)
+                    .map(|&b| crate::ground::kind::form_of(scene, b) == crate::scene::Form::Open)
+            })
+            .unwrap_or(false)
+    }
+
     /// Whether `t`'s object hangs (on a wall, above the floor, resting on nothing).
     pub(crate) fn hangs(&self, t: usize) -> bool {
         self.scene

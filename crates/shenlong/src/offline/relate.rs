@@ -28,8 +28,9 @@ pub(super) enum RelKind {
     /// thing that goes on it ("the lamp to the right end of its table"), else beside that
     /// face ("chair 6 to the left end of the table").
     End(usize, f64),
-    /// In, into or inside the target: refused ([`ReadError::Inside`]), since every object
-    /// is a solid box here and the nearest free place would be beside it.
+    /// In, into or inside the target: on the bottom of an open container (a box, a
+    /// basket: `scene::form`), else refused ([`ReadError::Inside`]), since the target is a
+    /// solid box and the nearest free place would be beside it.
     Inside,
 }
 
@@ -423,12 +424,11 @@ impl Reader<'_> {
             .find(|(w, _)| c.words_at_any(r.start, w))
             .map(|(_, k)| *k);
         let relation = match kind {
-            Some(RelKind::Inside) => {
-                return Err(match targets.first() {
-                    Some(&target) => self.inside(&subjects, target),
-                    None => not_read(text, text),
-                })
-            }
+            Some(RelKind::Inside) => match targets.first() {
+                Some(&target) if self.facts.known.open(target) => Relation::In,
+                Some(&target) => return Err(self.inside(&subjects, target)),
+                None => return Err(not_read(text, text)),
+            },
             Some(RelKind::Fixed(rel)) => rel,
             // ("at the left end of it": beside that face.)
             Some(RelKind::End(e, sign)) => Relation::Side(e, sign),
@@ -549,6 +549,7 @@ impl Reader<'_> {
         targets: &[usize],
     ) -> Result<Relation, ReadError> {
         let relation = match r.kind {
+            RelKind::Inside if self.facts.known.open(targets[0]) => Relation::In,
             RelKind::Inside => return Err(self.inside(subjects, targets[0])),
             // "slide X1 right until it touches X2", "push X1 left against X2": along
             // that direction, when X2 lies straight that way.
@@ -618,6 +619,7 @@ impl Reader<'_> {
             ) => Some(Near::Beside(t)),
             (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
             (Relation::Under, &[t, ..]) => Some(Near::Under(t)),
+            (Relation::In, &[t, ..]) => Some(Near::Inside(t)),
             _ => None,
         };
         // "table 4 and its chairs towards the door": a table with what stands drawn up

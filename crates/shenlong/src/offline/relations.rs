@@ -63,6 +63,8 @@ pub(crate) enum Relation {
     On,
     /// Under.
     Under,
+    /// In an open container: on its bottom, within its walls.
+    In,
     /// Against one side: (axis, sign).
     Side(usize, f64),
     /// On the top, at one end: (axis, sign).
@@ -182,6 +184,14 @@ pub(crate) fn vector(
         // bowl), or the floor under what hangs on a wall; whether it fits is checked once
         // placed (`Near::Under`).
         Relation::Under => sum([level.clone(), centre(0), centre(2)]),
+        // On the bottom inside its walls (whether it fits is checked once placed,
+        // `Near::Inside`).
+        Relation::In => sum([
+            along(sub(b("min"), a("min")), 1),
+            scaled_axis(num(crate::scene::form::WALL), 1),
+            centre(0),
+            centre(2),
+        ]),
         Relation::Side(e, sign) => side(s, t, steps, e, sign, level, GAP),
         Relation::OnEnd(e, sign) => {
             // On the top, centred across, its face GAP inside the target's face at that end

@@ -503,7 +503,7 @@ pub fn place_holding(
     let under: Vec<(usize, usize)> = near
         .iter()
         .filter_map(|&(o, n)| match n {
-            Near::Under(t) => Some((o, t)),
+            Near::Under(t) | Near::Inside(t) => Some((o, t)),
             _ => None,
         })
         .flat_map(|(o, t)| {
@@ -525,7 +525,7 @@ pub fn place_holding(
             let near: Vec<(usize, Near)> = near
                 .iter()
                 .copied()
-                .filter(|(_, n)| resolved || !matches!(n, Near::Under(_)))
+                .filter(|(_, n)| resolved || !matches!(n, Near::Under(_) | Near::Inside(_)))
                 .collect();
             check_near(scene, &near).map(|()| placed)
         });
@@ -577,6 +577,10 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
                 check_under(scene, object, above).map_err(refuse)?;
                 continue;
             }
+            Near::Inside(container) => {
+                check_inside(scene, object, container).map_err(refuse)?;
+                continue;
+            }
             Near::On(support) => {
                 if scene.objects[object].support != Some(support) {
                     return Err(refuse(format!(
@@ -625,9 +629,30 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
     Ok(())
 }
 
+/// Whether `object` ended inside the open container `container`: within its walls, above
+/// its bottom, below its rim.
+fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), String> {
+    let a = scene.objects[object].world_aabb();
+    let b = scene.objects[container].world_aabb();
+    if crate::scene::form::clear_inside(&a, &b) {
+        return Ok(());
+    }
+    let (name, target) = (&scene.objects[object].name, &scene.objects[container].name);
+    let room = crate::scene::form::inside(&b).size();
+    let size = a.size();
+    Err(if size.cmple(room).all() {
+        format!("there is no free room left in '{target}' for '{name}'")
+    } else {
+        format!(
+            "'{name}' does not fit in '{target}': its inside is {:.2} × {:.2} × {:.2} m, and '{name}' is {:.2} × {:.2} × {:.2} m",
+            room.x, room.y, room.z, size.x, size.y, size.z
+        )
+    })
+}
+
 /// The objects' kinds as the lexicon says them, for collision resolution: floor furniture
 /// and tops on legs (`ground::kind`).
-/// `under`: (object, table) pairs where the edit put the object under the table.
+/// `under`: (object, target) pairs where the edit put the object under or in the target.
 struct Lexical<'a> {
     under: &'a [(usize, usize)],
 }
@@ -637,9 +662,11 @@ impl collide::Kinds for Lexical<'_> {
         crate::ground::kind::is_floor_bound(scene, i)
     }
 
-    fn under(&self, scene: &Scene, i: usize, j: usize) -> bool {
-        self.under.contains(&(i, j))
-            && crate::ground::kind::form_of(scene, j) == crate::scene::Form::OnLegs
+    fn room(&self, scene: &Scene, i: usize, j: usize) -> Option<crate::scene::Form> {
+        if !self.under.contains(&(i, j)) {
+            return None;
+        }
+        Some(crate::ground::kind::form_of(scene, j)).filter(|f| *f != crate::scene::Form::Solid)
     }
 }
 

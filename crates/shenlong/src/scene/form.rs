@@ -16,6 +16,8 @@ pub enum Form {
     Solid,
     /// A top on four legs, with room below it.
     OnLegs,
+    /// An open container: a bottom and four walls, open at the top, with room inside.
+    Open,
 }
 
 impl Form {
@@ -30,6 +32,7 @@ impl Form {
         {
             "solid" | "box" => Some(Self::Solid),
             "on_legs" | "legs" | "table" => Some(Self::OnLegs),
+            "open" | "container" => Some(Self::Open),
             _ => None,
         }
     }
@@ -40,6 +43,7 @@ impl Form {
         match self {
             Self::Solid => "solid",
             Self::OnLegs => "on_legs",
+            Self::Open => "open",
         }
     }
 }
@@ -92,6 +96,39 @@ pub fn clear_under(a: &Aabb, table: &Aabb) -> bool {
     true
 }
 
+/// The thickness of an open container's walls and bottom, in metres.
+pub const WALL: f64 = 0.02;
+
+/// The room inside the open container whose box is `container`: within its walls, above
+/// its bottom, up to its rim.
+#[must_use]
+pub fn inside(container: &Aabb) -> Aabb {
+    let wall = WALL.min(container.size().min_element() / 4.0);
+    let side = glam::DVec3::new(wall, 0.0, wall);
+    Aabb::new(
+        container.min + side + glam::DVec3::new(0.0, wall, 0.0),
+        container.max - side,
+    )
+}
+
+/// Whether `a` lies within the room inside the open container whose box is `container`.
+#[must_use]
+pub fn clear_inside(a: &Aabb, container: &Aabb) -> bool {
+    let room = inside(container);
+    (a.min - room.min).min_element() >= -TOUCH && (room.max - a.max).min_element() >= -TOUCH
+}
+
+/// Whether `a` stands clear of the solid parts of `b`, an object of form `form`: in the
+/// room under a top on legs, or inside an open container.
+#[must_use]
+pub fn clear_in(a: &Aabb, b: &Aabb, form: Form) -> bool {
+    match form {
+        Form::Solid => false,
+        Form::OnLegs => clear_under(a, b),
+        Form::Open => clear_inside(a, b),
+    }
+}
+
 /// Whether boxes `a` and `b` of forms `fa` and `fb` meet only where one stands in the
 /// room under the other.
 #[must_use]
@@ -134,5 +171,23 @@ mod tests {
         ));
         assert_eq!(Form::from_name("On legs"), Some(Form::OnLegs));
         assert_eq!(Form::from_name("solid"), Some(Form::Solid));
+        // In a box 0.4 × 0.3 × 0.3: within its walls, above its bottom.
+        let toolbox = b([0.0, 0.0, 0.0], [0.4, 0.3, 0.3]);
+        assert!(clear_inside(
+            &b([0.05, 0.02, 0.05], [0.35, 0.25, 0.25]),
+            &toolbox
+        ));
+        assert!(
+            !clear_inside(&b([0.05, 0.0, 0.05], [0.35, 0.25, 0.25]), &toolbox),
+            "through its bottom"
+        );
+        assert!(
+            !clear_inside(&b([0.05, 0.02, 0.05], [0.45, 0.25, 0.25]), &toolbox),
+            "through a wall"
+        );
+        assert!(
+            !clear_inside(&b([0.05, 0.02, 0.05], [0.35, 0.35, 0.25]), &toolbox),
+            "over the rim"
+        );
     }
 }

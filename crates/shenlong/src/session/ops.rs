@@ -260,8 +260,10 @@ fn restore(
         std::slice::from_ref(&group),
         scene.floor(),
         scene.bounds.as_ref(),
-        // Back where it stood: under a table too, if it stood there.
-        &|_, j| crate::ground::kind::form_of(scene, j) == crate::scene::Form::OnLegs,
+        // Back where it stood: under a table or in a box too, if it stood there.
+        &|_, j| {
+            Some(crate::ground::kind::form_of(scene, j)).filter(|f| *f != crate::scene::Form::Solid)
+        },
     );
     if let Some(o) = found
         .iter()

@@ -46,10 +46,11 @@ pub(super) fn no_collision(c: &Ctx<'_>) -> Result<(), Failure> {
         })
         .collect();
     let groups: Vec<Vec<usize>> = moved.iter().map(|&i| vec![i]).collect();
-    // Anything may stand in the room under a table: the judge does not know what was put
-    // under what.
-    let under =
-        |_: usize, j: usize| crate::ground::kind::form_of(c.after, j) == crate::scene::Form::OnLegs;
+    // Anything may stand in the room under a table or in a box: the judge does not know
+    // what was put where.
+    let under = |_: usize, j: usize| {
+        Some(crate::ground::kind::form_of(c.after, j)).filter(|f| *f != crate::scene::Form::Solid)
+    };
     let found = find_collisions(
         &bb,
         &ab,

@@ -72,7 +72,7 @@ fn pushed_into_another_object_it_stops_beside_it_with_the_buffer() {
         &[vec![a]],
         0.0,
         s.bounds.as_ref(),
-        &|_, _| false
+        &|_, _| None
     )
     .is_empty());
 }
