@@ -294,7 +294,7 @@ mod tests {
         for (after, expected) in cases {
             let found =
                 find_collisions(&before, &[after], &[vec![0]], 0.0, Some(&room), &|_, _| {
-                    false
+                    None
                 });
             assert_eq!(found.len(), 1, "{expected:?}");
             assert_eq!(found[0].with, expected);
