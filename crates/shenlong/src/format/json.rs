@@ -444,17 +444,7 @@ fn object_from_raw<'a>(
     let mut object = Object::new_box(name, size, position, rotation, scale)
         .map_err(|e| FormatError::invalid(format!("objects[{i}]: {e}")))?;
     object.labels = labels(text, &o, i)?;
-    if let Some(raw) = o.form {
-        let form = serde_json::from_str::<String>(raw.get())
-            .ok()
-            .and_then(|name| crate::scene::Form::from_name(&name))
-            .ok_or_else(|| {
-                FormatError::invalid(format!(
-                    "objects[{i}].form must be \"solid\", \"on_legs\" (a top on legs, with room below) or \"open\" (an open container)"
-                ))
-            })?;
-        object.form = Some(form);
-    }
+    object.form = o.form.map(|raw| form(raw, i)).transpose()?;
     if let Some(f) = vec3_field(text, o.front, &|| field("front"))? {
         if f.length() < 1e-9 {
             return Err(FormatError::invalid(format!(
@@ -498,6 +488,18 @@ fn scale_of(text: &str, raw: &RawValue, field: &str) -> Result<f64, FormatError>
         )));
     }
     Ok(s)
+}
+
+/// An object's `form` (a documented extension of SPEC §2): what of its box is solid.
+fn form(raw: &RawValue, i: usize) -> Result<crate::scene::Form, FormatError> {
+    serde_json::from_str::<String>(raw.get())
+        .ok()
+        .and_then(|name| crate::scene::Form::from_name(&name))
+        .ok_or_else(|| {
+            FormatError::invalid(format!(
+                "objects[{i}].form must be \"solid\", \"on_legs\" (a top on legs, with room below) or \"open\" (an open container)"
+            ))
+        })
 }
 
 /// The optional words for an object (a documented extension of SPEC §2): `category` (a

@@ -516,31 +516,52 @@ fn explicit(w: &[&str]) -> Option<Amount> {
 }
 
 /// [`repeat`] once any motion verb is set aside.
-fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
-    if let Some(a) = explicit(w) {
-        return Some(FollowUp::Repeat(a));
+/// The whole of what says the last motion again.
+const AGAIN: [&[&str]; 14] = [
+    &["again"],
+    &["once", "more"],
+    &["one", "more", "time"],
+    &["do", "it", "again"],
+    &["do", "that", "again"],
+    &["same", "again"],
+    &["repeat"],
+    &["repeat", "that"],
+    &["keep", "going"],
+    &["another", "bit"],
+    &["go", "on"],
+    &["and", "again"],
+    &["double", "it"],
+    &["double", "that"],
+];
+
+/// The whole of what says the last motion went too far.
+const TOO_FAR: [&[&str]; 17] = [
+    &["not", "so", "far"],
+    &["not", "as", "far"],
+    &["not", "that", "far"],
+    &["not", "so", "much"],
+    &["not", "as", "much"],
+    &["too", "far"],
+    &["too", "much"],
+    &["less"],
+    &["halfway", "back"],
+    &["half", "that"],
+    &["halve", "it"],
+    &["halve", "that"],
+    &["that's", "too", "far"],
+    &["thats", "too", "far"],
+    &["it's", "too", "far"],
+    &["that's", "too", "much"],
+    &["way", "too", "far"],
+];
+
+/// "again", "do the same again", "once again please", "repeat the last move" (the last
+/// motion once more); "not so far", "too much" (back by half of it).
+fn same_again(w: &[&str]) -> Option<Amount> {
+    if AGAIN.contains(&w) {
+        return Some(Amount::Times(1.0));
     }
-    let whole = |options: &[&[&str]]| options.contains(&w);
-    if whole(&[
-        &["again"],
-        &["once", "more"],
-        &["one", "more", "time"],
-        &["do", "it", "again"],
-        &["do", "that", "again"],
-        &["same", "again"],
-        &["repeat"],
-        &["repeat", "that"],
-        &["keep", "going"],
-        &["another", "bit"],
-        &["go", "on"],
-        &["and", "again"],
-        &["double", "it"],
-        &["double", "that"],
-    ]) {
-        return Some(FollowUp::Repeat(Amount::Times(1.0)));
-    }
-    // "do the same again", "once again please", "repeat the last move": "again" or
-    // "repeat" with nothing but words that point at the last motion.
+    // "again" or "repeat" with nothing but words that point at the last motion.
     let filler = |x: &str| {
         matches!(
             x,
@@ -568,31 +589,17 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         )
     };
     if w.iter().any(|x| matches!(*x, "again" | "repeat")) && w.iter().all(|x| filler(x)) {
-        return Some(FollowUp::Repeat(Amount::Times(1.0)));
+        return Some(Amount::Times(1.0));
     }
-    if let Some(amount) = times_as_far(w) {
-        return Some(FollowUp::Repeat(amount));
-    }
-    if whole(&[
-        &["not", "so", "far"],
-        &["not", "as", "far"],
-        &["not", "that", "far"],
-        &["not", "so", "much"],
-        &["not", "as", "much"],
-        &["too", "far"],
-        &["too", "much"],
-        &["less"],
-        &["halfway", "back"],
-        &["half", "that"],
-        &["halve", "it"],
-        &["halve", "that"],
-        &["that's", "too", "far"],
-        &["thats", "too", "far"],
-        &["it's", "too", "far"],
-        &["that's", "too", "much"],
-        &["way", "too", "far"],
-    ]) {
-        return Some(FollowUp::Repeat(Amount::Times(-0.5)));
+    TOO_FAR.contains(&w).then_some(Amount::Times(-0.5))
+}
+
+fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    if let Some(a) = explicit(w)
+        .or_else(|| same_again(w))
+        .or_else(|| times_as_far(w))
+    {
+        return Some(FollowUp::Repeat(a));
     }
     // [a bit] more|further|less [direction …]
     let bit = starts(w, &BIT);
