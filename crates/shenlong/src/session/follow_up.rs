@@ -313,13 +313,12 @@ fn correction(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follo
     // the second object.
     if first == "not" {
         let determiner = |x: &str| matches!(x, "the" | "a" | "an" | "my" | "that" | "this");
-        let second = w.iter().enumerate().skip(2).find(|(_, x)| {
-            if place_word(w[1]) {
-                place_word(x)
-            } else {
-                determiner(x)
-            }
-        });
+        let places = w.get(1).is_some_and(|x| place_word(x));
+        let second =
+            w.iter()
+                .enumerate()
+                .skip(2)
+                .find(|(_, x)| if places { place_word(x) } else { determiner(x) });
         let (k, _) = second?;
         return Some(if place_word(w[k]) {
             FollowUp::InsteadPlace(said(k))

@@ -265,16 +265,14 @@ fn restore(
             Some(crate::ground::kind::form_of(scene, j)).filter(|f| *f != crate::scene::Form::Solid)
         },
     );
-    if let Some(o) = found
-        .iter()
-        .find(|o| matches!(o.with, crate::collide::Obstacle::Object(_)))
-    {
-        let crate::collide::Obstacle::Object(j) = o.with else {
-            unreachable!()
-        };
+    let taken = found.iter().find_map(|o| match o.with {
+        crate::collide::Obstacle::Object(j) => Some((o.object, j)),
+        _ => None,
+    });
+    if let Some((object, j)) = taken {
         let message = format!(
             "'{}' cannot go back where it was: '{}' stands there now",
-            scene.objects[o.object].name, scene.objects[j].name
+            scene.objects[object].name, scene.objects[j].name
         );
         for m in applied.iter().rev() {
             scene.undo(m);
