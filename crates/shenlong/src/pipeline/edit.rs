@@ -541,6 +541,16 @@ pub fn place_holding(
     result.map(|placed| Placed { motions, ..placed })
 }
 
+/// A placement refusal: no free place, or not where it was put.
+fn placement_error(message: String) -> EditError {
+    EditError {
+        message,
+        kind: EditErrorKind::Placement,
+        replies: ReplyCounts::default(),
+        ambiguity: None,
+    }
+}
+
 /// A placement refusal for a held object.
 fn held_error(message: String) -> EditError {
     EditError {
@@ -564,21 +574,16 @@ const BETWEEN_TOLERANCE: f64 = 0.3;
 /// plan to the other object, or, for an object on the floor, to what the other stands on
 /// (a chair put next to a lamp on a desk stands next to the desk).
 fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
-    let refuse = |message: String| EditError {
-        message,
-        kind: EditErrorKind::Placement,
-        replies: ReplyCounts::default(),
-        ambiguity: None,
-    };
+    let refuse = placement_error;
     for &(object, near) in near {
         let other = match near {
             Near::Beside(other) => other,
             Near::Under(above) => {
-                check_under(scene, object, above).map_err(refuse)?;
+                check_under(scene, object, above)?;
                 continue;
             }
             Near::Inside(container) => {
-                check_inside(scene, object, container).map_err(refuse)?;
+                check_inside(scene, object, container)?;
                 continue;
             }
             Near::On(support) => {
@@ -631,7 +636,7 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
 
 /// Whether `object` ended inside the open container `container`: within its walls, above
 /// its bottom, below its rim.
-fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), String> {
+fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), EditError> {
     let a = scene.objects[object].world_aabb();
     let b = scene.objects[container].world_aabb();
     if crate::scene::form::clear_inside(&a, &b) {
@@ -640,14 +645,14 @@ fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), St
     let (name, target) = (&scene.objects[object].name, &scene.objects[container].name);
     let room = crate::scene::form::inside(&b).size();
     let size = a.size();
-    Err(if size.cmple(room).all() {
+    Err(placement_error(if size.cmple(room).all() {
         format!("there is no free room left in '{target}' for '{name}'")
     } else {
         format!(
             "'{name}' does not fit in '{target}': its inside is {:.2} × {:.2} × {:.2} m, and '{name}' is {:.2} × {:.2} × {:.2} m",
             room.x, room.y, room.z, size.x, size.y, size.z
         )
-    })
+    }))
 }
 
 /// The objects' kinds as the lexicon says them, for collision resolution: floor furniture
@@ -675,7 +680,7 @@ impl collide::Kinds for Lexical<'_> {
 /// Every object is a box from its bottom up here, so under furniture that stands on the
 /// floor there is no room: the nearest free place is beside it, and that is refused
 /// rather than done.
-fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), String> {
+fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), EditError> {
     let a = scene.objects[object].world_aabb();
     let b = scene.objects[above].world_aabb();
     let c = a.center();
@@ -694,7 +699,7 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), String>
     } else {
         b.min.y - scene.floor()
     };
-    Err(if on_legs && a.size().y > room {
+    Err(placement_error(if on_legs && a.size().y > room {
         format!(
             "'{name}' cannot go under '{target}': there is {room:.2} m under its top, and '{name}' is {:.2} m tall",
             a.size().y
@@ -716,7 +721,7 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), String>
         format!(
             "'{name}' cannot go under '{target}': Shenlong sees '{target}' as a solid box down to the floor, so there is no room under it; put it beside or on it"
         )
-    })
+    }))
 }
 
 /// Refuses a placement that moved a held object or left one in the air (its support
