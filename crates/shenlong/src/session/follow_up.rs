@@ -228,6 +228,13 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         let said = |from: usize, to: usize| text(from + n, to + n);
         return correction(&w[n..not_at], &said);
     }
+    // "not on the shelf, on the table", "not the sofa, the armchair".
+    if w[0] == "not"
+        && w.len() > 2
+        && (place_word(w[1]) || matches!(w[1], "the" | "a" | "an" | "my"))
+    {
+        return correction(&w, &text);
+    }
     // "… instead", "… rather".
     if w.len() > 1 && matches!(w[w.len() - 1], "instead" | "rather") {
         return correction(&w[..w.len() - 1], &text);
@@ -367,7 +374,11 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
     };
     match w {
         // "undo", "undo what you just did", "undo the last thing": the last change.
-        ["undo", rest @ ..] if !rest.iter().any(|x| crate::ground::words::is_verb(x)) => {
+        ["undo", rest @ ..]
+            if !rest
+                .iter()
+                .any(|x| crate::ground::words::is_verb(x) && !pronoun(x)) =>
+        {
             Some(FollowUp::Undo)
         }
         ["revert" | "cancel" | "scratch", rest @ ..]
@@ -409,9 +420,23 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     let verb = |x: &str| {
         matches!(
             x,
-            "put" | "bring" | "set" | "place" | "return" | "restore" | "get"
+            "put" | "bring" | "set" | "place" | "return" | "restore" | "get" | "reset"
         )
     };
+    // Any motion verb, when where it was follows: "move it back to where it was".
+    if let [first, ..] = w {
+        if !verb(first) && crate::ground::words::is_verb(first) {
+            if let Some(k) = w.iter().position(|&x| x == "back") {
+                let rest = &w[k + 1..];
+                if k >= 1 && !rest.is_empty() && where_it_was(rest) {
+                    return Some(FollowUp::Back(match &w[1..k] {
+                        [] | ["it" | "them" | "that" | "those" | "this" | "these"] => None,
+                        _ => Some(text(1, k)),
+                    }));
+                }
+            }
+        }
+    }
     if let [first, ..] = w {
         if verb(first) {
             let at = w.iter().position(|&x| x == "back");
@@ -781,6 +806,65 @@ mod tests {
             read("the left one", true),
             Some(FollowUp::Instead("the left one".into()))
         );
+    }
+
+    #[test]
+    fn each_kind_is_read_said_other_ways() {
+        use FollowUp::*;
+        let r = |t: &str| read(t, false);
+        let cases: Vec<(&str, FollowUp)> = vec![
+            ("move it a bit more", Repeat(Amount::Bit(1.0))),
+            ("push them further", Repeat(Amount::Times(1.0))),
+            ("another 10 cm", Repeat(Amount::Metres(0.1))),
+            ("20cm more please", Repeat(Amount::Metres(0.2))),
+            ("15 more degrees", Repeat(Amount::Degrees(15.0))),
+            ("that's too far", Repeat(Amount::Times(-0.5))),
+            ("turn it some more", Repeat(Amount::Bit(1.0))),
+            ("and again", Repeat(Amount::Times(1.0))),
+            ("do the same again", Repeat(Amount::Times(1.0))),
+            ("repeat the last move", Repeat(Amount::Times(1.0))),
+            (
+                "actually, onto the sofa",
+                InsteadPlace("onto the sofa".into()),
+            ),
+            (
+                "next to the sofa instead",
+                InsteadPlace("next to the sofa".into()),
+            ),
+            ("no, left", InsteadWay("left".into())),
+            ("no, to the left", InsteadWay("left".into())),
+            (
+                "put it on the table instead",
+                InsteadPlace("on the table".into()),
+            ),
+            ("move the lamp instead", Instead("the lamp".into())),
+            (
+                "not on the shelf, on the table",
+                InsteadPlace("on the table".into()),
+            ),
+            ("no no, on the shelf", InsteadPlace("on the shelf".into())),
+            (
+                "on the shelf, not the table",
+                InsteadPlace("on the shelf".into()),
+            ),
+            ("not the sofa, the armchair", Instead("the armchair".into())),
+            ("the armchair, not the sofa", Instead("the armchair".into())),
+            ("the other one", Instead("the other one".into())),
+            ("wrong chair", Instead("the other chair".into())),
+            ("and the lamp", Also("the lamp".into())),
+            ("and the left lamp too", Also("the left lamp".into())),
+            ("do the lamp too", Also("the lamp".into())),
+            ("same goes for the lamp", Also("the lamp".into())),
+            ("undo the last move", Undo),
+            ("undo what you just did", Undo),
+            ("scratch that", Undo),
+            ("move it back to where it was", Back(None)),
+            ("back to where it was", Back(None)),
+            ("reset the lamp", Back(Some("the lamp".into()))),
+        ];
+        for (text, expected) in cases {
+            assert_eq!(r(text), Some(expected), "{text}");
+        }
     }
 
     #[test]
