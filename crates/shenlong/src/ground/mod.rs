@@ -556,7 +556,7 @@ fn separate_holds(
 }
 
 /// The phrase for the selection: the first "it" / "them" / "the selection" / "the selected
-/// object(s)" before any named object, or `None`.
+/// object(s)" before any named object ([`selection_words`]), or `None`.
 fn selection_phrase(
     text: &str,
     scene: &Scene,
@@ -568,7 +568,38 @@ fn selection_phrase(
         return None;
     }
     let before = phrases.first().map_or(text.len(), |p| p.span.start);
-    let tokens = words::tokenize(&text[..before]);
+    let span = selection_words(&text[..before])?;
+    let names: Vec<String> = selection
+        .iter()
+        .map(|&i| format!("'{}'", scene.objects[i].name))
+        .collect();
+    Some(Phrase {
+        text: text[span.clone()].to_string(),
+        objects: selection.to_vec(),
+        reasons: vec![Reason {
+            kind: ReasonKind::Selection,
+            detail: format!(
+                "\"{}\" is {}: {}",
+                &text[span.clone()],
+                if last_edit {
+                    "what the last edit moved"
+                } else {
+                    "the selection"
+                },
+                error::list(&names)
+            ),
+        }],
+        span,
+    })
+}
+
+/// The bytes of the first words of `text` that point at the selection, or at what was
+/// just moved: "it", "them", "the selection", "the selected object(s)", and "that" (or
+/// "this", "those", "these") as a pronoun — before a preposition, a side, a number or
+/// nothing, not a determiner.
+#[must_use]
+pub fn selection_words(text: &str) -> Option<Range<usize>> {
+    let tokens = words::tokenize(text);
     let word = |k: usize| match tokens.get(k).map(|t| &t.kind) {
         Some(Kind::Word(w)) => w.to_lowercase(),
         _ => String::new(),
@@ -577,8 +608,6 @@ fn selection_phrase(
         let w = word(k);
         let range = match w.as_str() {
             "it" | "them" => k..k + 1,
-            // "move that left": a pronoun, not a determiner, before a preposition, a
-            // number or nothing.
             "that" | "this" | "those" | "these"
                 if tokens.get(k + 1).is_none_or(|t| match &t.kind {
                     Kind::Word(next) => {
@@ -606,29 +635,7 @@ fn selection_phrase(
             }
             _ => continue,
         };
-        let span = tokens[range.start].span.start..tokens[range.end - 1].span.end;
-        let names: Vec<String> = selection
-            .iter()
-            .map(|&i| format!("'{}'", scene.objects[i].name))
-            .collect();
-        return Some(Phrase {
-            text: text[span.clone()].to_string(),
-            span,
-            objects: selection.to_vec(),
-            reasons: vec![Reason {
-                kind: ReasonKind::Selection,
-                detail: format!(
-                    "\"{}\" is {}: {}",
-                    &text[tokens[range.start].span.start..tokens[range.end - 1].span.end],
-                    if last_edit {
-                        "what the last edit moved"
-                    } else {
-                        "the selection"
-                    },
-                    error::list(&names)
-                ),
-            }],
-        });
+        return Some(tokens[range.start].span.start..tokens[range.end - 1].span.end);
     }
     None
 }

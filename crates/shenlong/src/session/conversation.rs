@@ -53,6 +53,26 @@ pub(crate) struct Edited {
     pub motions: Vec<(usize, Similarity)>,
 }
 
+impl Edited {
+    /// The phrase of the instruction that named what the edit moved: its bytes and
+    /// objects.
+    fn acted_phrase(&self) -> Option<&(Range<usize>, Vec<usize>)> {
+        self.phrases
+            .iter()
+            .find(|(_, objects)| objects.iter().any(|o| self.acted.contains(o)))
+    }
+
+    /// The instruction as run, or the refusal saying that the last change was none whose
+    /// `part` can be changed.
+    fn instruction_to_change(&self, part: &str) -> Result<&str, OpError> {
+        self.instruction.as_deref().ok_or_else(|| {
+            refuse(format!(
+                "the last change was not an instruction whose {part} can be changed: say the whole instruction"
+            ))
+        })
+    }
+}
+
 /// The objects one change moved, as they were before it, for "put it back".
 #[derive(Clone, Debug)]
 struct ReturnPoint {
@@ -334,13 +354,9 @@ impl Context {
     /// phrase's head noun, for "one".
     fn replace_acted(&self, np: &str) -> Result<(String, String), OpError> {
         let last = self.last_edit(np)?;
-        let instruction = last.instruction.as_deref().ok_or_else(|| {
-            refuse("the last change was not an instruction to say again for another object: say the whole instruction")
-        })?;
+        let instruction = last.instruction_to_change("object")?;
         let (span, _) = last
-            .phrases
-            .iter()
-            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
+            .acted_phrase()
             .ok_or_else(|| refuse("could not tell which words of the last instruction named what it moved: say the whole instruction"))?;
         let head = head_noun(instruction.get(span.clone()).unwrap_or_default());
         let np = with_head(np, &head);
@@ -435,11 +451,7 @@ impl Context {
         if says_one || said == acted_head {
             return Ok(None);
         }
-        let Some((acted_span, acted)) = last
-            .phrases
-            .iter()
-            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
-        else {
+        let Some((acted_span, acted)) = last.acted_phrase() else {
             return Ok(None);
         };
         let Some((span, target)) = last.phrases.iter().find(|(s, _)| s.start >= acted_span.end)
@@ -520,35 +532,16 @@ impl Context {
     /// direction after what it moved, replaced.
     fn instead_way(&self, way: &str) -> Result<Plan, OpError> {
         let last = self.last_edit(way)?;
-        let instruction = last.instruction.as_deref().ok_or_else(|| {
-            refuse("the last change was not an instruction whose direction can be changed: say the whole instruction")
-        })?;
-        let acted_end = last
-            .phrases
-            .iter()
-            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
-            .map_or(0, |(s, _)| s.end);
-        let mut at = 0;
-        let mut found = None;
-        for word in instruction.split(' ') {
-            let start = at;
-            at += word.len() + 1;
-            let bare = word
-                .trim_matches(|c: char| !c.is_alphanumeric())
-                .to_lowercase();
-            if start >= acted_end && follow_up::is_direction(&bare) {
-                let offset = word.find(|c: char| c.is_alphanumeric()).unwrap_or(0);
-                found = Some((start + offset, start + offset + bare.len()));
-                break;
-            }
-        }
-        let (start, end) = found.ok_or_else(|| {
+        let instruction = last.instruction_to_change("direction")?;
+        let acted_end = last.acted_phrase().map_or(0, |(s, _)| s.end);
+        let found = word_after(instruction, acted_end, follow_up::is_direction);
+        let way_said = found.ok_or_else(|| {
             refuse(format!(
                 "\"{instruction}\" says no way to change: say the whole instruction"
             ))
         })?;
         Ok(Plan::Edit {
-            instruction: splice(instruction, start, end, way)?,
+            instruction: splice(instruction, way_said.start, way_said.end, way)?,
             focus: Vec::new(),
             from_last: false,
             undo_first: true,
@@ -558,19 +551,18 @@ impl Context {
     /// "no, on the shelf": the last edit undone and made again with this destination.
     fn instead_place(&self, pp: &str) -> Result<Plan, OpError> {
         let last = self.last_edit(pp)?;
-        let instruction = last.instruction.as_deref().ok_or_else(|| {
-            refuse("the last change was not an instruction whose destination can be changed: say the whole instruction")
-        })?;
-        let acted_end = last
-            .phrases
-            .iter()
-            .find(|(_, objects)| objects.iter().any(|o| last.acted.contains(o)))
-            .map_or(0, |(s, _)| s.end);
-        let start = preposition_after(instruction, acted_end).ok_or_else(|| {
-            refuse(format!(
-                "\"{instruction}\" says no place to change: say the whole instruction"
-            ))
-        })?;
+        let instruction = last.instruction_to_change("destination")?;
+        let acted_end = last.acted_phrase().map_or(0, |(s, _)| s.end);
+        let place = |w: &str| {
+            crate::ground::words::is_preposition(w) || matches!(w, "next" | "beside" | "behind")
+        };
+        let start = word_after(instruction, acted_end, place)
+            .map(|r| r.start)
+            .ok_or_else(|| {
+                refuse(format!(
+                    "\"{instruction}\" says no place to change: say the whole instruction"
+                ))
+            })?;
         let end = last
             .phrases
             .iter()
@@ -608,22 +600,6 @@ pub(crate) fn nothing_before(instruction: &str) -> OpError {
         "\"{}\" points at nothing yet: nothing was edited or selected before it in this session; name the object",
         instruction.trim()
     ))
-}
-
-/// Whether the instruction speaks of "it", "them" or "that" (a pronoun, not a determiner).
-pub(crate) fn has_pronoun(instruction: &str) -> bool {
-    let words: Vec<String> = instruction
-        .split(|c: char| !c.is_alphanumeric() && c != '\'')
-        .filter(|w| !w.is_empty())
-        .map(str::to_lowercase)
-        .collect();
-    words.iter().enumerate().any(|(k, w)| match w.as_str() {
-        "it" | "them" => true,
-        "that" | "this" | "those" | "these" => words.get(k + 1).is_none_or(|next| {
-            crate::ground::words::is_preposition(next) || next.parse::<f64>().is_ok()
-        }),
-        _ => false,
-    })
 }
 
 /// The acted object that `i` went with in a change: itself, or the acted object its
@@ -706,17 +682,17 @@ fn with_head(np: &str, head: &str) -> String {
         .join(" ")
 }
 
-/// The byte where the first preposition after byte `from` starts.
-fn preposition_after(text: &str, from: usize) -> Option<usize> {
+/// The bytes of the first word of `text` from byte `from` on that passes `test` (lower
+/// case, without punctuation around it).
+fn word_after(text: &str, from: usize, test: impl Fn(&str) -> bool) -> Option<Range<usize>> {
     let mut at = 0;
-    for w in text.split(' ') {
+    for word in text.split(' ') {
         let start = at;
-        at += w.len() + 1;
-        if start >= from
-            && (crate::ground::words::is_preposition(&w.to_lowercase())
-                || matches!(w, "next" | "beside" | "behind"))
-        {
-            return Some(start);
+        at += word.len() + 1;
+        let bare = word.trim_matches(|c: char| !c.is_alphanumeric());
+        let offset = word.find(|c: char| c.is_alphanumeric()).unwrap_or(0);
+        if start >= from && test(&bare.to_lowercase()) {
+            return Some(start + offset..start + offset + bare.len());
         }
     }
     None

@@ -148,7 +148,7 @@ fn edit(
     options: &EditOptions,
 ) -> Result<(Done, Vec<AppliedMotion>), OpError> {
     if focus.is_empty()
-        && conversation::has_pronoun(instruction)
+        && crate::ground::selection_words(instruction).is_some()
         && matches!(
             grounder.ground(instruction, scene),
             Err(crate::ground::GroundError::NoObject { .. })
