@@ -83,7 +83,9 @@ def through_cli(scene_path, tmp_path) -> list:
     return answers
 
 
-def through_http(scene_path) -> list:
+def http_calls(scene_path, calls) -> list:
+    """`(path, body)` POSTed in turn to `shenlong serve` on a copy of the scene: each
+    answer's status and JSON."""
     proc = subprocess.Popen(
         [binary(), "serve", str(scene_path), "--addr", "127.0.0.1:0"],
         stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
@@ -93,35 +95,26 @@ def through_http(scene_path) -> list:
         match = re.search(r"http://(127\.0\.0\.1:\d+)/", line)
         assert match, line
         base = f"http://{match.group(1)}"
-
-        def post(path, body):
+        answers = []
+        for path, body in calls:
             request = urllib.request.Request(
                 base + path, data=json.dumps(body).encode(), method="POST",
                 headers={"Content-Type": "application/json"},
             )
             try:
                 with urllib.request.urlopen(request, timeout=30) as response:
-                    return response.status, json.loads(response.read())
+                    answers.append((response.status, json.loads(response.read())))
             except urllib.error.HTTPError as e:
-                return e.code, json.loads(e.read())
-
-        answers = []
-        for path, body, status in [
-            ("/api/edit", {"instruction": EDIT}, 200),
-            ("/api/edit", {"instruction": REFUSED}, 422),
-            ("/api/apply", {"object": APPLY[0], "expression": APPLY[1]}, 200),
-            ("/api/undo", {}, 200),
-        ]:
-            got, answer = post(path, body)
-            assert got == status, (path, answer)
-            answers.append(answer)
+                answers.append((e.code, json.loads(e.read())))
         return answers
     finally:
         proc.terminate()
         proc.wait(timeout=10)
 
 
-def through_mcp(scene_path) -> list:
+def mcp_calls(scene_path, calls) -> list:
+    """`(tool, arguments)` called in turn on `shenlong mcp` with the official SDK: each
+    result's `is_error` and structured content."""
     mcp = pytest.importorskip("mcp")
     from mcp.client.stdio import StdioServerParameters, stdio_client
 
@@ -131,18 +124,38 @@ def through_mcp(scene_path) -> list:
             async with mcp.ClientSession(read, write) as session:
                 await session.initialize()
                 answers = []
-                for tool, arguments, error in [
-                    ("edit", {"instruction": EDIT}, False),
-                    ("edit", {"instruction": REFUSED}, True),
-                    ("apply", {"object": APPLY[0], "expression": APPLY[1]}, False),
-                    ("undo", {}, False),
-                ]:
+                for tool, arguments in calls:
                     result = await session.call_tool(tool, arguments)
-                    assert result.is_error == error, result.content
-                    answers.append(result.structured_content)
+                    answers.append((result.is_error, result.structured_content))
                 return answers
 
     return asyncio.run(session_answers())
+
+
+def through_http(scene_path) -> list:
+    steps = [
+        ("/api/edit", {"instruction": EDIT}, 200),
+        ("/api/edit", {"instruction": REFUSED}, 422),
+        ("/api/apply", {"object": APPLY[0], "expression": APPLY[1]}, 200),
+        ("/api/undo", {}, 200),
+    ]
+    answers = http_calls(scene_path, [(path, body) for path, body, _ in steps])
+    for (path, _, status), (got, answer) in zip(steps, answers):
+        assert got == status, (path, answer)
+    return [answer for _, answer in answers]
+
+
+def through_mcp(scene_path) -> list:
+    steps = [
+        ("edit", {"instruction": EDIT}, False),
+        ("edit", {"instruction": REFUSED}, True),
+        ("apply", {"object": APPLY[0], "expression": APPLY[1]}, False),
+        ("undo", {}, False),
+    ]
+    answers = mcp_calls(scene_path, [(tool, arguments) for tool, arguments, _ in steps])
+    for (_, _, error), (is_error, content) in zip(steps, answers):
+        assert is_error == error, content
+    return [content for _, content in answers]
 
 
 # -- the comparison ------------------------------------------------------------------
@@ -220,46 +233,11 @@ def chat_turns(scene_path) -> list:
 
 
 def http_turns(scene_path) -> list:
-    proc = subprocess.Popen(
-        [binary(), "serve", str(scene_path), "--addr", "127.0.0.1:0"],
-        stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
-    )
-    try:
-        match = re.search(r"http://(127\.0\.0\.1:\d+)/", proc.stderr.readline())
-        assert match
-        answers = []
-        for turn in TURNS:
-            request = urllib.request.Request(
-                f"http://{match.group(1)}/api/edit", data=json.dumps({"instruction": turn}).encode(),
-                method="POST", headers={"Content-Type": "application/json"},
-            )
-            try:
-                with urllib.request.urlopen(request, timeout=30) as response:
-                    answers.append(json.loads(response.read()))
-            except urllib.error.HTTPError as e:
-                answers.append(json.loads(e.read()))
-        return answers
-    finally:
-        proc.terminate()
-        proc.wait(timeout=10)
+    return [answer for _, answer in http_calls(scene_path, [("/api/edit", {"instruction": t}) for t in TURNS])]
 
 
 def mcp_turns(scene_path) -> list:
-    mcp = pytest.importorskip("mcp")
-    from mcp.client.stdio import StdioServerParameters, stdio_client
-
-    async def session_answers():
-        params = StdioServerParameters(command=binary(), args=["mcp", str(scene_path)])
-        async with stdio_client(params) as (read, write):
-            async with mcp.ClientSession(read, write) as session:
-                await session.initialize()
-                answers = []
-                for turn in TURNS:
-                    result = await session.call_tool("edit", {"instruction": turn})
-                    answers.append(result.structured_content)
-                return answers
-
-    return asyncio.run(session_answers())
+    return [content for _, content in mcp_calls(scene_path, [("edit", {"instruction": t}) for t in TURNS])]
 
 
 def test_every_front_end_holds_the_same_conversation(tmp_path):
