@@ -45,31 +45,10 @@ pub enum FollowUp {
     InsteadWay(String),
 }
 
-/// The words that say a way to move or turn.
+/// The words that say a way to move (the offline reader's own directions) or to turn.
 pub(crate) fn is_direction(w: &str) -> bool {
-    matches!(
-        w,
-        "left"
-            | "right"
-            | "forward"
-            | "forwards"
-            | "backward"
-            | "backwards"
-            | "back"
-            | "up"
-            | "down"
-            | "upward"
-            | "upwards"
-            | "downward"
-            | "downwards"
-            | "clockwise"
-            | "counterclockwise"
-            | "anticlockwise"
-            | "north"
-            | "south"
-            | "east"
-            | "west"
-    )
+    crate::offline::words::direction(w).is_some()
+        || matches!(w, "clockwise" | "counterclockwise" | "anticlockwise")
 }
 
 /// A word of the instruction: its lower-case text and its bytes.
@@ -644,29 +623,8 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
     // "more to the left", "a bit further left": a move of its own, a small one.
     let first = rest[0];
     let direction = crate::ground::words::is_preposition(first)
-        || matches!(
-            first,
-            "left"
-                | "right"
-                | "up"
-                | "down"
-                | "forward"
-                | "forwards"
-                | "back"
-                | "backward"
-                | "backwards"
-                | "away"
-                | "toward"
-                | "towards"
-                | "over"
-                | "north"
-                | "south"
-                | "east"
-                | "west"
-                | "clockwise"
-                | "counterclockwise"
-                | "anticlockwise"
-        );
+        || is_direction(first)
+        || matches!(first, "away" | "toward" | "towards" | "over");
     (sign > 0.0 && direction)
         .then(|| FollowUp::Toward(format!("move it a bit {}", text(at + 1, w.len()))))
 }
