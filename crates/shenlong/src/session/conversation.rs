@@ -73,13 +73,29 @@ impl Edited {
     }
 }
 
+/// An object a change moved: its index, the acted object it went with (itself, or what
+/// carried it), its state before, and its pose after.
+pub(crate) type MovedState = (usize, usize, Object, Similarity);
+
 /// The objects one change moved, as they were before it, for "put it back".
 #[derive(Clone, Debug)]
 struct ReturnPoint {
     id: u64,
-    /// Each object, the acted object it went with (itself, or what carried it), its state
-    /// before, and its pose after.
-    objects: Vec<(usize, usize, Object, Similarity)>,
+    objects: Vec<MovedState>,
+}
+
+/// What `changes` (each object as it was and as it is in `scene`) moved, each with the
+/// one of `acted` it went with.
+pub(crate) fn moved_states(
+    acted: &[usize],
+    changes: &[(usize, Object, Object)],
+    scene: &Scene,
+) -> Vec<MovedState> {
+    changes
+        .iter()
+        .filter(|(_, a, b)| a.pose_differs(b))
+        .map(|(i, a, b)| (*i, group_of(scene, *i, acted), a.clone(), b.similarity()))
+        .collect()
 }
 
 /// What a turn asks the session to do.
@@ -130,27 +146,10 @@ impl Context {
         }));
     }
 
-    /// Remembers a change made: the turn, and (`id`) the objects it moved as they were.
-    pub fn edited(
-        &mut self,
-        turn: Edited,
-        id: Option<u64>,
-        changes: &[(usize, Object, Object)],
-        scene: &Scene,
-    ) {
-        if let Some(id) = id {
-            let objects = changes
-                .iter()
-                .filter(|(_, a, b)| a.pose_differs(b))
-                .map(|(i, a, b)| {
-                    (
-                        *i,
-                        group_of(scene, *i, &turn.acted),
-                        a.clone(),
-                        b.similarity(),
-                    )
-                })
-                .collect();
+    /// Remembers a change made: the turn, and (`moved`: its id and [`moved_states`])
+    /// the objects it moved as they were.
+    pub fn edited(&mut self, turn: Edited, moved: Option<(u64, Vec<MovedState>)>) {
+        if let Some((id, objects)) = moved {
             let returns = Arc::make_mut(&mut self.returns);
             returns.push(ReturnPoint { id, objects });
             if returns.len() > MAX_RETURNS {
@@ -185,7 +184,8 @@ impl Context {
             self.edit = Some(Arc::new(turn));
             self.refusal = None;
         } else {
-            self.edited(turn, Some(id), changes, scene);
+            let states = moved_states(&turn.acted, changes, scene);
+            self.edited(turn, Some((id, states)));
         }
     }
 

@@ -607,11 +607,13 @@ impl Session {
                 i
             });
         }
-        let kept = changes.clone();
+        // What it moved, as it was, for "put it back": read before the history takes the
+        // changes.
+        let states = (!changes.is_empty())
+            .then(|| conversation::moved_states(&turn.acted, &changes, &self.file.scene));
         let change = self.record(changes, kind, &done.text);
-        if !kept.is_empty() {
-            self.context
-                .edited(turn, change.id, &kept, &self.file.scene);
+        if let Some(states) = states {
+            self.context.edited(turn, change.id.map(|id| (id, states)));
         }
         Outcome {
             operation: done.operation,
