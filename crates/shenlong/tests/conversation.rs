@@ -294,6 +294,109 @@ fn a_bare_phrase_correcting_an_edit_with_a_destination_is_read_by_kind_and_size(
     }
 }
 
+#[test]
+fn several_changes_are_taken_back_together() {
+    for how in BOTH {
+        let mut s = living_room();
+        let e = say(&mut s, how, "undo both").unwrap_err();
+        assert!(e.message.contains("nothing has been moved"), "{}", e.message);
+        let (armchair, ottoman, magazine) =
+            (at(&s, "armchair"), at(&s, "ottoman"), at(&s, "magazine"));
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "move the ottoman 20 cm forward").unwrap();
+        let e = say(&mut s, how, "undo the last 3 changes").unwrap_err();
+        assert!(e.message.contains("only 2 changes"), "{}", e.message);
+        say(&mut s, how, "undo both").unwrap();
+        assert!(close(at(&s, "armchair"), armchair), "{how:?}");
+        assert!(close(at(&s, "ottoman"), ottoman), "{how:?}");
+        assert!(close(at(&s, "magazine"), magazine), "carried {how:?}");
+        // Everything, said as a return.
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "a bit more").unwrap();
+        say(&mut s, how, "move the ottoman 20 cm forward").unwrap();
+        say(&mut s, how, "put everything back where it was").unwrap();
+        assert!(close(at(&s, "armchair"), armchair), "{how:?}");
+        assert!(close(at(&s, "ottoman"), ottoman), "{how:?}");
+    }
+}
+
+#[test]
+fn the_other_one_and_both_are_put_back_from_what_the_session_moved() {
+    for how in BOTH {
+        let mut s = living_room();
+        let (armchair, ottoman) = (at(&s, "armchair"), at(&s, "ottoman"));
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "move the ottoman 20 cm forward").unwrap();
+        say(&mut s, how, "put the ottoman back").unwrap();
+        assert!(!close(at(&s, "armchair"), armchair), "{how:?}");
+        say(&mut s, how, "now put the other one back too").unwrap();
+        assert!(close(at(&s, "armchair"), armchair), "{how:?}");
+        assert!(close(at(&s, "ottoman"), ottoman), "{how:?}");
+        let mut s = living_room();
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "move the ottoman 20 cm forward").unwrap();
+        say(&mut s, how, "put them both back").unwrap();
+        assert!(close(at(&s, "armchair"), armchair), "{how:?}");
+        assert!(close(at(&s, "ottoman"), ottoman), "{how:?}");
+    }
+}
+
+#[test]
+fn what_is_put_back_onto_something_moved_since_lands_on_it() {
+    for how in BOTH {
+        let mut s = living_room();
+        let (ottoman, magazine) = (at(&s, "ottoman"), at(&s, "magazine"));
+        say(&mut s, how, "put the magazine on the sofa").unwrap();
+        say(&mut s, how, "move the ottoman 20 cm to the left").unwrap();
+        say(&mut s, how, "put the magazine back where it was").unwrap();
+        let shift = at(&s, "ottoman") - ottoman;
+        assert!(close(shift, DVec3::X * -0.2), "{how:?}");
+        assert!(close(at(&s, "magazine"), magazine + shift), "{how:?}");
+        let scene = &s.file.scene;
+        let (m, o) = (
+            scene.find("magazine").unwrap(),
+            scene.find("ottoman").unwrap(),
+        );
+        assert_eq!(scene.objects[m].support, Some(o), "{how:?}");
+    }
+}
+
+#[test]
+fn the_other_table_is_another_destination() {
+    for how in BOTH {
+        let mut s = living_room();
+        say(&mut s, how, "put the book on the tv stand").unwrap();
+        let e = say(&mut s, how, "no, the other table").unwrap_err();
+        assert!(e.message.contains("went to no table"), "{}", e.message);
+        let path = Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples/office.json");
+        let mut s = Session::new(SceneFile::load(&path).unwrap(), None);
+        say(&mut s, how, "put the coffee cup on the desk 2").unwrap();
+        say(&mut s, how, "no, the other desk").unwrap();
+        let scene = &s.file.scene;
+        let (cup, desk) = (
+            scene.find("coffee cup").unwrap(),
+            scene.find("desk").unwrap(),
+        );
+        assert_eq!(scene.objects[cup].support, Some(desk), "{how:?}");
+    }
+}
+
+#[test]
+fn a_way_and_an_amount_alone_move_what_was_moved() {
+    for how in BOTH {
+        let mut s = living_room();
+        let start = at(&s, "armchair");
+        say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut s, how, "yes, 10 cm to the left").unwrap();
+        assert!(close(at(&s, "armchair"), start + DVec3::X * 0.2), "{how:?}");
+        let e = say(&mut s, how, "back a bit").unwrap_err();
+        assert!(e.message.contains("two ways"), "{}", e.message);
+        // "no, put it back" is a return, never a move backwards.
+        say(&mut s, how, "no, put it back").unwrap();
+        assert!(close(at(&s, "armchair"), start + DVec3::X * 0.3), "{how:?}");
+    }
+}
+
 mod any_turns {
     use super::*;
     use proptest::prelude::*;

@@ -423,7 +423,11 @@ impl Grounder {
             Err(e) => return Err(e),
         };
         if let Some(phrase) = selection_phrase(text, scene, selection, &phrases, last_edit) {
-            phrases.insert(0, phrase);
+            let at = phrases
+                .iter()
+                .position(|p| p.span.start > phrase.span.start)
+                .unwrap_or(phrases.len());
+            phrases.insert(at, phrase);
         }
         if phrases.is_empty() {
             if let Some(word) = self.absent_kind(text) {
@@ -568,7 +572,7 @@ fn selection_phrase(
         return None;
     }
     let before = phrases.first().map_or(text.len(), |p| p.span.start);
-    let span = selection_words(&text[..before])?;
+    let span = selection_words(&text[..before]).or_else(|| pronoun_as_place(text, phrases))?;
     let names: Vec<String> = selection
         .iter()
         .map(|&i| format!("'{}'", scene.objects[i].name))
@@ -593,6 +597,29 @@ fn selection_phrase(
     })
 }
 
+/// The pronoun of "put the lamp on it": a verb's one object, then a place whose object is
+/// "it" or "them" — which cannot be that object itself, so it is the selection. Its bytes.
+fn pronoun_as_place(text: &str, phrases: &[Phrase]) -> Option<Range<usize>> {
+    let [object] = phrases else {
+        return None;
+    };
+    let from = object.span.end;
+    let tokens = words::tokenize(text.get(from..)?);
+    let word = |k: usize| match tokens.get(k).map(|t| &t.kind) {
+        Some(Kind::Word(w)) => w.to_lowercase(),
+        _ => String::new(),
+    };
+    let mut k = 0;
+    // "on", "onto", "next to", "on top of", "in front of".
+    while k < 4 && (words::is_preposition(&word(k)) || matches!(word(k).as_str(), "top" | "front"))
+    {
+        k += 1;
+    }
+    let place = k > 0 && !matches!(word(0).as_str(), "of" | "with" | "as" | "like" | "than");
+    (place && matches!(word(k).as_str(), "it" | "them"))
+        .then(|| from + tokens[k].span.start..from + tokens[k].span.end)
+}
+
 /// The bytes of the first words of `text` that point at the selection, or at what was
 /// just moved: "it", "them", "the selection", "the selected object(s)", and "that" (or
 /// "this", "those", "these") as a pronoun — before a preposition, a side, a number or
@@ -607,7 +634,26 @@ pub fn selection_words(text: &str) -> Option<Range<usize>> {
     for k in 0..tokens.len() {
         let w = word(k);
         let range = match w.as_str() {
-            "it" | "them" => k..k + 1,
+            // "both of them", "all of them", "them both", "them all".
+            "them" => {
+                let quantified = word(k.wrapping_sub(1)) == "of"
+                    && matches!(
+                        word(k.wrapping_sub(2)).as_str(),
+                        "both" | "all" | "each" | "two" | "three"
+                    );
+                let start = match (quantified, word(k.wrapping_sub(3)).as_str()) {
+                    (true, "the") => k - 3,
+                    (true, _) => k - 2,
+                    (false, _) => k,
+                };
+                let end = if matches!(word(k + 1).as_str(), "both" | "all") {
+                    k + 2
+                } else {
+                    k + 1
+                };
+                start..end
+            }
+            "it" => k..k + 1,
             "that" | "this" | "those" | "these"
                 if tokens.get(k + 1).is_none_or(|t| match &t.kind {
                     Kind::Word(next) => {

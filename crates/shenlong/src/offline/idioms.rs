@@ -428,21 +428,27 @@ fn other_end(c: &mut Clause) {
     }
 }
 
-/// Pointing is facing: `point X1 at X2` / `aim X1 towards X2` → `turn X1 face X2`; `points
-/// at`, `pointing at`, `point at` → `faces`, `facing`, `face`.
+/// Pointing is facing: `point X1 at X2` / `aim X1 towards X2` / `face X1 to X2` / `orient
+/// X1 toward X2` → `turn X1 face X2`; `points at`, `pointing at`, `point at` → `faces`,
+/// `facing`, `face`.
 fn pointing(c: &mut Clause) {
-    let at = ["at", "towards", "toward"];
     for i in 0..c.len() {
         let Some(w) = c.word(i).filter(|_| c.free(i)) else {
             continue;
         };
         let facing = match w {
-            "point" | "aim" => "face",
+            "point" | "aim" | "face" | "orient" | "angle" => "face",
             "points" | "aims" => "faces",
             "pointing" | "aiming" | "pointed" | "aimed" => "facing",
             _ => continue,
         };
-        if one_of(c, i + 1, &at) {
+        // A verb of facing takes its target after "to" too ("face the chair to the tv").
+        let at: &[&str] = if matches!(w, "face" | "orient" | "angle") {
+            &["at", "towards", "toward", "to"]
+        } else {
+            &["at", "towards", "toward"]
+        };
+        if w != "face" && one_of(c, i + 1, at) {
             // `faces at X2` reads as `faces the X2`: the article is what the reader of
             // facing skips before its target.
             c.replace(i, facing);
@@ -458,7 +464,7 @@ fn pointing(c: &mut Clause) {
         }
         // (The verb first: only discourse read before it.)
         let first = (0..i).all(|j| !c.free(j));
-        if k > i + 1 && first && one_of(c, k, &at) {
+        if k > i + 1 && first && one_of(c, k, at) {
             c.replace(i, "turn");
             c.replace(k, "face");
             return;

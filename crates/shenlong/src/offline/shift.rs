@@ -37,8 +37,12 @@ fn directions(c: &mut Clause) -> Vec<Direction> {
 }
 
 /// The amount of a move, read: the length named; with "further", "farther" or "more" and
-/// none named, a bit ([`amounts::BIT_METRES`]).
+/// none named, a bit ([`amounts::BIT_METRES`]); with a verb that is itself a small move
+/// ("nudge", "budge", "scoot", "inch") and none named, a bit too.
 fn amount(c: &mut Clause) -> Option<Length> {
+    let small_verb = ["nudge", "budge", "scoot", "scooch", "scootch", "inch", "jiggle"]
+        .iter()
+        .any(|w| c.find(&[w]).is_some());
     // "further left", "a bit more to the right": a bit.
     let more = ["further", "farther", "more"]
         .iter()
@@ -49,6 +53,9 @@ fn amount(c: &mut Clause) -> Option<Length> {
         if amount.is_none() {
             amount = Some(Length::Metres(amounts::BIT_METRES));
         }
+    }
+    if small_verb && amount.is_none() {
+        amount = Some(Length::Metres(amounts::BIT_METRES));
     }
     amount
 }
@@ -198,6 +205,8 @@ mod tests {
         assert!(close(m("move X1 1 ft up"), [0.0, 0.3048, 0.0]));
         assert!(close(m("move X1 back"), [0.0, 0.0, -1.0]));
         assert!(close(m("move X1 a bit further left"), [-0.1, 0.0, 0.0]));
+        assert!(close(m("nudge X1 left"), [-0.1, 0.0, 0.0]));
+        assert!(close(m("nudge X1 30 cm left"), [-0.3, 0.0, 0.0]));
         assert!(close(m("move X1 further left"), [-0.1, 0.0, 0.0]));
         assert!(close(m("move X1 to the lfet"), [-1.0, 0.0, 0.0]));
     }

@@ -6,7 +6,7 @@
 //! line that says why.
 
 use super::error::{Choices, ErrorKind, OpError};
-use super::follow_up::{self, Amount, FollowUp};
+use super::follow_up::{self, Amount, FollowUp, Steps, Which};
 use crate::ground::Grounder;
 use crate::scene::{Object, Scene};
 use cga::Similarity;
@@ -74,8 +74,9 @@ impl Edited {
 }
 
 /// An object a change moved: its index, the acted object it went with (itself, or what
-/// carried it), its state before, and its pose after.
-pub(crate) type MovedState = (usize, usize, Object, Similarity);
+/// carried it), its state before, its pose after, and the pose then of what it rested on
+/// before (so that it goes back onto it where that has moved since).
+pub(crate) type MovedState = (usize, usize, Object, Similarity, Option<Similarity>);
 
 /// The objects one change moved, as they were before it, for "put it back".
 #[derive(Clone, Debug)]
@@ -91,10 +92,19 @@ pub(crate) fn moved_states(
     changes: &[(usize, Object, Object)],
     scene: &Scene,
 ) -> Vec<MovedState> {
+    let pose_before = |s: usize| {
+        changes
+            .iter()
+            .find(|(j, _, _)| *j == s)
+            .map_or_else(|| scene.objects[s].similarity(), |(_, a, _)| a.similarity())
+    };
     changes
         .iter()
         .filter(|(_, a, b)| a.pose_differs(b))
-        .map(|(i, a, b)| (*i, group_of(scene, *i, acted), a.clone(), b.similarity()))
+        .map(|(i, a, b)| {
+            let support = a.support.filter(|&s| s < scene.objects.len()).map(pose_before);
+            (*i, group_of(scene, *i, acted), a.clone(), b.similarity(), support)
+        })
         .collect()
 }
 
@@ -226,7 +236,9 @@ impl Context {
                 Ok(plain(text))
             }
             FollowUp::Undo => Ok(Plan::Undo),
-            FollowUp::Back(object) => self.back(object.as_deref(), selected, scene, grounder),
+            FollowUp::UndoMany(steps) => self.undo_many(steps, scene),
+            FollowUp::Back(Which::All) => self.undo_many(Steps::All, scene),
+            FollowUp::Back(which) => self.back(&which, selected, scene, grounder),
             FollowUp::Also(np) => {
                 let (text, head) = self.replace_acted(&np)?;
                 // "the other one too": the one other object the noun names.
@@ -245,6 +257,10 @@ impl Context {
             FollowUp::Instead(np) => self.instead(&np, scene, grounder),
             FollowUp::InsteadPlace(pp) => self.instead_place(&pp),
             FollowUp::InsteadWay(way) => self.instead_way(&way),
+            FollowUp::Unclear(_) if self.focus().is_empty() && selected.is_empty() => {
+                Err(nothing_before(instruction))
+            }
+            FollowUp::Unclear(why) => Err(refuse(why)),
         }
     }
 
@@ -306,19 +322,131 @@ impl Context {
             .collect())
     }
 
+    /// "Undo both", "undo everything": each object the last `steps` changes moved, as it
+    /// was before the first of them.
+    fn undo_many(&self, steps: Steps, scene: &Scene) -> Result<Plan, OpError> {
+        let total = self.returns.len();
+        let n = match steps {
+            Steps::All => total,
+            Steps::Last(n) => n,
+        };
+        if total == 0 {
+            return Err(refuse(
+                "nothing has been moved in this session: there is nothing to take back",
+            ));
+        }
+        if n > total {
+            return Err(refuse(format!(
+                "only {total} change{} of this session can be taken back, not {n}: say \"undo everything\" for all of them",
+                if total == 1 { "" } else { "s" }
+            )));
+        }
+        let mut states: Vec<(usize, Object)> = Vec::new();
+        for point in &self.returns[total - n..] {
+            for (i, _, before, _, _) in &point.objects {
+                if !states.iter().any(|(j, _)| j == i) {
+                    states.push((*i, before.clone()));
+                }
+            }
+        }
+        let named = states.len();
+        if states.iter().all(|(i, s)| !scene.objects[*i].pose_differs(s)) {
+            return Err(refuse("everything is already where it was"));
+        }
+        Ok(Plan::Restore { states, named })
+    }
+
+    /// The objects moved themselves in the session, the most recent first, each once.
+    fn moved_in_session(&self) -> Vec<usize> {
+        let mut out: Vec<usize> = Vec::new();
+        for point in self.returns.iter().rev() {
+            for (i, with, _, _, _) in &point.objects {
+                if i == with && !out.contains(i) {
+                    out.push(*i);
+                }
+            }
+        }
+        out
+    }
+
+    /// The objects "put … back" means, by `which`.
+    fn back_targets(
+        &self,
+        which: &Which,
+        selected: &[usize],
+        scene: &Scene,
+        grounder: &Grounder,
+    ) -> Result<Vec<usize>, OpError> {
+        let moved = self.moved_in_session();
+        let names = |objects: &[usize]| {
+            objects
+                .iter()
+                .take(8)
+                .map(|&i| format!("'{}'", scene.objects[i].name))
+                .collect::<Vec<_>>()
+                .join(", ")
+        };
+        Ok(match which {
+            Which::Named(words) => ground_phrase(words, scene, grounder)?,
+            Which::Last | Which::All if !selected.is_empty() => selected.to_vec(),
+            Which::Last | Which::All => self.last_edit("put it back")?.acted.clone(),
+            Which::Other => {
+                let others: Vec<usize> = moved
+                    .iter()
+                    .copied()
+                    .filter(|o| !self.focus().contains(o))
+                    .collect();
+                match others.as_slice() {
+                    [one] => vec![*one],
+                    [] => {
+                        return Err(refuse(
+                            "\"the other one\": nothing else has been moved in this session",
+                        ))
+                    }
+                    many => {
+                        return Err(refuse(format!(
+                            "\"the other one\" could be any of {} objects moved in this session: {}; name it",
+                            many.len(),
+                            names(many)
+                        )))
+                    }
+                }
+            }
+            Which::Both => match moved.as_slice() {
+                [a, b] => vec![*a, *b],
+                [_] | [] => {
+                    return Err(refuse(
+                        "\"both\": only one object has been moved in this session",
+                    ))
+                }
+                many => {
+                    return Err(refuse(format!(
+                        "\"both\" of which? {} objects have been moved in this session: {}; name them",
+                        many.len(),
+                        names(many)
+                    )))
+                }
+            },
+            Which::First => {
+                let Some(first) = moved.last() else {
+                    return Err(refuse(
+                        "nothing has been moved in this session: there is nothing to put back",
+                    ));
+                };
+                vec![*first]
+            }
+        })
+    }
+
     /// Where to put objects back: the state each had before the last change that moved it.
     fn back(
         &self,
-        object: Option<&str>,
+        which: &Which,
         selected: &[usize],
         scene: &Scene,
         grounder: &Grounder,
     ) -> Result<Plan, OpError> {
-        let targets: Vec<usize> = match object {
-            Some(words) => ground_phrase(words, scene, grounder)?,
-            None if !selected.is_empty() => selected.to_vec(),
-            None => self.last_edit("put it back")?.acted.clone(),
-        };
+        let targets = self.back_targets(which, selected, scene, grounder)?;
         let mut named: Vec<(usize, Object)> = Vec::new();
         let mut carried: Vec<(usize, Object)> = Vec::new();
         for t in targets {
@@ -331,9 +459,9 @@ impl Context {
                     "'{}' has not been moved in this session: there is no earlier place to put it back to",
                     scene.objects[t].name
                 )))?;
-            for (i, with, before, after) in &point.objects {
+            for (i, with, before, after, support) in &point.objects {
                 if *i == t {
-                    named.push((*i, before.clone()));
+                    named.push((*i, onto_support(before, *support, scene)));
                 } else if *with == t && scene.objects[*i].similarity() == *after {
                     // What went with it, and has not moved since.
                     carried.push((*i, before.clone()));
@@ -359,7 +487,7 @@ impl Context {
             .acted_phrase()
             .ok_or_else(|| refuse("could not tell which words of the last instruction named what it moved: say the whole instruction"))?;
         let head = head_noun(instruction.get(span.clone()).unwrap_or_default());
-        let np = with_head(np, &head);
+        let np = with_determiner(&with_head(np, &head));
         Ok((splice(instruction, span.start, span.end, &np)?, head))
     }
 
@@ -414,7 +542,11 @@ impl Context {
             });
         }
         let (text, head) = self.replace_acted(np)?;
-        let text = if mentions_other(np) {
+        let said = head_noun(np);
+        let text = if mentions_other(np) && !matches!(said.as_str(), "other" | "") && said != head
+        {
+            self.other_destination(np, &said, scene, grounder)?
+        } else if mentions_other(np) {
             self.other(&head, scene, grounder)?
         } else if let Some(text) = self.destination_named(np, &head, scene, grounder)? {
             text
@@ -494,6 +626,51 @@ impl Context {
         )))
     }
 
+    /// "no, the other table" after "put the vase on the coffee table": the last
+    /// instruction with its destination replaced by the one other object `noun` names;
+    /// refused when `noun` is not what the destination was, or names none or several
+    /// others.
+    fn other_destination(
+        &self,
+        np: &str,
+        noun: &str,
+        scene: &Scene,
+        grounder: &Grounder,
+    ) -> Result<String, OpError> {
+        let last = self.last_edit(np)?;
+        let instruction = last.instruction_to_change("destination")?;
+        let acted_end = last.acted_phrase().map_or(0, |(s, _)| s.end);
+        let named = ground_all(noun, scene, grounder);
+        let destination = last
+            .phrases
+            .iter()
+            .find(|(s, objects)| s.start >= acted_end && objects.iter().any(|o| named.contains(o)));
+        let Some((span, target)) = destination else {
+            return Err(refuse(format!(
+                "\"{np}\": the last edit went to no {noun}, and moved no {noun}; name the object"
+            )));
+        };
+        let others: Vec<usize> = named
+            .into_iter()
+            .filter(|o| !target.contains(o) && !last.acted.contains(o))
+            .collect();
+        match others.as_slice() {
+            [one] => splice(instruction, span.start, span.end, &quoted(&scene.objects[*one].name)),
+            [] => Err(refuse(format!(
+                "there is no other {noun} than the one it went to"
+            ))),
+            many => Err(refuse(format!(
+                "\"{np}\" could be any of {} {noun}s: {}; name it",
+                many.len(),
+                many.iter()
+                    .take(8)
+                    .map(|&i| format!("'{}'", scene.objects[i].name))
+                    .collect::<Vec<_>>()
+                    .join(", ")
+            ))),
+        }
+    }
+
     /// "no, the other one": the last instruction on the one other object its phrase's
     /// head noun names.
     fn other(&self, head: &str, scene: &Scene, grounder: &Grounder) -> Result<String, OpError> {
@@ -504,15 +681,7 @@ impl Context {
             .filter(|o| !last.acted.contains(o))
             .collect();
         match others.as_slice() {
-            [one] => {
-                let name = &scene.objects[*one].name;
-                let quoted = if name.contains('"') {
-                    format!("'{name}'")
-                } else {
-                    format!("\"{name}\"")
-                };
-                Ok(self.replace_acted(&quoted)?.0)
-            }
+            [one] => Ok(self.replace_acted(&quoted(&scene.objects[*one].name))?.0),
             [] => Err(refuse(format!(
                 "there is no other {head} than the one just moved"
             ))),
@@ -580,10 +749,61 @@ impl Context {
     }
 }
 
+/// `np` with "the" before it when it starts with a bare noun or modifier ("right
+/// speaker" → "the right speaker"), so that it reads as a phrase wherever it is put.
+fn with_determiner(np: &str) -> String {
+    let first = np
+        .split_whitespace()
+        .next()
+        .unwrap_or_default()
+        .to_lowercase();
+    let determined = matches!(
+        first.as_str(),
+        "the" | "a" | "an" | "my" | "that" | "this" | "those" | "these" | "both" | "all"
+            | "every" | "each" | "its" | "their" | "his" | "her" | "our" | "your" | "some"
+            | "it" | "them"
+    ) || !first.starts_with(char::is_alphabetic);
+    if determined {
+        np.to_string()
+    } else {
+        format!("the {np}")
+    }
+}
+
+/// An object's name quoted for an instruction, so that it is read as that name.
+fn quoted(name: &str) -> String {
+    if name.contains('"') {
+        format!("'{name}'")
+    } else {
+        format!("\"{name}\"")
+    }
+}
+
 /// Whether a phrase says "other" ("the other one").
 fn mentions_other(np: &str) -> bool {
     np.split_whitespace()
         .any(|w| w.eq_ignore_ascii_case("other"))
+}
+
+/// `before`, moved with what it rested on where that has moved since (`then`: its pose
+/// then): "put the magazine back" after the ottoman under it moved puts it back on the
+/// ottoman, where it lay on it.
+fn onto_support(before: &Object, then: Option<Similarity>, scene: &Scene) -> Object {
+    let (Some(s), Some(then)) = (before.support, then) else {
+        return before.clone();
+    };
+    let Some(support) = scene.objects.get(s) else {
+        return before.clone();
+    };
+    let now = support.similarity();
+    if now == then {
+        return before.clone();
+    }
+    let motion = now.compose(&then.inverse());
+    before.as_it_was(
+        motion.compose(&before.similarity()),
+        (before.support, before.support_from_file),
+    )
 }
 
 /// `text` with bytes `start..end` replaced by `with`.

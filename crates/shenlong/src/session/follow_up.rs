@@ -21,6 +21,34 @@ pub enum Amount {
     Degrees(f64),
 }
 
+/// How many of the session's last changes a follow-up takes back.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Steps {
+    /// The last this many.
+    Last(usize),
+    /// Every change of the session.
+    All,
+}
+
+/// What "put … back" puts back.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Which {
+    /// What the last edit moved ("put it back").
+    Last,
+    /// The objects a phrase names ("put the lamp back").
+    Named(String),
+    /// The one object moved in the session that the last turn did not act on ("put the
+    /// other one back").
+    Other,
+    /// The last two objects moved ("put them both back").
+    Both,
+    /// The first object moved in the session ("put the first one back").
+    First,
+    /// Everything moved in the session, where it was at its start ("put everything
+    /// back").
+    All,
+}
+
 /// A follow-up, and the words it carries.
 #[derive(Clone, Debug, PartialEq)]
 pub enum FollowUp {
@@ -30,9 +58,11 @@ pub enum FollowUp {
     Toward(String),
     /// The last change taken back.
     Undo,
-    /// Objects put back where they were before the edit that last moved them; `None`:
-    /// what the last edit moved ("put it back").
-    Back(Option<String>),
+    /// Several changes taken back ("undo both", "undo the last three", "undo
+    /// everything").
+    UndoMany(Steps),
+    /// Objects put back where they were before the edit that last moved them.
+    Back(Which),
     /// The last instruction for other objects too (the phrase naming them).
     Also(String),
     /// The last instruction on another object (the phrase naming it), the last edit undone
@@ -43,6 +73,8 @@ pub enum FollowUp {
     InsteadPlace(String),
     /// The last instruction the other way ("no, left"), the last edit undone first.
     InsteadWay(String),
+    /// A follow-up that reads two ways, and the refusal that says which words to use.
+    Unclear(String),
 }
 
 /// The words that say a way to move (the offline reader's own directions) or to turn.
@@ -87,7 +119,7 @@ fn words(text: &str) -> Vec<Word> {
 }
 
 /// Words that only say a follow-up is one ("no", "ok then", "I meant").
-const CORRECTING: [&[&str]; 18] = [
+const CORRECTING: [&[&str]; 23] = [
     &["no", "i", "meant"],
     &["no", "i", "mean"],
     &["i", "meant"],
@@ -95,6 +127,7 @@ const CORRECTING: [&[&str]; 18] = [
     &["i", "said"],
     &["not", "that", "one"],
     &["wrong", "one"],
+    &["not", "this", "one"],
     &["make", "that"],
     &["no", "wait"],
     &["no", "sorry"],
@@ -105,8 +138,62 @@ const CORRECTING: [&[&str]; 18] = [
     &["rather"],
     &["instead"],
     &["nope"],
+    &["nah"],
     &["no"],
+    &["try"],
+    &["how", "about"],
+    &["what", "about"],
 ];
+
+/// Words that only acknowledge the turn before ("yes, more", "ok good, now a bit left").
+fn acknowledging(w: &str) -> bool {
+    matches!(
+        w,
+        "yes"
+            | "yeah"
+            | "yep"
+            | "yup"
+            | "ok"
+            | "okay"
+            | "k"
+            | "good"
+            | "great"
+            | "nice"
+            | "perfect"
+            | "cool"
+            | "lovely"
+            | "better"
+            | "hmm"
+            | "hm"
+            | "mm"
+            | "alright"
+            | "fine"
+            | "that's"
+            | "thats"
+            | "looks"
+    )
+}
+
+/// Whether the words hold a verb that starts a clause: the first word, one after "and",
+/// "then", "to", "also", "please", "just" or "now", or one before what it acts on ("…,
+/// put the lamp"); "the tv stand" ends on a noun.
+fn verb_clause(w: &[&str]) -> bool {
+    w.iter().enumerate().any(|(i, x)| {
+        crate::ground::words::is_verb(x)
+            && (i == 0
+                || matches!(
+                    w[i - 1],
+                    "and" | "then" | "to" | "also" | "please" | "just" | "now"
+                )
+                || w.get(i + 1).is_some_and(|next| {
+                    matches!(
+                        *next,
+                        "the" | "a" | "an" | "my" | "it" | "them" | "this" | "that" | "these"
+                            | "those" | "all" | "both" | "everything"
+                    )
+                }))
+    })
+}
 
 /// Small amounts ("a bit", "slightly").
 const BIT: [&[&str]; 16] = [
@@ -170,6 +257,10 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
     while end < lower.len() && kept(lower[end]) {
         end += 1;
     }
+    // "yes, more", "ok good, now a bit to the left": the acknowledgement set aside.
+    while start < end && acknowledging(lower[start]) {
+        start += 1;
+    }
     let words = &all[start..end];
     let w: Vec<&str> = lower[start..end].to_vec();
     if w.is_empty() {
@@ -205,6 +296,25 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         && !matches!(w.get(1), Some(&("it" | "them" | "that" | "this")));
     if n > 0 || (not_at < w.len() && !whole_instruction) {
         let said = |from: usize, to: usize| text(from + n, to + n);
+        // "no, put it back", "nah, undo", "no, a bit less": a follow-up of its own after
+        // the opener, not a correction.
+        let rest = &w[n..];
+        // "not that one", "wrong one" alone: the other one.
+        if rest.is_empty() && matches!(
+                &w[..n],
+                [.., "not", "that" | "this", "one"] | [.., "wrong", "one"]
+            )
+        {
+            return Some(FollowUp::Instead("the other one".into()));
+        }
+        if n > 0 {
+            if let Some(own) = undo(rest)
+                .or_else(|| back(rest, &said))
+                .or_else(|| repeat(rest, &said))
+            {
+                return Some(own);
+            }
+        }
         return correction(&w[n..not_at], &said);
     }
     // "not on the shelf, on the table", "not the sofa, the armchair".
@@ -223,18 +333,30 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         ["the", "other", ..] | ["other", ..] if !starts_with_verb(&w) && !w.contains(&"too") => {
             return Some(FollowUp::Instead(text(0, w.len())));
         }
-        ["wrong", noun] | ["not", "that" | "this", noun] if *noun != "one" => {
+        ["wrong", noun] | ["not", "that" | "this", noun]
+            if *noun != "one" && !degree_word(noun) =>
+        {
             return Some(FollowUp::Instead(format!("the other {noun}")));
+        }
+        // "wrong table, the tv stand": what replaces it follows.
+        ["wrong", noun, rest @ ..] if *noun != "one" && !rest.is_empty() => {
+            return correction(rest, &|from, to| text(from + 2, to + 2));
         }
         _ => {}
     }
     undo(&w)
         .or_else(|| back(&w, &text))
         .or_else(|| repeat(&w, &text))
+        .or_else(|| toward_alone(&w, &text))
         .or_else(|| also(&w, &text))
         .or_else(|| destination_alone(&w, &text))
         .or_else(|| {
-            (after_refusal && !starts_with_verb(&w)).then(|| FollowUp::Instead(text(0, w.len())))
+            // After a refusal a bare noun phrase picks; after an edit, one that says "one"
+            // ("the right one", "the one by the window") is another of its kind.
+            let one = matches!(w[0], "the" | "that" | "this")
+                && w.iter().any(|x| matches!(*x, "one" | "ones"));
+            ((after_refusal || one) && !starts_with_verb(&w))
+                .then(|| FollowUp::Instead(text(0, w.len())))
         })
 }
 
@@ -262,12 +384,26 @@ fn destination_alone(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Optio
             | "between"
             | "in"
     ) || (first == "by" && determiner(w.get(1)));
-    let verb = w[1..].iter().any(|x| crate::ground::words::is_verb(x));
-    (place && w.len() > 1 && !verb).then(|| FollowUp::InsteadPlace(text(0, w.len())))
+    (place && w.len() > 1 && !verb_clause(&w[1..])).then(|| FollowUp::InsteadPlace(text(0, w.len())))
 }
 
 /// "no, on the shelf" (a destination) or "no, the other one" (an object).
 fn correction(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    match w {
+        // "do it to the other one instead", "do that with the lamp": another object.
+        ["do", "it" | "that" | "this", "to" | "with" | "for", rest @ ..]
+        | ["do", "the", "same", "to" | "with" | "for", rest @ ..]
+            if !rest.is_empty() =>
+        {
+            let from = w.len() - rest.len();
+            return Some(FollowUp::Instead(text(from, w.len())));
+        }
+        // "not that speaker": the other one of its kind.
+        ["not", "that" | "this", noun] if *noun != "one" && !degree_word(noun) => {
+            return Some(FollowUp::Instead(format!("the other {noun}")));
+        }
+        _ => {}
+    }
     // "put it on the table instead", "move it left instead": the verb and what it moved
     // set aside.
     let skip = match w {
@@ -312,7 +448,7 @@ fn correction(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follo
             FollowUp::Instead(said(k))
         });
     }
-    if w.iter().skip(1).any(|x| crate::ground::words::is_verb(x)) {
+    if verb_clause(&w[1..]) {
         None
     } else if place_word(first) {
         Some(FollowUp::InsteadPlace(said(0)))
@@ -351,6 +487,9 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
                 | "please"
         )
     };
+    if let Some(steps) = undo_steps(w) {
+        return Some(FollowUp::UndoMany(steps));
+    }
     match w {
         // "undo", "undo what you just did", "undo the last thing": the last change.
         ["undo", rest @ ..]
@@ -365,8 +504,64 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
         {
             Some(FollowUp::Undo)
         }
-        ["take", "that" | "it", "back"] | ["never", "mind"] => Some(FollowUp::Undo),
+        ["take", "that" | "it", "back"]
+        | ["never", "mind"]
+        | ["nevermind"]
+        | ["revert"]
+        | ["forget", "it" | "that"] => Some(FollowUp::Undo),
         _ => None,
+    }
+}
+
+/// "undo both", "undo twice", "undo the last 3 changes", "undo everything", "start
+/// over": more than the last change.
+fn undo_steps(w: &[&str]) -> Option<Steps> {
+    let change = |x: &[&str]| {
+        matches!(
+            x,
+            [] | ["changes" | "edits" | "moves" | "steps" | "ones" | "things"]
+                | ["changes" | "edits" | "moves" | "steps", "please"]
+                | ["please"]
+        )
+    };
+    let count = |x: &str| number(x).filter(|n| n.fract() == 0.0 && *n >= 1.0 && *n <= 64.0);
+    match w {
+        ["start", "over" | "again"] | ["start", "from", "scratch"] => Some(Steps::All),
+        ["undo" | "revert" | "reset", rest @ ..] => match rest {
+            ["everything" | "all", tail @ ..] if change(tail) => Some(Steps::All),
+            ["all", "the" | "my", "changes" | "edits" | "moves"] | ["it", "all"] => {
+                Some(Steps::All)
+            }
+            ["both", tail @ ..] | ["them", "both", tail @ ..] if change(tail) => {
+                Some(Steps::Last(2))
+            }
+            ["twice"] | ["twice", "please"] => Some(Steps::Last(2)),
+            ["three", "times"] | ["thrice"] => Some(Steps::Last(3)),
+            [n, "times", tail @ ..] if change(tail) => count(n).map(|n| Steps::Last(n as usize)),
+            ["the", "last", n, tail @ ..] | ["last", n, tail @ ..] if change(tail) => {
+                count(n).filter(|n| *n > 1.0).map(|n| Steps::Last(n as usize))
+            }
+            ["those", "two" | "2", tail @ ..] if change(tail) => Some(Steps::Last(2)),
+            _ => None,
+        },
+        _ => None,
+    }
+}
+
+/// What the words between "put" and "back" name.
+fn which(object: &[&str], text: &dyn Fn() -> String) -> Which {
+    match object {
+        [] | ["it" | "them" | "that" | "those" | "this" | "these"] => Which::Last,
+        // "restore its position", "reset the position".
+        ["its" | "their" | "the", "position" | "place" | "spot" | "pose" | "location"] => {
+            Which::Last
+        }
+        ["everything"] | ["it" | "them", "all"] | ["all"] | ["all", "of", "them"]
+        | ["the", "scene" | "room"] => Which::All,
+        ["both"] | ["them", "both"] | ["both", "of", "them"] => Which::Both,
+        ["the", "other", "one"] | ["the", "other"] => Which::Other,
+        ["the", "first", "one"] | ["the", "first"] => Which::First,
+        _ => Which::Named(text()),
     }
 }
 
@@ -374,27 +569,49 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
 /// lamp to where it was".
 fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     let where_it_was = |rest: &[&str]| -> bool {
-        let rest = match rest {
+        let mut rest = match rest {
             ["to", r @ ..] => r,
             r => r,
         };
-        matches!(
-            rest,
-            [] | ["again"]
-                | [
-                    "where",
-                    "it" | "they" | "he" | "she",
-                    "was" | "were" | "used",
-                    ..
-                ]
-                | [
-                    "its" | "their",
-                    "place" | "spot" | "position" | "old" | "original" | "first",
-                    ..
-                ]
-                | ["how", "it" | "they", "was" | "were"]
-                | ["where", "it" | "they", "started" | "came", ..]
-        )
+        // "… too", "… as well", "… please".
+        while let [r @ .., "too" | "please" | "also"] | [r @ .., "as", "well"] = rest {
+            rest = r;
+        }
+        // "… before", "… at first", "… to begin with".
+        while let [r @ .., "before"] | [r @ .., "at", "first"] | [r @ .., "originally"] = rest {
+            rest = r;
+        }
+        let earlier = |x: &str| {
+            matches!(
+                x,
+                "place"
+                    | "spot"
+                    | "position"
+                    | "pose"
+                    | "location"
+                    | "old"
+                    | "original"
+                    | "first"
+                    | "previous"
+                    | "former"
+                    | "earlier"
+                    | "starting"
+                    | "initial"
+                    | "usual"
+                    | "last"
+            )
+        };
+        match rest {
+            [] | ["again"] => true,
+            ["where" | "how" | "as", "it" | "they" | "he" | "she", verb, ..]
+            | ["the", "way", "it" | "they", verb, ..] => matches!(
+                *verb,
+                "was" | "were" | "used" | "started" | "came" | "belongs" | "belong"
+                    | "belonged" | "stood" | "sat" | "had" | "is" | "are"
+            ),
+            ["its" | "their" | "the", what, ..] => earlier(what),
+            _ => false,
+        }
     };
     let verb = |x: &str| {
         matches!(
@@ -402,16 +619,25 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             "put" | "bring" | "set" | "place" | "return" | "restore" | "get" | "reset"
         )
     };
+    // "move it back", with no amount and nothing after: where it was, or backwards?
+    if let [first, "it" | "them" | "that" | "this", "back"]
+    | [first, "it" | "them" | "that" | "this", "back", "please"]
+    | [first, "back", "it" | "them" | "that" | "this"] = w
+    {
+        if !verb(first) && crate::ground::words::is_verb(first) {
+            return Some(FollowUp::Unclear(format!(
+                "\"{}\" reads two ways: say \"put it back\" to return it where it was, or how far to move it backwards (\"{first} it back 50 cm\")",
+                text(0, w.len())
+            )));
+        }
+    }
     // Any motion verb, when where it was follows: "move it back to where it was".
     if let [first, ..] = w {
         if !verb(first) && crate::ground::words::is_verb(first) {
             if let Some(k) = w.iter().position(|&x| x == "back") {
                 let rest = &w[k + 1..];
                 if k >= 1 && !rest.is_empty() && where_it_was(rest) {
-                    return Some(FollowUp::Back(match &w[1..k] {
-                        [] | ["it" | "them" | "that" | "those" | "this" | "these"] => None,
-                        _ => Some(text(1, k)),
-                    }));
+                    return Some(FollowUp::Back(which(&w[1..k], &|| text(1, k))));
                 }
             }
         }
@@ -420,22 +646,44 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
         if verb(first) {
             let at = w.iter().position(|&x| x == "back");
             // "put X back [where it was]"; "return X [to where it was]".
-            let (object_end, rest) = match at {
-                Some(k) => (k, &w[k + 1..]),
-                None if matches!(*first, "return" | "restore" | "reset") => {
+            // "put back the lamp [where it was]": the particle before the object.
+            if at == Some(1) && w.len() > 2 && !where_it_was(&w[2..]) {
+                let end = w
+                    .iter()
+                    .skip(2)
+                    .position(|&x| matches!(x, "where" | "to" | "how" | "as"))
+                    .map_or(w.len(), |p| p + 2);
+                if !where_it_was(&w[end..]) {
+                    return None;
+                }
+                return Some(FollowUp::Back(which(&w[2..end], &|| text(2, end))));
+            }
+            let (object_end, rest) = match (at, w.iter().position(|&x| x == "where")) {
+                (Some(k), _) => (k, &w[k + 1..]),
+                // "put it where it was".
+                (None, Some(k)) => (k, &w[k..]),
+                (None, None) if matches!(*first, "return" | "restore" | "reset") => {
                     let k = w.iter().position(|&x| x == "to").unwrap_or(w.len());
                     (k, &w[k..])
                 }
-                None => return None,
+                (None, None) => return None,
             };
             if object_end < 1 || !where_it_was(rest) {
                 return None;
             }
-            let object = &w[1..object_end];
-            return Some(FollowUp::Back(match object {
-                [] | ["it" | "them" | "that" | "those" | "this" | "these"] => None,
-                _ => Some(text(1, object_end)),
-            }));
+            return Some(FollowUp::Back(which(&w[1..object_end], &|| {
+                text(1, object_end)
+            })));
+        }
+    }
+    // "go back", "go back please": where it was.
+    if matches!(w, ["go", "back"] | ["go", "back", "please"]) {
+        return Some(FollowUp::Back(Which::Last));
+    }
+    // "the lamp back where it was", "everything back to how it was": said without a verb.
+    if let Some(k) = w.iter().position(|&x| x == "back") {
+        if k > 0 && where_it_was(&w[k + 1..]) && !w[k + 1..].is_empty() && !verb_clause(&w[..k]) {
+            return Some(FollowUp::Back(which(&w[..k], &|| text(0, k))));
         }
     }
     // "back where it was", "back to where it was", "where it was".
@@ -443,13 +691,19 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
         ["back", "to", r @ ..] | ["back", r @ ..] => r,
         r => r,
     };
-    (matches!(rest.first(), Some(&"where")) && where_it_was(rest)).then_some(FollowUp::Back(None))
+    (matches!(rest.first(), Some(&("where" | "how" | "as" | "the" | "its")))
+        && where_it_was(rest))
+    .then_some(FollowUp::Back(Which::Last))
 }
 
 /// "again", "a bit more", "twice as far", "not so far", "more to the left", "another 10
 /// cm"; also after a motion verb and what it moved ("move it a bit more", "push them
 /// further", "turn it again").
 fn repeat(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    // "go on", "keep going", "double that": whole forms first, then with a verb set aside.
+    if let Some(own) = repeat_of(w, text) {
+        return Some(own);
+    }
     let skip = match w {
         [verb, "it" | "them" | "that" | "this" | "those" | "these", ..]
             if crate::ground::words::is_verb(verb) =>
@@ -520,7 +774,7 @@ fn explicit(w: &[&str]) -> Option<Amount> {
 
 /// [`repeat`] once any motion verb is set aside.
 /// The whole of what says the last motion again.
-const AGAIN: [&[&str]; 14] = [
+const AGAIN: [&[&str]; 16] = [
     &["again"],
     &["once", "more"],
     &["one", "more", "time"],
@@ -533,8 +787,10 @@ const AGAIN: [&[&str]; 14] = [
     &["another", "bit"],
     &["go", "on"],
     &["and", "again"],
-    &["double", "it"],
+    &["carry", "on"],
+    &["continue"],
     &["double", "that"],
+    &["the", "same", "again"],
 ];
 
 /// The whole of what says the last motion went too far.
@@ -598,7 +854,26 @@ fn same_again(w: &[&str]) -> Option<Amount> {
 }
 
 fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    // "now a bit more", "even further", "further still": words that only lean on the
+    // comparison, set aside.
+    let lead = w
+        .iter()
+        .take_while(|x| matches!(**x, "now" | "then" | "and" | "even" | "still" | "yet"))
+        .count();
+    let trail = w[lead..]
+        .iter()
+        .rev()
+        .take_while(|x| matches!(**x, "still" | "yet" | "please" | "then" | "now"))
+        .count();
+    if lead + trail > 0 {
+        let inner = &w[lead..w.len() - trail];
+        if inner.is_empty() {
+            return None;
+        }
+        return repeat_of(inner, &|from, to| text(from + lead, to + lead));
+    }
     if let Some(a) = explicit(w)
+        .or_else(|| a_few_more(w))
         .or_else(|| same_again(w))
         .or_else(|| times_as_far(w))
     {
@@ -629,16 +904,104 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         .then(|| FollowUp::Toward(format!("move it a bit {}", text(at + 1, w.len()))))
 }
 
-/// "twice as far", "three times as much", "half as far".
+/// Words that say how far or how much, not an object ("not that far").
+fn degree_word(w: &str) -> bool {
+    matches!(
+        w,
+        "far" | "much" | "many" | "close" | "big" | "high" | "low" | "fast" | "long"
+    )
+}
+
+/// "a few more cm", "a couple more degrees", "a few more": a few of the unit (three;
+/// a couple: two), or a small amount without one.
+fn a_few_more(w: &[&str]) -> Option<Amount> {
+    let (count, rest) = match w {
+        ["a", "few", "more", rest @ ..] | ["few", "more", rest @ ..] => (3.0, rest),
+        ["a", "couple", "more", rest @ ..] | ["a", "couple", "of", "more", rest @ ..] => {
+            (2.0, rest)
+        }
+        _ => return None,
+    };
+    match rest {
+        [] | ["please"] => Some(Amount::Bit(1.0)),
+        [unit] | [unit, "please"] => {
+            if let Some(per) = crate::offline::words::length_unit(unit) {
+                Some(Amount::Metres(count * per))
+            } else {
+                crate::offline::words::angle_unit(unit).map(|per| Amount::Degrees(count * per))
+            }
+        }
+        _ => None,
+    }
+}
+
+/// "twice as far", "three times as much", "half as far", "twice that", "double the
+/// distance".
 fn times_as_far(w: &[&str]) -> Option<Amount> {
     let (factor, rest) = match w {
-        ["twice", rest @ ..] => (2.0, rest),
+        ["twice" | "double", rest @ ..] => (2.0, rest),
+        ["triple", rest @ ..] => (3.0, rest),
         ["half", rest @ ..] => (0.5, rest),
         ["three", "times", rest @ ..] => (3.0, rest),
         ["two", "times", rest @ ..] => (2.0, rest),
         _ => return None,
     };
+    if matches!(
+        rest,
+        ["that"] | ["the", "distance" | "amount" | "angle" | "turn" | "move"]
+    ) {
+        return Some(Amount::Times(factor - 1.0));
+    }
     matches!(rest, ["as", "far" | "much", ..]).then_some(Amount::Times(factor - 1.0))
+}
+
+/// A way and an amount said alone ("a bit to the left", "10 cm up", "and a little
+/// forward", "15 degrees clockwise"): a move (or a turn) of what the last edit moved.
+/// "Back" alone reads two ways — towards where it was, or backwards — and is refused.
+fn toward_alone(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+    let lead = w
+        .iter()
+        .take_while(|x| matches!(**x, "and" | "now" | "then" | "just"))
+        .count();
+    let rest = &w[lead..];
+    let small = |x: &str| {
+        BIT.iter().any(|b| b.contains(&x))
+            || matches!(
+                x,
+                "to" | "the" | "a" | "an" | "more" | "by" | "over" | "please" | "side" | "way"
+            )
+    };
+    let unit = |x: &str| {
+        crate::offline::words::length_unit(x).is_some()
+            || crate::offline::words::angle_unit(x).is_some()
+    };
+    // A number only with its unit ("10 cm", "10cm"), never alone ("the right one").
+    let measure = |x: &str| amount(&[x]).is_some() || unit(x);
+    let fits = rest.iter().enumerate().all(|(k, x)| {
+        is_direction(x)
+            || small(x)
+            || measure(x)
+            || (number(x).is_some() && rest.get(k + 1).is_some_and(|u| unit(u)))
+    });
+    let ways: Vec<&str> = rest.iter().copied().filter(|x| is_direction(x)).collect();
+    if rest.is_empty() || !fits || ways.is_empty() {
+        return None;
+    }
+    let said = text(lead, w.len());
+    if ways.iter().all(|x| *x == "back") {
+        return Some(FollowUp::Unclear(format!(
+            "\"{said}\" reads two ways: say \"a bit less\" to go part of the way back, or \"move it backwards {}\" to move it backwards",
+            if rest.iter().any(|x| measure(x)) { "that far" } else { "a bit" }
+        )));
+    }
+    let turn = rest.iter().any(|x| {
+        crate::offline::words::angle_unit(x).is_some()
+            || matches!(*x, "clockwise" | "counterclockwise" | "anticlockwise")
+    });
+    Some(FollowUp::Toward(format!(
+        "{} it {said}",
+        if turn { "turn" } else { "move" }
+    )))
 }
 
 /// "and the mug too", "the bowl as well", "same for the chairs", "do the same with the
@@ -693,7 +1056,7 @@ fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     let ends_on_a_side = said
         .last()
         .is_some_and(|x| crate::ground::words::side_word(x).is_some());
-    let phrase = !(said.iter().any(|x| crate::ground::words::is_verb(x)) || ends_on_a_side);
+    let phrase = !(verb_clause(said) || ends_on_a_side);
     if end <= same || nothing_adds || !phrase {
         return None;
     }
@@ -732,11 +1095,11 @@ mod tests {
             Some(FollowUp::Toward("move it a bit to the left".into()))
         );
         assert_eq!(r("undo that"), Some(FollowUp::Undo));
-        assert_eq!(r("put it back"), Some(FollowUp::Back(None)));
-        assert_eq!(r("back where it was"), Some(FollowUp::Back(None)));
+        assert_eq!(r("put it back"), Some(FollowUp::Back(Which::Last)));
+        assert_eq!(r("back where it was"), Some(FollowUp::Back(Which::Last)));
         assert_eq!(
             r("put the armchair back where it was"),
-            Some(FollowUp::Back(Some("the armchair".into())))
+            Some(FollowUp::Back(Which::Named("the armchair".into())))
         );
         assert_eq!(r("and the mug too"), Some(FollowUp::Also("the mug".into())));
         assert_eq!(
@@ -816,9 +1179,55 @@ mod tests {
             ("undo the last move", Undo),
             ("undo what you just did", Undo),
             ("scratch that", Undo),
-            ("move it back to where it was", Back(None)),
-            ("back to where it was", Back(None)),
-            ("reset the lamp", Back(Some("the lamp".into()))),
+            ("move it back to where it was", Back(Which::Last)),
+            ("back to where it was", Back(Which::Last)),
+            ("reset the lamp", Back(Which::Named("the lamp".into()))),
+            ("go on", Repeat(Amount::Times(1.0))),
+            ("further still", Repeat(Amount::Times(1.0))),
+            ("yes, more", Repeat(Amount::Times(1.0))),
+            ("ok good, now a little further", Repeat(Amount::Bit(1.0))),
+            ("not that far", Repeat(Amount::Times(-0.5))),
+            ("twice that", Repeat(Amount::Times(1.0))),
+            ("double the distance", Repeat(Amount::Times(1.0))),
+            ("a few more cm", Repeat(Amount::Metres(0.03))),
+            ("a bit to the left", Toward("move it a bit to the left".into())),
+            ("and 10 cm up", Toward("move it 10 cm up".into())),
+            ("15 degrees clockwise", Toward("turn it 15 degrees clockwise".into())),
+            ("nah, undo", Undo),
+            ("revert", Undo),
+            ("undo both", UndoMany(Steps::Last(2))),
+            ("undo the last three changes", UndoMany(Steps::Last(3))),
+            ("undo twice", UndoMany(Steps::Last(2))),
+            ("undo everything", UndoMany(Steps::All)),
+            ("start over", UndoMany(Steps::All)),
+            ("no, put it back", Back(Which::Last)),
+            ("put it where it was", Back(Which::Last)),
+            ("go back", Back(Which::Last)),
+            ("put the other one back too", Back(Which::Other)),
+            ("put them both back", Back(Which::Both)),
+            ("put everything back where it was", Back(Which::All)),
+            ("the lamp back where it was", Back(Which::Named("the lamp".into()))),
+            ("put it back the way it was", Back(Which::Last)),
+            ("put it back to its previous position", Back(Which::Last)),
+            ("back to how it was before", Back(Which::Last)),
+            ("restore its position", Back(Which::Last)),
+            ("put back the lamp", Back(Which::Named("the lamp".into()))),
+            (
+                "move it back",
+                Unclear("\"move it back\" reads two ways: say \"put it back\" to return it where it was, or how far to move it backwards (\"move it back 50 cm\")".into()),
+            ),
+            ("wrong one", Instead("the other one".into())),
+            ("not that one", Instead("the other one".into())),
+            ("no, not that speaker", Instead("the other speaker".into())),
+            ("the right one", Instead("the right one".into())),
+            ("wrong table, the tv stand", Instead("the tv stand".into())),
+            ("no, the tv stand", Instead("the tv stand".into())),
+            ("rather on the tv stand", InsteadPlace("on the tv stand".into())),
+            ("on the tv stand instead", InsteadPlace("on the tv stand".into())),
+            (
+                "do it to the other one instead",
+                Instead("the other one".into()),
+            ),
         ];
         for (text, expected) in cases {
             assert_eq!(r(text), Some(expected), "{text}");
@@ -842,7 +1251,6 @@ mod tests {
             "next to the sofa, put the lamp",
             "undo moving the lamp",
             "move the lamp, not the sofa",
-            "the left one",
             "move the lamp a bit more to the left",
             "no, move the lamp left",
             "turn the chair around",

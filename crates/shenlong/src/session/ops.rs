@@ -147,14 +147,21 @@ fn edit(
     translator: &dyn Translator,
     options: &EditOptions,
 ) -> Result<(Done, Vec<AppliedMotion>), OpError> {
-    if focus.is_empty()
-        && crate::ground::selection_words(instruction).is_some()
-        && matches!(
-            grounder.ground(instruction, scene),
-            Err(crate::ground::GroundError::NoObject { .. })
-        )
-    {
-        return Err(conversation::nothing_before(instruction));
+    // "It" with nothing edited or selected, and no object named before it in the
+    // instruction ("put the lamp on the table and turn it" names one; "put that on the
+    // sofa" does not).
+    if let (true, Some(pronoun)) = (
+        focus.is_empty(),
+        crate::ground::selection_words(instruction),
+    ) {
+        let unpointed = match grounder.ground(instruction, scene) {
+            Err(crate::ground::GroundError::NoObject { .. }) => true,
+            Ok(g) => g.phrases.iter().all(|p| p.span.start > pronoun.start),
+            Err(_) => false,
+        };
+        if unpointed {
+            return Err(conversation::nothing_before(instruction));
+        }
     }
     let options = EditOptions {
         selection: focus,
