@@ -261,6 +261,8 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
     while start < end && acknowledging(lower[start]) {
         start += 1;
     }
+    // "now the table": the discourse set aside said that a phrase alone is the next one.
+    let after_now = start > 0 && matches!(lower[start - 1], "now" | "then");
     let words = &all[start..end];
     let w: Vec<&str> = lower[start..end].to_vec();
     if w.is_empty() {
@@ -348,7 +350,7 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         .or_else(|| back(&w, &text))
         .or_else(|| repeat(&w, &text))
         .or_else(|| toward_alone(&w, &text))
-        .or_else(|| also(&w, &text))
+        .or_else(|| also(&w, &text, after_now))
         .or_else(|| destination_alone(&w, &text))
         .or_else(|| {
             // After a refusal a bare noun phrase picks; after an edit, one that says "one"
@@ -1006,7 +1008,7 @@ fn toward_alone(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Fol
 
 /// "and the mug too", "the bowl as well", "same for the chairs", "do the same with the
 /// coffee table", "also the lamp".
-fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
+fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String, now: bool) -> Option<FollowUp> {
     let same = starts(
         w,
         &[
@@ -1050,7 +1052,7 @@ fn also(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             end -= tail.len();
         }
     }
-    let nothing_adds = same == 0 && end == w.len();
+    let nothing_adds = same == 0 && end == w.len() && !now;
     // "and the lamp": a phrase, not an instruction ("and move the lamp left").
     let said = &w[same..end.max(same)];
     let ends_on_a_side = said
@@ -1175,6 +1177,7 @@ mod tests {
             ("and the lamp", Also("the lamp".into())),
             ("and the left lamp too", Also("the left lamp".into())),
             ("do the lamp too", Also("the lamp".into())),
+            ("now the table", Also("the table".into())),
             ("same goes for the lamp", Also("the lamp".into())),
             ("undo the last move", Undo),
             ("undo what you just did", Undo),
