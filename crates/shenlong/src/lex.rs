@@ -166,6 +166,25 @@ pub(crate) fn tokenize_with(text: &str, quotes: Quotes) -> Vec<Token> {
                 k = j;
                 continue;
             }
+            // "9-12": a range of numbers typed as one word, read as its numbers and the dash.
+            if let Some((from, to)) = lower.split_once('-').filter(|(a, b)| {
+                !a.is_empty()
+                    && !b.is_empty()
+                    && a.len() <= 4
+                    && b.len() <= 4
+                    && a.bytes().chain(b.bytes()).all(|d| d.is_ascii_digit())
+            }) {
+                let dash = start + from.len();
+                for (kind, span) in [
+                    (Kind::Number(from.parse().unwrap_or(0.0)), start..dash),
+                    (Kind::Punct('-'), dash..dash + 1),
+                    (Kind::Number(to.parse().unwrap_or(0.0)), dash + 1..span.end),
+                ] {
+                    tokens.push(Token { kind, span });
+                }
+                k = j;
+                continue;
+            }
             let kind = match lower.parse::<f64>() {
                 Ok(n) if n.is_finite() => Kind::Number(n),
                 _ => Kind::Word(function_word_typo(&lower).map_or(lower, str::to_string)),
@@ -262,6 +281,22 @@ mod tests {
                 Kind::Punct(c) => c.to_string(),
             })
             .collect()
+    }
+
+    #[test]
+    fn a_range_typed_as_one_word_is_its_numbers() {
+        assert_eq!(
+            words("chairs 9-12 left", Quotes::Names),
+            ["chairs", "#9", "-", "#12", "left"]
+        );
+        // Letters keep it a word: a name's pieces.
+        assert_eq!(words("Shelf-2 A-3", Quotes::Names), ["shelf-2", "a-3"]);
+        // Its bytes are the text's.
+        let t = tokenize_with("x 10-20", Quotes::Names);
+        assert_eq!(
+            t.iter().map(|t| t.span.clone()).collect::<Vec<_>>(),
+            [0..1, 2..4, 4..5, 5..7]
+        );
     }
 
     #[test]

@@ -370,9 +370,8 @@ impl Reader<'_> {
     /// A plural kind and several instance numbers (`desks 3 to 6`, `stools 1 and 4`,
     /// `tables 1, 2 and 5`): `phrase` ends in the first number and the list goes on from
     /// token `end`. The objects of every number and the token after the list; `None`
-    /// unless every number names one object of the kind. (A range typed as one word,
-    /// `chairs 9-12`, is never a name's pieces, so it is not read: on a blind suite it led
-    /// to a wrong edit when it was.)
+    /// unless every number names one object of the kind. A range typed as one word,
+    /// `chairs 9-12`, comes from `lex` as its two numbers and the dash.
     fn numbered_list(&self, end: usize, phrase: &str) -> Option<(Vec<usize>, usize)> {
         const MAX_RANGE: u32 = 200;
         let (base, last) = phrase.rsplit_once(' ')?;

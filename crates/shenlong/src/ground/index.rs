@@ -707,14 +707,34 @@ impl NameIndex {
     /// `Chair_Wood.001`, whose name reads as "wood chair"), when that is not a name itself;
     /// by any word that names them (`stool 2` for `Stool_Bar.002`, `desk 5` for `Student
     /// Desk 05` beside an unnumbered `Teacher Desk`): the number is what tells them apart.
+    ///
+    /// Number 1 is also the one unnumbered object beside its own numbered copies that
+    /// start at 2 (`desk 1` for `Student Desk` beside `Student Desk 2` … and no
+    /// `Student Desk 1`): that is how a tool numbers copies.
     pub fn numbered(&self, base: &str, number: u32) -> Option<Vec<usize>> {
         let hit = self.lookup(base)?;
         let out: Vec<usize> = hit
             .objects
-            .into_iter()
+            .iter()
+            .copied()
             .filter(|&o| self.numbers[o] == Some(number))
             .collect();
-        (!out.is_empty()).then_some(out)
+        if !out.is_empty() || number != 1 {
+            return (!out.is_empty()).then_some(out);
+        }
+        let copies: Vec<&str> = hit
+            .objects
+            .iter()
+            .filter(|&&o| self.numbers[o] == Some(2))
+            .map(|&o| split_number(self.names.get(o as u32)).0)
+            .collect();
+        let first: Vec<usize> = hit
+            .objects
+            .iter()
+            .copied()
+            .filter(|&o| self.numbers[o].is_none() && copies.contains(&self.names.get(o as u32)))
+            .collect();
+        (!first.is_empty()).then_some(first)
     }
 
     /// The objects whose name or base name is this phrase without spaces (`dogbed`).

@@ -325,3 +325,25 @@ fn a_left_out_phrase_reads_its_own_modifier() {
     )
     .is_err());
 }
+
+#[test]
+fn number_one_is_the_unnumbered_first_of_copies_numbered_from_two() {
+    // "student desk", "student desk 2" … "student desk 6" beside a "teacher desk".
+    means("classroom", "move desk 1 left", &[&["student desk"]]);
+    means(
+        "classroom",
+        "move desks 1 and 4 forward",
+        &[&["student desk", "student desk 4"]],
+    );
+    // A range typed as one word.
+    means(
+        "classroom",
+        "move chairs 1-3 left 10 cm",
+        &[&["student chair", "student chair 2", "student chair 3"]],
+    );
+    means(
+        "classroom",
+        "move desks 3-5 back",
+        &[&["student desk 4", "student desk 5", "student desk 3"]],
+    );
+}
