@@ -144,6 +144,9 @@ pub enum Near {
     Under(usize),
     /// In this open container: within its walls, on its bottom or on what is in it.
     Inside(usize),
+    /// Pushed in towards this object of the scene — an object index, never a variable —
+    /// as a chair is pushed in at the table it is drawn up to: it may go under its top.
+    PushedUnder(usize),
 }
 
 impl Near {
@@ -156,6 +159,7 @@ impl Near {
             Self::On(t) => Self::On(f(t)),
             Self::Under(t) => Self::Under(f(t)),
             Self::Inside(t) => Self::Inside(f(t)),
+            Self::PushedUnder(object) => Self::PushedUnder(object),
         }
     }
 }

@@ -299,7 +299,11 @@ fn several_changes_are_taken_back_together() {
     for how in BOTH {
         let mut s = living_room();
         let e = say(&mut s, how, "undo both").unwrap_err();
-        assert!(e.message.contains("nothing has been moved"), "{}", e.message);
+        assert!(
+            e.message.contains("nothing has been moved"),
+            "{}",
+            e.message
+        );
         let (armchair, ottoman, magazine) =
             (at(&s, "armchair"), at(&s, "ottoman"), at(&s, "magazine"));
         say(&mut s, how, "move the armchair 30 cm to the right").unwrap();

@@ -347,6 +347,55 @@ fn under_is_under_or_refused_never_beside() {
     assert!(e.message.contains("tall"), "{}", e.message);
 }
 
+/// A chair taller than a desk's knee room is tucked as a chair is: its seat under the
+/// top, its back out at the edge, what stands on the desk untouched; pushed in, the same;
+/// facing away, it is refused, saying to turn it.
+#[test]
+fn a_chair_is_tucked_seat_under_back_out() {
+    // The desk against the back wall, the chair before it facing it (front −z), a
+    // monitor on the desk near its front edge.
+    let text = r#"{"bounds": {"min": [-2, 0, -2], "max": [2, 2.6, 2]},
+      "objects": [
+        {"name": "desk", "size": [1.4, 0.75, 0.7], "position": [0, 0, -1.6]},
+        {"name": "monitor", "size": [0.5, 0.4, 0.15], "position": [0, 0.75, -1.4]},
+        {"name": "office chair", "size": [0.55, 0.95, 0.55], "position": [0, 0, -0.8],
+         "rotation": [0, 1, 0, 0]}
+    ]}"#;
+    let seat_under_back_out = |s: &Scene| {
+        let (chair, desk) = (aabb(s, "office chair"), aabb(s, "desk"));
+        // Its seat (the lower half) reaches under the top, its back (the rear 12 cm)
+        // stays out of the desk.
+        assert!(chair.min.z < desk.max.z - 0.1, "{chair:?} {desk:?}");
+        assert!(
+            chair.max.z - 0.12 >= desk.max.z - 1e-6,
+            "{chair:?} {desk:?}"
+        );
+        assert!((chair.min.y).abs() < LEVEL);
+    };
+    for instruction in [
+        "tuck the office chair under the desk",
+        "push the office chair in",
+        "tuck the office chair in",
+    ] {
+        let mut s = scene(text);
+        let monitor = aabb(&s, "monitor");
+        run(&mut s, instruction);
+        seat_under_back_out(&s);
+        assert_eq!(aabb(&s, "monitor").min, monitor.min, "{instruction}");
+    }
+    // Facing away (front +z, its back towards the desk): turn it first.
+    let away = text.replace("\"rotation\": [0, 1, 0, 0]", "\"rotation\": [0, 0, 0, 1]");
+    let mut s = scene(&away);
+    let e = edit(
+        &mut s,
+        "tuck the office chair under the desk",
+        &OfflineTranslator::new(),
+        &EditOptions::default(),
+    )
+    .expect_err("refused");
+    assert!(e.message.contains("turn it to face"), "{}", e.message);
+}
+
 /// `name` overlaps no object but `allowed` (and what it stood in before).
 fn overlaps_nothing_but(scene: &Scene, name: &str, allowed: &str) {
     let a = aabb(scene, name);

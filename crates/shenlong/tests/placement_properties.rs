@@ -15,7 +15,8 @@
 //!    before.
 //! 5. **on Y next to Z**, **on Y between Z and W**: one destination.
 //! 6. **under Y**: on the level Y stands on, its centre within Y's footprint, its top no
-//!    higher than Y's underside — under the top of a table on legs, off its legs — or flat
+//!    higher than Y's underside — under the top of a table on legs, off its legs; a chair
+//!    tucked, its seat so and its back out — or flat
 //!    (a rug), nothing new overlapped — or refused, never beside Y.
 //! 7. **in Y**: within the walls of an open container Y, above its bottom, below its rim,
 //!    nothing new overlapped — or refused (a solid Y, or no room), never beside Y.
@@ -212,12 +213,21 @@ fn overlaps(a: &Aabb, b: &Aabb) -> bool {
 
 /// Property 4 for every object that moved: nothing overlapped now that was not before.
 fn nothing_new_overlapped(scene: &Scene, before: &[Aabb], after: &[Aabb]) -> Verdict {
+    // A chair is its seat and its back (docs/collisions.md, "Shapes by kind").
+    let seats: Vec<_> = (0..after.len())
+        .map(|i| shenlong::ground::kind::seat_of(scene, i))
+        .collect();
+    let meet = |i: usize, j: usize| match (seats[i], seats[j]) {
+        (Some(s), _) => s.parts(&after[i]).iter().any(|p| overlaps(p, &after[j])),
+        (None, Some(s)) => s.parts(&after[j]).iter().any(|p| overlaps(&after[i], p)),
+        (None, None) => overlaps(&after[i], &after[j]),
+    };
     for i in 0..after.len() {
         if (after[i].min - before[i].min).length() < 1e-9 {
             continue;
         }
         for j in 0..after.len() {
-            if i != j && overlaps(&after[i], &after[j]) && !overlaps(&before[i], &before[j]) {
+            if i != j && meet(i, j) && !overlaps(&before[i], &before[j]) {
                 return Some(format!(
                     "'{}' now overlaps '{}'",
                     scene.objects[i].name, scene.objects[j].name
@@ -415,9 +425,12 @@ fn check_under(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> 
     if (a.min.y - level).abs() > LEVEL {
         return Some(format!("not on {level:.3}: {:.3}", a.min.y));
     }
-    // Under a top on legs: in the room below it, off its legs; it may meet Y there.
+    // Under a top on legs: in the room below it, off its legs (a chair: its seat, its back
+    // out); it may meet Y there.
     let on_legs = shenlong::ground::kind::form_of(scene, y) == shenlong::scene::Form::OnLegs;
-    if on_legs && shenlong::scene::form::clear_under(a, b) {
+    let tucked = shenlong::ground::kind::seat_of(scene, x)
+        .is_some_and(|seat| shenlong::scene::form::clear_tucked(a, b, seat));
+    if on_legs && (shenlong::scene::form::clear_under(a, b) || tucked) {
         let away = Aabb::new(b.min - 1e3, b.min - 1e3);
         let (mut before, mut after) = (f.boxes.clone(), after.to_vec());
         before[y] = away;

@@ -3,7 +3,7 @@
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
 use crate::scene::form::clear_in;
-use crate::scene::Form;
+use crate::scene::Room;
 use glam::DVec3;
 
 /// What an object collides with.
@@ -151,7 +151,7 @@ pub fn find_collisions(
     groups: &[Vec<usize>],
     floor: f64,
     room: Option<&Aabb>,
-    under: &dyn Fn(usize, usize) -> Option<Form>,
+    under: &dyn Fn(usize, usize) -> Option<Room>,
 ) -> Vec<Overlap> {
     find_collisions_in(
         &FloorGrid::new(after),
@@ -172,7 +172,7 @@ pub fn find_collisions_in(
     groups: &[Vec<usize>],
     floor: f64,
     room: Option<&Aabb>,
-    under: &dyn Fn(usize, usize) -> Option<Form>,
+    under: &dyn Fn(usize, usize) -> Option<Room>,
 ) -> Vec<Overlap> {
     let mut group_of = vec![usize::MAX; after.len()];
     for (g, members) in groups.iter().enumerate() {

@@ -7,7 +7,7 @@ use super::detect::{
 use super::EPSILON;
 use crate::geometry::{Aabb, FloorGrid};
 use crate::scene::form::clear_in;
-use crate::scene::{AppliedMotion, Form, Scene};
+use crate::scene::{AppliedMotion, Form, Room, Scene};
 use glam::{DVec2, DVec3};
 use std::cmp::Ordering;
 use std::collections::BinaryHeap;
@@ -134,7 +134,7 @@ pub trait Kinds {
     fn floor_bound(&self, scene: &Scene, i: usize) -> bool;
     /// The form of object `j` when object `i` may stand in its room: `j` is a top on legs
     /// that `i` was put under, or an open container `i` was put in (`scene::form`).
-    fn room(&self, scene: &Scene, i: usize, j: usize) -> Option<Form>;
+    fn room(&self, scene: &Scene, i: usize, j: usize) -> Option<Room>;
 }
 
 /// A floor-furniture test alone is the kinds of a caller that puts nothing under
@@ -144,7 +144,7 @@ impl<F: Fn(&Scene, usize) -> bool> Kinds for F {
         self(scene, i)
     }
 
-    fn room(&self, _: &Scene, _: usize, _: usize) -> Option<Form> {
+    fn room(&self, _: &Scene, _: usize, _: usize) -> Option<Room> {
         None
     }
 }
@@ -509,7 +509,7 @@ impl Search<'_> {
             .filter(|&offset| on_surface(offset));
         // Which of the group may stand in the room of which obstacle (put under a table,
         // in a box).
-        let under: Vec<(usize, usize, Form)> = group
+        let under: Vec<(usize, usize, Room)> = group
             .objects
             .iter()
             .flat_map(|&i| group.obstacles.iter().map(move |&j| (i, j)))
@@ -760,7 +760,7 @@ struct Placement<'a> {
     room: Option<&'a Aabb>,
     /// (a member of the group, an obstacle, its form) where the member may stand in the
     /// obstacle's room.
-    under: &'a [(usize, usize, Form)],
+    under: &'a [(usize, usize, Room)],
 }
 
 impl Placement<'_> {
@@ -775,11 +775,16 @@ impl Placement<'_> {
             for &j in self.obstacles {
                 let volume_before = overlap_volume(&self.before[i], &self.before[j]);
                 let blocked = if stands_on_covering(&moved, &self.after[j], self.floor)
-                    || self
-                        .under
-                        .iter()
-                        .any(|&(m, o, f)| (m, o) == (i, j) && clear_in(&moved, &self.after[j], f))
-                {
+                    || self.under.iter().any(|&(m, o, f)| {
+                        // A chair's seat and back beside a solid box keep the buffer;
+                        // the room under a top or in a box is measured as it is.
+                        let own = if f.form == Form::Solid {
+                            &padded
+                        } else {
+                            &moved
+                        };
+                        (m, o) == (i, j) && clear_in(own, &self.after[j], f)
+                    }) {
                     false
                 } else if volume_before > 0.0 {
                     collides(&moved, &self.after[j], volume_before)

@@ -90,6 +90,47 @@ pub fn form_of(scene: &Scene, i: usize) -> Form {
     }
 }
 
+/// The seat and back of object `i` when it is a chair (not a stool: no back) standing
+/// upright and turned by quarter turns, so that its back is across one side of its box:
+/// the side away from where it faces.
+#[must_use]
+pub fn seat_of(scene: &Scene, i: usize) -> Option<crate::scene::Seat> {
+    let o = &scene.objects[i];
+    let chair = filed_under(
+        Lexicon::builtin(),
+        o.labels.category.as_deref(),
+        &o.name,
+        &["chair"],
+    ) == Some(true);
+    let stool = filed_under(
+        Lexicon::builtin(),
+        o.labels.category.as_deref(),
+        &o.name,
+        &["stool"],
+    ) == Some(true);
+    if !chair || stool {
+        return None;
+    }
+    let front = o.world_front();
+    let axis = [0, 2]
+        .into_iter()
+        .find(|&k| front[k].abs() > 1.0 - 1e-6 && front.y.abs() < 1e-6)?;
+    Some(crate::scene::Seat::of(
+        &o.world_aabb(),
+        axis,
+        front[axis] < 0.0,
+    ))
+}
+
+/// How object `i` may share the box of object `j`, if at all: `j`'s form (the room under
+/// its top, or inside it), and `i`'s seat and back when it is a chair.
+#[must_use]
+pub fn room_of(scene: &Scene, i: usize, j: usize) -> Option<crate::scene::Room> {
+    let form = form_of(scene, j);
+    let seat = seat_of(scene, i);
+    (form != Form::Solid || seat.is_some()).then_some(crate::scene::Room { form, seat })
+}
+
 /// Whether an object of this kind (`Some(true)` furniture or appliance, `Some(false)`
 /// another known kind, `None` unknown) and size stands on the floor.
 #[must_use]

@@ -203,12 +203,38 @@ impl<'s> Known<'s> {
     /// direction towards it (axis, sign) and the gap to its face (0 when they touch or
     /// overlap). `None`: nothing is near, or nothing is known.
     pub(crate) fn drawn_up_to(&self, s: usize) -> Option<((usize, f64), f64)> {
+        self.drawn_up_to_object(s).map(|(way, gap, _)| (way, gap))
+    }
+
+    /// How far pushing variable `s` in moves it: to the face of what it is drawn up to
+    /// (the gap), or, for a chair facing a top on legs it fits under to its seat, until
+    /// its seat is under the top and its back at the top's edge (`scene::form::Seat`).
+    /// With it, the table (an object of the scene) when the chair goes under its top.
+    pub(crate) fn push_in(&self, s: usize) -> Option<(f64, Option<usize>)> {
+        let ((e, sign), gap, table) = self.drawn_up_to_object(s)?;
+        let (scene, objects) = self.scene?;
+        let me = *objects.get(s)?;
+        let tucked = || {
+            let room = crate::ground::kind::room_of(scene, me, table)?;
+            let seat = room.seat?;
+            let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+            let knee = crate::scene::form::knee_room(&boxes[table]);
+            // Its back away from the table, its seat low enough.
+            let back_away = seat.axis == e && seat.max_side == (sign < 0.0);
+            (room.form == crate::scene::Form::OnLegs && back_away && seat.height <= knee)
+                .then(|| gap + (boxes[me].size()[e] - seat.depth).max(0.0))
+        };
+        Some(tucked().map_or((gap, None), |d| (d, Some(table))))
+    }
+
+    /// [`Known::drawn_up_to`], with the object it is drawn up to.
+    fn drawn_up_to_object(&self, s: usize) -> Option<((usize, f64), f64, usize)> {
         let (scene, objects) = self.scene?;
         let me = *objects.get(s)?;
         let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
         let a = boxes[me];
         let footprint = |b: &crate::geometry::Aabb| b.size().x * b.size().z;
-        let mut best: Option<((usize, f64), f64)> = None;
+        let mut best: Option<((usize, f64), f64, usize)> = None;
         for (j, b) in boxes.iter().enumerate() {
             let overlap = a.overlap(b);
             if j == me || footprint(b) <= footprint(&a) || overlap.y <= 0.0 {
@@ -224,8 +250,8 @@ impl<'s> Known<'s> {
                     continue;
                 }
                 let gap = gap.max(0.0);
-                if best.is_none_or(|(_, g)| gap < g) {
-                    best = Some(((e, sign), gap));
+                if best.is_none_or(|(_, g, _)| gap < g) {
+                    best = Some(((e, sign), gap, j));
                 }
             }
         }

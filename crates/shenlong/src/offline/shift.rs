@@ -38,11 +38,14 @@ fn directions(c: &mut Clause) -> Vec<Direction> {
 
 /// The amount of a move, read: the length named; with "further", "farther" or "more" and
 /// none named, a bit ([`amounts::BIT_METRES`]); with a verb that is itself a small move
-/// ("nudge", "budge", "scoot", "inch") and none named, a bit too.
+/// ("nudge", "budge", "scoot") and none named, a bit too.
 fn amount(c: &mut Clause) -> Option<Length> {
-    let small_verb = ["nudge", "budge", "scoot", "scooch", "scootch", "inch", "jiggle"]
-        .iter()
-        .any(|w| c.find(&[w]).is_some());
+    // (The verb is read by now: looked for read or not.)
+    let small_verb = (0..c.len()).any(|i| {
+        ["nudge", "budge", "scoot", "scooch", "scootch", "jiggle"]
+            .iter()
+            .any(|w| c.words_at_any(i, &[w]))
+    });
     // "further left", "a bit more to the right": a bit.
     let more = ["further", "farther", "more"]
         .iter()
@@ -111,7 +114,7 @@ impl Reader<'_> {
     /// by the amount (pushed in with none: until it touches; pulled out: a bit). `None`
     /// when the clause says neither.
     fn in_or_out(
-        &self,
+        &mut self,
         c: &mut Clause,
         subjects: &[usize],
         amount: Option<Length>,
@@ -129,9 +132,15 @@ impl Reader<'_> {
                 ))));
             };
             let sign = if inwards { sign } else { -sign };
+            // Pushed in: to the table's face, or a chair under its top.
+            let (pushed, table) = self.facts.known.push_in(s).unwrap_or((gap, None));
+            if let (true, Some(table)) = (inwards, table) {
+                self.near
+                    .insert(s, crate::translate::Near::PushedUnder(table));
+            }
             let metres = match amount {
                 Some(Length::Metres(m)) => m,
-                None if inwards => gap,
+                None if inwards => pushed,
                 None => amounts::BIT_METRES,
                 Some(_) => return Some(Err(not_read(text, text))),
             };

@@ -503,7 +503,7 @@ pub fn place_holding(
     let under: Vec<(usize, usize)> = near
         .iter()
         .filter_map(|&(o, n)| match n {
-            Near::Under(t) | Near::Inside(t) => Some((o, t)),
+            Near::Under(t) | Near::Inside(t) | Near::PushedUnder(t) => Some((o, t)),
             _ => None,
         })
         .flat_map(|(o, t)| {
@@ -578,6 +578,8 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
     for &(object, near) in near {
         let other = match near {
             Near::Beside(other) => other,
+            // Only room to go into, not a place it must end in.
+            Near::PushedUnder(_) => continue,
             Near::Under(above) => {
                 check_under(scene, object, above)?;
                 continue;
@@ -657,9 +659,20 @@ fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), Ed
 
 /// The objects' kinds as the lexicon says them, for collision resolution: floor furniture
 /// and tops on legs (`ground::kind`).
-/// `under`: (object, target) pairs where the edit put the object under or in the target.
+/// `under`: (object, target) pairs where the edit put the object under or in the target;
+/// `seats`: each object's seat and back, once looked up.
 struct Lexical<'a> {
     under: &'a [(usize, usize)],
+    seats: std::cell::RefCell<rustc_hash::FxHashMap<usize, Option<crate::scene::Seat>>>,
+}
+
+impl<'a> Lexical<'a> {
+    fn new(under: &'a [(usize, usize)]) -> Self {
+        Self {
+            under,
+            seats: std::cell::RefCell::default(),
+        }
+    }
 }
 
 impl collide::Kinds for Lexical<'_> {
@@ -667,11 +680,21 @@ impl collide::Kinds for Lexical<'_> {
         crate::ground::kind::is_floor_bound(scene, i)
     }
 
-    fn room(&self, scene: &Scene, i: usize, j: usize) -> Option<crate::scene::Form> {
-        if !self.under.contains(&(i, j)) {
-            return None;
+    fn room(&self, scene: &Scene, i: usize, j: usize) -> Option<crate::scene::Room> {
+        if self.under.contains(&(i, j)) {
+            return crate::ground::kind::room_of(scene, i, j);
         }
-        Some(crate::ground::kind::form_of(scene, j)).filter(|f| *f != crate::scene::Form::Solid)
+        // A chair shares any other box with its seat and back only; it goes under or in
+        // only what the edit put it under or in.
+        let seat = *self
+            .seats
+            .borrow_mut()
+            .entry(i)
+            .or_insert_with(|| crate::ground::kind::seat_of(scene, i));
+        seat.map(|seat| crate::scene::Room {
+            form: crate::scene::Form::Solid,
+            seat: Some(seat),
+        })
     }
 }
 
@@ -685,11 +708,18 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), EditErr
     let b = scene.objects[above].world_aabb();
     let c = a.center();
     let over = c.x >= b.min.x && c.x <= b.max.x && c.z >= b.min.z && c.z <= b.max.z;
-    let on_legs = crate::ground::kind::form_of(scene, above) == crate::scene::Form::OnLegs;
-    // Below its bottom, in the room under its top, or flat (a rug under a bed).
+    let shared = crate::ground::kind::room_of(scene, object, above)
+        .filter(|r| r.form == crate::scene::Form::OnLegs);
+    let on_legs = shared.is_some();
+    // Below its bottom, in the room under its top (a chair's seat under it, its back
+    // out), or flat (a rug under a bed).
     let under = a.max.y <= b.min.y + 1e-6
-        || (on_legs && crate::scene::form::clear_under(&a, &b))
+        || shared.is_some_and(|r| crate::scene::form::clear_in(&a, &b, r))
         || a.size().y <= crate::scene::FLOOR_LEVEL;
+    // What must fit in the room under the top: a chair's seat, else all of it.
+    let height = shared
+        .and_then(|r| r.seat)
+        .map_or(a.size().y, |seat| seat.height);
     if over && under {
         return Ok(());
     }
@@ -699,10 +729,14 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), EditErr
     } else {
         b.min.y - scene.floor()
     };
-    Err(placement_error(if on_legs && a.size().y > room {
+    Err(placement_error(if on_legs && height > room {
         format!(
-            "'{name}' cannot go under '{target}': there is {room:.2} m under its top, and '{name}' is {:.2} m tall",
-            a.size().y
+            "'{name}' cannot go under '{target}': there is {room:.2} m under its top, and '{name}' is {height:.2} m tall{}",
+            if height < a.size().y { " to its seat" } else { "" }
+        )
+    } else if shared.is_some_and(|r| r.seat.is_some()) {
+        format!(
+            "'{name}' cannot be tucked under '{target}': its back would meet the top; turn it to face '{target}' first"
         )
     } else if on_legs {
         format!(
@@ -773,7 +807,7 @@ fn place_into(
     let t0 = Instant::now();
     let resolved = match &options.collisions {
         Some(resolve_options) => {
-            let kinds = Lexical { under };
+            let kinds = Lexical::new(under);
             resolve_collisions(scene, &moved, resolve_options, &kinds, &mut boxes, motions)?
         }
         None => Resolved::default(),

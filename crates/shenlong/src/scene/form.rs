@@ -118,15 +118,103 @@ pub fn clear_inside(a: &Aabb, container: &Aabb) -> bool {
     (a.min - room.min).min_element() >= -TOUCH && (room.max - a.max).min_element() >= -TOUCH
 }
 
-/// Whether `a` stands clear of the solid parts of `b`, an object of form `form`: in the
-/// room under a top on legs, or inside an open container.
-#[must_use]
-pub fn clear_in(a: &Aabb, b: &Aabb, form: Form) -> bool {
-    match form {
-        Form::Solid => false,
-        Form::OnLegs => clear_under(a, b),
-        Form::Open => clear_inside(a, b),
+/// A chair's parts as boxes see them: a seat across its whole footprint, and a back
+/// along one side of it up to its full height. Tucked under a table, the seat goes under
+/// the top and the back stays out.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Seat {
+    /// The height of the seat above the chair's bottom, in metres.
+    pub height: f64,
+    /// The world axis its back is across from its front: 0 (x) or 2 (z).
+    pub axis: usize,
+    /// Whether the back is on the side of larger coordinates along `axis`.
+    pub max_side: bool,
+    /// How deep the back is along `axis`, in metres.
+    pub depth: f64,
+}
+
+impl Seat {
+    /// The highest a chair's seat is, in metres.
+    pub const MAX_HEIGHT: f64 = 0.5;
+    /// The deepest a chair's back is, in metres.
+    pub const MAX_BACK: f64 = 0.12;
+
+    /// The seat of a chair whose box is `chair`, with its back across `axis` on the side
+    /// `max_side`: the seat at most [`Seat::MAX_HEIGHT`] (and 55% of the chair's height),
+    /// the back at most [`Seat::MAX_BACK`] deep (and a quarter of the chair's depth).
+    #[must_use]
+    pub fn of(chair: &Aabb, axis: usize, max_side: bool) -> Self {
+        let size = chair.size();
+        Self {
+            height: Self::MAX_HEIGHT.min(size.y * 0.55),
+            axis,
+            max_side,
+            depth: Self::MAX_BACK.min(size[axis] * 0.25),
+        }
     }
+}
+
+/// How an object may share the box of the one it was put under or in: that one's form,
+/// and the moving object's seat and back when it is a chair.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Room {
+    /// The form of the object whose room it is.
+    pub form: Form,
+    /// The seat of the object in that room, if it is a chair.
+    pub seat: Option<Seat>,
+}
+
+impl From<Form> for Room {
+    fn from(form: Form) -> Self {
+        Self { form, seat: None }
+    }
+}
+
+impl Seat {
+    /// The boxes of the seat and of the back of a chair whose box is `chair`.
+    #[must_use]
+    pub fn parts(self, chair: &Aabb) -> [Aabb; 2] {
+        let seat = Aabb::new(
+            chair.min,
+            glam::DVec3::new(
+                chair.max.x,
+                (chair.min.y + self.height).min(chair.max.y),
+                chair.max.z,
+            ),
+        );
+        let (mut back_min, mut back_max) = (chair.min, chair.max);
+        if self.max_side {
+            back_min[self.axis] = (chair.max[self.axis] - self.depth).max(chair.min[self.axis]);
+        } else {
+            back_max[self.axis] = (chair.min[self.axis] + self.depth).min(chair.max[self.axis]);
+        }
+        [seat, Aabb::new(back_min, back_max)]
+    }
+}
+
+/// Whether chair `a`, with `seat`, is tucked under the top on legs whose box is `table`:
+/// its seat in the room under the top and off the legs, its back outside the table.
+#[must_use]
+pub fn clear_tucked(a: &Aabb, table: &Aabb, seat: Seat) -> bool {
+    let [seat_box, back] = seat.parts(a);
+    clear_under(&seat_box, table) && !back.intersects(table, TOUCH)
+}
+
+/// Whether `a` stands clear of the solid parts of `b` in `room`: in the room under a top
+/// on legs (a chair's seat under it and its back out), inside an open container, or —
+/// a chair — with neither its seat nor its back in `b`'s box (the room above a seat in
+/// front of its back is free: a table's edge, what stands on it).
+#[must_use]
+pub fn clear_in(a: &Aabb, b: &Aabb, room: Room) -> bool {
+    let in_form = match room.form {
+        Form::Solid => false,
+        Form::OnLegs => clear_under(a, b) || room.seat.is_some_and(|seat| clear_tucked(a, b, seat)),
+        Form::Open => clear_inside(a, b),
+    };
+    in_form
+        || room
+            .seat
+            .is_some_and(|seat| seat.parts(a).iter().all(|p| !p.intersects(b, TOUCH)))
 }
 
 /// Whether boxes `a` and `b` of forms `fa` and `fb` meet only where one stands in the
@@ -169,6 +257,33 @@ mod tests {
             &desk,
             Form::Solid
         ));
+        // A chair 0.95 m tall, its back on its +z side: its seat under the top, its back
+        // out; pushed in further, its back meets the top.
+        let chair = |z: f64| b([0.3, 0.0, z], [0.85, 0.95, z + 0.55]);
+        let seat = Seat::of(&chair(0.0), 2, true);
+        assert!(clear_tucked(&chair(0.4), &desk, seat));
+        assert!(!clear_tucked(&chair(0.0), &desk, seat));
+        assert!(!clear_under(&chair(0.4), &desk));
+        // Its back towards the desk: never tucked.
+        let facing_away = Seat::of(&chair(0.0), 2, false);
+        assert!(!clear_tucked(&chair(0.4), &desk, facing_away));
+        assert!(clear_in(
+            &chair(0.4),
+            &desk,
+            Room {
+                form: Form::OnLegs,
+                seat: Some(seat)
+            }
+        ));
+        assert!(!clear_in(&chair(0.4), &desk, Form::OnLegs.into()));
+        // Beside a box whose corner is above its seat, in front of its back: clear.
+        let crate_box = b([0.7, 0.6, 0.0], [1.2, 1.0, 0.55]);
+        let solid = Room {
+            form: Form::Solid,
+            seat: Some(seat),
+        };
+        assert!(clear_in(&chair(0.2), &crate_box, solid));
+        assert!(!clear_in(&chair(0.2), &crate_box, Form::Solid.into()));
         assert_eq!(Form::from_name("On legs"), Some(Form::OnLegs));
         assert_eq!(Form::from_name("solid"), Some(Form::Solid));
         // In a box 0.4 × 0.3 × 0.3: within its walls, above its bottom.

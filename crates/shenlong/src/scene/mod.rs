@@ -17,7 +17,7 @@ use crate::geometry::Aabb;
 use cga::{CgaError, Multivector, Similarity};
 use glam::{DQuat, DVec3};
 
-pub use form::Form;
+pub use form::{Form, Room, Seat};
 pub use support::{FLOOR_LEVEL, SUPPORT_GAP};
 
 /// The largest coordinate (and box extent) Shenlong keeps exact, in metres: positions and

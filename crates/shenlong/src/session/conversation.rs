@@ -102,8 +102,17 @@ pub(crate) fn moved_states(
         .iter()
         .filter(|(_, a, b)| a.pose_differs(b))
         .map(|(i, a, b)| {
-            let support = a.support.filter(|&s| s < scene.objects.len()).map(pose_before);
-            (*i, group_of(scene, *i, acted), a.clone(), b.similarity(), support)
+            let support = a
+                .support
+                .filter(|&s| s < scene.objects.len())
+                .map(pose_before);
+            (
+                *i,
+                group_of(scene, *i, acted),
+                a.clone(),
+                b.similarity(),
+                support,
+            )
         })
         .collect()
 }
@@ -350,7 +359,10 @@ impl Context {
             }
         }
         let named = states.len();
-        if states.iter().all(|(i, s)| !scene.objects[*i].pose_differs(s)) {
+        if states
+            .iter()
+            .all(|(i, s)| !scene.objects[*i].pose_differs(s))
+        {
             return Err(refuse("everything is already where it was"));
         }
         Ok(Plan::Restore { states, named })
@@ -419,13 +431,11 @@ impl Context {
                         "\"both\": only one object has been moved in this session",
                     ))
                 }
-                many => {
-                    return Err(refuse(format!(
-                        "\"both\" of which? {} objects have been moved in this session: {}; name them",
-                        many.len(),
-                        names(many)
-                    )))
-                }
+                many => return Err(refuse(format!(
+                    "\"both\" of which? {} objects have been moved in this session: {}; name them",
+                    many.len(),
+                    names(many)
+                ))),
             },
             Which::First => {
                 let Some(first) = moved.last() else {
@@ -543,8 +553,7 @@ impl Context {
         }
         let (text, head) = self.replace_acted(np)?;
         let said = head_noun(np);
-        let text = if mentions_other(np) && !matches!(said.as_str(), "other" | "") && said != head
-        {
+        let text = if mentions_other(np) && !matches!(said.as_str(), "other" | "") && said != head {
             self.other_destination(np, &said, scene, grounder)?
         } else if mentions_other(np) {
             self.other(&head, scene, grounder)?
@@ -655,7 +664,12 @@ impl Context {
             .filter(|o| !target.contains(o) && !last.acted.contains(o))
             .collect();
         match others.as_slice() {
-            [one] => splice(instruction, span.start, span.end, &quoted(&scene.objects[*one].name)),
+            [one] => splice(
+                instruction,
+                span.start,
+                span.end,
+                &quoted(&scene.objects[*one].name),
+            ),
             [] => Err(refuse(format!(
                 "there is no other {noun} than the one it went to"
             ))),
@@ -759,9 +773,27 @@ fn with_determiner(np: &str) -> String {
         .to_lowercase();
     let determined = matches!(
         first.as_str(),
-        "the" | "a" | "an" | "my" | "that" | "this" | "those" | "these" | "both" | "all"
-            | "every" | "each" | "its" | "their" | "his" | "her" | "our" | "your" | "some"
-            | "it" | "them"
+        "the"
+            | "a"
+            | "an"
+            | "my"
+            | "that"
+            | "this"
+            | "those"
+            | "these"
+            | "both"
+            | "all"
+            | "every"
+            | "each"
+            | "its"
+            | "their"
+            | "his"
+            | "her"
+            | "our"
+            | "your"
+            | "some"
+            | "it"
+            | "them"
     ) || !first.starts_with(char::is_alphabetic);
     if determined {
         np.to_string()

@@ -188,8 +188,19 @@ fn verb_clause(w: &[&str]) -> bool {
                 || w.get(i + 1).is_some_and(|next| {
                     matches!(
                         *next,
-                        "the" | "a" | "an" | "my" | "it" | "them" | "this" | "that" | "these"
-                            | "those" | "all" | "both" | "everything"
+                        "the"
+                            | "a"
+                            | "an"
+                            | "my"
+                            | "it"
+                            | "them"
+                            | "this"
+                            | "that"
+                            | "these"
+                            | "those"
+                            | "all"
+                            | "both"
+                            | "everything"
                     )
                 }))
     })
@@ -302,7 +313,8 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         // the opener, not a correction.
         let rest = &w[n..];
         // "not that one", "wrong one" alone: the other one.
-        if rest.is_empty() && matches!(
+        if rest.is_empty()
+            && matches!(
                 &w[..n],
                 [.., "not", "that" | "this", "one"] | [.., "wrong", "one"]
             )
@@ -386,7 +398,8 @@ fn destination_alone(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Optio
             | "between"
             | "in"
     ) || (first == "by" && determiner(w.get(1)));
-    (place && w.len() > 1 && !verb_clause(&w[1..])).then(|| FollowUp::InsteadPlace(text(0, w.len())))
+    (place && w.len() > 1 && !verb_clause(&w[1..]))
+        .then(|| FollowUp::InsteadPlace(text(0, w.len())))
 }
 
 /// "no, on the shelf" (a destination) or "no, the other one" (an object).
@@ -540,9 +553,9 @@ fn undo_steps(w: &[&str]) -> Option<Steps> {
             ["twice"] | ["twice", "please"] => Some(Steps::Last(2)),
             ["three", "times"] | ["thrice"] => Some(Steps::Last(3)),
             [n, "times", tail @ ..] if change(tail) => count(n).map(|n| Steps::Last(n as usize)),
-            ["the", "last", n, tail @ ..] | ["last", n, tail @ ..] if change(tail) => {
-                count(n).filter(|n| *n > 1.0).map(|n| Steps::Last(n as usize))
-            }
+            ["the", "last", n, tail @ ..] | ["last", n, tail @ ..] if change(tail) => count(n)
+                .filter(|n| *n > 1.0)
+                .map(|n| Steps::Last(n as usize)),
             ["those", "two" | "2", tail @ ..] if change(tail) => Some(Steps::Last(2)),
             _ => None,
         },
@@ -558,7 +571,10 @@ fn which(object: &[&str], text: &dyn Fn() -> String) -> Which {
         ["its" | "their" | "the", "position" | "place" | "spot" | "pose" | "location"] => {
             Which::Last
         }
-        ["everything"] | ["it" | "them", "all"] | ["all"] | ["all", "of", "them"]
+        ["everything"]
+        | ["it" | "them", "all"]
+        | ["all"]
+        | ["all", "of", "them"]
         | ["the", "scene" | "room"] => Which::All,
         ["both"] | ["them", "both"] | ["both", "of", "them"] => Which::Both,
         ["the", "other", "one"] | ["the", "other"] => Which::Other,
@@ -608,8 +624,19 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             ["where" | "how" | "as", "it" | "they" | "he" | "she", verb, ..]
             | ["the", "way", "it" | "they", verb, ..] => matches!(
                 *verb,
-                "was" | "were" | "used" | "started" | "came" | "belongs" | "belong"
-                    | "belonged" | "stood" | "sat" | "had" | "is" | "are"
+                "was"
+                    | "were"
+                    | "used"
+                    | "started"
+                    | "came"
+                    | "belongs"
+                    | "belong"
+                    | "belonged"
+                    | "stood"
+                    | "sat"
+                    | "had"
+                    | "is"
+                    | "are"
             ),
             ["its" | "their" | "the", what, ..] => earlier(what),
             _ => false,
@@ -693,8 +720,10 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
         ["back", "to", r @ ..] | ["back", r @ ..] => r,
         r => r,
     };
-    (matches!(rest.first(), Some(&("where" | "how" | "as" | "the" | "its")))
-        && where_it_was(rest))
+    (matches!(
+        rest.first(),
+        Some(&("where" | "how" | "as" | "the" | "its"))
+    ) && where_it_was(rest))
     .then_some(FollowUp::Back(Which::Last))
 }
 

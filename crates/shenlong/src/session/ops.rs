@@ -268,9 +268,7 @@ fn restore(
         scene.floor(),
         scene.bounds.as_ref(),
         // Back where it stood: under a table or in a box too, if it stood there.
-        &|_, j| {
-            Some(crate::ground::kind::form_of(scene, j)).filter(|f| *f != crate::scene::Form::Solid)
-        },
+        &|i, j| crate::ground::kind::room_of(scene, i, j),
     );
     let taken = found.iter().find_map(|o| match o.with {
         crate::collide::Obstacle::Object(j) => Some((o.object, j)),

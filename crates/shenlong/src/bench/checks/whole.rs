@@ -48,9 +48,7 @@ pub(super) fn no_collision(c: &Ctx<'_>) -> Result<(), Failure> {
     let groups: Vec<Vec<usize>> = moved.iter().map(|&i| vec![i]).collect();
     // Anything may stand in the room under a table or in a box: the judge does not know
     // what was put where.
-    let under = |_: usize, j: usize| {
-        Some(crate::ground::kind::form_of(c.after, j)).filter(|f| *f != crate::scene::Form::Solid)
-    };
+    let under = |i: usize, j: usize| crate::ground::kind::room_of(c.after, i, j);
     let found = find_collisions(
         &bb,
         &ab,
