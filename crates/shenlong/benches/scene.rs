@@ -112,6 +112,29 @@ fn collisions(c: &mut Criterion) {
                 )
             },
         );
+        // The same push with shapes read (`scene::form`): the pushed object a chair, its
+        // seat and back checked against every box it meets, tables on legs looked up.
+        let mut chaired_edited = edited.clone();
+        chaired_edited.objects[0].name = "chair 0".into();
+        group.bench_function(
+            format!("{} objects: detect + resolve one collision, shapes", 2 * tables),
+            |b| {
+                b.iter_batched(
+                    || chaired_edited.clone(),
+                    |mut s| {
+                        shenlong::collide::resolve(
+                            &mut s,
+                            black_box(&before),
+                            &[0],
+                            &shenlong::pipeline::Lexical::new(&[]),
+                            &options,
+                        )
+                        .unwrap()
+                    },
+                    criterion::BatchSize::LargeInput,
+                )
+            },
+        );
         group.bench_function(
             format!("{} objects: read the scene JSON", 2 * tables),
             |b| b.iter(|| json::read(black_box(&text), "warehouse").unwrap()),

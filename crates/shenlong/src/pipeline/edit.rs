@@ -657,17 +657,20 @@ fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), Ed
     }))
 }
 
-/// The objects' kinds as the lexicon says them, for collision resolution: floor furniture
-/// and tops on legs (`ground::kind`).
-/// `under`: (object, target) pairs where the edit put the object under or in the target;
-/// `seats`: each object's seat and back, once looked up.
-struct Lexical<'a> {
+/// The objects' kinds as the lexicon says them, for collision resolution: floor furniture,
+/// tops on legs, open containers and chairs (`ground::kind`, `scene::form`).
+pub struct Lexical<'a> {
+    /// (object, target) pairs where the edit put the object under or in the target.
     under: &'a [(usize, usize)],
+    /// Each object's seat and back, once looked up.
     seats: std::cell::RefCell<rustc_hash::FxHashMap<usize, Option<crate::scene::Seat>>>,
 }
 
 impl<'a> Lexical<'a> {
-    fn new(under: &'a [(usize, usize)]) -> Self {
+    /// The kinds for an edit that put each `(object, target)` of `under` under or in the
+    /// target.
+    #[must_use]
+    pub fn new(under: &'a [(usize, usize)]) -> Self {
         Self {
             under,
             seats: std::cell::RefCell::default(),

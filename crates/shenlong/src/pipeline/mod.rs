@@ -12,7 +12,7 @@ pub mod translate;
 
 pub use edit::{
     apply_expression, apply_expression_bound, edit, edit_with, place, Binding, CollisionReport,
-    Edit, EditError, EditErrorKind, EditOptions, EditReport, Placed,
+    Edit, EditError, EditErrorKind, EditOptions, EditReport, Lexical, Placed,
 };
 
 pub use crate::translate::bindings;
