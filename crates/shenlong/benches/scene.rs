@@ -117,7 +117,10 @@ fn collisions(c: &mut Criterion) {
         let mut chaired_edited = edited.clone();
         chaired_edited.objects[0].name = "chair 0".into();
         group.bench_function(
-            format!("{} objects: detect + resolve one collision, shapes", 2 * tables),
+            format!(
+                "{} objects: detect + resolve one collision, shapes",
+                2 * tables
+            ),
             |b| {
                 b.iter_batched(
                     || chaired_edited.clone(),

@@ -431,11 +431,13 @@ impl Context {
                         "\"both\": only one object has been moved in this session",
                     ))
                 }
-                many => return Err(refuse(format!(
+                many => {
+                    return Err(refuse(format!(
                     "\"both\" of which? {} objects have been moved in this session: {}; name them",
                     many.len(),
                     names(many)
-                ))),
+                )))
+                }
             },
             Which::First => {
                 let Some(first) = moved.last() else {
