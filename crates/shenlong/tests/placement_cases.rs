@@ -396,6 +396,57 @@ fn a_chair_is_tucked_seat_under_back_out() {
     assert!(e.message.contains("turn it to face"), "{}", e.message);
 }
 
+/// In a bookcase: on a shelf, within its walls, under the shelf above — the lowest with
+/// room, or the one named ("the top shelf of …"); too tall for any shelf, refused; a
+/// filing cabinet has drawers, not shelves: refused as solid.
+#[test]
+fn in_a_bookcase_is_on_a_shelf_or_refused() {
+    let text = r#"{"objects": [
+        {"name": "bookcase", "size": [0.9, 1.8, 0.35], "position": [0, 0, 0]},
+        {"name": "book", "size": [0.15, 0.22, 0.03], "position": [2, 0, 0]},
+        {"name": "novel", "size": [0.14, 0.2, 0.03], "position": [2.5, 0, 0]},
+        {"name": "floor vase", "size": [0.3, 0.6, 0.3], "position": [3, 0, 1]},
+        {"name": "filing cabinet", "size": [0.5, 1.2, 0.6], "position": [-2, 0, 0]}
+    ]}"#;
+    let translator = OfflineTranslator::new();
+    let options = EditOptions::default();
+    let mut s = scene(text);
+    run(&mut s, "put the book in the bookcase");
+    let (book, case) = (aabb(&s, "book"), aabb(&s, "bookcase"));
+    assert!(
+        shenlong::scene::form::clear_shelved(&book, &case),
+        "{book:?}"
+    );
+    assert!(
+        (book.min.y - shenlong::scene::form::WALL).abs() < LEVEL,
+        "the lowest shelf"
+    );
+    run(&mut s, "put the novel on the top shelf of the bookcase");
+    let novel = aabb(&s, "novel");
+    assert!(shenlong::scene::form::clear_shelved(&novel, &case));
+    assert!(novel.min.y > 1.4 && novel.max.y < case.max.y, "{novel:?}");
+    let e = edit(
+        &mut s,
+        "put the floor vase in the bookcase",
+        &translator,
+        &options,
+    )
+    .expect_err("refused");
+    assert!(
+        e.message.contains("does not fit on a shelf"),
+        "{}",
+        e.message
+    );
+    let e = edit(
+        &mut s,
+        "put the book in the filing cabinet",
+        &translator,
+        &options,
+    )
+    .expect_err("refused");
+    assert!(e.message.contains("solid box"), "{}", e.message);
+}
+
 /// `name` overlaps no object but `allowed` (and what it stood in before).
 fn overlaps_nothing_but(scene: &Scene, name: &str, allowed: &str) {
     let a = aabb(scene, name);

@@ -19,7 +19,8 @@
 //!    tucked, its seat so and its back out — or flat
 //!    (a rug), nothing new overlapped — or refused, never beside Y.
 //! 7. **in Y**: within the walls of an open container Y, above its bottom, below its rim,
-//!    nothing new overlapped — or refused (a solid Y, or no room), never beside Y.
+//!    or on a shelf of a case of shelves Y, nothing new overlapped — or refused (a solid Y,
+//!    or no room), never beside Y.
 //!
 //! The counts per scene and property are printed (`cargo test --test placement_properties
 //! -- --nocapture`) and quoted in docs/collisions.md.
@@ -465,13 +466,17 @@ fn check_under(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> 
 /// In Y: within Y's room (an open container), nothing new overlapped but Y.
 fn check_in(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Verdict {
     let (a, b) = (&after[x], &after[y]);
-    if shenlong::ground::kind::form_of(scene, y) != shenlong::scene::Form::Open {
-        return Some(format!(
-            "put in '{}', which is no container",
-            scene.objects[y].name
-        ));
-    }
-    if !shenlong::scene::form::clear_inside(a, b) {
+    let inside = match shenlong::ground::kind::form_of(scene, y) {
+        shenlong::scene::Form::Open => shenlong::scene::form::clear_inside(a, b),
+        shenlong::scene::Form::Shelves => shenlong::scene::form::clear_shelved(a, b),
+        _ => {
+            return Some(format!(
+                "put in '{}', which is no container",
+                scene.objects[y].name
+            ))
+        }
+    };
+    if !inside {
         return Some(format!("not inside: {a:?} in {b:?}"));
     }
     let away = Aabb::new(b.min - 1e3, b.min - 1e3);

@@ -497,7 +497,7 @@ fn form(raw: &RawValue, i: usize) -> Result<crate::scene::Form, FormatError> {
         .and_then(|name| crate::scene::Form::from_name(&name))
         .ok_or_else(|| {
             FormatError::invalid(format!(
-                "objects[{i}].form must be \"solid\", \"on_legs\" (a top on legs, with room below) or \"open\" (an open container)"
+                "objects[{i}].form must be \"solid\", \"on_legs\" (a top on legs, with room below), \"open\" (an open container) or \"shelves\" (a case of shelves)"
             ))
         })
 }

@@ -81,10 +81,32 @@ pub fn form_of(scene: &Scene, i: usize) -> Form {
             ],
         ) == Some(true)
     };
+    // A bookcase, a set of shelves, a cabinet or a cupboard standing at least as tall as
+    // a shelf's spacing (not a filing cabinet: drawers, not shelves).
+    let shelves = || {
+        o.world_aabb().size().y >= crate::scene::form::SHELF_SPACING
+            && !o.name.to_lowercase().contains("filing")
+            && filed_under(
+                Lexicon::builtin(),
+                o.labels.category.as_deref(),
+                &o.name,
+                &[
+                    "bookcase",
+                    "bookshelf",
+                    "shelving",
+                    "shelves",
+                    "cabinet",
+                    "cupboard",
+                    "hutch",
+                ],
+            ) == Some(true)
+    };
     if square && tall && table() {
         Form::OnLegs
     } else if square && container() {
         Form::Open
+    } else if square && shelves() {
+        Form::Shelves
     } else {
         Form::Solid
     }

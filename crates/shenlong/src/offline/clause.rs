@@ -18,6 +18,8 @@ pub(crate) struct Clause {
     /// Whether it says to keep facing something ("keep it facing X2"): a facing square on
     /// to the target's nearest side, not towards its centre.
     pub keep_facing: bool,
+    /// The shelf it names of what it puts things in ("on the top shelf of X2").
+    pub shelf: Option<crate::scene::form::Shelf>,
 }
 
 impl Clause {
@@ -30,6 +32,7 @@ impl Clause {
             view: None,
             until_blocked: false,
             keep_facing: false,
+            shelf: None,
         }
     }
 

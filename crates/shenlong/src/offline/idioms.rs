@@ -19,6 +19,7 @@
 //! | `somewhere on X2`, `somewhere near X2` | `on X2`, `near X2` |
 //! | `to the other end of X2`, `at the far end of X2` | `to the other side of X2` (mirrored through its centre: on a counter, its other end) |
 //! | `put X1 and X2 next to each other`, `… side by side`, `… beside each other`, `… together` | `put X2 next to X1` (the first stays) |
+//! | `on the top shelf of X2`, `onto the bottom shelf of X2`, `on the second shelf from the top of X2`, `in the middle shelf of X2` | `in X2`, on that shelf |
 
 use super::amounts;
 use super::clause::Clause;
@@ -57,6 +58,65 @@ pub(crate) fn rewrite(c: &mut Clause) {
     out_from(c);
     from_where_it_is(c);
     edge_of(c);
+    shelf_of(c);
+}
+
+/// A shelf of what things go in: `on the top shelf of X2`, `onto the lowest shelf of X2`,
+/// `on the second shelf from the top of X2` → `in X2` with the shelf kept
+/// ([`Clause::shelf`]). "The second shelf" alone does not say from where: not read.
+fn shelf_of(c: &mut Clause) {
+    use crate::scene::form::Shelf;
+    let is_var =
+        |c: &Clause, k: usize| matches!(c.token(k), Some(super::words::Token::Variable(_)));
+    let ordinal = |w: &str| -> Option<usize> {
+        Some(match w {
+            "first" | "1st" => 1,
+            "second" | "2nd" => 2,
+            "third" | "3rd" => 3,
+            "fourth" | "4th" => 4,
+            "fifth" | "5th" => 5,
+            _ => return None,
+        })
+    };
+    for i in 0..c.len() {
+        if !one_of(c, i, &["on", "onto", "in", "into", "to"]) || !c.words_at_any(i + 1, &["the"]) {
+            continue;
+        }
+        let Some(w) = c.word(i + 2).filter(|_| c.free(i + 2)) else {
+            continue;
+        };
+        // "the top shelf of X2", "the second shelf from the top of X2", "the second
+        // highest shelf of X2".
+        let (shelf, of) = match (w, c.word(i + 3)) {
+            ("top" | "highest" | "uppermost" | "upper", Some("shelf")) => (Shelf::Top, i + 4),
+            ("bottom" | "lowest" | "lower", Some("shelf")) => (Shelf::Bottom, i + 4),
+            ("middle" | "centre" | "center", Some("shelf")) => (Shelf::Middle, i + 4),
+            (_, Some("highest" | "top")) if c.words_at(i + 4, &["shelf"]) => {
+                let Some(k) = ordinal(w) else { continue };
+                (Shelf::FromTop(k), i + 5)
+            }
+            (_, Some("lowest" | "bottom")) if c.words_at(i + 4, &["shelf"]) => {
+                let Some(k) = ordinal(w) else { continue };
+                (Shelf::FromBottom(k), i + 5)
+            }
+            (_, Some("shelf")) if c.words_at_any(i + 4, &["from", "the"]) => {
+                let Some(k) = ordinal(w) else { continue };
+                match c.word(i + 6) {
+                    Some("top") => (Shelf::FromTop(k), i + 7),
+                    Some("bottom") => (Shelf::FromBottom(k), i + 7),
+                    _ => continue,
+                }
+            }
+            _ => continue,
+        };
+        if !c.words_at(of, &["of"]) || !is_var(c, of + 1) {
+            continue;
+        }
+        c.mark(i..of);
+        c.replace(of, "in");
+        c.shelf = Some(shelf);
+        return;
+    }
 }
 
 /// The edge of an object is its end: `to the left edge of X2` → `to the left end of X2`;

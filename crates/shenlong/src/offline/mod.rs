@@ -464,15 +464,59 @@ impl Known<'_> {
         })
     }
 
-    /// Whether `t`'s object is an open container (a box, a basket: `scene::form`).
-    pub(crate) fn open(&self, t: usize) -> bool {
-        self.scene
-            .and_then(|(scene, objects)| {
-                objects
-                    .get(t)
-                    .map(|&b| crate::ground::kind::form_of(scene, b) == crate::scene::Form::Open)
-            })
-            .unwrap_or(false)
+    /// How high above the bottom of `t`'s object `subjects` rest put in it, if it has
+    /// room inside (`scene::form`): an open container's floor; in a case of shelves, the
+    /// lowest shelf tall and wide enough for the largest of them with room left on it
+    /// (else the lowest tall and wide enough: whether there is room is checked once
+    /// placed); `shelf`: that shelf. `None`: solid, no such shelf, or nothing known.
+    pub(crate) fn inside_floor(
+        &self,
+        subjects: &[usize],
+        t: usize,
+        shelf: Option<crate::scene::form::Shelf>,
+    ) -> Option<f64> {
+        use crate::scene::{form, Form};
+        let (scene, objects) = self.scene?;
+        let case = *objects.get(t)?;
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let b = boxes[case];
+        match crate::ground::kind::form_of(scene, case) {
+            Form::Open if shelf.is_none() => Some(form::inside(&b).min.y - b.min.y),
+            Form::Shelves if shelf.is_some() => shelf?
+                .pick(&form::compartments(&b))
+                .map(|room| room.min.y - b.min.y),
+            Form::Shelves => {
+                let moving: Vec<usize> = subjects
+                    .iter()
+                    .filter_map(|&s| objects.get(s).copied())
+                    .collect();
+                let need = moving
+                    .iter()
+                    .map(|&o| boxes[o].size())
+                    .fold(glam::DVec3::ZERO, glam::DVec3::max);
+                let area = |x: &crate::geometry::Aabb| x.size().x * x.size().z;
+                let fits = |room: &crate::geometry::Aabb| need.cmple(room.size() + 1e-9).all();
+                let rooms: Vec<_> = form::compartments(&b).into_iter().filter(fits).collect();
+                // What already stands on a shelf: the footprint it takes there.
+                let used = |room: &crate::geometry::Aabb| {
+                    (0..boxes.len())
+                        .filter(|&j| j != case && !moving.contains(&j))
+                        .filter(|&j| boxes[j].intersects(room, 1e-6))
+                        .map(|j| boxes[j].footprint_overlap(room))
+                        .sum::<f64>()
+                };
+                let free = rooms
+                    .iter()
+                    .find(|room| used(room) + need.x * need.z <= 0.9 * area(room));
+                // Too big for every shelf: the lowest, where the placement check says so.
+                let lowest = form::compartments(&b).into_iter().next();
+                free.or(rooms.first())
+                    .copied()
+                    .or(lowest)
+                    .map(|room| room.min.y - b.min.y)
+            }
+            _ => None,
+        }
     }
 
     /// Whether `t`'s object hangs (on a wall, above the floor, resting on nothing).

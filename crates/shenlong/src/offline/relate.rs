@@ -425,8 +425,10 @@ impl Reader<'_> {
             .map(|(_, k)| *k);
         let relation = match kind {
             Some(RelKind::Inside) => match targets.first() {
-                Some(&target) if self.facts.known.open(target) => Relation::In,
-                Some(&target) => return Err(self.inside(&subjects, target)),
+                Some(&target) => match self.facts.known.inside_floor(&subjects, target, c.shelf) {
+                    Some(floor) => Relation::In(floor),
+                    None => return Err(self.inside(&subjects, target)),
+                },
                 None => return Err(not_read(text, text)),
             },
             Some(RelKind::Fixed(rel)) => rel,
@@ -549,8 +551,10 @@ impl Reader<'_> {
         targets: &[usize],
     ) -> Result<Relation, ReadError> {
         let relation = match r.kind {
-            RelKind::Inside if self.facts.known.open(targets[0]) => Relation::In,
-            RelKind::Inside => return Err(self.inside(subjects, targets[0])),
+            RelKind::Inside => match self.facts.known.inside_floor(subjects, targets[0], c.shelf) {
+                Some(floor) => Relation::In(floor),
+                None => return Err(self.inside(subjects, targets[0])),
+            },
             // "slide X1 right until it touches X2", "push X1 left against X2": along
             // that direction, when X2 lies straight that way.
             RelKind::Fixed(Relation::Against) => match self.direction_before(c, r.range.start) {
@@ -619,7 +623,7 @@ impl Reader<'_> {
             ) => Some(Near::Beside(t)),
             (Relation::Between | Relation::BetweenOn(_), &[a, b, ..]) => Some(Near::Between(a, b)),
             (Relation::Under, &[t, ..]) => Some(Near::Under(t)),
-            (Relation::In, &[t, ..]) => Some(Near::Inside(t)),
+            (Relation::In(_), &[t, ..]) => Some(Near::Inside(t)),
             _ => None,
         };
         // "table 4 and its chairs towards the door": a table with what stands drawn up

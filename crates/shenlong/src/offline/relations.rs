@@ -63,8 +63,9 @@ pub(crate) enum Relation {
     On,
     /// Under.
     Under,
-    /// In an open container: on its bottom, within its walls.
-    In,
+    /// In an open container or on a shelf of a case of shelves: resting this high above
+    /// the target's bottom (its floor inside), within its walls.
+    In(f64),
     /// Against one side: (axis, sign).
     Side(usize, f64),
     /// On the top, at one end: (axis, sign).
@@ -186,9 +187,9 @@ pub(crate) fn vector(
         Relation::Under => sum([level.clone(), centre(0), centre(2)]),
         // On the bottom inside its walls (whether it fits is checked once placed,
         // `Near::Inside`).
-        Relation::In => sum([
+        Relation::In(floor) => sum([
             along(sub(b("min"), a("min")), 1),
-            scaled_axis(num(crate::scene::form::WALL), 1),
+            scaled_axis(num(floor), 1),
             centre(0),
             centre(2),
         ]),

@@ -636,17 +636,40 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
     Ok(())
 }
 
-/// Whether `object` ended inside the open container `container`: within its walls, above
-/// its bottom, below its rim.
+/// Whether `object` ended inside `container`: within the walls of an open container, above
+/// its bottom, below its rim; on a shelf of a case of shelves, under the shelf above.
 fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), EditError> {
+    use crate::scene::{form, Form};
     let a = scene.objects[object].world_aabb();
     let b = scene.objects[container].world_aabb();
-    if crate::scene::form::clear_inside(&a, &b) {
+    let shelves = crate::ground::kind::form_of(scene, container) == Form::Shelves;
+    let inside = if shelves {
+        form::clear_shelved(&a, &b)
+    } else {
+        form::clear_inside(&a, &b)
+    };
+    if inside {
         return Ok(());
     }
     let (name, target) = (&scene.objects[object].name, &scene.objects[container].name);
-    let room = crate::scene::form::inside(&b).size();
     let size = a.size();
+    if shelves {
+        let fits = form::compartments(&b)
+            .iter()
+            .any(|room| size.cmple(room.size() + 1e-9).all());
+        let room = form::compartments(&b)
+            .first()
+            .map_or(b.size(), |r| r.size());
+        return Err(placement_error(if fits {
+            format!("there is no free room left on the shelves of '{target}' for '{name}'")
+        } else {
+            format!(
+                "'{name}' does not fit on a shelf of '{target}': its shelves are {:.2} × {:.2} m and {:.2} m apart, and '{name}' is {:.2} × {:.2} × {:.2} m",
+                room.x, room.z, room.y, size.x, size.y, size.z
+            )
+        }));
+    }
+    let room = form::inside(&b).size();
     Err(placement_error(if size.cmple(room).all() {
         format!("there is no free room left in '{target}' for '{name}'")
     } else {

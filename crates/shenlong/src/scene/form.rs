@@ -18,6 +18,9 @@ pub enum Form {
     OnLegs,
     /// An open container: a bottom and four walls, open at the top, with room inside.
     Open,
+    /// A case of shelves — a bookcase, a cabinet: walls, a back, a top and a bottom, and
+    /// shelves between them [`SHELF_SPACING`] apart, with room on each shelf.
+    Shelves,
 }
 
 impl Form {
@@ -33,6 +36,7 @@ impl Form {
             "solid" | "box" => Some(Self::Solid),
             "on_legs" | "legs" | "table" => Some(Self::OnLegs),
             "open" | "container" => Some(Self::Open),
+            "shelves" | "shelved" | "bookcase" | "cabinet" => Some(Self::Shelves),
             _ => None,
         }
     }
@@ -44,6 +48,7 @@ impl Form {
             Self::Solid => "solid",
             Self::OnLegs => "on_legs",
             Self::Open => "open",
+            Self::Shelves => "shelves",
         }
     }
 }
@@ -109,6 +114,75 @@ pub fn inside(container: &Aabb) -> Aabb {
         container.min + side + glam::DVec3::new(0.0, wall, 0.0),
         container.max - side,
     )
+}
+
+/// How far apart the shelves of a case of shelves are, at most, in metres: a bookcase's.
+pub const SHELF_SPACING: f64 = 0.35;
+
+/// The room on each shelf of the case of shelves whose box is `case`, lowest first:
+/// within its walls, from each board's top to the underside of the board above. Boards
+/// [`WALL`] thick at the bottom, between, and at the top, evenly spaced, at most
+/// [`SHELF_SPACING`] apart.
+#[must_use]
+pub fn compartments(case: &Aabb) -> Vec<Aabb> {
+    let size = case.size();
+    let wall = WALL.min(size.min_element() / 4.0);
+    let count = ((size.y - wall) / SHELF_SPACING).ceil().clamp(1.0, 64.0) as usize;
+    let pitch = size.y / count as f64;
+    (0..count)
+        .map(|k| {
+            let bottom = case.min.y + k as f64 * pitch + wall;
+            let top = if k + 1 == count {
+                case.max.y - wall
+            } else {
+                case.min.y + (k + 1) as f64 * pitch
+            };
+            Aabb::new(
+                glam::DVec3::new(case.min.x + wall, bottom, case.min.z + wall),
+                glam::DVec3::new(case.max.x - wall, top.max(bottom), case.max.z - wall),
+            )
+        })
+        .collect()
+}
+
+/// Which shelf of a case of shelves ("the top shelf", "the second shelf from the bottom").
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Shelf {
+    /// The highest.
+    Top,
+    /// The lowest.
+    Bottom,
+    /// The one nearest the middle of the case's height (the lower of two as near).
+    Middle,
+    /// This many down from the top (1: the top).
+    FromTop(usize),
+    /// This many up from the bottom (1: the bottom).
+    FromBottom(usize),
+}
+
+impl Shelf {
+    /// The room on this shelf of `rooms` ([`compartments`], lowest first), if there is
+    /// such a shelf.
+    #[must_use]
+    pub fn pick(self, rooms: &[Aabb]) -> Option<Aabb> {
+        let n = rooms.len();
+        let k = match self {
+            Self::Bottom => 0,
+            Self::Top => n.checked_sub(1)?,
+            Self::Middle => (n.checked_sub(1)?) / 2,
+            Self::FromTop(k) => n.checked_sub(k)?,
+            Self::FromBottom(k) => k.checked_sub(1)?,
+        };
+        rooms.get(k).copied()
+    }
+}
+
+/// Whether `a` lies on one shelf of the case of shelves whose box is `case`.
+#[must_use]
+pub fn clear_shelved(a: &Aabb, case: &Aabb) -> bool {
+    compartments(case).iter().any(|room| {
+        (a.min - room.min).min_element() >= -TOUCH && (room.max - a.max).min_element() >= -TOUCH
+    })
 }
 
 /// Whether `a` lies within the room inside the open container whose box is `container`.
@@ -210,6 +284,7 @@ pub fn clear_in(a: &Aabb, b: &Aabb, room: Room) -> bool {
         Form::Solid => false,
         Form::OnLegs => clear_under(a, b) || room.seat.is_some_and(|seat| clear_tucked(a, b, seat)),
         Form::Open => clear_inside(a, b),
+        Form::Shelves => clear_shelved(a, b),
     };
     in_form
         || room
@@ -284,6 +359,27 @@ mod tests {
         };
         assert!(clear_in(&chair(0.2), &crate_box, solid));
         assert!(!clear_in(&chair(0.2), &crate_box, Form::Solid.into()));
+        // A bookcase 1.8 m tall: six shelves 0.3 m apart, 0.28 m of room on each.
+        let bookcase = b([0.0, 0.0, 0.0], [0.9, 1.8, 0.35]);
+        let rooms = compartments(&bookcase);
+        assert_eq!(rooms.len(), 6);
+        assert!((rooms[0].min.y - WALL).abs() < 1e-9 && (rooms[0].max.y - 0.3).abs() < 1e-9);
+        assert!((rooms[5].max.y - (1.8 - WALL)).abs() < 1e-9);
+        let book = |y: f64| b([0.3, y, 0.05], [0.33, y + 0.22, 0.2]);
+        assert!(clear_shelved(&book(WALL), &bookcase));
+        assert!(clear_shelved(&book(0.3 + WALL), &bookcase));
+        // Through a board, or sticking out of the back.
+        assert!(!clear_shelved(&book(0.2), &bookcase));
+        assert!(!clear_shelved(
+            &b([0.3, WALL, 0.2], [0.33, 0.24, 0.4]),
+            &bookcase
+        ));
+        assert_eq!(Shelf::Top.pick(&rooms), Some(rooms[5]));
+        assert_eq!(Shelf::Bottom.pick(&rooms), Some(rooms[0]));
+        assert_eq!(Shelf::Middle.pick(&rooms), Some(rooms[2]));
+        assert_eq!(Shelf::FromTop(2).pick(&rooms), Some(rooms[4]));
+        assert_eq!(Shelf::FromBottom(7).pick(&rooms), None);
+        assert_eq!(Form::from_name("shelves"), Some(Form::Shelves));
         assert_eq!(Form::from_name("On legs"), Some(Form::OnLegs));
         assert_eq!(Form::from_name("solid"), Some(Form::Solid));
         // In a box 0.4 × 0.3 × 0.3: within its walls, above its bottom.
