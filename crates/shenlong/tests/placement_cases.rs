@@ -502,7 +502,7 @@ fn in_a_container_is_inside_or_refused_never_beside() {
         {"name": "toolbox", "size": [0.5, 0.25, 0.25], "position": [-0.5, 0.9, 0]},
         {"name": "drill", "size": [0.25, 0.22, 0.08], "position": [0.5, 0.9, 0.1]},
         {"name": "saw", "size": [0.6, 0.1, 0.15], "position": [0.2, 0.9, -0.1]},
-        {"name": "cabinet", "size": [0.8, 1.0, 0.5], "position": [3, 0, 0]},
+        {"name": "dresser", "size": [0.8, 1.0, 0.5], "position": [3, 0, 0]},
         {"name": "cup", "size": [0.08, 0.1, 0.08], "position": [0.8, 0.9, -0.2]}
     ]}"#;
     let translator = OfflineTranslator::new();
@@ -518,7 +518,7 @@ fn in_a_container_is_inside_or_refused_never_beside() {
     let before: Vec<_> = s.objects.iter().map(|o| o.similarity()).collect();
     let e = edit(&mut s, "put the saw in the toolbox", &translator, &options).expect_err("refused");
     assert!(e.message.contains("does not fit"), "{}", e.message);
-    let e = edit(&mut s, "put the cup in the cabinet", &translator, &options).expect_err("refused");
+    let e = edit(&mut s, "put the cup in the dresser", &translator, &options).expect_err("refused");
     assert!(e.message.contains("solid box"), "{}", e.message);
     let after: Vec<_> = s.objects.iter().map(|o| o.similarity()).collect();
     assert_eq!(before, after, "nothing moved");
