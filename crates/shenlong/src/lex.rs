@@ -94,6 +94,31 @@ pub(crate) fn tokenize(text: &str) -> Vec<Token> {
     tokenize_with(text, Quotes::Names)
 }
 
+/// "9-12" (at bytes `span`): a range of numbers typed as one word, as its two numbers and
+/// the dash between them.
+fn number_range(word: &str, span: std::ops::Range<usize>) -> Option<[Token; 3]> {
+    let (from, to) = word.split_once('-')?;
+    let digits = |x: &str| !x.is_empty() && x.len() <= 4 && x.bytes().all(|d| d.is_ascii_digit());
+    if !(digits(from) && digits(to)) {
+        return None;
+    }
+    let dash = span.start + from.len();
+    Some([
+        Token {
+            kind: Kind::Number(from.parse().ok()?),
+            span: span.start..dash,
+        },
+        Token {
+            kind: Kind::Punct('-'),
+            span: dash..dash + 1,
+        },
+        Token {
+            kind: Kind::Number(to.parse().ok()?),
+            span: dash + 1..span.end,
+        },
+    ])
+}
+
 /// [`tokenize`], with quotes read as `quotes` says.
 pub(crate) fn tokenize_with(text: &str, quotes: Quotes) -> Vec<Token> {
     let chars: Vec<(usize, char)> = text.char_indices().collect();
@@ -166,22 +191,8 @@ pub(crate) fn tokenize_with(text: &str, quotes: Quotes) -> Vec<Token> {
                 k = j;
                 continue;
             }
-            // "9-12": a range of numbers typed as one word, read as its numbers and the dash.
-            if let Some((from, to)) = lower.split_once('-').filter(|(a, b)| {
-                !a.is_empty()
-                    && !b.is_empty()
-                    && a.len() <= 4
-                    && b.len() <= 4
-                    && a.bytes().chain(b.bytes()).all(|d| d.is_ascii_digit())
-            }) {
-                let dash = start + from.len();
-                for (kind, span) in [
-                    (Kind::Number(from.parse().unwrap_or(0.0)), start..dash),
-                    (Kind::Punct('-'), dash..dash + 1),
-                    (Kind::Number(to.parse().unwrap_or(0.0)), dash + 1..span.end),
-                ] {
-                    tokens.push(Token { kind, span });
-                }
+            if let Some(range) = number_range(&lower, span.clone()) {
+                tokens.extend(range);
                 k = j;
                 continue;
             }

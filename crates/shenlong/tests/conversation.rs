@@ -405,7 +405,7 @@ mod any_turns {
     use super::*;
     use proptest::prelude::*;
 
-    const PIECES: [&str; 24] = [
+    const PIECES: [&str; 34] = [
         "move",
         "the",
         "armchair",
@@ -430,6 +430,16 @@ mod any_turns {
         "speaker",
         "twice as far",
         "é\u{130}",
+        "both",
+        "everything",
+        "yes,",
+        "not that one",
+        "undo the last 3",
+        "start over",
+        "10cm",
+        "1-3",
+        "the top shelf of",
+        "bookshelf",
     ];
 
     proptest! {

@@ -309,27 +309,7 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         && !matches!(w.get(1), Some(&("it" | "them" | "that" | "this")));
     if n > 0 || (not_at < w.len() && !whole_instruction) {
         let said = |from: usize, to: usize| text(from + n, to + n);
-        // "no, put it back", "nah, undo", "no, a bit less": a follow-up of its own after
-        // the opener, not a correction.
-        let rest = &w[n..];
-        // "not that one", "wrong one" alone: the other one.
-        if rest.is_empty()
-            && matches!(
-                &w[..n],
-                [.., "not", "that" | "this", "one"] | [.., "wrong", "one"]
-            )
-        {
-            return Some(FollowUp::Instead("the other one".into()));
-        }
-        if n > 0 {
-            if let Some(own) = undo(rest)
-                .or_else(|| back(rest, &said))
-                .or_else(|| repeat(rest, &said))
-            {
-                return Some(own);
-            }
-        }
-        return correction(&w[n..not_at], &said);
+        return after_opener(&w[..n], &w[n..], not_at - n, &said);
     }
     // "not on the shelf, on the table", "not the sofa, the armchair".
     if w[0] == "not"
@@ -372,6 +352,36 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
             ((after_refusal || one) && !starts_with_verb(&w))
                 .then(|| FollowUp::Instead(text(0, w.len())))
         })
+}
+
+/// What follows the openers that make a turn a correction (`opener`: "no", "I meant",
+/// "not that one"), up to the word `not_at` of `rest` (where "…, not the table" starts).
+fn after_opener(
+    opener: &[&str],
+    rest: &[&str],
+    not_at: usize,
+    said: &dyn Fn(usize, usize) -> String,
+) -> Option<FollowUp> {
+    // "not that one", "wrong one" alone: the other one.
+    if rest.is_empty()
+        && matches!(
+            opener,
+            [.., "not", "that" | "this", "one"] | [.., "wrong", "one"]
+        )
+    {
+        return Some(FollowUp::Instead("the other one".into()));
+    }
+    // "no, put it back", "nah, undo", "no, a bit less": a follow-up of its own after the
+    // opener, not a correction.
+    if !opener.is_empty() {
+        if let Some(own) = undo(rest)
+            .or_else(|| back(rest, said))
+            .or_else(|| repeat(rest, said))
+        {
+            return Some(own);
+        }
+    }
+    correction(&rest[..not_at.min(rest.len())], said)
 }
 
 /// A destination said alone ("onto the chair", "next to the sofa"): where the last
@@ -583,82 +593,97 @@ fn which(object: &[&str], text: &dyn Fn() -> String) -> Which {
     }
 }
 
+/// Whether `rest` says where something was ("where it was", "to its original place",
+/// "the way it was before", or nothing).
+fn where_it_was(rest: &[&str]) -> bool {
+    let mut rest = match rest {
+        ["to", r @ ..] => r,
+        r => r,
+    };
+    // "… too", "… as well", "… please".
+    while let [r @ .., "too" | "please" | "also"] | [r @ .., "as", "well"] = rest {
+        rest = r;
+    }
+    // "… before", "… at first", "… to begin with".
+    while let [r @ .., "before"] | [r @ .., "at", "first"] | [r @ .., "originally"] = rest {
+        rest = r;
+    }
+    let earlier = |x: &str| {
+        matches!(
+            x,
+            "place"
+                | "spot"
+                | "position"
+                | "pose"
+                | "location"
+                | "old"
+                | "original"
+                | "first"
+                | "previous"
+                | "former"
+                | "earlier"
+                | "starting"
+                | "initial"
+                | "usual"
+                | "last"
+        )
+    };
+    match rest {
+        [] | ["again"] => true,
+        ["where" | "how" | "as", "it" | "they" | "he" | "she", verb, ..]
+        | ["the", "way", "it" | "they", verb, ..] => matches!(
+            *verb,
+            "was"
+                | "were"
+                | "used"
+                | "started"
+                | "came"
+                | "belongs"
+                | "belong"
+                | "belonged"
+                | "stood"
+                | "sat"
+                | "had"
+                | "is"
+                | "are"
+        ),
+        ["its" | "their" | "the", what, ..] => earlier(what),
+        _ => false,
+    }
+}
+
+/// "move it back", with no amount and nothing after, by a verb that is not one of
+/// putting (`putting`): where it was, or backwards? Refused, saying both.
+fn back_or_backwards(
+    w: &[&str],
+    putting: &dyn Fn(&str) -> bool,
+    text: &dyn Fn(usize, usize) -> String,
+) -> Option<FollowUp> {
+    let ([first, "it" | "them" | "that" | "this", "back"]
+    | [first, "it" | "them" | "that" | "this", "back", "please"]
+    | [first, "back", "it" | "them" | "that" | "this"]) = w
+    else {
+        return None;
+    };
+    (!putting(first) && crate::ground::words::is_verb(first)).then(|| {
+        FollowUp::Unclear(format!(
+            "\"{}\" reads two ways: say \"put it back\" to return it where it was, or how far to move it backwards (\"{first} it back 50 cm\")",
+            text(0, w.len())
+        ))
+    })
+}
+
 /// "put it back", "put the chair back where it was", "back where it was", "return the
 /// lamp to where it was".
 fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
-    let where_it_was = |rest: &[&str]| -> bool {
-        let mut rest = match rest {
-            ["to", r @ ..] => r,
-            r => r,
-        };
-        // "… too", "… as well", "… please".
-        while let [r @ .., "too" | "please" | "also"] | [r @ .., "as", "well"] = rest {
-            rest = r;
-        }
-        // "… before", "… at first", "… to begin with".
-        while let [r @ .., "before"] | [r @ .., "at", "first"] | [r @ .., "originally"] = rest {
-            rest = r;
-        }
-        let earlier = |x: &str| {
-            matches!(
-                x,
-                "place"
-                    | "spot"
-                    | "position"
-                    | "pose"
-                    | "location"
-                    | "old"
-                    | "original"
-                    | "first"
-                    | "previous"
-                    | "former"
-                    | "earlier"
-                    | "starting"
-                    | "initial"
-                    | "usual"
-                    | "last"
-            )
-        };
-        match rest {
-            [] | ["again"] => true,
-            ["where" | "how" | "as", "it" | "they" | "he" | "she", verb, ..]
-            | ["the", "way", "it" | "they", verb, ..] => matches!(
-                *verb,
-                "was"
-                    | "were"
-                    | "used"
-                    | "started"
-                    | "came"
-                    | "belongs"
-                    | "belong"
-                    | "belonged"
-                    | "stood"
-                    | "sat"
-                    | "had"
-                    | "is"
-                    | "are"
-            ),
-            ["its" | "their" | "the", what, ..] => earlier(what),
-            _ => false,
-        }
-    };
     let verb = |x: &str| {
         matches!(
             x,
             "put" | "bring" | "set" | "place" | "return" | "restore" | "get" | "reset"
         )
     };
-    // "move it back", with no amount and nothing after: where it was, or backwards?
-    if let [first, "it" | "them" | "that" | "this", "back"]
-    | [first, "it" | "them" | "that" | "this", "back", "please"]
-    | [first, "back", "it" | "them" | "that" | "this"] = w
-    {
-        if !verb(first) && crate::ground::words::is_verb(first) {
-            return Some(FollowUp::Unclear(format!(
-                "\"{}\" reads two ways: say \"put it back\" to return it where it was, or how far to move it backwards (\"{first} it back 50 cm\")",
-                text(0, w.len())
-            )));
-        }
+    if let Some(unclear) = back_or_backwards(w, &verb, text) {
+        return Some(unclear);
     }
     // Any motion verb, when where it was follows: "move it back to where it was".
     if let [first, ..] = w {
