@@ -376,6 +376,11 @@ fn a_chair_is_tucked_seat_under_back_out() {
         "tuck the office chair under the desk",
         "push the office chair in",
         "tuck the office chair in",
+        "tuck in the office chair",
+        "push the office chair all the way in",
+        "tuck the office chair into the desk",
+        "slide the office chair in under the desk",
+        "tuck the office chair neatly under the desk",
     ] {
         let mut s = scene(text);
         let monitor = aabb(&s, "monitor");
@@ -421,6 +426,19 @@ fn in_a_bookcase_is_on_a_shelf_or_refused() {
         (book.min.y - shenlong::scene::form::WALL).abs() < LEVEL,
         "the lowest shelf"
     );
+    for said in [
+        "put the novel on a shelf in the bookcase",
+        "put the novel away in the bookcase",
+        "place the novel on the bookcase shelf",
+        "put the novel on one of the shelves of the bookcase",
+    ] {
+        let mut t = s.clone();
+        run(&mut t, said);
+        assert!(
+            shenlong::scene::form::clear_shelved(&aabb(&t, "novel"), &case),
+            "{said}"
+        );
+    }
     run(&mut s, "put the novel on the top shelf of the bookcase");
     let novel = aabb(&s, "novel");
     assert!(shenlong::scene::form::clear_shelved(&novel, &case));
@@ -508,6 +526,12 @@ fn in_a_container_is_inside_or_refused_never_beside() {
     let translator = OfflineTranslator::new();
     let options = EditOptions::default();
     let mut s = scene(text);
+    let mut t = s.clone();
+    run(&mut t, "stow the drill away in the toolbox");
+    assert!(shenlong::scene::form::clear_inside(
+        &aabb(&t, "drill"),
+        &aabb(&t, "toolbox")
+    ));
     run(&mut s, "put the drill in the toolbox");
     let (drill, toolbox) = (aabb(&s, "drill"), aabb(&s, "toolbox"));
     assert!(

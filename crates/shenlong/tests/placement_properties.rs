@@ -20,7 +20,7 @@
 //!    (a rug), nothing new overlapped — or refused, never beside Y.
 //! 7. **in Y**: within the walls of an open container Y, above its bottom, below its rim,
 //!    or on a shelf of a case of shelves Y, nothing new overlapped — or refused (a solid Y,
-//!    or no room), never beside Y.
+//!    or no room), never beside Y; floor furniture put in a table on legs, as under it (6).
 //!
 //! The counts per scene and property are printed (`cargo test --test placement_properties
 //! -- --nocapture`) and quoted in docs/collisions.md.
@@ -469,6 +469,9 @@ fn check_in(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Ver
     let inside = match shenlong::ground::kind::form_of(scene, y) {
         shenlong::scene::Form::Open => shenlong::scene::form::clear_inside(a, b),
         shenlong::scene::Form::Shelves => shenlong::scene::form::clear_shelved(a, b),
+        // Floor furniture put "in" a table or a desk goes under it ("tuck the chair into
+        // the desk").
+        shenlong::scene::Form::OnLegs => return check_under(scene, f, x, y, after),
         _ => {
             return Some(format!(
                 "put in '{}', which is no container",

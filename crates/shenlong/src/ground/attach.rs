@@ -75,6 +75,16 @@ impl Reader<'_> {
         if at_a_seat {
             return Ok(None);
         }
+        // "a shelf in the bookcase": a part of what the modifier names, not a shelf that
+        // stands in it (the part is read by the translator).
+        let part_of_shelves = matches!(head.text.as_str(), "shelf" | "shelves")
+            && matches!(&post, Some((Post::Relation(_, targets), _)) if !targets.is_empty()
+            && targets.iter().all(|&t| {
+                super::kind::form_of(self.scene, t) == crate::scene::Form::Shelves
+            }));
+        if part_of_shelves {
+            return Ok(None);
+        }
         // "move the mug off the table onto the counter": after where it is taken from,
         // "onto" (into, to) says where it goes, never which table.
         let after_source = start > 0

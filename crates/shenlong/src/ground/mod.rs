@@ -482,31 +482,6 @@ impl Grounder {
 /// door (Cube.009)"): it says again which, not another object. Its brackets and words are
 /// cut from the query.
 ///
-/// The phrases that name a shelf of the case of shelves named right after them ("the top
-/// shelf of the bookcase"): a part of that object, not an object — the words stay for the
-/// translator, which reads which shelf.
-fn drop_parts(text: &str, phrases: Vec<Phrase>, scene: &Scene) -> Vec<Phrase> {
-    let mut kept: Vec<Phrase> = Vec::with_capacity(phrases.len());
-    for (k, p) in phrases.iter().enumerate() {
-        let part = p
-            .text
-            .rsplit(' ')
-            .next()
-            .is_some_and(|w| matches!(w.to_lowercase().as_str(), "shelf" | "shelves"));
-        let whole = phrases.get(k + 1).filter(|q| {
-            text.get(p.span.end..q.span.start)
-                .is_some_and(|between| between.trim().eq_ignore_ascii_case("of"))
-                && q.objects
-                    .iter()
-                    .all(|&o| kind::form_of(scene, o) == crate::scene::Form::Shelves)
-        });
-        if !(part && whole.is_some()) {
-            kept.push(p.clone());
-        }
-    }
-    kept
-}
-
 /// # Errors
 /// A phrase in brackets that names other objects than the one before it: which is meant
 /// is not clear.
@@ -552,6 +527,32 @@ fn drop_restated(
         }
     }
     Ok(kept)
+}
+
+/// The phrases that name a shelf of the case of shelves named right after them ("the top
+/// shelf of the bookcase"): a part of that object, not an object — the words stay for the
+/// translator, which reads which shelf.
+fn drop_parts(text: &str, phrases: Vec<Phrase>, scene: &Scene) -> Vec<Phrase> {
+    let mut kept: Vec<Phrase> = Vec::with_capacity(phrases.len());
+    for (k, p) in phrases.iter().enumerate() {
+        let part = p
+            .text
+            .rsplit(' ')
+            .next()
+            .is_some_and(|w| matches!(w.to_lowercase().as_str(), "shelf" | "shelves"));
+        let whole = phrases.get(k + 1).filter(|q| {
+            text.get(p.span.end..q.span.start).is_some_and(|between| {
+                matches!(between.trim().to_lowercase().as_str(), "of" | "in" | "on")
+            }) && q
+                .objects
+                .iter()
+                .all(|&o| kind::form_of(scene, o) == crate::scene::Form::Shelves)
+        });
+        if !(part && whole.is_some()) {
+            kept.push(p.clone());
+        }
+    }
+    kept
 }
 
 /// Splits the phrases held in place ([`hold`]) from the others; a group that takes in a

@@ -59,6 +59,44 @@ pub(crate) fn rewrite(c: &mut Clause) {
     from_where_it_is(c);
     edge_of(c);
     shelf_of(c);
+    particle_first(c);
+}
+
+/// The particle said before what it moves: `push in X1`, `tuck in X1 and X2`, `pull out
+/// X1` → `push X1 in`, … (the objects, then the particle, as the reader of pushing in
+/// reads them).
+fn particle_first(c: &mut Clause) {
+    use super::words::Token;
+    for i in 0..c.len() {
+        let verb = one_of(
+            c,
+            i,
+            &["push", "tuck", "pull", "slide", "scoot", "shove", "draw"],
+        );
+        if !verb || !one_of(c, i + 1, &["in", "out"]) {
+            continue;
+        }
+        // The objects after it: variables joined by "and".
+        let mut end = i + 2;
+        while matches!(c.token(end), Some(Token::Variable(_)))
+            || (c.words_at(end, &["and"]) && matches!(c.token(end + 1), Some(Token::Variable(_))))
+        {
+            end += 1;
+        }
+        if end == i + 2 {
+            continue;
+        }
+        let Some(particle) = c.token(i + 1).cloned() else {
+            continue;
+        };
+        for k in i + 1..end - 1 {
+            if let Some(next) = c.token(k + 1).cloned() {
+                c.set(k, next);
+            }
+        }
+        c.set(end - 1, particle);
+        return;
+    }
 }
 
 /// A shelf of what things go in: `on the top shelf of X2`, `onto the lowest shelf of X2`,
@@ -116,6 +154,43 @@ fn shelf_of(c: &mut Clause) {
         c.replace(of, "in");
         c.shelf = Some(shelf);
         return;
+    }
+    any_shelf_of(c);
+}
+
+/// A shelf, not said which, of what things go in: `on X2's shelf`, `on the X2 shelves`
+/// (X2 a bookcase), `on a shelf in X2`, `on one of the shelves of X2`, `on one of X2
+/// shelves` → `in X2`: its lowest shelf with room.
+fn any_shelf_of(c: &mut Clause) {
+    let is_var =
+        |c: &Clause, k: usize| matches!(c.token(k), Some(super::words::Token::Variable(_)));
+    let shelf =
+        |c: &Clause, k: usize| c.words_at_any(k, &["shelf"]) || c.words_at_any(k, &["shelves"]);
+    for i in 0..c.len() {
+        if !one_of(c, i, &["on", "onto", "in", "into"]) {
+            continue;
+        }
+        // "on X2 shelf", "on X2's shelves": the word after the target.
+        let mut k = i + 1;
+        if c.words_at_any(k, &["one", "of"]) {
+            k += 2;
+        }
+        if c.words_at_any(k, &["the"]) || c.words_at_any(k, &["a"]) {
+            k += 1;
+        }
+        if is_var(c, k) && (shelf(c, k + 1) || (c.words_at_any(k + 1, &["s"]) && shelf(c, k + 2))) {
+            let end = if shelf(c, k + 1) { k + 2 } else { k + 3 };
+            c.mark(i + 1..k);
+            c.mark(k + 1..end);
+            c.replace(i, "in");
+            return;
+        }
+        // "on a shelf in X2", "on one of the shelves of X2".
+        if shelf(c, k) && one_of(c, k + 1, &["in", "of", "on"]) && is_var(c, k + 2) {
+            c.mark(i..k + 1);
+            c.replace(k + 1, "in");
+            return;
+        }
     }
 }
 
@@ -508,7 +583,8 @@ fn pointing(c: &mut Clause) {
         } else {
             &["at", "towards", "toward"]
         };
-        if w != "face" && one_of(c, i + 1, at) {
+        // (Only a pointing word says "points at X2": "at an angle to X2" is no facing.)
+        if !matches!(w, "face" | "orient" | "angle") && one_of(c, i + 1, at) {
             // `faces at X2` reads as `faces the X2`: the article is what the reader of
             // facing skips before its target.
             c.replace(i, facing);

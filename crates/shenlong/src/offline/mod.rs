@@ -519,6 +519,25 @@ impl Known<'_> {
         }
     }
 
+    /// Whether `subjects` put "in" `t` go under it: `t` is a top on legs (a desk, a
+    /// table) and they are seats or floor furniture ("tuck the chair into the desk").
+    pub(crate) fn tucks_under(&self, subjects: &[usize], t: usize) -> bool {
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let Some(&table) = objects.get(t) else {
+            return false;
+        };
+        crate::ground::kind::form_of(scene, table) == crate::scene::Form::OnLegs
+            && !subjects.is_empty()
+            && subjects.iter().all(|&s| {
+                objects.get(s).is_some_and(|&o| {
+                    crate::ground::kind::seat_of(scene, o).is_some()
+                        || crate::ground::kind::is_floor_bound(scene, o)
+                })
+            })
+    }
+
     /// Whether `t`'s object hangs (on a wall, above the floor, resting on nothing).
     pub(crate) fn hangs(&self, t: usize) -> bool {
         self.scene

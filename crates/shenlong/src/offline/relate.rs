@@ -322,6 +322,24 @@ fn mark_particles_before(c: &mut Clause, start: usize) {
         }
         if matches!(c.word(p), Some("up" | "down" | "back" | "over" | "across")) && c.free(p) {
             c.mark(p..p + 1);
+        } else if c.word(p) == Some("in")
+            && c.free(p)
+            && matches!(
+                c.word(start),
+                Some("under" | "underneath" | "beneath" | "below")
+            )
+        {
+            // "push X1 in under X2": in, under it.
+            c.mark(p..p + 1);
+        } else if c.word(p) == Some("away")
+            && c.free(p)
+            && matches!(
+                c.word(start),
+                Some("in" | "into" | "inside" | "on" | "onto")
+            )
+        {
+            // "put X1 away in X2": put away, in it.
+            c.mark(p..p + 1);
         } else if matches!(c.word(start), Some("further" | "farther" | "away"))
             && c.word(q) == Some("out")
             && c.free(q)
@@ -425,6 +443,8 @@ impl Reader<'_> {
             .map(|(_, k)| *k);
         let relation = match kind {
             Some(RelKind::Inside) => match targets.first() {
+                // "tuck the chair into the desk": under a top on legs.
+                Some(&target) if self.facts.known.tucks_under(&subjects, target) => Relation::Under,
                 Some(&target) => match self.facts.known.inside_floor(&subjects, target, c.shelf) {
                     Some(floor) => Relation::In(floor),
                     None => return Err(self.inside(&subjects, target)),
@@ -551,6 +571,9 @@ impl Reader<'_> {
         targets: &[usize],
     ) -> Result<Relation, ReadError> {
         let relation = match r.kind {
+            RelKind::Inside if self.facts.known.tucks_under(subjects, targets[0]) => {
+                Relation::Under
+            }
             RelKind::Inside => match self.facts.known.inside_floor(subjects, targets[0], c.shelf) {
                 Some(floor) => Relation::In(floor),
                 None => return Err(self.inside(subjects, targets[0])),

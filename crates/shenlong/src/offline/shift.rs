@@ -140,7 +140,8 @@ impl Reader<'_> {
             }
             let metres = match amount {
                 Some(Length::Metres(m)) => m,
-                None if inwards => pushed,
+                // "push it all the way in": as far as pushing it in goes.
+                None | Some(Length::ToWall | Length::UntilBlocked) if inwards => pushed,
                 None => amounts::BIT_METRES,
                 Some(_) => return Some(Err(not_read(text, text))),
             };
