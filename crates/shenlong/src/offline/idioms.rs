@@ -106,16 +106,8 @@ fn shelf_of(c: &mut Clause) {
     use crate::scene::form::Shelf;
     let is_var =
         |c: &Clause, k: usize| matches!(c.token(k), Some(super::words::Token::Variable(_)));
-    let ordinal = |w: &str| -> Option<usize> {
-        Some(match w {
-            "first" | "1st" => 1,
-            "second" | "2nd" => 2,
-            "third" | "3rd" => 3,
-            "fourth" | "4th" => 4,
-            "fifth" | "5th" => 5,
-            _ => return None,
-        })
-    };
+    // A count from one end ("second"), not "last".
+    let ordinal = |w: &str| crate::ground::words::ordinal(w).filter(|&k| k != usize::MAX);
     for i in 0..c.len() {
         if !one_of(c, i, &["on", "onto", "in", "into", "to"]) || !c.words_at_any(i + 1, &["the"]) {
             continue;

@@ -654,12 +654,11 @@ fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), Ed
     let (name, target) = (&scene.objects[object].name, &scene.objects[container].name);
     let size = a.size();
     if shelves {
-        let fits = form::compartments(&b)
+        let rooms = form::compartments(&b);
+        let fits = rooms
             .iter()
             .any(|room| size.cmple(room.size() + 1e-9).all());
-        let room = form::compartments(&b)
-            .first()
-            .map_or(b.size(), |r| r.size());
+        let room = rooms.first().map_or(b.size(), |r| r.size());
         return Err(placement_error(if fits {
             format!("there is no free room left on the shelves of '{target}' for '{name}'")
         } else {

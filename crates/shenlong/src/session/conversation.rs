@@ -390,14 +390,6 @@ impl Context {
         grounder: &Grounder,
     ) -> Result<Vec<usize>, OpError> {
         let moved = self.moved_in_session();
-        let names = |objects: &[usize]| {
-            objects
-                .iter()
-                .take(8)
-                .map(|&i| format!("'{}'", scene.objects[i].name))
-                .collect::<Vec<_>>()
-                .join(", ")
-        };
         Ok(match which {
             Which::Named(words) => ground_phrase(words, scene, grounder)?,
             Which::Last | Which::All if !selected.is_empty() => selected.to_vec(),
@@ -419,7 +411,7 @@ impl Context {
                         return Err(refuse(format!(
                             "\"the other one\" could be any of {} objects moved in this session: {}; name it",
                             many.len(),
-                            names(many)
+                            names_of(scene, many)
                         )))
                     }
                 }
@@ -435,7 +427,7 @@ impl Context {
                     return Err(refuse(format!(
                     "\"both\" of which? {} objects have been moved in this session: {}; name them",
                     many.len(),
-                    names(many)
+                    names_of(scene, many)
                 )))
                 }
             },
@@ -678,11 +670,7 @@ impl Context {
             many => Err(refuse(format!(
                 "\"{np}\" could be any of {} {noun}s: {}; name it",
                 many.len(),
-                many.iter()
-                    .take(8)
-                    .map(|&i| format!("'{}'", scene.objects[i].name))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                names_of(scene, many)
             ))),
         }
     }
@@ -704,11 +692,7 @@ impl Context {
             many => Err(refuse(format!(
                 "\"the other one\" could be any of {} {head}s: {}; name it",
                 many.len(),
-                many.iter()
-                    .take(8)
-                    .map(|&i| format!("'{}'", scene.objects[i].name))
-                    .collect::<Vec<_>>()
-                    .join(", ")
+                names_of(scene, many)
             ))),
         }
     }
@@ -802,6 +786,16 @@ fn with_determiner(np: &str) -> String {
     } else {
         format!("the {np}")
     }
+}
+
+/// The first eight of `objects`' names, quoted, for a refusal that lists candidates.
+fn names_of(scene: &Scene, objects: &[usize]) -> String {
+    objects
+        .iter()
+        .take(8)
+        .map(|&i| format!("'{}'", scene.objects[i].name))
+        .collect::<Vec<_>>()
+        .join(", ")
 }
 
 /// An object's name quoted for an instruction, so that it is read as that name.
