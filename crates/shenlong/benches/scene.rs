@@ -300,5 +300,70 @@ fn big_scenes(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, bench, collisions, offline, grounding, big_scenes);
+/// A desk as a mesh: a top 4 cm thick on four legs, each box `cells` × `cells` quads a
+/// face (12·cells² triangles a box).
+fn desk_mesh(cells: u32) -> (Vec<DVec3>, Vec<[u32; 3]>) {
+    let mut parts = vec![(DVec3::new(0.0, 0.72, 0.0), DVec3::new(1.2, 0.76, 0.7))];
+    for (x, z) in [(0.0, 0.0), (1.15, 0.0), (0.0, 0.65), (1.15, 0.65)] {
+        parts.push((DVec3::new(x, 0.0, z), DVec3::new(x + 0.05, 0.72, z + 0.05)));
+    }
+    let (mut v, mut t) = (Vec::new(), Vec::new());
+    for (lo, hi) in parts {
+        let size = hi - lo;
+        // Each face of the box as a grid of cells × cells quads.
+        for axis in 0..3 {
+            for side in [0.0, 1.0] {
+                let (u, w) = ((axis + 1) % 3, (axis + 2) % 3);
+                let base = v.len() as u32;
+                for i in 0..=cells {
+                    for j in 0..=cells {
+                        let mut p = lo;
+                        p[axis] += side * size[axis];
+                        p[u] += size[u] * f64::from(i) / f64::from(cells);
+                        p[w] += size[w] * f64::from(j) / f64::from(cells);
+                        v.push(p);
+                    }
+                }
+                for i in 0..cells {
+                    for j in 0..cells {
+                        let k = base + i * (cells + 1) + j;
+                        t.push([k, k + 1, k + cells + 2]);
+                        t.push([k, k + cells + 2, k + cells + 1]);
+                    }
+                }
+            }
+        }
+    }
+    (v, t)
+}
+
+/// Reading what a mesh shows of the room under or in it (`scene::mesh::measure`), for a
+/// plain desk and a finely divided one, and reading a real glTF file (2CylinderEngine.glb,
+/// 29 meshes, from ../shared/data when present) with it.
+fn meshes(c: &mut Criterion) {
+    let mut group = c.benchmark_group("mesh shapes");
+    group.sample_size(20);
+    for cells in [1, 64] {
+        let (v, t) = desk_mesh(cells);
+        group.bench_function(format!("measure a desk of {} triangles", t.len()), |b| {
+            b.iter(|| shenlong::scene::mesh::measure(black_box(&v), black_box(&t)))
+        });
+    }
+    let engine = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("../../../shared/data/gltf/2CylinderEngine.glb");
+    if engine.is_file() {
+        let options = shenlong::format::ReadOptions {
+            units: Some(shenlong::format::facts::Units::Millimetres),
+            ..Default::default()
+        };
+        group.bench_function("read 2CylinderEngine.glb (29 meshes measured)", |b| {
+            b.iter(|| shenlong::format::SceneFile::load_with(black_box(&engine), &options).unwrap())
+        });
+    } else {
+        eprintln!("skipping 2CylinderEngine.glb: ../shared/data is absent");
+    }
+    group.finish();
+}
+
+criterion_group!(benches, bench, collisions, offline, grounding, big_scenes, meshes);
 criterion_main!(benches);

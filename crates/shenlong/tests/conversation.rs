@@ -247,6 +247,12 @@ fn follow_ups_said_other_ways() {
         say(&mut s, how, "move the armchair 30 cm to the right").unwrap();
         say(&mut s, how, "no, left").unwrap();
         assert!(close(at(&s, "armchair"), start - DVec3::X * 0.3), "{how:?}");
+        // The same again another way: kept, and moved that far that way too.
+        say(&mut s, how, "the same again but forward").unwrap();
+        assert!(
+            close(at(&s, "armchair"), start - DVec3::X * 0.3 + DVec3::Z * 0.3),
+            "{how:?}"
+        );
         say(&mut s, how, "move the left speaker 10 cm to the left").unwrap();
         say(&mut s, how, "wrong speaker").unwrap();
         assert!(close(at(&s, "speaker"), left), "{how:?}");

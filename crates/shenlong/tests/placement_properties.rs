@@ -428,10 +428,11 @@ fn check_under(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> 
     }
     // Under a top on legs: in the room below it, off its legs (a chair: its seat, its back
     // out); it may meet Y there.
-    let on_legs = shenlong::ground::kind::form_of(scene, y) == shenlong::scene::Form::OnLegs;
+    let form = shenlong::ground::kind::form_of(scene, y);
+    let on_legs = form.on_legs();
     let tucked = shenlong::ground::kind::seat_of(scene, x)
-        .is_some_and(|seat| shenlong::scene::form::clear_tucked(a, b, seat));
-    if on_legs && (shenlong::scene::form::clear_under(a, b) || tucked) {
+        .is_some_and(|seat| shenlong::scene::form::clear_tucked(a, b, form, seat));
+    if on_legs && (shenlong::scene::form::clear_under(a, b, form) || tucked) {
         let away = Aabb::new(b.min - 1e3, b.min - 1e3);
         let (mut before, mut after) = (f.boxes.clone(), after.to_vec());
         before[y] = away;
@@ -471,7 +472,7 @@ fn check_in(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Ver
         shenlong::scene::Form::Shelves => shenlong::scene::form::clear_shelved(a, b),
         // Floor furniture put "in" a table or a desk goes under it ("tuck the chair into
         // the desk").
-        shenlong::scene::Form::OnLegs => return check_under(scene, f, x, y, after),
+        shenlong::scene::Form::OnLegs { .. } => return check_under(scene, f, x, y, after),
         _ => {
             return Some(format!(
                 "put in '{}', which is no container",

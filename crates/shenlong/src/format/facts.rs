@@ -154,6 +154,8 @@ pub(crate) struct Node {
     pub world: DMat4,
     /// Its own geometry, in Shenlong's world frame.
     pub points: Vec<DVec3>,
+    /// Its mesh's triangles, as indices into `points` (none for geometry without faces).
+    pub triangles: Vec<[u32; 3]>,
     /// Whether it can carry a transform (an `Xform`, a gprim, a glTF node).
     pub transformable: bool,
     /// Whether the file calls it a model of kind `component`.
@@ -446,6 +448,7 @@ pub(crate) fn derive(
         }
         let node = &tree.nodes[object.node];
         let front = front_of(node, front_axis, options.front.is_none());
+        let measured = crate::scene::mesh::measure(&object.points, &object.triangles);
         let mut o = Object::new(
             String::new(),
             Shape::Points {
@@ -457,6 +460,7 @@ pub(crate) fn derive(
         .map_err(|e| FormatError::invalid(format!("{}: {e}", node.fallback)))?;
         o.labels = node.labels.clone();
         o.front = front;
+        o.measured = measured;
         scene.objects.push(o);
         nodes.push(object.node);
         owners.push(object.owner);
@@ -547,6 +551,7 @@ fn finish(
 struct Chosen {
     node: usize,
     points: Vec<DVec3>,
+    triangles: Vec<[u32; 3]>,
     owner: Option<usize>,
 }
 
@@ -619,10 +624,19 @@ fn choose(tree: &Tree) -> Vec<Chosen> {
             out.push(Chosen {
                 node: i,
                 points: tree.nodes[i].points.clone(),
+                triangles: tree.nodes[i].triangles.clone(),
                 owner: owner[i],
             });
         } else if let Some(o) = owner[i].and_then(|o| index[o]) {
-            out[o].points.extend_from_slice(&tree.nodes[i].points);
+            let object = &mut out[o];
+            let base = u32::try_from(object.points.len()).unwrap_or(u32::MAX);
+            object.triangles.extend(
+                tree.nodes[i]
+                    .triangles
+                    .iter()
+                    .map(|t| t.map(|k| k.saturating_add(base))),
+            );
+            object.points.extend_from_slice(&tree.nodes[i].points);
         }
     }
     out
@@ -1091,6 +1105,7 @@ mod tests {
             parent,
             world: DMat4::IDENTITY,
             points,
+            triangles: Vec::new(),
             transformable: true,
             fallback: format!("/{name}"),
             ..Node::default()

@@ -21,7 +21,7 @@ use crate::scene::{Labels, Scene, MAX_COORDINATE};
 use base64::Engine;
 use glam::{DMat4, DQuat, DVec3};
 use serde_json::Value;
-use std::collections::HashSet;
+use std::collections::{HashMap, HashSet};
 use std::path::{Path, PathBuf};
 
 /// How the file was stored.
@@ -302,9 +302,9 @@ fn tree_of(
     for &index in order {
         let node = &all_nodes[index];
         let world = to_metres * nodes[index].world;
-        let points = match node.mesh() {
+        let (points, triangles) = match node.mesh() {
             Some(mesh) => mesh_points(node, &mesh, buffers, world)?,
-            None => Vec::new(),
+            None => (Vec::new(), Vec::new()),
         };
         tree_index[index] = tree.nodes.len();
         tree.nodes.push(super::facts::Node {
@@ -312,6 +312,7 @@ fn tree_of(
             parent: nodes[index].parent.map(|p| tree_index[p]),
             world,
             points,
+            triangles,
             transformable: true,
             model: false,
             given_name: None,
@@ -337,27 +338,34 @@ fn tree_of(
     Ok(tree)
 }
 
-/// A mesh node's vertex positions, each once, placed by `world`; refused when they cannot
-/// be read or lie beyond the limits.
+/// A mesh node's vertex positions, each once, placed by `world`, and its triangles as
+/// indices into them; refused when the positions cannot be read or lie beyond the limits.
 fn mesh_points(
     node: &::gltf::Node<'_>,
     mesh: &::gltf::Mesh<'_>,
     buffers: &[Vec<u8>],
     world: DMat4,
-) -> Result<Vec<DVec3>, FormatError> {
+) -> Result<(Vec<DVec3>, Vec<[u32; 3]>), FormatError> {
     let index = node.index();
     let mut points = Vec::new();
-    let mut seen = HashSet::new();
+    let mut triangles = Vec::new();
+    let mut seen = HashMap::new();
     for primitive in mesh.primitives() {
         let reader = primitive.reader(|b| buffers.get(b.index()).map(Vec::as_slice));
+        // Where each of the primitive's vertices is in `points`.
+        let mut at = Vec::new();
         if let Some(positions) = reader.read_positions() {
             for p in positions {
-                if seen.insert(p.map(f32::to_bits)) {
+                let next = u32::try_from(points.len()).unwrap_or(u32::MAX);
+                let k = *seen.entry(p.map(f32::to_bits)).or_insert_with(|| {
                     let local = DVec3::new(p[0] as f64, p[1] as f64, p[2] as f64);
                     points.push(world.transform_point3(local));
-                }
+                    next
+                });
+                at.push(k);
             }
         }
+        primitive_triangles(&primitive, &reader, &at, &mut triangles);
     }
     let has_positions = mesh
         .primitives()
@@ -379,7 +387,46 @@ fn mesh_points(
             "nodes[{index}]{label}: its mesh lies {far:.3e} m from the origin, beyond the ±{MAX_COORDINATE:.0e} m Shenlong keeps exact (check the node's transform and its parents')"
         )));
     }
-    Ok(points)
+    Ok((points, triangles))
+}
+
+/// Appends the triangles of a primitive drawn as triangles (a list, a strip or a fan) to
+/// `out`, as indices into the node's points (`at`: where each of the primitive's vertices
+/// is); indices beyond its vertices are left out, and past [`MAX_TRIANGLES`] in all, the
+/// rest (the node then keeps the form of its kind).
+///
+/// [`MAX_TRIANGLES`]: crate::scene::mesh::MAX_TRIANGLES
+fn primitive_triangles<'a, 's, F>(
+    primitive: &::gltf::Primitive<'a>,
+    reader: &::gltf::mesh::Reader<'a, 's, F>,
+    at: &[u32],
+    out: &mut Vec<[u32; 3]>,
+) where
+    F: Clone + Fn(::gltf::Buffer<'a>) -> Option<&'s [u8]>,
+{
+    use ::gltf::mesh::Mode;
+    let indices: Vec<u32> = match reader.read_indices() {
+        Some(read) => read.into_u32().collect(),
+        None => (0..u32::try_from(at.len()).unwrap_or(u32::MAX)).collect(),
+    };
+    let corner = |k: u32| at.get(k as usize).copied();
+    let mut push = |a: u32, b: u32, c: u32| {
+        if out.len() <= crate::scene::mesh::MAX_TRIANGLES {
+            if let (Some(a), Some(b), Some(c)) = (corner(a), corner(b), corner(c)) {
+                out.push([a, b, c]);
+            }
+        }
+    };
+    match primitive.mode() {
+        Mode::Triangles => indices.chunks_exact(3).for_each(|t| push(t[0], t[1], t[2])),
+        Mode::TriangleStrip => indices.windows(3).for_each(|t| push(t[0], t[1], t[2])),
+        Mode::TriangleFan => {
+            if let Some((&first, rest)) = indices.split_first() {
+                rest.windows(2).for_each(|t| push(first, t[0], t[1]));
+            }
+        }
+        _ => {}
+    }
 }
 
 /// A node's own front (`extras: {"shenlong:front": [x, y, z]}`), in its own axes.

@@ -730,11 +730,26 @@ fn fresh_document(scene: &Scene) -> Value {
             if (o.front - DVec3::Z).length() > 1e-12 {
                 v["front"] = serde_json::json!(numbers(o.front.to_array()));
             }
+            if let Some(form) = written_form(o) {
+                v["form"] = Value::String(form.name().into());
+            }
             v
         })
         .collect();
     root.insert("objects".into(), Value::Array(objects));
     Value::Object(root)
+}
+
+/// The form a new scene file records for an object: its own, else what its mesh shows of
+/// room under it or in it (`scene::mesh`); a mesh that shows neither leaves its kind to
+/// decide when the file is read.
+fn written_form(object: &Object) -> Option<crate::scene::Form> {
+    use crate::scene::{mesh::Measured, Form};
+    object.form.or(match object.measured? {
+        Measured::Under { .. } => Some(Form::ON_LEGS),
+        Measured::Inside => Some(Form::Open),
+        Measured::Neither => None,
+    })
 }
 
 /// The smallest box extent written for a flat mesh, in metres.

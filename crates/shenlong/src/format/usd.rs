@@ -711,6 +711,7 @@ fn attr_of(value: Value) -> Option<Attr> {
                 .collect(),
         ),
         Value::Vec3dVec(v) => Attr::Points(v.iter().map(|p| v3(p.x, p.y, p.z)).collect()),
+        Value::IntVec(v) => Attr::Ints(v.into_iter().map(i64::from).collect()),
         _ => return None,
     })
 }

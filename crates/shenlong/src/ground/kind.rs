@@ -16,6 +16,7 @@
 use super::ident;
 use super::lexicon::Lexicon;
 use super::words::normalize;
+use crate::scene::mesh::Measured;
 use crate::scene::{Form, Scene};
 
 /// Height from which furniture, an appliance or an object of unknown kind stands on the
@@ -38,7 +39,9 @@ pub fn is_floor_bound(scene: &Scene, i: usize) -> bool {
     stands_on_floor(furniture, size.y, size.x * size.z)
 }
 
-/// What of object `i`'s box is solid: as its scene file says (`form`), else a top on legs
+/// What of object `i`'s box is solid: as its scene file says (`form`); else as its mesh
+/// shows (`scene::mesh`: room under it, room inside it, or neither), but for a case of
+/// shelves, which keeps its shelves; else a top on legs
 /// for a table, a desk or a counter (by the lexicon: its category, else its name's head
 /// noun — a table lamp is a lamp) at least [`Form`]'s knee height tall, an open container
 /// for a box, a basket, a bin, a toolbox, a drawer, a bag, a crate or a bucket — each
@@ -101,14 +104,25 @@ pub fn form_of(scene: &Scene, i: usize) -> Form {
                 ],
             ) == Some(true)
     };
-    if square && tall && table() {
-        Form::OnLegs
+    let by_kind = if square && tall && table() {
+        Form::ON_LEGS
     } else if square && container() {
         Form::Open
     } else if square && shelves() {
         Form::Shelves
     } else {
         Form::Solid
+    };
+    match o.measured.filter(|_| square) {
+        None => by_kind,
+        // A bookcase on legs keeps its shelves.
+        Some(_) if by_kind == Form::Shelves => by_kind,
+        Some(Measured::Under { underside }) => Form::OnLegs {
+            underside: Some(underside),
+        },
+        Some(Measured::Inside) => Form::Open,
+        // Its mesh shows no room under it or in it, whatever its kind.
+        Some(Measured::Neither) => Form::Solid,
     }
 }
 

@@ -218,10 +218,10 @@ impl<'s> Known<'s> {
             let room = crate::ground::kind::room_of(scene, me, table)?;
             let seat = room.seat?;
             let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
-            let knee = crate::scene::form::knee_room(&boxes[table]);
+            let knee = crate::scene::form::knee_room(&boxes[table], room.form);
             // Its back away from the table, its seat low enough.
             let back_away = seat.axis == e && seat.max_side == (sign < 0.0);
-            (room.form == crate::scene::Form::OnLegs && back_away && seat.height <= knee)
+            (room.form.on_legs() && back_away && seat.height <= knee)
                 .then(|| gap + (boxes[me].size()[e] - seat.depth).max(0.0))
         };
         Some(tucked().map_or((gap, None), |d| (d, Some(table))))
@@ -528,7 +528,7 @@ impl Known<'_> {
         let Some(&table) = objects.get(t) else {
             return false;
         };
-        crate::ground::kind::form_of(scene, table) == crate::scene::Form::OnLegs
+        crate::ground::kind::form_of(scene, table).on_legs()
             && !subjects.is_empty()
             && subjects.iter().all(|&s| {
                 objects.get(s).is_some_and(|&o| {

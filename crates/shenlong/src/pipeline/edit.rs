@@ -733,8 +733,7 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), EditErr
     let b = scene.objects[above].world_aabb();
     let c = a.center();
     let over = c.x >= b.min.x && c.x <= b.max.x && c.z >= b.min.z && c.z <= b.max.z;
-    let shared = crate::ground::kind::room_of(scene, object, above)
-        .filter(|r| r.form == crate::scene::Form::OnLegs);
+    let shared = crate::ground::kind::room_of(scene, object, above).filter(|r| r.form.on_legs());
     let on_legs = shared.is_some();
     // Below its bottom, in the room under its top (a chair's seat under it, its back
     // out), or flat (a rug under a bed).
@@ -750,7 +749,7 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), EditErr
     }
     let (name, target) = (&scene.objects[object].name, &scene.objects[above].name);
     let room = if on_legs {
-        crate::scene::form::knee_room(&b)
+        crate::scene::form::knee_room(&b, shared.map_or(crate::scene::Form::Solid, |r| r.form))
     } else {
         b.min.y - scene.floor()
     };

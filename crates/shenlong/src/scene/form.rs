@@ -3,8 +3,9 @@
 //! (docs/collisions.md, "Shapes by kind").
 //!
 //! A top on legs is read from the object's box: a slab [`top`] thick at the top of the
-//! box, and a square leg [`LEG`] wide at each corner of its footprint, from the floor to
-//! the slab. What stands clear of those parts does not collide with it.
+//! box (or, measured from a mesh, down to its underside), and a square leg [`LEG`] wide at
+//! each corner of its footprint, from the floor to the slab. What stands clear of those
+//! parts does not collide with it.
 
 use crate::geometry::Aabb;
 
@@ -15,7 +16,12 @@ pub enum Form {
     #[default]
     Solid,
     /// A top on four legs, with room below it.
-    OnLegs,
+    OnLegs {
+        /// How high the room below reaches, in thousandths of the box's height, as
+        /// measured from the object's mesh (`scene::mesh`); `None`: up to a top [`top`]
+        /// thick, when the box stands at least [`KNEE_HEIGHT`] tall.
+        underside: Option<u16>,
+    },
     /// An open container: a bottom and four walls, open at the top, with room inside.
     Open,
     /// A case of shelves — a bookcase, a cabinet: walls, a back, a top and a bottom, and
@@ -34,11 +40,20 @@ impl Form {
             .as_str()
         {
             "solid" | "box" => Some(Self::Solid),
-            "on_legs" | "legs" | "table" => Some(Self::OnLegs),
+            "on_legs" | "legs" | "table" => Some(Self::ON_LEGS),
             "open" | "container" => Some(Self::Open),
             "shelves" | "shelved" | "bookcase" | "cabinet" => Some(Self::Shelves),
             _ => None,
         }
+    }
+
+    /// A top on legs whose room below is read from its box ([`top`], [`KNEE_HEIGHT`]).
+    pub const ON_LEGS: Self = Self::OnLegs { underside: None };
+
+    /// Whether it is a top on legs, however its room below is known.
+    #[must_use]
+    pub fn on_legs(self) -> bool {
+        matches!(self, Self::OnLegs { .. })
     }
 
     /// The name a scene file writes.
@@ -46,7 +61,7 @@ impl Form {
     pub fn name(self) -> &'static str {
         match self {
             Self::Solid => "solid",
-            Self::OnLegs => "on_legs",
+            Self::OnLegs { .. } => "on_legs",
             Self::Open => "open",
             Self::Shelves => "shelves",
         }
@@ -56,9 +71,10 @@ impl Form {
 /// The side of the square leg at each corner of a top on legs, in metres.
 pub const LEG: f64 = 0.06;
 
-/// The lowest a top on legs is from the floor to leave room below it, in metres: a
-/// coffee table is solid to what goes under it.
-pub const KNEE_HEIGHT: f64 = 0.5;
+/// The lowest a top on legs read from its box (not measured from a mesh) stands to leave
+/// room below it, in metres: a coffee table 0.45 m tall has 0.41 m under its top; a
+/// footstool-high table is solid to what goes under it.
+pub const KNEE_HEIGHT: f64 = 0.35;
 
 /// The thickness of the top of a table whose box is `table`: 4 cm, at most a quarter of
 /// its height.
@@ -67,20 +83,30 @@ pub fn top(table: &Aabb) -> f64 {
     0.04_f64.min(table.size().y * 0.25)
 }
 
-/// The height of the room under the top of `table`, from its bottom.
+/// The height of the room under the top of `table`, of form `form`, from its bottom: 0
+/// when it is no top on legs, or one too low to leave room below.
 #[must_use]
-pub fn knee_room(table: &Aabb) -> f64 {
-    table.size().y - top(table)
+pub fn knee_room(table: &Aabb, form: Form) -> f64 {
+    match form {
+        Form::OnLegs {
+            underside: Some(permille),
+        } => table.size().y * f64::from(permille.min(1000)) / 1000.0,
+        Form::OnLegs { underside: None } if table.size().y >= KNEE_HEIGHT => {
+            table.size().y - top(table)
+        }
+        _ => 0.0,
+    }
 }
 
 /// How far apart two boxes may touch without colliding, in metres.
 const TOUCH: f64 = 1e-6;
 
-/// Whether `a` stands clear of the solid parts of the top on legs whose box is `table`:
-/// below its top and off its legs.
+/// Whether `a` stands clear of the solid parts of the top on legs of form `form` whose
+/// box is `table`: below its top and off its legs.
 #[must_use]
-pub fn clear_under(a: &Aabb, table: &Aabb) -> bool {
-    if table.size().y < KNEE_HEIGHT || a.max.y > table.max.y - top(table) + TOUCH {
+pub fn clear_under(a: &Aabb, table: &Aabb, form: Form) -> bool {
+    let room = knee_room(table, form);
+    if room <= 0.0 || a.max.y > table.min.y + room + TOUCH {
         return false;
     }
     let leg = LEG.min(table.size().x / 2.0).min(table.size().z / 2.0);
@@ -266,12 +292,13 @@ impl Seat {
     }
 }
 
-/// Whether chair `a`, with `seat`, is tucked under the top on legs whose box is `table`:
-/// its seat in the room under the top and off the legs, its back outside the table.
+/// Whether chair `a`, with `seat`, is tucked under the top on legs of form `form` whose
+/// box is `table`: its seat in the room under the top and off the legs, its back outside
+/// the table.
 #[must_use]
-pub fn clear_tucked(a: &Aabb, table: &Aabb, seat: Seat) -> bool {
+pub fn clear_tucked(a: &Aabb, table: &Aabb, form: Form, seat: Seat) -> bool {
     let [seat_box, back] = seat.parts(a);
-    clear_under(&seat_box, table) && !back.intersects(table, TOUCH)
+    clear_under(&seat_box, table, form) && !back.intersects(table, TOUCH)
 }
 
 /// Whether `a` stands clear of the solid parts of `b` in `room`: in the room under a top
@@ -282,7 +309,12 @@ pub fn clear_tucked(a: &Aabb, table: &Aabb, seat: Seat) -> bool {
 pub fn clear_in(a: &Aabb, b: &Aabb, room: Room) -> bool {
     let in_form = match room.form {
         Form::Solid => false,
-        Form::OnLegs => clear_under(a, b) || room.seat.is_some_and(|seat| clear_tucked(a, b, seat)),
+        Form::OnLegs { .. } => {
+            clear_under(a, b, room.form)
+                || room
+                    .seat
+                    .is_some_and(|seat| clear_tucked(a, b, room.form, seat))
+        }
         Form::Open => clear_inside(a, b),
         Form::Shelves => clear_shelved(a, b),
     };
@@ -290,13 +322,6 @@ pub fn clear_in(a: &Aabb, b: &Aabb, room: Room) -> bool {
         || room
             .seat
             .is_some_and(|seat| seat.parts(a).iter().all(|p| !p.intersects(b, TOUCH)))
-}
-
-/// Whether boxes `a` and `b` of forms `fa` and `fb` meet only where one stands in the
-/// room under the other.
-#[must_use]
-pub fn apart(a: &Aabb, fa: Form, b: &Aabb, fb: Form) -> bool {
-    (fb == Form::OnLegs && clear_under(a, b)) || (fa == Form::OnLegs && clear_under(b, a))
 }
 
 #[cfg(test)]
@@ -312,45 +337,54 @@ mod tests {
     fn under_the_top_and_off_the_legs_is_clear() {
         let desk = b([0.0, 0.0, 0.0], [1.2, 0.75, 0.6]);
         // A chair tucked in from the front, half under.
-        assert!(clear_under(&b([0.4, 0.0, 0.3], [0.85, 0.7, 0.8]), &desk));
-        // Too tall: it meets the top.
-        assert!(!clear_under(&b([0.4, 0.0, 0.3], [0.85, 0.9, 0.8]), &desk));
-        // On a leg.
-        assert!(!clear_under(&b([-0.2, 0.0, 0.4], [0.1, 0.5, 0.8]), &desk));
-        // A low table leaves no room.
-        let coffee = b([0.0, 0.0, 0.0], [1.0, 0.45, 0.6]);
-        assert!(!clear_under(&b([0.3, 0.0, 0.2], [0.5, 0.2, 0.4]), &coffee));
-        assert!(apart(
+        assert!(clear_under(
             &b([0.4, 0.0, 0.3], [0.85, 0.7, 0.8]),
-            Form::Solid,
             &desk,
-            Form::OnLegs
+            Form::ON_LEGS
         ));
-        assert!(!apart(
-            &b([0.4, 0.0, 0.3], [0.85, 0.7, 0.8]),
-            Form::Solid,
+        // Too tall: it meets the top.
+        assert!(!clear_under(
+            &b([0.4, 0.0, 0.3], [0.85, 0.9, 0.8]),
             &desk,
-            Form::Solid
+            Form::ON_LEGS
+        ));
+        // On a leg.
+        assert!(!clear_under(
+            &b([-0.2, 0.0, 0.4], [0.1, 0.5, 0.8]),
+            &desk,
+            Form::ON_LEGS
+        ));
+        // A footstool-high table leaves no room.
+        let low = b([0.0, 0.0, 0.0], [1.0, 0.3, 0.6]);
+        assert!(!clear_under(
+            &b([0.3, 0.0, 0.2], [0.5, 0.2, 0.4]),
+            &low,
+            Form::ON_LEGS
         ));
         // A chair 0.95 m tall, its back on its +z side: its seat under the top, its back
         // out; pushed in further, its back meets the top.
         let chair = |z: f64| b([0.3, 0.0, z], [0.85, 0.95, z + 0.55]);
         let seat = Seat::of(&chair(0.0), 2, true);
-        assert!(clear_tucked(&chair(0.4), &desk, seat));
-        assert!(!clear_tucked(&chair(0.0), &desk, seat));
-        assert!(!clear_under(&chair(0.4), &desk));
+        assert!(clear_tucked(&chair(0.4), &desk, Form::ON_LEGS, seat));
+        assert!(!clear_tucked(&chair(0.0), &desk, Form::ON_LEGS, seat));
+        assert!(!clear_under(&chair(0.4), &desk, Form::ON_LEGS));
         // Its back towards the desk: never tucked.
         let facing_away = Seat::of(&chair(0.0), 2, false);
-        assert!(!clear_tucked(&chair(0.4), &desk, facing_away));
+        assert!(!clear_tucked(
+            &chair(0.4),
+            &desk,
+            Form::ON_LEGS,
+            facing_away
+        ));
         assert!(clear_in(
             &chair(0.4),
             &desk,
             Room {
-                form: Form::OnLegs,
+                form: Form::ON_LEGS,
                 seat: Some(seat)
             }
         ));
-        assert!(!clear_in(&chair(0.4), &desk, Form::OnLegs.into()));
+        assert!(!clear_in(&chair(0.4), &desk, Form::ON_LEGS.into()));
         // Beside a box whose corner is above its seat, in front of its back: clear.
         let crate_box = b([0.7, 0.6, 0.0], [1.2, 1.0, 0.55]);
         let solid = Room {
@@ -380,7 +414,7 @@ mod tests {
         assert_eq!(Shelf::FromTop(2).pick(&rooms), Some(rooms[4]));
         assert_eq!(Shelf::FromBottom(7).pick(&rooms), None);
         assert_eq!(Form::from_name("shelves"), Some(Form::Shelves));
-        assert_eq!(Form::from_name("On legs"), Some(Form::OnLegs));
+        assert_eq!(Form::from_name("On legs"), Some(Form::ON_LEGS));
         assert_eq!(Form::from_name("solid"), Some(Form::Solid));
         // In a box 0.4 × 0.3 × 0.3: within its walls, above its bottom.
         let toolbox = b([0.0, 0.0, 0.0], [0.4, 0.3, 0.3]);
@@ -400,5 +434,34 @@ mod tests {
             !clear_inside(&b([0.05, 0.02, 0.05], [0.35, 0.35, 0.25]), &toolbox),
             "over the rim"
         );
+    }
+
+    #[test]
+    fn the_room_under_a_top_is_read_from_its_box_or_measured() {
+        // A coffee table 0.45 m tall has 0.41 m below its top.
+        let coffee = b([0.0, 0.0, 0.0], [1.0, 0.45, 0.6]);
+        assert!(clear_under(
+            &b([0.3, 0.0, 0.2], [0.5, 0.4, 0.4]),
+            &coffee,
+            Form::ON_LEGS
+        ));
+        // Measured from a mesh: a bed whose frame leaves 0.2 m below it (a third of its
+        // 0.6 m): a drawer 0.15 m tall goes under, a stool 0.45 m tall does not.
+        let bed = b([0.0, 0.0, 0.0], [1.6, 0.6, 2.0]);
+        let raised = Form::OnLegs {
+            underside: Some(333),
+        };
+        assert!((knee_room(&bed, raised) - 0.1998).abs() < 1e-9);
+        assert!(clear_under(
+            &b([0.3, 0.0, 0.3], [1.0, 0.15, 1.0]),
+            &bed,
+            raised
+        ));
+        assert!(!clear_under(
+            &b([0.3, 0.0, 0.3], [0.7, 0.45, 0.7]),
+            &bed,
+            raised
+        ));
+        assert_eq!(knee_room(&bed, Form::Solid), 0.0);
     }
 }

@@ -11,6 +11,7 @@
 
 pub mod form;
 pub mod listing;
+pub mod mesh;
 mod support;
 
 use crate::geometry::Aabb;
@@ -136,6 +137,9 @@ pub struct Object {
     /// What of its box is solid, as its source file says (scene JSON's `form`); `None`:
     /// read from its kind (`ground::kind::form_of`).
     pub form: Option<Form>,
+    /// What its mesh shows of the room under it or in it, as read when its file was
+    /// (`mesh::measure`); `None`: it has no mesh, or one that shows nothing a box does not.
+    pub measured: Option<mesh::Measured>,
     pose: Similarity,
 }
 
@@ -185,6 +189,7 @@ impl Object {
             labels: Labels::default(),
             front: DVec3::Z,
             form: None,
+            measured: None,
             pose: Similarity { rotation, ..pose },
         })
     }

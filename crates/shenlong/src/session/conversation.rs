@@ -265,7 +265,8 @@ impl Context {
             }
             FollowUp::Instead(np) => self.instead(&np, scene, grounder),
             FollowUp::InsteadPlace(pp) => self.instead_place(&pp),
-            FollowUp::InsteadWay(way) => self.instead_way(&way),
+            FollowUp::InsteadWay(way) => self.instead_way(&way, true),
+            FollowUp::SameWay(way) => self.instead_way(&way, false),
             FollowUp::Unclear(_) if self.focus().is_empty() && selected.is_empty() => {
                 Err(nothing_before(instruction))
             }
@@ -697,9 +698,10 @@ impl Context {
         }
     }
 
-    /// "no, left": the last edit undone and made again the other way — its first word of
-    /// direction after what it moved, replaced.
-    fn instead_way(&self, way: &str) -> Result<Plan, OpError> {
+    /// "no, left" (`undo_first`): the last edit undone and made again the other way — its
+    /// first word of direction after what it moved, replaced; "the same again but left":
+    /// made again that way, the last edit kept.
+    fn instead_way(&self, way: &str, undo_first: bool) -> Result<Plan, OpError> {
         let last = self.last_edit(way)?;
         let instruction = last.instruction_to_change("direction")?;
         let acted_end = last.acted_phrase().map_or(0, |(s, _)| s.end);
@@ -713,7 +715,7 @@ impl Context {
             instruction: splice(instruction, way_said.start, way_said.end, way)?,
             focus: Vec::new(),
             from_last: false,
-            undo_first: true,
+            undo_first,
         })
     }
 

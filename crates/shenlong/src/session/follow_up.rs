@@ -73,6 +73,9 @@ pub enum FollowUp {
     InsteadPlace(String),
     /// The last instruction the other way ("no, left"), the last edit undone first.
     InsteadWay(String),
+    /// The last instruction again, another way ("the same again but to the right",
+    /// "again, but left"): the way that replaces its own.
+    SameWay(String),
     /// A follow-up that reads two ways, and the refusal that says which words to use.
     Unclear(String),
 }
@@ -340,6 +343,7 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
     }
     undo(&w)
         .or_else(|| back(&w, &text))
+        .or_else(|| same_way(&w))
         .or_else(|| repeat(&w, &text))
         .or_else(|| toward_alone(&w, &text))
         .or_else(|| also(&w, &text, after_now))
@@ -597,7 +601,7 @@ fn which(object: &[&str], text: &dyn Fn() -> String) -> Which {
 /// "the way it was before", or nothing).
 fn where_it_was(rest: &[&str]) -> bool {
     let mut rest = match rest {
-        ["to", r @ ..] => r,
+        ["to" | "in" | "into", r @ ..] => r,
         r => r,
     };
     // "… too", "… as well", "… please".
@@ -647,7 +651,8 @@ fn where_it_was(rest: &[&str]) -> bool {
                 | "is"
                 | "are"
         ),
-        ["its" | "their" | "the", what, ..] => earlier(what),
+        // "its place", "the original position", "their old spot".
+        ["its" | "their" | "the", what @ ..] => !what.is_empty() && what.iter().all(|x| earlier(x)),
         _ => false,
     }
 }
@@ -685,12 +690,20 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     if let Some(unclear) = back_or_backwards(w, &verb, text) {
         return Some(unclear);
     }
-    // Any motion verb, when where it was follows: "move it back to where it was".
+    // Any motion verb, when where it was follows: "move it back to where it was", "move
+    // it to where it was", "slide the lamp to its original spot".
     if let [first, ..] = w {
         if !verb(first) && crate::ground::words::is_verb(first) {
             if let Some(k) = w.iter().position(|&x| x == "back") {
                 let rest = &w[k + 1..];
                 if k >= 1 && !rest.is_empty() && where_it_was(rest) {
+                    return Some(FollowUp::Back(which(&w[1..k], &|| text(1, k))));
+                }
+            }
+            if let Some(k) = w.iter().position(|&x| matches!(x, "to" | "where")) {
+                let place = &w[k..];
+                let said = !matches!(place, ["to"] | ["to", "again"]);
+                if k >= 1 && said && where_it_was(place) {
                     return Some(FollowUp::Back(which(&w[1..k], &|| text(1, k))));
                 }
             }
@@ -730,9 +743,11 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             })));
         }
     }
-    // "go back", "go back please": where it was.
-    if matches!(w, ["go", "back"] | ["go", "back", "please"]) {
-        return Some(FollowUp::Back(Which::Last));
+    // "go back", "go back please", "go back to how it was": where it was.
+    if let ["go" | "get" | "change" | "switch", "back", rest @ ..] = w {
+        if where_it_was(rest) {
+            return Some(FollowUp::Back(Which::Last));
+        }
     }
     // "the lamp back where it was", "everything back to how it was": said without a verb.
     if let Some(k) = w.iter().position(|&x| x == "back") {
@@ -958,6 +973,45 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         || matches!(first, "away" | "toward" | "towards" | "over");
     (sign > 0.0 && direction)
         .then(|| FollowUp::Toward(format!("move it a bit {}", text(at + 1, w.len()))))
+}
+
+/// What says the last instruction again, before another way ("the same again but …").
+const SAME: [&[&str]; 12] = [
+    &["the", "same", "again"],
+    &["same", "again"],
+    &["do", "the", "same"],
+    &["do", "that", "again"],
+    &["do", "it", "again"],
+    &["the", "same", "thing"],
+    &["same", "thing"],
+    &["the", "same", "distance"],
+    &["same", "distance"],
+    &["the", "same"],
+    &["same"],
+    &["again"],
+];
+
+/// "the same again but to the right", "again, but left", "same distance to the left",
+/// "do the same this time backwards": the last instruction again with another way (one
+/// direction word, with "to the" before it or not).
+fn same_way(w: &[&str]) -> Option<FollowUp> {
+    let k = starts(w, &SAME)?;
+    let mut rest = &w[k..];
+    if let ["but" | "only" | "just", tail @ ..] | ["this", "time", tail @ ..] = rest {
+        rest = tail;
+    }
+    if let ["this", "time", tail @ ..] = rest {
+        rest = tail;
+    }
+    let way = match rest {
+        [way]
+        | ["to", way]
+        | ["to", "the", way]
+        | [way, "instead"]
+        | ["to", "the", way, "instead"] => *way,
+        _ => return None,
+    };
+    (is_direction(way) && way != "back").then(|| FollowUp::SameWay(way.to_string()))
 }
 
 /// Words that say how far or how much, not an object ("not that far").
@@ -1209,6 +1263,10 @@ mod tests {
                 InsteadPlace("next to the sofa".into()),
             ),
             ("no, left", InsteadWay("left".into())),
+            ("same again but to the right", SameWay("right".into())),
+            ("again, but left", SameWay("left".into())),
+            ("do the same this time backwards", SameWay("backwards".into())),
+            ("same distance to the left", SameWay("left".into())),
             ("no, to the left", InsteadWay("left".into())),
             (
                 "put it on the table instead",
@@ -1269,6 +1327,10 @@ mod tests {
             ("back to how it was before", Back(Which::Last)),
             ("restore its position", Back(Which::Last)),
             ("put back the lamp", Back(Which::Named("the lamp".into()))),
+            ("move it to where it was", Back(Which::Last)),
+            ("slide the lamp to its original spot", Back(Which::Named("the lamp".into()))),
+            ("put the ottoman back in its place", Back(Which::Named("the ottoman".into()))),
+            ("go back to how it was", Back(Which::Last)),
             (
                 "move it back",
                 Unclear("\"move it back\" reads two ways: say \"put it back\" to return it where it was, or how far to move it backwards (\"move it back 50 cm\")".into()),
@@ -1311,6 +1373,10 @@ mod tests {
             "move the lamp a bit more to the left",
             "no, move the lamp left",
             "turn the chair around",
+            "move the book to the first shelf",
+            "put it back in the first drawer",
+            "move it to the left",
+            "go back 10 cm",
         ] {
             assert_eq!(read(t, false), None, "{t}");
         }

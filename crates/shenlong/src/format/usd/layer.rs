@@ -421,6 +421,11 @@ fn typed(type_name: &str, array: bool, tokens: &[Token]) -> Option<Attr> {
             _ => None,
         },
         ("token" | "string", true) => texts().map(Attr::Texts),
+        ("int" | "int64" | "uint", true) => numbers(tokens, false)?
+            .into_iter()
+            .map(|x| (x.fract() == 0.0 && x.abs() < 9.0e15).then_some(x as i64))
+            .collect::<Option<Vec<_>>>()
+            .map(Attr::Ints),
         (_, true) if vector => {
             let n = numbers(tokens, single)?;
             (n.len() % 3 == 0).then(|| {

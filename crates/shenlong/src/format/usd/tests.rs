@@ -578,6 +578,7 @@ fn assert_same_walk(a: &wire::Walked, b: &wire::Walked) {
         for (p, q) in m.points.iter().zip(&n.points) {
             assert!((*p - *q).length() < 1e-9, "{}: {p} {q}", m.fallback);
         }
+        assert_eq!(m.triangles, n.triangles, "{}", m.fallback);
         assert_eq!(m.front.is_some(), n.front.is_some());
         if let (Some(f), Some(g)) = (m.front, n.front) {
             assert!((f - g).length() < 1e-12);
@@ -698,4 +699,74 @@ fn the_own_layer_reader_bounds_depth_and_prims() {
             "{text}"
         );
     }
+}
+
+/// A `Mesh` prim named `name` at `at` (stage units) made of the boxes `parts`, each a quad
+/// per face.
+fn mesh_prim(name: &str, at: [f64; 3], parts: &[([f64; 3], [f64; 3])]) -> String {
+    let (mut points, mut indices) = (Vec::new(), Vec::new());
+    for (lo, hi) in parts {
+        let base = points.len();
+        for k in 0..8 {
+            let pick = |bit: usize, a: usize| if k & bit == 0 { lo[a] } else { hi[a] };
+            points.push(format!("({}, {}, {})", pick(1, 0), pick(2, 1), pick(4, 2)));
+        }
+        for f in [
+            [0, 1, 3, 2],
+            [4, 6, 7, 5],
+            [0, 4, 5, 1],
+            [2, 3, 7, 6],
+            [0, 2, 6, 4],
+            [1, 5, 7, 3],
+        ] {
+            indices.extend(f.map(|i| (base + i).to_string()));
+        }
+    }
+    format!(
+        "    def Mesh \"{name}\"\n    {{\n        double3 xformOp:translate = ({}, {}, {})\n        uniform token[] xformOpOrder = [\"xformOp:translate\"]\n        point3f[] points = [{}]\n        int[] faceVertexCounts = [{}]\n        int[] faceVertexIndices = [{}]\n    }}\n",
+        at[0],
+        at[1],
+        at[2],
+        points.join(", "),
+        vec!["4"; parts.len() * 6].join(", "),
+        indices.join(", ")
+    )
+}
+
+#[test]
+fn a_meshs_faces_give_its_shape_by_both_readers() {
+    // Z up, centimetres: a desk whose 4 cm top is 72 cm up on four legs, and a crate open
+    // at the top.
+    let mut desk: Vec<([f64; 3], [f64; 3])> =
+        [(0.0, 0.0), (115.0, 0.0), (0.0, 65.0), (115.0, 65.0)]
+            .map(|(x, y)| ([x, y, 0.0], [x + 5.0, y + 5.0, 72.0]))
+            .to_vec();
+    desk.push(([0.0, 0.0, 72.0], [120.0, 70.0, 76.0]));
+    let crate_parts = [
+        ([0.0, 0.0, 0.0], [50.0, 40.0, 2.0]),
+        ([0.0, 0.0, 0.0], [2.0, 40.0, 30.0]),
+        ([48.0, 0.0, 0.0], [50.0, 40.0, 30.0]),
+        ([0.0, 0.0, 0.0], [50.0, 2.0, 30.0]),
+        ([0.0, 38.0, 0.0], [50.0, 40.0, 30.0]),
+    ];
+    let text = format!(
+        "#usda 1.0\n(\n    defaultPrim = \"World\"\n    upAxis = \"Z\"\n    metersPerUnit = 0.01\n)\n\ndef Xform \"World\"\n{{\n{}{}}}\n",
+        mesh_prim("Desk", [0.0, 0.0, 0.0], &desk),
+        mesh_prim("Crate", [-200.0, 0.0, 0.0], &crate_parts)
+    );
+    let (composed, own) = both_walks(&text, &ReadOptions::default());
+    let own = own.expect("read by Shenlong's own reader");
+    assert_same_walk(&composed, &own);
+    assert_eq!(composed.tree.nodes[1].triangles.len(), 5 * 6 * 2);
+    let dir = tempfile::tempdir().unwrap();
+    let file = crate::format::SceneFile::load(&write(dir.path(), "room.usda", &text)).unwrap();
+    let scene = &file.scene;
+    let form = |name: &str| crate::ground::kind::form_of(scene, scene.find(name).unwrap());
+    assert_eq!(
+        form("Desk"),
+        crate::scene::Form::OnLegs {
+            underside: Some(947)
+        }
+    );
+    assert_eq!(form("Crate"), crate::scene::Form::Open);
 }

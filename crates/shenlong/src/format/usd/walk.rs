@@ -112,6 +112,7 @@ impl Walk {
                 name: path.rsplit('/').next().unwrap_or_default().to_string(),
                 parent,
                 world: shenlong,
+                triangles: xform::geometry_triangles(&attrs, &type_name, points.len()),
                 points,
                 transformable: is_transformable(&type_name),
                 model: self.uses_kinds && source.component(&prim),

@@ -126,6 +126,12 @@ impl Walked {
             for p in &node.points {
                 o.vec3(*p);
             }
+            o.u64(node.triangles.len() as u64);
+            for t in &node.triangles {
+                for k in t {
+                    o.u64(u64::from(*k));
+                }
+            }
             o.flag(node.transformable);
             o.flag(node.model);
             o.opt_text(node.given_name.as_deref());
@@ -174,6 +180,18 @@ impl Walked {
             for _ in 0..count {
                 points.push(i.vec3()?);
             }
+            let count = i.count(24)?;
+            let mut triangles = Vec::with_capacity(count);
+            for _ in 0..count {
+                let mut t = [0u32; 3];
+                for k in &mut t {
+                    *k = u32::try_from(i.u64()?)
+                        .ok()
+                        .filter(|&k| (k as usize) < points.len())
+                        .ok_or_else(malformed)?;
+                }
+                triangles.push(t);
+            }
             let transformable = i.flag()?;
             let model = i.flag()?;
             let given_name = i.opt_text()?;
@@ -185,6 +203,7 @@ impl Walked {
                 parent,
                 world,
                 points,
+                triangles,
                 transformable,
                 model,
                 given_name,
@@ -226,7 +245,8 @@ mod tests {
         let mut tree = Tree::default();
         tree.nodes.push(Node {
             name: "Chair".into(),
-            points: vec![DVec3::new(1.0, 2.0, 3.0)],
+            points: vec![DVec3::new(1.0, 2.0, 3.0); 3],
+            triangles: vec![[0, 1, 2]],
             transformable: true,
             given_name: Some("chair".into()),
             front: Some(DVec3::X),
@@ -250,6 +270,7 @@ mod tests {
         let bytes = walked.encode();
         let back = Walked::decode(&bytes).unwrap();
         assert_eq!(back.tree.nodes[0].points, walked.tree.nodes[0].points);
+        assert_eq!(back.tree.nodes[0].triangles, [[0, 1, 2]]);
         assert_eq!(back.prims[0].path, "/World/Chair");
         assert_eq!(back.frame.up, UpAxis::Z);
         for cut in 0..bytes.len() {

@@ -22,6 +22,8 @@ pub(super) enum Attr {
     Texts(Vec<String>),
     /// An array of 3-vectors (`point3f[] points`, `float3[] extent`).
     Points(Vec<DVec3>),
+    /// An array of integers (`int[] faceVertexIndices`).
+    Ints(Vec<i64>),
 }
 
 impl Attr {
@@ -209,6 +211,54 @@ pub(super) fn wanted(name: &str) -> bool {
         || name.starts_with("shenlong:")
         || matches!(
             name,
-            "xformOpOrder" | "size" | "radius" | "height" | "axis" | "points" | "extent"
+            "xformOpOrder"
+                | "size"
+                | "radius"
+                | "height"
+                | "axis"
+                | "points"
+                | "extent"
+                | "faceVertexCounts"
+                | "faceVertexIndices"
         )
+}
+
+/// A `Mesh`'s faces as triangles (each polygon as a fan from its first corner), as indices
+/// into its `points` (`count` of them); faces with a corner out of range are left out, and
+/// past [`MAX_TRIANGLES`] in all, the rest (the prim then keeps the form of its kind).
+///
+/// [`MAX_TRIANGLES`]: crate::scene::mesh::MAX_TRIANGLES
+pub(super) fn geometry_triangles(attrs: Attrs<'_>, type_name: &str, count: usize) -> Vec<[u32; 3]> {
+    // Only a mesh's own points are what its faces index (not its extent's corners).
+    let own_points = matches!(attrs("points"), Some(Attr::Points(p)) if p.len() == count);
+    if type_name != "Mesh" || !own_points {
+        return Vec::new();
+    }
+    let (Some(Attr::Ints(sizes)), Some(Attr::Ints(corners))) =
+        (attrs("faceVertexCounts"), attrs("faceVertexIndices"))
+    else {
+        return Vec::new();
+    };
+    let index = |k: i64| u32::try_from(k).ok().filter(|&k| (k as usize) < count);
+    let mut out = Vec::new();
+    let mut at = 0usize;
+    for &size in &sizes {
+        let Some(face) = usize::try_from(size)
+            .ok()
+            .and_then(|n| corners.get(at..at.checked_add(n)?))
+        else {
+            break;
+        };
+        at += face.len();
+        let face: Option<Vec<u32>> = face.iter().map(|&k| index(k)).collect();
+        if let Some(face) = face.filter(|f| f.len() >= 3) {
+            for w in face[1..].windows(2) {
+                if out.len() > crate::scene::mesh::MAX_TRIANGLES {
+                    return out;
+                }
+                out.push([face[0], w[0], w[1]]);
+            }
+        }
+    }
+    out
 }
