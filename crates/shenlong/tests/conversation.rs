@@ -233,6 +233,19 @@ fn follow_ups_said_other_ways() {
         assert!(close(at(&s, "armchair"), start + DVec3::X * 0.4), "{how:?}");
         say(&mut s, how, "push it a bit further").unwrap();
         assert!(close(at(&s, "armchair"), start + DVec3::X * 0.5), "{how:?}");
+        // A bare number in the unit said before; "half as much again" goes on, not back.
+        let mut t = living_room();
+        say(&mut t, how, "move the armchair 30 cm to the right").unwrap();
+        say(&mut t, how, "another 5").unwrap();
+        assert!(
+            close(at(&t, "armchair"), start + DVec3::X * 0.35),
+            "{how:?}"
+        );
+        say(&mut t, how, "half as much again").unwrap();
+        assert!(
+            close(at(&t, "armchair"), start + DVec3::X * 0.375),
+            "{how:?}"
+        );
         // The other speaker too.
         let (left, right) = (at(&s, "speaker"), at(&s, "speaker 2"));
         say(&mut s, how, "move the left speaker 10 cm to the left").unwrap();

@@ -465,6 +465,118 @@ fn in_a_bookcase_is_on_a_shelf_or_refused() {
     assert!(e.message.contains("solid box"), "{}", e.message);
 }
 
+/// A shelf of a bookcase is a part of it even where a wall shelf would make "a shelf"
+/// name two objects: "a shelf of the bookcase", "the second shelf from the top of …",
+/// "the bottom shelf in …".
+#[test]
+fn a_shelf_of_a_bookcase_is_a_part_beside_a_wall_shelf() {
+    let text = r#"{"objects": [
+        {"name": "bookshelf", "size": [0.8, 1.8, 0.3], "position": [0, 0, -2]},
+        {"name": "wall shelf", "size": [0.6, 0.03, 0.2], "position": [2, 1.5, -2.4]},
+        {"name": "shelving unit", "size": [1.0, 1.6, 0.4], "position": [-2, 0, -2]},
+        {"name": "book", "size": [0.15, 0.22, 0.03], "position": [1.5, 0, 0]}
+    ]}"#;
+    let s = scene(text);
+    let wall = aabb(&s, "wall shelf");
+    for (said, case, level) in [
+        (
+            "put the book on a shelf of the bookshelf",
+            "bookshelf",
+            0.02,
+        ),
+        (
+            "put the book on the second shelf from the top of the bookshelf",
+            "bookshelf",
+            1.22,
+        ),
+        (
+            "put the book on the second shelf from the bottom in the shelving unit",
+            "shelving unit",
+            0.34,
+        ),
+        (
+            "put the book on the top shelf on the shelving unit",
+            "shelving unit",
+            1.30,
+        ),
+    ] {
+        let mut t = s.clone();
+        run(&mut t, said);
+        let (book, case_box) = (aabb(&t, "book"), aabb(&t, case));
+        assert!(
+            shenlong::scene::form::clear_shelved(&book, &case_box),
+            "{said}: {book:?}"
+        );
+        assert!((book.min.y - level).abs() < LEVEL, "{said}: {book:?}");
+        assert_eq!(aabb(&t, "wall shelf"), wall, "{said}");
+    }
+}
+
+/// "Put X back on Y": "back" says it was there before, not a way; where a thing is taken
+/// from is what it rests on ("off the table" with two tables).
+#[test]
+fn back_onto_and_off_what_it_rests_on() {
+    let text = r#"{"objects": [
+        {"name": "coffee table", "size": [1.1, 0.45, 0.6], "position": [0, 0, 0]},
+        {"name": "side table", "size": [0.5, 0.55, 0.5], "position": [2, 0, 0]},
+        {"name": "mug", "size": [0.1, 0.1, 0.1], "position": [0, 0.45, 0]}
+    ]}"#;
+    let mut s = scene(text);
+    let side = aabb(&s, "side table");
+    run(&mut s, "put the mug back on the side table");
+    rests_on(&s, "mug", "side table");
+    assert_eq!(aabb(&s, "side table"), side);
+    let mut s = scene(text);
+    run(&mut s, "take the mug off the table");
+    let mug = aabb(&s, "mug");
+    assert!(mug.min.y.abs() < LEVEL, "on the floor: {mug:?}");
+}
+
+/// What fits in a box or on a shelf only turned is turned a quarter turn about the
+/// vertical, as a person would: a book deeper than the shelf, a rolling pin longer than
+/// the crate is deep; what fits neither way is refused.
+#[test]
+fn what_fits_only_turned_is_turned_a_quarter_turn() {
+    let text = r#"{"objects": [
+        {"name": "bookcase", "size": [0.8, 1.8, 0.3], "position": [0, 0, -2]},
+        {"name": "book", "size": [0.04, 0.24, 0.35], "position": [1.5, 0, 0]},
+        {"name": "crate", "size": [0.6, 0.3, 0.35], "position": [-1.5, 0, 0]},
+        {"name": "rolling pin", "size": [0.08, 0.08, 0.45], "position": [1, 0, 1]},
+        {"name": "poster tube", "size": [0.1, 0.1, 0.9], "position": [2, 0, 1]}
+    ]}"#;
+    let mut s = scene(text);
+    let (book, pin) = (aabb(&s, "book"), aabb(&s, "rolling pin"));
+    run(&mut s, "put the book in the bookcase");
+    let (after, case) = (aabb(&s, "book"), aabb(&s, "bookcase"));
+    assert!(
+        shenlong::scene::form::clear_shelved(&after, &case),
+        "{after:?}"
+    );
+    assert!(
+        (after.size().x - book.size().z).abs() < 1e-9
+            && (after.size().z - book.size().x).abs() < 1e-9,
+        "turned: {after:?}"
+    );
+    run(&mut s, "put the rolling pin in the crate");
+    let (after, crate_box) = (aabb(&s, "rolling pin"), aabb(&s, "crate"));
+    assert!(
+        shenlong::scene::form::clear_inside(&after, &crate_box),
+        "{after:?}"
+    );
+    assert!(
+        (after.size().x - pin.size().z).abs() < 1e-9,
+        "turned: {after:?}"
+    );
+    let e = edit(
+        &mut s,
+        "put the poster tube in the crate",
+        &OfflineTranslator::new(),
+        &EditOptions::default(),
+    )
+    .expect_err("refused");
+    assert!(e.message.contains("does not fit"), "{}", e.message);
+}
+
 /// `name` overlaps no object but `allowed` (and what it stood in before).
 fn overlaps_nothing_but(scene: &Scene, name: &str, allowed: &str) {
     let a = aabb(scene, name);

@@ -105,11 +105,13 @@ impl Reader<'_> {
         // "put the lamp on the side table on the right" with two side tables: "on the
         // right" says which side table, not where the lamp goes; the clause goes on only
         // after it.
+        // "on the second shelf from the top of the bookcase": the clause goes on after
+        // the case the shelf is a part of.
         let own_place_of_targets = |p: &Post, p_end: usize| match p {
             Post::Relation(_, targets) if targets.len() > 1 => {
                 self.side_place_at(p_end).map_or(p_end, |(_, end)| end)
             }
-            _ => p_end,
+            _ => self.after_shelf_part(p_end),
         };
         // "the thing on the cupboard", "everything on the shelf": a generic noun says
         // nothing of which without its modifier, so the modifier is never a destination.
@@ -168,6 +170,18 @@ impl Reader<'_> {
             return Ok(None);
         }
         Ok(post.filter(|_| picks || describes))
+    }
+
+    /// Where the case of shelves a shelf ends a phrase at `p_end` is a part of ends ("…
+    /// shelf from the top of the bookcase"): after that case's phrase; else `p_end`.
+    fn after_shelf_part(&self, p_end: usize) -> usize {
+        let shelf = p_end
+            .checked_sub(1)
+            .is_some_and(|k| self.is_word(k, &["shelf", "shelves"]));
+        match self.case_of_shelf(p_end, &[]) {
+            Ok(Some((_, end))) if shelf => end,
+            _ => p_end,
+        }
     }
 
     /// Whether `post` is a relation beside (near, in front, behind, left, right, between)

@@ -267,6 +267,10 @@ struct Reader<'a> {
     /// The objects of the last list of phrases grounded ("X1 and X2"): what "them" after
     /// a relation word means.
     group: Vec<usize>,
+    /// What "it" or "them" with nothing named before means (the selection, or what the
+    /// last edit moved): what a thing is taken from rests under it ("take it off the
+    /// table").
+    selection: Vec<usize>,
 }
 
 impl Grounder {
@@ -416,6 +420,7 @@ impl Grounder {
             "a Grounder serves the scene it was built for"
         );
         let mut reader = Reader::new(self, scene, text);
+        reader.selection = selection.to_vec();
         let mut phrases = match reader.read() {
             Ok(phrases) => phrases,
             // An instruction that names nothing but speaks of the selection.
@@ -530,8 +535,9 @@ fn drop_restated(
 }
 
 /// The phrases that name a shelf of the case of shelves named right after them ("the top
-/// shelf of the bookcase"): a part of that object, not an object — the words stay for the
-/// translator, which reads which shelf.
+/// shelf of the bookcase", "the second shelf from the top of the bookcase"): a part of
+/// that object, not an object — the words stay for the translator, which reads which
+/// shelf.
 fn drop_parts(text: &str, phrases: Vec<Phrase>, scene: &Scene) -> Vec<Phrase> {
     let mut kept: Vec<Phrase> = Vec::with_capacity(phrases.len());
     for (k, p) in phrases.iter().enumerate() {
@@ -542,7 +548,13 @@ fn drop_parts(text: &str, phrases: Vec<Phrase>, scene: &Scene) -> Vec<Phrase> {
             .is_some_and(|w| matches!(w.to_lowercase().as_str(), "shelf" | "shelves"));
         let whole = phrases.get(k + 1).filter(|q| {
             text.get(p.span.end..q.span.start).is_some_and(|between| {
-                matches!(between.trim().to_lowercase().as_str(), "of" | "in" | "on")
+                let between = between.trim().to_lowercase();
+                // "the second shelf from the top of the bookcase".
+                let between = ["from the top ", "from the bottom "]
+                    .iter()
+                    .find_map(|from| between.strip_prefix(from))
+                    .unwrap_or(&between);
+                matches!(between.trim(), "of" | "in" | "on")
             }) && q
                 .objects
                 .iter()
@@ -814,6 +826,7 @@ impl<'a> Reader<'a> {
             consumed: vec![false; n],
             antecedent: Vec::new(),
             group: Vec::new(),
+            selection: Vec::new(),
         };
         reader.correct_typos();
         reader.number_words();

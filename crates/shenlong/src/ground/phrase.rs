@@ -124,7 +124,52 @@ impl Reader<'_> {
         if mode == Mode::Main && matches!(draft.count, Count::All) && !head.generic {
             self.leave_out(&head, &mut draft, bound)?;
         }
+        if mods.ordinal.is_none() {
+            self.taken_from(&mut draft, bound);
+        }
         self.finish(head, draft, mods.ordinal, mode)
+    }
+
+    /// "take the vase off the table", "the book from the shelf", "the keys out of the
+    /// bowl": of several the phrase fits, the one what was named before it rests on —
+    /// where a thing is taken from is where it is.
+    fn taken_from(&self, draft: &mut Draft, bound: &[usize]) {
+        let before = |n: usize| draft.start.checked_sub(n).and_then(|k| self.word(k));
+        let source = matches!(before(1), Some("off" | "from"))
+            || (before(1) == Some("of") && before(2) == Some("out"));
+        // Nothing named before: what "it" means (the selection).
+        let bound = if bound.is_empty() {
+            self.selection.as_slice()
+        } else {
+            bound
+        };
+        if !source || draft.count != Count::One || draft.objects.len() < 2 || bound.is_empty() {
+            return;
+        }
+        let holding: Vec<usize> = draft
+            .objects
+            .iter()
+            .copied()
+            .filter(|&o| {
+                bound
+                    .iter()
+                    .any(|&b| self.scene.objects[b].support == Some(o))
+            })
+            .collect();
+        if let [one] = holding.as_slice() {
+            draft.objects = vec![*one];
+            draft.reasons.push(modifier(&format!(
+                "{} is what {} rests on",
+                self.name(*one),
+                error::list(
+                    &bound
+                        .iter()
+                        .filter(|&&b| self.scene.objects[b].support == Some(*one))
+                        .map(|&b| self.name(b))
+                        .collect::<Vec<_>>()
+                )
+            )));
+        }
     }
 
     /// How the phrase of `head` opens, before token `first` (where the modifiers before
@@ -319,6 +364,15 @@ impl Reader<'_> {
         bound: &[usize],
         mode: Mode,
     ) -> Result<(), GroundError> {
+        // "a shelf of the bookcase", "the second shelf in the shelving unit": a part of
+        // the case of shelves named right after it, which the translator reads; the
+        // phrase stands for the case, nothing before the head picks, and the case is
+        // its own phrase next (`drop_parts` then takes this one out).
+        if let Some(case) = self.part_of_shelves(head, draft, bound)? {
+            draft.objects = case;
+            *mods = Premods::default();
+            return Ok(());
+        }
         let wanted = draft.count.wanted(draft.objects.len());
         let group = matches!(draft.count, Count::All) && !head.generic;
         let choice = Choice {
@@ -413,6 +467,57 @@ impl Reader<'_> {
                     "anything",
                 ],
             )
+    }
+
+    /// The cases of shelves a phrase whose head is "shelf" or "shelves" is a part of
+    /// ([`Self::case_of_shelf`]).
+    fn part_of_shelves(
+        &self,
+        head: &Head,
+        draft: &Draft,
+        bound: &[usize],
+    ) -> Result<Option<Vec<usize>>, GroundError> {
+        if !matches!(head.text.as_str(), "shelf" | "shelves") || draft.end != head.range.end {
+            return Ok(None);
+        }
+        Ok(self.case_of_shelf(draft.end, bound)?.map(|(case, _)| case))
+    }
+
+    /// After a shelf ending at token `k`: the cases of shelves of "of", "in" or "on" right
+    /// after it (past "from the top": "the second shelf from the top of the bookcase"),
+    /// when each is a case of shelves, and where their phrase ends.
+    ///
+    /// # Errors
+    /// The phrase after it cannot be grounded.
+    pub(super) fn case_of_shelf(
+        &self,
+        k: usize,
+        bound: &[usize],
+    ) -> Result<Option<(Vec<usize>, usize)>, GroundError> {
+        let mut k = k;
+        if self.is_word(k, &["from"])
+            && self.is_word(k + 1, &["the"])
+            && self.is_word(k + 2, &["top", "bottom"])
+        {
+            k += 3;
+        }
+        // "of" is no relation: the phrase after it, read on its own.
+        let found = if self.is_word(k, &["of"]) {
+            self.nested_np(k + 1, bound)?
+        } else if self.is_word(k, &["in", "on"]) {
+            match self.post_modifier(k, bound)? {
+                Some((Post::Relation(_, targets), end)) => Some((targets, end)),
+                _ => None,
+            }
+        } else {
+            None
+        };
+        Ok(found.filter(|(targets, _)| {
+            !targets.is_empty()
+                && targets
+                    .iter()
+                    .all(|&t| super::kind::form_of(self.scene, t) == crate::scene::Form::Shelves)
+        }))
     }
 
     /// The modifier after the head of a phrase on its own (`mode` [`Mode::Main`]), if it

@@ -347,3 +347,33 @@ fn number_one_is_the_unnumbered_first_of_copies_numbered_from_two() {
         &[&["student desk 4", "student desk 5", "student desk 3"]],
     );
 }
+
+#[test]
+fn where_a_thing_is_taken_from_is_what_it_rests_on() {
+    // Two tables; the vase and the book rest on the coffee table, the lamp on the side
+    // table.
+    means(
+        "living_room",
+        "take the vase off the table",
+        &[&["vase"], &["coffee table"]],
+    );
+    means(
+        "living_room",
+        "take the table lamp off the table",
+        &[&["table lamp"], &["side table"]],
+    );
+    // "it": the selection, on the coffee table.
+    let s = scene("living_room");
+    let vase = [s.find("vase").unwrap()];
+    let g = Grounder::new(&s)
+        .ground_with_selection("take it off the table", &s, &vase)
+        .unwrap();
+    let table = g.phrases.iter().find(|p| p.text.contains("table")).unwrap();
+    assert_eq!(table.objects, [s.find("coffee table").unwrap()]);
+    // Resting on neither: still refused.
+    refused(
+        "living_room",
+        "take the sofa off the table",
+        &["sofa", "table"],
+    );
+}

@@ -60,6 +60,48 @@ pub(crate) fn rewrite(c: &mut Clause) {
     edge_of(c);
     shelf_of(c);
     particle_first(c);
+    back_onto(c);
+}
+
+/// "Back" between putting something and where it goes says it was there before, not a
+/// way: `put X1 back on X2`, `set X1 and X2 back in X3` → `put X1 on X2`.
+fn back_onto(c: &mut Clause) {
+    use super::words::Token;
+    for i in 0..c.len() {
+        if !one_of(
+            c,
+            i,
+            &["put", "place", "set", "stick", "pop", "return", "get"],
+        ) {
+            continue;
+        }
+        let mut end = i + 1;
+        while matches!(c.token(end), Some(Token::Variable(_)))
+            || (c.words_at(end, &["and"]) && matches!(c.token(end + 1), Some(Token::Variable(_))))
+        {
+            end += 1;
+        }
+        let place = [
+            "on",
+            "onto",
+            "in",
+            "into",
+            "inside",
+            "under",
+            "underneath",
+            "beneath",
+            "next",
+            "beside",
+            "against",
+            "by",
+            "near",
+            "atop",
+        ];
+        if end > i + 1 && c.words_at(end, &["back"]) && c.free(end) && one_of(c, end + 1, &place) {
+            c.mark(end..end + 1);
+            return;
+        }
+    }
 }
 
 /// The particle said before what it moves: `push in X1`, `tuck in X1 and X2`, `pull out
@@ -100,7 +142,8 @@ fn particle_first(c: &mut Clause) {
 }
 
 /// A shelf of what things go in: `on the top shelf of X2`, `onto the lowest shelf of X2`,
-/// `on the second shelf from the top of X2` → `in X2` with the shelf kept
+/// `on the second shelf from the top of X2`, `on the bottom shelf in X2` → `in X2` with the
+/// shelf kept
 /// ([`Clause::shelf`]). "The second shelf" alone does not say from where: not read.
 fn shelf_of(c: &mut Clause) {
     use crate::scene::form::Shelf;
@@ -139,7 +182,8 @@ fn shelf_of(c: &mut Clause) {
             }
             _ => continue,
         };
-        if !c.words_at(of, &["of"]) || !is_var(c, of + 1) {
+        // "… of X2", "… in X2".
+        if !one_of(c, of, &["of", "in", "on"]) || !is_var(c, of + 1) {
             continue;
         }
         c.mark(i..of);

@@ -495,7 +495,12 @@ impl Known<'_> {
                     .map(|&o| boxes[o].size())
                     .fold(glam::DVec3::ZERO, glam::DVec3::max);
                 let area = |x: &crate::geometry::Aabb| x.size().x * x.size().z;
-                let fits = |room: &crate::geometry::Aabb| need.cmple(room.size() + 1e-9).all();
+                // As it stands, or turned a quarter turn ([`Known::turn_to_fit`]).
+                let fits = |room: &crate::geometry::Aabb| {
+                    let room = room.size() + 1e-9;
+                    need.cmple(room).all()
+                        || glam::DVec3::new(need.z, need.y, need.x).cmple(room).all()
+                };
                 let rooms: Vec<_> = form::compartments(&b).into_iter().filter(fits).collect();
                 // What already stands on a shelf: the footprint it takes there.
                 let used = |room: &crate::geometry::Aabb| {
@@ -517,6 +522,35 @@ impl Known<'_> {
             }
             _ => None,
         }
+    }
+
+    /// Whether variable `s`, put in `t` resting `floor` above its bottom (an open
+    /// container's room, or the shelf at that height), fits there only turned a quarter
+    /// turn about the vertical — as a person turns a book to go on a shelf: its footprint
+    /// too long for the room one way and not the other. A quarter turn about the vertical
+    /// swaps the extents of any object's world box along x and z.
+    pub(crate) fn turn_to_fit(&self, s: usize, t: usize, floor: f64) -> bool {
+        use crate::scene::{form, Form};
+        let Some((scene, objects)) = self.scene else {
+            return false;
+        };
+        let (Some(&o), Some(&case)) = (objects.get(s), objects.get(t)) else {
+            return false;
+        };
+        let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
+        let b = boxes[case];
+        let room = match crate::ground::kind::form_of(scene, case) {
+            Form::Open => Some(form::inside(&b)),
+            Form::Shelves => form::compartments(&b)
+                .into_iter()
+                .find(|r| (r.min.y - b.min.y - floor).abs() < 1e-9),
+            _ => None,
+        };
+        let Some(room) = room.map(|r| r.size() + 1e-9) else {
+            return false;
+        };
+        let need = boxes[o].size();
+        !need.cmple(room).all() && glam::DVec3::new(need.z, need.y, need.x).cmple(room).all()
     }
 
     /// Whether `subjects` put "in" `t` go under it: `t` is a top on legs (a desk, a

@@ -655,21 +655,29 @@ impl Reader<'_> {
         let together = matches!(relation, Relation::Closer(_) | Relation::Away(_))
             && subjects.len() > 1
             && self.facts.known.unit_with(subjects[0], &subjects[1..]);
-        subjects
-            .iter()
-            .map(|&s| {
-                let lead = if together { subjects[0] } else { s };
-                if relation.places() && !targets.contains(&s) {
-                    self.forget_moves(s);
+        let mut produced = Vec::new();
+        for &s in subjects {
+            let lead = if together { subjects[0] } else { s };
+            if relation.places() && !targets.contains(&s) {
+                self.forget_moves(s);
+            }
+            let v = self.vector(relation, lead, targets, text)?;
+            match near {
+                Some(n) => self.near.insert(s, n),
+                None => self.near.remove(&s),
+            };
+            // In a box or on a shelf it fits only turned: a quarter turn about its pivot
+            // first (which keeps its box's centre and bottom, what the vector is written
+            // from).
+            if let (Relation::In(floor), &[t, ..]) = (relation, targets) {
+                if self.facts.known.turn_to_fit(s, t, floor) {
+                    let quarter = build::rotor(build::degrees(90.0), (2, 0));
+                    produced.push((s, Step::Turn(quarter)));
                 }
-                let v = self.vector(relation, lead, targets, text)?;
-                match near {
-                    Some(n) => self.near.insert(s, n),
-                    None => self.near.remove(&s),
-                };
-                Ok((s, Step::Translate(v)))
-            })
-            .collect()
+            }
+            produced.push((s, Step::Translate(v)));
+        }
+        Ok(produced)
     }
 
     /// Forgets the translations earlier clauses gave variable `s`, which a relation that

@@ -293,6 +293,18 @@ impl Context {
             ));
         }
         let k = match amount {
+            Amount::Bare(n) => {
+                let said = last
+                    .instruction
+                    .as_deref()
+                    .and_then(|text| follow_up::in_unit_of(n, text))
+                    .ok_or_else(|| {
+                        refuse(format!(
+                            "\"{n}\" of what? the last instruction said no unit: say \"another {n} cm\" or \"{n} more degrees\""
+                        ))
+                    })?;
+                return self.repeat(said);
+            }
             Amount::Times(k) => k,
             Amount::Bit(sign) => {
                 let (_, m) = last.motions[0];

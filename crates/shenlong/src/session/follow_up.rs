@@ -19,6 +19,9 @@ pub enum Amount {
     Metres(f64),
     /// This many degrees more along the last turn ("15 more degrees").
     Degrees(f64),
+    /// This many more of the unit the last instruction said ("another 5" after "move it
+    /// 20 cm left"), which the conversation reads ([`in_unit_of`]).
+    Bare(f64),
 }
 
 /// How many of the session's last changes a follow-up takes back.
@@ -122,7 +125,12 @@ fn words(text: &str) -> Vec<Word> {
 }
 
 /// Words that only say a follow-up is one ("no", "ok then", "I meant").
-const CORRECTING: [&[&str]; 23] = [
+const CORRECTING: [&[&str]; 28] = [
+    &["that", "was", "wrong"],
+    &["that's", "wrong"],
+    &["thats", "wrong"],
+    &["that's", "not", "right"],
+    &["not", "right"],
     &["no", "i", "meant"],
     &["no", "i", "mean"],
     &["i", "meant"],
@@ -210,8 +218,11 @@ fn verb_clause(w: &[&str]) -> bool {
 }
 
 /// Small amounts ("a bit", "slightly").
-const BIT: [&[&str]; 16] = [
+const BIT: [&[&str]; 19] = [
     &["just", "a", "little", "bit"],
+    &["a", "tiny", "little", "bit"],
+    &["little", "bit"],
+    &["a", "smidgen"],
     &["just", "a", "bit"],
     &["a", "little", "bit"],
     &["a", "tiny", "bit"],
@@ -303,7 +314,8 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
         .iter()
         .enumerate()
         .skip(n + 1)
-        .find(|(_, x)| **x == "not")
+        // ("…, not enough": no correction.)
+        .find(|(k, x)| **x == "not" && !matches!(w.get(k + 1), Some(&("enough" | "far" | "quite"))))
         .map_or(w.len(), |(k, _)| k);
     // "move the lamp, not the sofa" is an instruction of its own; "put it on the shelf,
     // not the table" corrects the turn before.
@@ -325,8 +337,14 @@ pub fn read(instruction: &str, after_refusal: bool) -> Option<FollowUp> {
     if w.len() > 1 && matches!(w[w.len() - 1], "instead" | "rather") {
         return correction(&w[..w.len() - 1], &text);
     }
-    // "the other one", "wrong chair", "not that chair": another of the same.
+    // "the other one", "wrong chair", "not that chair": another of the same; "wrong, put
+    // it back": an opener before a clause of its own.
     match w.as_slice() {
+        ["wrong", rest @ ..] if starts_with_verb(rest) => {
+            return after_opener(&w[..1], rest, rest.len(), &|from, to| {
+                text(from + 1, to + 1)
+            });
+        }
         ["the", "other", ..] | ["other", ..] if !starts_with_verb(&w) && !w.contains(&"too") => {
             return Some(FollowUp::Instead(text(0, w.len())));
         }
@@ -528,12 +546,14 @@ fn undo(w: &[&str]) -> Option<FollowUp> {
         {
             Some(FollowUp::Undo)
         }
-        ["revert" | "cancel" | "scratch", rest @ ..]
-            if rest.iter().all(|x| pronoun(x)) && !rest.is_empty() =>
+        // "reverse that", "reverse the last move" (not "reverse the sofa": a turn).
+        ["revert" | "cancel" | "scratch" | "reverse", rest @ ..]
+            if rest.iter().all(|x| pronoun(x)) && !rest.is_empty() && rest != ["it"] =>
         {
             Some(FollowUp::Undo)
         }
         ["take", "that" | "it", "back"]
+        | ["go", "back", "one" | "a", "step"]
         | ["never", "mind"]
         | ["nevermind"]
         | ["revert"]
@@ -727,7 +747,8 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
             }
             let (object_end, rest) = match (at, w.iter().position(|&x| x == "where")) {
                 (Some(k), _) => (k, &w[k + 1..]),
-                // "put it where it was".
+                // "put it where it was"; "return it to where it started".
+                (None, Some(k)) if k > 1 && w[k - 1] == "to" => (k - 1, &w[k - 1..]),
                 (None, Some(k)) => (k, &w[k..]),
                 (None, None) if matches!(*first, "return" | "restore" | "reset") => {
                     let k = w.iter().position(|&x| x == "to").unwrap_or(w.len());
@@ -753,6 +774,19 @@ fn back(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<FollowUp> {
     if let Some(k) = w.iter().position(|&x| x == "back") {
         if k > 0 && where_it_was(&w[k + 1..]) && !w[k + 1..].is_empty() && !verb_clause(&w[..k]) {
             return Some(FollowUp::Back(which(&w[..k], &|| text(0, k))));
+        }
+    }
+    // "original position please", "old spot": the place alone.
+    if let [first, ..] = w {
+        if matches!(
+            *first,
+            "original" | "previous" | "old" | "former" | "initial"
+        ) {
+            let mut said = vec!["the"];
+            said.extend_from_slice(w);
+            if where_it_was(&said) {
+                return Some(FollowUp::Back(Which::Last));
+            }
         }
     }
     // "back where it was", "back to where it was", "where it was".
@@ -816,7 +850,20 @@ fn number(w: &str) -> Option<f64> {
         .or_else(|| crate::lex::number_word(w))
 }
 
-/// "another 10 cm", "10 cm more", "5 more degrees", "a further 20 cm".
+/// "an inch", "a couple of inches", "a few degrees": one, two or three of the unit.
+fn counted(w: &[&str]) -> Option<(Amount, usize)> {
+    let (count, at) = match w {
+        ["a", "couple", "of", ..] => ("2", 3),
+        ["a", "few", ..] => ("3", 2),
+        ["a" | "an" | "one", ..] => ("1", 1),
+        _ => return None,
+    };
+    let (a, _) = amount(&[count, w.get(at)?])?;
+    Some((a, at + 1))
+}
+
+/// "another 10 cm", "10 cm more", "5 more degrees", "a further 20 cm", "an inch more",
+/// "another 5" (the unit of the last instruction).
 fn explicit(w: &[&str]) -> Option<Amount> {
     let (rest, opener) = match w {
         ["another" | "additional", rest @ ..] | ["a", "further" | "another", rest @ ..] => {
@@ -824,7 +871,21 @@ fn explicit(w: &[&str]) -> Option<Amount> {
         }
         rest => (rest, false),
     };
-    if let Some((a, used)) = amount(rest) {
+    // A number without a unit: "another 5", "5 more".
+    match rest {
+        // "another inch", "a further degree".
+        [unit] | [unit, "please"] if opener && number(unit).is_none() => {
+            return amount(&["1", unit]).map(|(a, _)| a);
+        }
+        [n] | [n, "please"] if opener && number(n).is_some() => {
+            return number(n).map(Amount::Bare);
+        }
+        [n, "more"] | [n, "more", "please"] if !opener && number(n).is_some() => {
+            return number(n).map(Amount::Bare);
+        }
+        _ => {}
+    }
+    if let Some((a, used)) = amount(rest).or_else(|| counted(rest)) {
         let tail = &rest[used..];
         let ok = if opener {
             tail.is_empty()
@@ -843,9 +904,64 @@ fn explicit(w: &[&str]) -> Option<Amount> {
     None
 }
 
+/// The amount `n` of a bare "another 5" in the unit of the first amount `instruction`
+/// says ("move it 20 cm left": centimetres; "turn it 15 degrees": degrees); `None` when
+/// it says none.
+#[must_use]
+pub(crate) fn in_unit_of(n: f64, instruction: &str) -> Option<Amount> {
+    let said = words(instruction);
+    let w: Vec<&str> = said.iter().map(|x| x.text.as_str()).collect();
+    (0..w.len()).find_map(|k| {
+        let unit = match amount(&w[k..])? {
+            (_, 2) => w[k + 1].to_string(),
+            // Glued: "20cm".
+            _ => w[k]
+                .trim_start_matches(|c: char| c.is_ascii_digit() || c == '.')
+                .to_string(),
+        };
+        amount(&["1", &unit]).map(|(a, _)| match a {
+            Amount::Metres(m) => Amount::Metres(n * m),
+            Amount::Degrees(d) => Amount::Degrees(n * d),
+            other => other,
+        })
+    })
+}
+
+/// "twice more", "3 more times", "repeat that twice": the last motion that many times
+/// again.
+fn more_times(w: &[&str]) -> Option<Amount> {
+    let times = |x: &str| match x {
+        "twice" => Some(2.0),
+        "thrice" => Some(3.0),
+        _ => None,
+    };
+    let n = match w {
+        [t, "more"] | [t, "more", "please"] | ["repeat", t] => times(t)?,
+        [n, "more", "times"] | [n, "more", "times", "please"] | ["repeat", n, "times"] => {
+            number(n)?
+        }
+        ["repeat", "it" | "that", t] => times(t)?,
+        ["repeat", "it" | "that", n, "times"] => number(n)?,
+        _ => return None,
+    };
+    (n.fract() == 0.0 && (1.0..=10.0).contains(&n)).then_some(Amount::Times(n))
+}
+
+/// The whole of what says the last motion did not go far enough: a small step more.
+const NOT_ENOUGH: [&[&str]; 8] = [
+    &["not", "far", "enough"],
+    &["not", "enough"],
+    &["not", "quite", "far", "enough"],
+    &["that's", "not", "enough"],
+    &["thats", "not", "enough"],
+    &["that's", "not", "far", "enough"],
+    &["it's", "not", "far", "enough"],
+    &["more", "than", "that"],
+];
+
 /// [`repeat`] once any motion verb is set aside.
 /// The whole of what says the last motion again.
-const AGAIN: [&[&str]; 16] = [
+const AGAIN: [&[&str]; 17] = [
     &["again"],
     &["once", "more"],
     &["one", "more", "time"],
@@ -862,6 +978,7 @@ const AGAIN: [&[&str]; 16] = [
     &["continue"],
     &["double", "that"],
     &["the", "same", "again"],
+    &["keep", "it", "going"],
 ];
 
 /// The whole of what says the last motion went too far.
@@ -916,10 +1033,15 @@ fn same_again(w: &[&str]) -> Option<Amount> {
                 | "repeat"
                 | "and"
                 | "so"
+                | "distance"
+                | "amount"
         )
     };
     if w.iter().any(|x| matches!(*x, "again" | "repeat")) && w.iter().all(|x| filler(x)) {
         return Some(Amount::Times(1.0));
+    }
+    if NOT_ENOUGH.contains(&w) {
+        return Some(Amount::Bit(1.0));
     }
     TOO_FAR.contains(&w).then_some(Amount::Times(-0.5))
 }
@@ -944,6 +1066,7 @@ fn repeat_of(w: &[&str], text: &dyn Fn(usize, usize) -> String) -> Option<Follow
         return repeat_of(inner, &|from, to| text(from + lead, to + lead));
     }
     if let Some(a) = explicit(w)
+        .or_else(|| more_times(w))
         .or_else(|| a_few_more(w))
         .or_else(|| same_again(w))
         .or_else(|| times_as_far(w))
@@ -1062,7 +1185,13 @@ fn times_as_far(w: &[&str]) -> Option<Amount> {
     ) {
         return Some(Amount::Times(factor - 1.0));
     }
-    matches!(rest, ["as", "far" | "much", ..]).then_some(Amount::Times(factor - 1.0))
+    // "half as much again", "twice as far again": that much more; without "again", that
+    // much in all.
+    match rest {
+        ["as", "far" | "much", "again"] => Some(Amount::Times(factor)),
+        ["as", "far" | "much", ..] => Some(Amount::Times(factor - 1.0)),
+        _ => None,
+    }
 }
 
 /// A way and an amount said alone ("a bit to the left", "10 cm up", "and a little
@@ -1240,6 +1369,28 @@ mod tests {
     }
 
     #[test]
+    fn a_bare_number_takes_the_unit_the_last_instruction_said() {
+        let metres = |a: Option<Amount>| match a {
+            Some(Amount::Metres(m)) => Some((m * 1e6).round() / 1e6),
+            _ => None,
+        };
+        assert_eq!(
+            metres(in_unit_of(5.0, "move the sofa 20 cm left")),
+            Some(0.05)
+        );
+        assert_eq!(metres(in_unit_of(2.0, "push it 20cm back")), Some(0.02));
+        assert_eq!(
+            metres(in_unit_of(1.0, "move the rug 2 feet left")),
+            Some(0.3048)
+        );
+        assert_eq!(
+            in_unit_of(15.0, "turn the chair 30 degrees"),
+            Some(Amount::Degrees(15.0))
+        );
+        assert_eq!(in_unit_of(5.0, "put the lamp on the table"), None);
+    }
+
+    #[test]
     fn each_kind_is_read_said_other_ways() {
         use FollowUp::*;
         let r = |t: &str| read(t, false);
@@ -1264,6 +1415,24 @@ mod tests {
             ),
             ("no, left", InsteadWay("left".into())),
             ("same again but to the right", SameWay("right".into())),
+            ("wrong, put it back", Back(Which::Last)),
+            ("that's not right, undo", Undo),
+            ("reverse that", Undo),
+            ("go back one step", Undo),
+            ("return it to where it started", Back(Which::Last)),
+            ("original position please", Back(Which::Last)),
+            ("another 5", Repeat(Amount::Bare(5.0))),
+            ("5 more", Repeat(Amount::Bare(5.0))),
+            ("an inch more", Repeat(Amount::Metres(0.0254))),
+            ("another inch", Repeat(Amount::Metres(0.0254))),
+            ("twice more", Repeat(Amount::Times(2.0))),
+            ("do it 3 more times", Repeat(Amount::Times(3.0))),
+            ("half as much again", Repeat(Amount::Times(0.5))),
+            ("half as far", Repeat(Amount::Times(-0.5))),
+            ("not far enough", Repeat(Amount::Bit(1.0))),
+            ("still not enough", Repeat(Amount::Bit(1.0))),
+            ("the same distance again", Repeat(Amount::Times(1.0))),
+            ("little bit more", Repeat(Amount::Bit(1.0))),
             ("again, but left", SameWay("left".into())),
             ("do the same this time backwards", SameWay("backwards".into())),
             ("same distance to the left", SameWay("left".into())),
