@@ -277,7 +277,13 @@ fn a_drawer_unit_solid_to_the_floor_has_no_room_under_it_whatever_its_name() {
     let json = shenlong::format::json::read(std::str::from_utf8(&bytes).unwrap(), "x").unwrap();
     let back = &json.scene;
     let form_back = |name: &str| back.objects[back.find(name).unwrap()].form;
-    assert_eq!(form_back("Desk"), Some(shenlong::scene::Form::ON_LEGS));
+    // The room measured below is written too (`room_below`), and read back.
+    let below = |name: &str| {
+        let o = &back.objects[back.find(name).unwrap()];
+        shenlong::scene::form::knee_room(&o.world_aabb(), o.form.unwrap())
+    };
+    assert!((below("Desk") - 0.72).abs() < 2e-3, "{}", below("Desk"));
+    assert!((below("Bed") - 0.25).abs() < 2e-3, "{}", below("Bed"));
     assert_eq!(form_back("Crate"), Some(shenlong::scene::Form::Open));
     assert_eq!(form_back("Drawers"), None);
 }

@@ -512,6 +512,40 @@ fn a_shelf_of_a_bookcase_is_a_part_beside_a_wall_shelf() {
     }
 }
 
+/// A scene file says how high the room under a bed reaches (`room_below`): a tray slides
+/// under, a stool is refused saying so; a wrong value is refused naming the field.
+#[test]
+fn a_scene_file_says_the_room_below_a_bed() {
+    let text = r#"{"objects": [
+        {"name": "bed", "size": [1.6, 0.6, 2.0], "position": [0, 0, 0], "room_below": 0.25},
+        {"name": "tray", "size": [0.6, 0.15, 0.4], "position": [2, 0, 0]},
+        {"name": "stool", "size": [0.35, 0.45, 0.35], "position": [-2, 0, 0]}
+    ]}"#;
+    let mut s = scene(text);
+    run(&mut s, "slide the tray under the bed");
+    let (tray, bed) = (aabb(&s, "tray"), aabb(&s, "bed"));
+    assert!(
+        tray.min.y.abs() < LEVEL && tray.max.y <= 0.25 + LEVEL,
+        "{tray:?}"
+    );
+    assert!(footprint_within(&tray, &bed), "{tray:?}");
+    let e = edit(
+        &mut s,
+        "put the stool under the bed",
+        &OfflineTranslator::new(),
+        &EditOptions::default(),
+    )
+    .expect_err("refused");
+    assert!(e.message.contains("0.25 m"), "{}", e.message);
+    for bad in [
+        r#"{"objects": [{"name": "bed", "size": [1, 0.6, 2], "position": [0, 0, 0], "room_below": 0.9}]}"#,
+        r#"{"objects": [{"name": "bed", "size": [1, 0.6, 2], "position": [0, 0, 0], "room_below": 0.2, "form": "open"}]}"#,
+    ] {
+        let e = json::read(bad, "bad").map(|_| ()).unwrap_err().to_string();
+        assert!(e.contains("objects[0].room_below"), "{e}");
+    }
+}
+
 /// "Put X back on Y": "back" says it was there before, not a way; where a thing is taken
 /// from is what it rests on ("off the table" with two tables).
 #[test]

@@ -117,6 +117,8 @@ struct RawObject<'a> {
     material: Option<&'a RawValue>,
     #[serde(borrow, default, deserialize_with = "present")]
     form: Option<&'a RawValue>,
+    #[serde(borrow, default, deserialize_with = "present")]
+    room_below: Option<&'a RawValue>,
 }
 
 /// Parses and validates scene JSON. `fallback_name` names a scene without a `"name"`.
@@ -445,6 +447,9 @@ fn object_from_raw<'a>(
         .map_err(|e| FormatError::invalid(format!("objects[{i}]: {e}")))?;
     object.labels = labels(text, &o, i)?;
     object.form = o.form.map(|raw| form(raw, i)).transpose()?;
+    if let Some(raw) = o.room_below {
+        object.form = Some(room_below(raw, object.form, size.y * scale, i)?);
+    }
     if let Some(f) = vec3_field(text, o.front, &|| field("front"))? {
         if f.length() < 1e-9 {
             return Err(FormatError::invalid(format!(
@@ -500,6 +505,35 @@ fn form(raw: &RawValue, i: usize) -> Result<crate::scene::Form, FormatError> {
                 "objects[{i}].form must be \"solid\", \"on_legs\" (a top on legs, with room below), \"open\" (an open container) or \"shelves\" (a case of shelves)"
             ))
         })
+}
+
+/// An object's `room_below` (a documented extension of SPEC §2): how high the room under
+/// a top on legs reaches from its bottom, in metres (a bed whose frame stands 0.25 m off
+/// the floor), with `form` "on_legs" or none; `height` is the object's.
+fn room_below(
+    raw: &RawValue,
+    form: Option<crate::scene::Form>,
+    height: f64,
+    i: usize,
+) -> Result<crate::scene::Form, FormatError> {
+    if form.is_some_and(|f| !f.on_legs()) {
+        return Err(FormatError::invalid(format!(
+            "objects[{i}].room_below goes with \"form\": \"on_legs\" (or no form), not \"{}\"",
+            form.map_or("", crate::scene::Form::name)
+        )));
+    }
+    let metres = serde_json::from_str::<f64>(raw.get())
+        .ok()
+        .filter(|m| m.is_finite() && (0.0..=height).contains(m))
+        .ok_or_else(|| {
+            FormatError::invalid(format!(
+                "objects[{i}].room_below must be a number of metres from 0 to the object's height ({height:.3} m)"
+            ))
+        })?;
+    let permille = (metres / height * 1000.0).round().clamp(0.0, 1000.0) as u16;
+    Ok(crate::scene::Form::OnLegs {
+        underside: Some(permille),
+    })
 }
 
 /// The optional words for an object (a documented extension of SPEC §2): `category` (a
@@ -732,6 +766,13 @@ fn fresh_document(scene: &Scene) -> Value {
             }
             if let Some(form) = written_form(o) {
                 v["form"] = Value::String(form.name().into());
+                if let crate::scene::Form::OnLegs {
+                    underside: Some(permille),
+                } = form
+                {
+                    let below = o.world_aabb().size().y * f64::from(permille) / 1000.0;
+                    v["room_below"] = tidy_json((below * 1e4).round() / 1e4);
+                }
             }
             v
         })
@@ -741,12 +782,14 @@ fn fresh_document(scene: &Scene) -> Value {
 }
 
 /// The form a new scene file records for an object: its own, else what its mesh shows of
-/// room under it or in it (`scene::mesh`); a mesh that shows neither leaves its kind to
-/// decide when the file is read.
+/// room under it (with how high: `room_below`) or in it (`scene::mesh`); a mesh that shows
+/// neither leaves its kind to decide when the file is read.
 fn written_form(object: &Object) -> Option<crate::scene::Form> {
     use crate::scene::{mesh::Measured, Form};
     object.form.or(match object.measured? {
-        Measured::Under { .. } => Some(Form::ON_LEGS),
+        Measured::Under { underside } => Some(Form::OnLegs {
+            underside: Some(underside),
+        }),
         Measured::Inside => Some(Form::Open),
         Measured::Neither => None,
     })

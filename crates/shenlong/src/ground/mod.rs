@@ -677,7 +677,7 @@ pub fn selection_words(text: &str) -> Option<Range<usize>> {
                 let quantified = word(k.wrapping_sub(1)) == "of"
                     && matches!(
                         word(k.wrapping_sub(2)).as_str(),
-                        "both" | "all" | "each" | "two" | "three"
+                        "both" | "all" | "each" | "two" | "three" | "pair"
                     );
                 let start = match (quantified, word(k.wrapping_sub(3)).as_str()) {
                     (true, "the") => k - 3,
@@ -692,6 +692,24 @@ pub fn selection_words(text: &str) -> Option<Range<usize>> {
                 start..end
             }
             "it" => k..k + 1,
+            // "those two", "these three", "both of those".
+            "those" | "these"
+                if matches!(word(k + 1).as_str(), "two" | "three" | "both" | "all")
+                    || (word(k.wrapping_sub(1)) == "of"
+                        && matches!(word(k.wrapping_sub(2)).as_str(), "both" | "all" | "each")) =>
+            {
+                let start = if word(k.wrapping_sub(1)) == "of" {
+                    k - 2
+                } else {
+                    k
+                };
+                let end = if matches!(word(k + 1).as_str(), "two" | "three" | "both" | "all") {
+                    k + 2
+                } else {
+                    k + 1
+                };
+                start..end
+            }
             "that" | "this" | "those" | "these"
                 if tokens.get(k + 1).is_none_or(|t| match &t.kind {
                     Kind::Word(next) => {

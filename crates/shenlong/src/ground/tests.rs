@@ -153,6 +153,22 @@ fn pronouns_with_nothing_before_them_mean_the_selection() {
         .unwrap();
     assert_eq!(g.phrases.len(), 2);
     assert_eq!(g.phrases[0].objects, one);
+    // "those two", "both of those", "the pair of them": the selection.
+    for said in [
+        "move those two forward a bit",
+        "push both of those right",
+        "shift the pair of them left",
+    ] {
+        let g = grounder
+            .ground_with_selection(said, &s, &armchairs)
+            .unwrap();
+        assert_eq!(g.phrases[0].objects, armchairs, "{said}");
+        assert_eq!(
+            g.phrases[0].reasons[0].kind,
+            ReasonKind::Selection,
+            "{said}"
+        );
+    }
     // Without a selection, "it" alone still names nothing.
     assert!(matches!(
         grounder.ground("turn it 90 degrees", &s),
