@@ -102,8 +102,9 @@ fn legs(w: f64, d: f64, h: f64, side: f64) -> Vec<([f64; 3], [f64; 3])> {
 }
 
 /// The room: a desk (a 4 cm top at 0.72 m on legs), a stool, a chair facing the desk, an
-/// open crate, a block, a bed whose frame is 0.25 m above the floor, a storage tray and a
-/// drawer unit (two blocks stacked to the floor).
+/// open crate, a block, a bed whose frame is 0.25 m above the floor, a storage tray, a
+/// drawer unit (two blocks stacked to the floor) and a bookcase with boards at its own
+/// heights.
 fn room(dir: &Path) -> std::path::PathBuf {
     let mut g = Gltf::default();
     let mut desk = legs(1.2, 0.7, 0.72, 0.05);
@@ -150,6 +151,16 @@ fn room(dir: &Path) -> std::path::PathBuf {
             ([0.0, 0.35, 0.0], [0.6, 0.7, 0.5]),
         ],
     );
+    // Sides, a back and boards at 0, 0.5, 1.2 and 1.78 m: shelves of its own heights.
+    let mut bookcase = vec![
+        ([0.0, 0.0, 0.0], [0.02, 1.8, 0.3]),
+        ([0.78, 0.0, 0.0], [0.8, 1.8, 0.3]),
+        ([0.0, 0.0, 0.0], [0.8, 1.8, 0.02]),
+    ];
+    for y in [0.0, 0.5, 1.2, 1.78] {
+        bookcase.push(([0.02, y, 0.02], [0.78, y + 0.02, 0.3]));
+    }
+    g.node("Bookcase", [-4.0, 0.0, -2.0], &bookcase);
     let path = dir.join("room.gltf");
     g.write(&path);
     path
@@ -286,4 +297,19 @@ fn a_drawer_unit_solid_to_the_floor_has_no_room_under_it_whatever_its_name() {
     assert!((below("Bed") - 0.25).abs() < 2e-3, "{}", below("Bed"));
     assert_eq!(form_back("Crate"), Some(shenlong::scene::Form::Open));
     assert_eq!(form_back("Drawers"), None);
+}
+
+#[test]
+fn a_bookcase_mesh_gives_its_own_shelf_heights() {
+    let top = run("put the block on the top shelf of the bookcase").unwrap();
+    let (block, case) = (find(&top, "Block"), find(&top, "Bookcase"));
+    assert!(centred_over(block, case), "{block:?}");
+    // On the board at 1.2 m (its top at 1.22), under the one at 1.78.
+    assert!((block.0.y - 1.22).abs() < 5e-3, "{block:?}");
+    let lowest = run("put the block in the bookcase").unwrap();
+    let block = find(&lowest, "Block");
+    assert!((block.0.y - 0.02).abs() < 5e-3, "{block:?}");
+    let second = run("put the block on the second shelf from the bottom of the bookcase").unwrap();
+    let block = find(&second, "Block");
+    assert!((block.0.y - 0.52).abs() < 5e-3, "{block:?}");
 }

@@ -419,7 +419,7 @@ fn in_a_bookcase_is_on_a_shelf_or_refused() {
     run(&mut s, "put the book in the bookcase");
     let (book, case) = (aabb(&s, "book"), aabb(&s, "bookcase"));
     assert!(
-        shenlong::scene::form::clear_shelved(&book, &case),
+        shenlong::scene::form::clear_shelved(&book, &case, shenlong::scene::Form::SHELVES),
         "{book:?}"
     );
     assert!(
@@ -435,13 +435,21 @@ fn in_a_bookcase_is_on_a_shelf_or_refused() {
         let mut t = s.clone();
         run(&mut t, said);
         assert!(
-            shenlong::scene::form::clear_shelved(&aabb(&t, "novel"), &case),
+            shenlong::scene::form::clear_shelved(
+                &aabb(&t, "novel"),
+                &case,
+                shenlong::scene::Form::SHELVES
+            ),
             "{said}"
         );
     }
     run(&mut s, "put the novel on the top shelf of the bookcase");
     let novel = aabb(&s, "novel");
-    assert!(shenlong::scene::form::clear_shelved(&novel, &case));
+    assert!(shenlong::scene::form::clear_shelved(
+        &novel,
+        &case,
+        shenlong::scene::Form::SHELVES
+    ));
     assert!(novel.min.y > 1.4 && novel.max.y < case.max.y, "{novel:?}");
     let e = edit(
         &mut s,
@@ -504,7 +512,7 @@ fn a_shelf_of_a_bookcase_is_a_part_beside_a_wall_shelf() {
         run(&mut t, said);
         let (book, case_box) = (aabb(&t, "book"), aabb(&t, case));
         assert!(
-            shenlong::scene::form::clear_shelved(&book, &case_box),
+            shenlong::scene::form::clear_shelved(&book, &case_box, shenlong::scene::Form::SHELVES),
             "{said}: {book:?}"
         );
         assert!((book.min.y - level).abs() < LEVEL, "{said}: {book:?}");
@@ -583,7 +591,7 @@ fn what_fits_only_turned_is_turned_a_quarter_turn() {
     run(&mut s, "put the book in the bookcase");
     let (after, case) = (aabb(&s, "book"), aabb(&s, "bookcase"));
     assert!(
-        shenlong::scene::form::clear_shelved(&after, &case),
+        shenlong::scene::form::clear_shelved(&after, &case, shenlong::scene::Form::SHELVES),
         "{after:?}"
     );
     assert!(

@@ -469,7 +469,9 @@ fn check_in(scene: &Scene, f: &Facts, x: usize, y: usize, after: &[Aabb]) -> Ver
     let (a, b) = (&after[x], &after[y]);
     let inside = match shenlong::ground::kind::form_of(scene, y) {
         shenlong::scene::Form::Open => shenlong::scene::form::clear_inside(a, b),
-        shenlong::scene::Form::Shelves => shenlong::scene::form::clear_shelved(a, b),
+        form @ shenlong::scene::Form::Shelves { .. } => {
+            shenlong::scene::form::clear_shelved(a, b, form)
+        }
         // Floor furniture put "in" a table or a desk goes under it ("tuck the chair into
         // the desk").
         shenlong::scene::Form::OnLegs { .. } => return check_under(scene, f, x, y, after),

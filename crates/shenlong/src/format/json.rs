@@ -791,6 +791,7 @@ fn written_form(object: &Object) -> Option<crate::scene::Form> {
             underside: Some(underside),
         }),
         Measured::Inside => Some(Form::Open),
+        Measured::Shelves(_) => Some(Form::SHELVES),
         Measured::Neither => None,
     })
 }

@@ -80,7 +80,7 @@ impl Reader<'_> {
         let part_of_shelves = matches!(head.text.as_str(), "shelf" | "shelves")
             && matches!(&post, Some((Post::Relation(_, targets), _)) if !targets.is_empty()
             && targets.iter().all(|&t| {
-                super::kind::form_of(self.scene, t) == crate::scene::Form::Shelves
+                super::kind::form_of(self.scene, t) .shelves()
             }));
         if part_of_shelves {
             return Ok(None);

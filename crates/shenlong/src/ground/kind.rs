@@ -109,18 +109,21 @@ pub fn form_of(scene: &Scene, i: usize) -> Form {
     } else if square && container() {
         Form::Open
     } else if square && shelves() {
-        Form::Shelves
+        Form::SHELVES
     } else {
         Form::Solid
     };
     match o.measured.filter(|_| square) {
         None => by_kind,
-        // A bookcase on legs keeps its shelves.
-        Some(_) if by_kind == Form::Shelves => by_kind,
+        // A bookcase on legs (or whose boards do not show) keeps its shelves.
+        Some(m) if by_kind.shelves() && !matches!(m, Measured::Shelves(_)) => by_kind,
         Some(Measured::Under { underside }) => Form::OnLegs {
             underside: Some(underside),
         },
         Some(Measured::Inside) => Form::Open,
+        Some(Measured::Shelves(boards)) => Form::Shelves {
+            boards: Some(boards),
+        },
         // Its mesh shows no room under it or in it, whatever its kind.
         Some(Measured::Neither) => Form::Solid,
     }

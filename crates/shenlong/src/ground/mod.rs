@@ -555,10 +555,7 @@ fn drop_parts(text: &str, phrases: Vec<Phrase>, scene: &Scene) -> Vec<Phrase> {
                     .find_map(|from| between.strip_prefix(from))
                     .unwrap_or(&between);
                 matches!(between.trim(), "of" | "in" | "on")
-            }) && q
-                .objects
-                .iter()
-                .all(|&o| kind::form_of(scene, o) == crate::scene::Form::Shelves)
+            }) && q.objects.iter().all(|&o| kind::form_of(scene, o).shelves())
         });
         if !(part && whole.is_some()) {
             kept.push(p.clone());

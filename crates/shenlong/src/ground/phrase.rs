@@ -516,7 +516,7 @@ impl Reader<'_> {
             !targets.is_empty()
                 && targets
                     .iter()
-                    .all(|&t| super::kind::form_of(self.scene, t) == crate::scene::Form::Shelves)
+                    .all(|&t| super::kind::form_of(self.scene, t).shelves())
         }))
     }
 

@@ -480,12 +480,13 @@ impl Known<'_> {
         let case = *objects.get(t)?;
         let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
         let b = boxes[case];
-        match crate::ground::kind::form_of(scene, case) {
+        let case_form = crate::ground::kind::form_of(scene, case);
+        match case_form {
             Form::Open if shelf.is_none() => Some(form::inside(&b).min.y - b.min.y),
-            Form::Shelves if shelf.is_some() => shelf?
-                .pick(&form::compartments(&b))
+            Form::Shelves { .. } if shelf.is_some() => shelf?
+                .pick(&form::compartments(&b, case_form))
                 .map(|room| room.min.y - b.min.y),
-            Form::Shelves => {
+            Form::Shelves { .. } => {
                 let moving: Vec<usize> = subjects
                     .iter()
                     .filter_map(|&s| objects.get(s).copied())
@@ -501,7 +502,10 @@ impl Known<'_> {
                     need.cmple(room).all()
                         || glam::DVec3::new(need.z, need.y, need.x).cmple(room).all()
                 };
-                let rooms: Vec<_> = form::compartments(&b).into_iter().filter(fits).collect();
+                let rooms: Vec<_> = form::compartments(&b, case_form)
+                    .into_iter()
+                    .filter(fits)
+                    .collect();
                 // What already stands on a shelf: the footprint it takes there.
                 let used = |room: &crate::geometry::Aabb| {
                     (0..boxes.len())
@@ -514,7 +518,7 @@ impl Known<'_> {
                     .iter()
                     .find(|room| used(room) + need.x * need.z <= 0.9 * area(room));
                 // Too big for every shelf: the lowest, where the placement check says so.
-                let lowest = form::compartments(&b).into_iter().next();
+                let lowest = form::compartments(&b, case_form).into_iter().next();
                 free.or(rooms.first())
                     .copied()
                     .or(lowest)
@@ -539,9 +543,10 @@ impl Known<'_> {
         };
         let boxes = self.boxes.get_or_init(|| scene.world_aabbs());
         let b = boxes[case];
-        let room = match crate::ground::kind::form_of(scene, case) {
+        let case_form = crate::ground::kind::form_of(scene, case);
+        let room = match case_form {
             Form::Open => Some(form::inside(&b)),
-            Form::Shelves => form::compartments(&b)
+            Form::Shelves { .. } => form::compartments(&b, case_form)
                 .into_iter()
                 .find(|r| (r.min.y - b.min.y - floor).abs() < 1e-9),
             _ => None,

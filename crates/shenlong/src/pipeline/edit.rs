@@ -639,12 +639,13 @@ fn check_near(scene: &Scene, near: &[(usize, Near)]) -> Result<(), EditError> {
 /// Whether `object` ended inside `container`: within the walls of an open container, above
 /// its bottom, below its rim; on a shelf of a case of shelves, under the shelf above.
 fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), EditError> {
-    use crate::scene::{form, Form};
+    use crate::scene::form;
     let a = scene.objects[object].world_aabb();
     let b = scene.objects[container].world_aabb();
-    let shelves = crate::ground::kind::form_of(scene, container) == Form::Shelves;
+    let case_form = crate::ground::kind::form_of(scene, container);
+    let shelves = case_form.shelves();
     let inside = if shelves {
-        form::clear_shelved(&a, &b)
+        form::clear_shelved(&a, &b, case_form)
     } else {
         form::clear_inside(&a, &b)
     };
@@ -654,7 +655,7 @@ fn check_inside(scene: &Scene, object: usize, container: usize) -> Result<(), Ed
     let (name, target) = (&scene.objects[object].name, &scene.objects[container].name);
     let size = a.size();
     if shelves {
-        let rooms = form::compartments(&b);
+        let rooms = form::compartments(&b, case_form);
         let fits = rooms
             .iter()
             .any(|room| size.cmple(room.size() + 1e-9).all());

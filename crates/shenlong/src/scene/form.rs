@@ -25,8 +25,46 @@ pub enum Form {
     /// An open container: a bottom and four walls, open at the top, with room inside.
     Open,
     /// A case of shelves — a bookcase, a cabinet: walls, a back, a top and a bottom, and
-    /// shelves between them [`SHELF_SPACING`] apart, with room on each shelf.
-    Shelves,
+    /// shelves between them [`SHELF_SPACING`] apart, with room on each shelf — or, measured
+    /// from its mesh, its own boards.
+    Shelves {
+        /// Its boards as its mesh shows them (`scene::mesh`); `None`: evenly spaced.
+        boards: Option<Boards>,
+    },
+}
+
+/// The most shelf boards kept from a mesh.
+pub const MAX_BOARDS: usize = 16;
+
+/// The boards of a case of shelves measured from its mesh: each board's bottom and top,
+/// in thousandths of the case's height, lowest first.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Boards {
+    levels: [(u16, u16); MAX_BOARDS],
+    count: u8,
+}
+
+impl Boards {
+    /// The boards of `levels` (bottom and top, thousandths, lowest first); `None` for
+    /// fewer than two or more than [`MAX_BOARDS`].
+    #[must_use]
+    pub fn new(levels: &[(u16, u16)]) -> Option<Self> {
+        if levels.len() < 2 || levels.len() > MAX_BOARDS {
+            return None;
+        }
+        let mut out = [(0, 0); MAX_BOARDS];
+        out[..levels.len()].copy_from_slice(levels);
+        Some(Self {
+            levels: out,
+            count: u8::try_from(levels.len()).ok()?,
+        })
+    }
+
+    /// The boards, lowest first.
+    #[must_use]
+    pub fn levels(&self) -> &[(u16, u16)] {
+        &self.levels[..usize::from(self.count)]
+    }
 }
 
 impl Form {
@@ -42,13 +80,22 @@ impl Form {
             "solid" | "box" => Some(Self::Solid),
             "on_legs" | "legs" | "table" => Some(Self::ON_LEGS),
             "open" | "container" => Some(Self::Open),
-            "shelves" | "shelved" | "bookcase" | "cabinet" => Some(Self::Shelves),
+            "shelves" | "shelved" | "bookcase" | "cabinet" => Some(Self::SHELVES),
             _ => None,
         }
     }
 
     /// A top on legs whose room below is read from its box ([`top`], [`KNEE_HEIGHT`]).
     pub const ON_LEGS: Self = Self::OnLegs { underside: None };
+
+    /// A case of shelves whose boards are evenly spaced ([`compartments`]).
+    pub const SHELVES: Self = Self::Shelves { boards: None };
+
+    /// Whether it is a case of shelves, however its boards are known.
+    #[must_use]
+    pub fn shelves(self) -> bool {
+        matches!(self, Self::Shelves { .. })
+    }
 
     /// Whether it is a top on legs, however its room below is known.
     #[must_use]
@@ -63,7 +110,7 @@ impl Form {
             Self::Solid => "solid",
             Self::OnLegs { .. } => "on_legs",
             Self::Open => "open",
-            Self::Shelves => "shelves",
+            Self::Shelves { .. } => "shelves",
         }
     }
 }
@@ -145,14 +192,34 @@ pub fn inside(container: &Aabb) -> Aabb {
 /// How far apart the shelves of a case of shelves are, at most, in metres: a bookcase's.
 pub const SHELF_SPACING: f64 = 0.35;
 
-/// The room on each shelf of the case of shelves whose box is `case`, lowest first:
-/// within its walls, from each board's top to the underside of the board above. Boards
-/// [`WALL`] thick at the bottom, between, and at the top, evenly spaced, at most
-/// [`SHELF_SPACING`] apart.
+/// The room on each shelf of the case of shelves of form `form` whose box is `case`,
+/// lowest first: within its walls, from each board's top to the underside of the board
+/// above. Boards as measured from its mesh, or [`WALL`] thick at the bottom, between, and
+/// at the top, evenly spaced, at most [`SHELF_SPACING`] apart.
 #[must_use]
-pub fn compartments(case: &Aabb) -> Vec<Aabb> {
+pub fn compartments(case: &Aabb, form: Form) -> Vec<Aabb> {
     let size = case.size();
     let wall = WALL.min(size.min_element() / 4.0);
+    if let Form::Shelves {
+        boards: Some(boards),
+    } = form
+    {
+        let at = |t: u16| case.min.y + size.y * f64::from(t.min(1000)) / 1000.0;
+        return boards
+            .levels()
+            .windows(2)
+            .map(|pair| {
+                Aabb::new(
+                    glam::DVec3::new(case.min.x + wall, at(pair[0].1), case.min.z + wall),
+                    glam::DVec3::new(
+                        case.max.x - wall,
+                        at(pair[1].0).max(at(pair[0].1)),
+                        case.max.z - wall,
+                    ),
+                )
+            })
+            .collect();
+    }
     let count = ((size.y - wall) / SHELF_SPACING).ceil().clamp(1.0, 64.0) as usize;
     let pitch = size.y / count as f64;
     (0..count)
@@ -203,10 +270,11 @@ impl Shelf {
     }
 }
 
-/// Whether `a` lies on one shelf of the case of shelves whose box is `case`.
+/// Whether `a` lies on one shelf of the case of shelves of form `form` whose box is
+/// `case`.
 #[must_use]
-pub fn clear_shelved(a: &Aabb, case: &Aabb) -> bool {
-    compartments(case).iter().any(|room| {
+pub fn clear_shelved(a: &Aabb, case: &Aabb, form: Form) -> bool {
+    compartments(case, form).iter().any(|room| {
         (a.min - room.min).min_element() >= -TOUCH && (room.max - a.max).min_element() >= -TOUCH
     })
 }
@@ -316,7 +384,7 @@ pub fn clear_in(a: &Aabb, b: &Aabb, room: Room) -> bool {
                     .is_some_and(|seat| clear_tucked(a, b, room.form, seat))
         }
         Form::Open => clear_inside(a, b),
-        Form::Shelves => clear_shelved(a, b),
+        Form::Shelves { .. } => clear_shelved(a, b, room.form),
     };
     in_form
         || room
@@ -395,25 +463,26 @@ mod tests {
         assert!(!clear_in(&chair(0.2), &crate_box, Form::Solid.into()));
         // A bookcase 1.8 m tall: six shelves 0.3 m apart, 0.28 m of room on each.
         let bookcase = b([0.0, 0.0, 0.0], [0.9, 1.8, 0.35]);
-        let rooms = compartments(&bookcase);
+        let rooms = compartments(&bookcase, Form::SHELVES);
         assert_eq!(rooms.len(), 6);
         assert!((rooms[0].min.y - WALL).abs() < 1e-9 && (rooms[0].max.y - 0.3).abs() < 1e-9);
         assert!((rooms[5].max.y - (1.8 - WALL)).abs() < 1e-9);
         let book = |y: f64| b([0.3, y, 0.05], [0.33, y + 0.22, 0.2]);
-        assert!(clear_shelved(&book(WALL), &bookcase));
-        assert!(clear_shelved(&book(0.3 + WALL), &bookcase));
+        assert!(clear_shelved(&book(WALL), &bookcase, Form::SHELVES));
+        assert!(clear_shelved(&book(0.3 + WALL), &bookcase, Form::SHELVES));
         // Through a board, or sticking out of the back.
-        assert!(!clear_shelved(&book(0.2), &bookcase));
+        assert!(!clear_shelved(&book(0.2), &bookcase, Form::SHELVES));
         assert!(!clear_shelved(
             &b([0.3, WALL, 0.2], [0.33, 0.24, 0.4]),
-            &bookcase
+            &bookcase,
+            Form::SHELVES
         ));
         assert_eq!(Shelf::Top.pick(&rooms), Some(rooms[5]));
         assert_eq!(Shelf::Bottom.pick(&rooms), Some(rooms[0]));
         assert_eq!(Shelf::Middle.pick(&rooms), Some(rooms[2]));
         assert_eq!(Shelf::FromTop(2).pick(&rooms), Some(rooms[4]));
         assert_eq!(Shelf::FromBottom(7).pick(&rooms), None);
-        assert_eq!(Form::from_name("shelves"), Some(Form::Shelves));
+        assert_eq!(Form::from_name("shelves"), Some(Form::SHELVES));
         assert_eq!(Form::from_name("On legs"), Some(Form::ON_LEGS));
         assert_eq!(Form::from_name("solid"), Some(Form::Solid));
         // In a box 0.4 × 0.3 × 0.3: within its walls, above its bottom.

@@ -29,6 +29,9 @@ pub enum Measured {
     },
     /// Room inside it, open at the top, above a bottom: a crate, a bin, a bowl.
     Inside,
+    /// Boards one above another with room between them open to a side: a bookcase, a
+    /// shelving unit, a tiered stand.
+    Shelves(super::form::Boards),
     /// Neither: what stands in the middle of its footprint fills it from its bottom, and
     /// it is closed at its top (a cabinet, a block, a pedestal table).
     Neither,
@@ -42,6 +45,9 @@ const MARGIN: f64 = 0.15;
 
 /// The least room under an object that counts, in metres: what a rug slides under.
 const LEAST_ROOM: f64 = 0.02;
+
+/// The least room between two boards of a case of shelves, in metres.
+const LEAST_SHELF: f64 = 0.08;
 
 /// The most of its height an open container's bottom may take.
 const MOST_BOTTOM: f64 = 0.35;
@@ -118,16 +124,43 @@ impl Column {
         })
     }
 
-    /// The lowest and highest heights at which the triangles meet the column, if any do.
-    fn span(&self) -> Option<(f64, f64)> {
-        let (mut low, mut high) = (f64::INFINITY, f64::NEG_INFINITY);
-        for t in &self.triangles {
-            if let Some((a, b)) = span_in(t, self.lo, self.hi) {
-                low = low.min(a);
-                high = high.max(b);
+    /// The heights at which the triangles meet the column, merged into the bands they
+    /// fill, lowest first; faces less than [`LEAST_SHELF`] apart are one band (the top and
+    /// bottom faces of one board).
+    fn bands(&self) -> Vec<(f64, f64)> {
+        let mut spans: Vec<(f64, f64)> = self
+            .triangles
+            .iter()
+            .filter_map(|t| span_in(t, self.lo, self.hi))
+            .collect();
+        spans.sort_by(|a, b| a.0.total_cmp(&b.0));
+        let touch = LEAST_SHELF.min(self.height * 0.1);
+        let mut bands: Vec<(f64, f64)> = Vec::new();
+        for (lo, hi) in spans {
+            match bands.last_mut() {
+                Some(last) if lo <= last.1 + touch => last.1 = last.1.max(hi),
+                _ => bands.push((lo, hi)),
             }
         }
-        (low <= high).then_some((low, high))
+        bands
+    }
+
+    /// Three boards or more with at least [`LEAST_SHELF`] of room between each two, open
+    /// to a side: the boards, in thousandths of the height.
+    fn shelves(&self, bands: &[(f64, f64)]) -> Option<super::form::Boards> {
+        if bands.len() < 3 || bands.len() > super::form::MAX_BOARDS {
+            return None;
+        }
+        let open = bands.windows(2).all(|pair| {
+            let (below, above) = (pair[0].1, pair[1].0);
+            above - below >= LEAST_SHELF && self.open_sideways((below + above) / 2.0)
+        });
+        let thousandths = |y: f64| (y / self.height * 1000.0).round().clamp(0.0, 1000.0) as u16;
+        let levels: Vec<(u16, u16)> = bands
+            .iter()
+            .map(|&(lo, hi)| (thousandths(lo), thousandths(hi)))
+            .collect();
+        open.then(|| super::form::Boards::new(&levels)).flatten()
     }
 
     /// Whether a ray from the middle of the column at height `y` leaves the mesh's box
@@ -159,8 +192,12 @@ impl Column {
     /// What the column shows (see [`measure`]).
     fn measure(&self) -> Option<Measured> {
         let h = self.height;
+        let bands = self.bands();
         // Nothing down the middle at all (a frame, a ring): nothing to read.
-        let (under, top) = self.span()?;
+        let (under, top) = (bands.first()?.0, bands.last()?.1);
+        if let Some(boards) = self.shelves(&bands) {
+            return Some(Measured::Shelves(boards));
+        }
         if under >= LEAST_ROOM && self.open_sideways(under / 2.0) {
             let underside = (under / h * 1000.0).floor().clamp(0.0, 1000.0) as u16;
             return Some(Measured::Under { underside });
@@ -309,5 +346,36 @@ mod tests {
         assert_eq!(measure(&v, &[[0, 1, 99_999]]), None);
         assert_eq!(measure(&v, &[[0, 0, 0]]), None);
         assert_eq!(measure(&[], &[]), None);
+    }
+
+    #[test]
+    fn a_bookcase_shows_its_own_boards() {
+        let (mut v, mut t) = (Vec::new(), Vec::new());
+        // Sides and a back, boards at 0, 0.5, 1.2 and 1.78 m (2 cm thick).
+        cuboid(&mut v, &mut t, [0.0, 0.0, 0.0], [0.02, 1.8, 0.3]);
+        cuboid(&mut v, &mut t, [0.78, 0.0, 0.0], [0.8, 1.8, 0.3]);
+        cuboid(&mut v, &mut t, [0.0, 0.0, 0.0], [0.8, 1.8, 0.02]);
+        for y in [0.0, 0.5, 1.2, 1.78] {
+            cuboid(&mut v, &mut t, [0.02, y, 0.02], [0.78, y + 0.02, 0.3]);
+        }
+        let Some(Measured::Shelves(boards)) = measure(&v, &t) else {
+            panic!("{:?}", measure(&v, &t));
+        };
+        assert_eq!(
+            boards.levels(),
+            [(0, 11), (278, 289), (667, 678), (989, 1000)]
+        );
+        let case = Aabb::new(DVec3::ZERO, DVec3::new(0.8, 1.8, 0.3));
+        let rooms = crate::scene::form::compartments(
+            &case,
+            crate::scene::Form::Shelves {
+                boards: Some(boards),
+            },
+        );
+        assert_eq!(rooms.len(), 3);
+        assert!((rooms[1].min.y - 0.52).abs() < 2e-3 && (rooms[1].max.y - 1.2).abs() < 2e-3);
+        // With doors across its front it shows no room between its boards.
+        cuboid(&mut v, &mut t, [0.0, 0.0, 0.29], [0.8, 1.8, 0.3]);
+        assert_eq!(measure(&v, &t), Some(Measured::Neither));
     }
 }
