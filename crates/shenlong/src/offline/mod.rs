@@ -499,8 +499,7 @@ impl Known<'_> {
                 // As it stands, or turned a quarter turn ([`Known::turn_to_fit`]).
                 let fits = |room: &crate::geometry::Aabb| {
                     let room = room.size() + 1e-9;
-                    need.cmple(room).all()
-                        || glam::DVec3::new(need.z, need.y, need.x).cmple(room).all()
+                    need.cmple(room).all() || quarter_turned(need).cmple(room).all()
                 };
                 let rooms: Vec<_> = form::compartments(&b, case_form)
                     .into_iter()
@@ -555,7 +554,7 @@ impl Known<'_> {
             return false;
         };
         let need = boxes[o].size();
-        !need.cmple(room).all() && glam::DVec3::new(need.z, need.y, need.x).cmple(room).all()
+        !need.cmple(room).all() && quarter_turned(need).cmple(room).all()
     }
 
     /// Whether `subjects` put "in" `t` go under it: `t` is a top on legs (a desk, a
@@ -1157,6 +1156,11 @@ impl Translator for OfflineTranslator {
             replies: Default::default(),
         })
     }
+}
+
+/// The size of a world box turned a quarter turn about the vertical: its x and z swapped.
+fn quarter_turned(size: glam::DVec3) -> glam::DVec3 {
+    glam::DVec3::new(size.z, size.y, size.x)
 }
 
 #[cfg(test)]

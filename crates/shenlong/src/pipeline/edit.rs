@@ -749,10 +749,9 @@ fn check_under(scene: &Scene, object: usize, above: usize) -> Result<(), EditErr
         return Ok(());
     }
     let (name, target) = (&scene.objects[object].name, &scene.objects[above].name);
-    let room = if on_legs {
-        crate::scene::form::knee_room(&b, shared.map_or(crate::scene::Form::Solid, |r| r.form))
-    } else {
-        b.min.y - scene.floor()
+    let room = match shared {
+        Some(r) => crate::scene::form::knee_room(&b, r.form),
+        None => b.min.y - scene.floor(),
     };
     Err(placement_error(if on_legs && height > room {
         format!(

@@ -270,6 +270,31 @@ fn clip(poly: &[DVec3], axis: usize, bound: f64, above: bool) -> Vec<DVec3> {
     out
 }
 
+/// Boxes as meshes, for the tests of the readers that measure them.
+#[cfg(test)]
+pub(crate) mod boxes {
+    use glam::DVec3;
+
+    /// The six faces of a box as quads over [`corners`].
+    pub(crate) const QUADS: [[u32; 4]; 6] = [
+        [0, 1, 3, 2],
+        [4, 6, 7, 5],
+        [0, 4, 5, 1],
+        [2, 3, 7, 6],
+        [0, 2, 6, 4],
+        [1, 5, 7, 3],
+    ];
+
+    /// The 8 corners of the box from `lo` to `hi`: corner `k` takes `hi` along x, y and z
+    /// where bit 0, 1 and 2 of `k` is set.
+    pub(crate) fn corners(lo: [f64; 3], hi: [f64; 3]) -> [DVec3; 8] {
+        std::array::from_fn(|k| {
+            let pick = |bit: usize, a: usize| if k & bit == 0 { lo[a] } else { hi[a] };
+            DVec3::new(pick(1, 0), pick(2, 1), pick(4, 2))
+        })
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -277,21 +302,8 @@ mod tests {
     /// The 12 triangles of the box from `lo` to `hi`, its vertices appended to `v`.
     fn cuboid(v: &mut Vec<DVec3>, t: &mut Vec<[u32; 3]>, lo: [f64; 3], hi: [f64; 3]) {
         let base = v.len() as u32;
-        for k in 0..8 {
-            v.push(DVec3::new(
-                if k & 1 == 0 { lo[0] } else { hi[0] },
-                if k & 2 == 0 { lo[1] } else { hi[1] },
-                if k & 4 == 0 { lo[2] } else { hi[2] },
-            ));
-        }
-        for f in [
-            [0, 1, 3, 2],
-            [4, 6, 7, 5],
-            [0, 4, 5, 1],
-            [2, 3, 7, 6],
-            [0, 2, 6, 4],
-            [1, 5, 7, 3],
-        ] {
+        v.extend(boxes::corners(lo, hi));
+        for f in boxes::QUADS {
             t.push([base + f[0], base + f[1], base + f[2]]);
             t.push([base + f[0], base + f[2], base + f[3]]);
         }

@@ -704,22 +704,15 @@ fn the_own_layer_reader_bounds_depth_and_prims() {
 /// A `Mesh` prim named `name` at `at` (stage units) made of the boxes `parts`, each a quad
 /// per face.
 fn mesh_prim(name: &str, at: [f64; 3], parts: &[([f64; 3], [f64; 3])]) -> String {
+    use crate::scene::mesh::boxes;
     let (mut points, mut indices) = (Vec::new(), Vec::new());
     for (lo, hi) in parts {
         let base = points.len();
-        for k in 0..8 {
-            let pick = |bit: usize, a: usize| if k & bit == 0 { lo[a] } else { hi[a] };
-            points.push(format!("({}, {}, {})", pick(1, 0), pick(2, 1), pick(4, 2)));
+        for p in boxes::corners(*lo, *hi) {
+            points.push(format!("({}, {}, {})", p.x, p.y, p.z));
         }
-        for f in [
-            [0, 1, 3, 2],
-            [4, 6, 7, 5],
-            [0, 4, 5, 1],
-            [2, 3, 7, 6],
-            [0, 2, 6, 4],
-            [1, 5, 7, 3],
-        ] {
-            indices.extend(f.map(|i| (base + i).to_string()));
+        for f in boxes::QUADS {
+            indices.extend(f.map(|i| (base + i as usize).to_string()));
         }
     }
     format!(
